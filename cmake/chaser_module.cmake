@@ -1,0 +1,23 @@
+# chaser_module(NAME DEPS...): a static library from every .cpp of the current folder.
+# One library per folder keeps the dependency rules of DESIGN.md visible in the build.
+function(chaser_module name)
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  if(sources)
+    add_library(${name} STATIC ${sources})
+    target_link_libraries(${name} PUBLIC chaser_options ${ARGN})
+  else()  # a header-only folder
+    add_library(${name} INTERFACE)
+    target_link_libraries(${name} INTERFACE chaser_options ${ARGN})
+  endif()
+endfunction()
+
+# chaser_test(NAME LIBS...): one GoogleTest binary from every .cpp of the current test folder.
+function(chaser_test name)
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  if(NOT sources)
+    return()
+  endif()
+  add_executable(${name} ${sources})
+  target_link_libraries(${name} PRIVATE ${ARGN} GTest::gtest GTest::gtest_main)
+  add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+endfunction()

@@ -1,0 +1,47 @@
+#include "core/rotation.hpp"
+
+#include <cmath>
+
+namespace chaser {
+
+Mat3 skew(const Vec3& a) {
+  Mat3 s;
+  s << 0.0, -a.z(), a.y(),  //
+      a.z(), 0.0, -a.x(),   //
+      -a.y(), a.x(), 0.0;
+  return s;
+}
+
+Quat quat_from_rotation_vector(const Vec3& rotation_vector) {
+  const double angle = rotation_vector.norm();
+  constexpr double kSmallAngle = 1e-8;  // below this sin(a/2)/a = 1/2 - a^2/48 to machine precision
+  const double half_sinc = angle < kSmallAngle ? 0.5 - angle * angle / 48.0 : std::sin(0.5 * angle) / angle;
+  const Vec3 v = half_sinc * rotation_vector;
+  return Quat(std::cos(0.5 * angle), v.x(), v.y(), v.z());
+}
+
+Vec3 rotation_vector_from_quat(const Quat& q_in) {
+  const Quat q = q_in.w() < 0.0 ? Quat(-q_in.coeffs()) : q_in;
+  const double vec_norm = q.vec().norm();
+  constexpr double kSmallVec = 1e-8;
+  if (vec_norm < kSmallVec) return 2.0 * q.vec() / q.w();
+  const double angle = 2.0 * std::atan2(vec_norm, q.w());
+  return (angle / vec_norm) * q.vec();
+}
+
+Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body) {
+  return rotation_vector_from_quat(q_inertial_from_desired.conjugate() * q_inertial_from_body);
+}
+
+Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s) {
+  const double half = 0.5 * mean_motion_radps * t_s;
+  return Quat(std::cos(half), 0.0, 0.0, std::sin(half));
+}
+
+Vec3 omega_lvlh_in_lvlh(double mean_motion_radps) { return Vec3(0.0, 0.0, mean_motion_radps); }
+
+// MSR: x zenith, y along-track, z orbit normal. Zhou: x along-track, y anti-normal, z nadir.
+Vec3 zhou_from_msr(const Vec3& v) { return Vec3(v.y(), -v.z(), -v.x()); }
+Vec3 msr_from_zhou(const Vec3& v) { return Vec3(-v.z(), v.x(), -v.y()); }
+
+}  // namespace chaser

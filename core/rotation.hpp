@@ -1,0 +1,40 @@
+#pragma once
+// Rotations, quaternions and frame conventions.
+//
+// Quaternions are Hamilton, scalar first in files, and named q_to_from: q_inertial_from_body maps a
+// vector's body-frame components to inertial-frame components, v_inertial = q * v_body.
+//
+// Two Hill (LVLH) frames appear in the papers:
+//  - MSR (Fonod 2015): x radial out (zenith), y along-track, z orbit normal. Used by the MSR scenario.
+//  - Manual RVD (Zhou 2018): x along-track, y opposite the orbit normal, z towards the planet (nadir).
+// The inertial frame of a run is the MSR LVLH frame at t = 0; LVLH then turns about its z axis at
+// the mean motion n.
+#include "core/types.hpp"
+
+namespace chaser {
+
+// Cross-product matrix: skew(a) * b = a x b.
+Mat3 skew(const Vec3& a);
+
+// Unit quaternion of the rotation by |rotation_vector| about its direction (exponential map).
+// Exact for all angles; uses a Taylor branch below 1e-8 rad where sin(x)/x loses accuracy.
+Quat quat_from_rotation_vector(const Vec3& rotation_vector);
+
+// Inverse of quat_from_rotation_vector, choosing the shorter of q and -q (angle in [0, pi]).
+Vec3 rotation_vector_from_quat(const Quat& q);
+
+// Attitude error as a rotation vector in the body frame: the rotation that takes the desired body
+// frame to the actual one, q_desired_from_body = q_inertial_from_desired^-1 * q_inertial_from_body.
+Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body);
+
+// Orientation of the MSR LVLH frame in the run's inertial frame at time t for mean motion n.
+Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s);
+
+// Angular velocity of the MSR LVLH frame relative to inertial, in LVLH components: (0, 0, n).
+Vec3 omega_lvlh_in_lvlh(double mean_motion_radps);
+
+// Converts between the MSR and the manual-RVD Hill frames (a fixed permutation with signs).
+Vec3 zhou_from_msr(const Vec3& v_msr);
+Vec3 msr_from_zhou(const Vec3& v_zhou);
+
+}  // namespace chaser

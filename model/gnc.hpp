@@ -1,0 +1,43 @@
+#pragma once
+// Parameters of the flight software: navigation, guidance, control, modulation and management.
+#include "core/types.hpp"
+
+namespace chaser::model {
+
+struct NavigationParams {
+  // Kalman filter on the discrete HCW model; process noise as acceleration spectral density.
+  double position_process_noise_mps2 = 1e-5;   // [m/s^2] 1-sigma unmodelled acceleration per period
+  // Attitude complementary filter: star-tracker correction gain per period and gyro-bias gain.
+  double attitude_gain = 0.1;                  // [-] fraction of the attitude error removed per period
+  double gyro_bias_gain = 0.001;               // [1/s] gyro-bias estimate gain
+};
+
+// Forced straight-line approach along approach_axis_lvlh towards the target (Fonod 2015, Fig. 5).
+struct GuidanceParams {
+  Vec3 approach_axis_lvlh = Vec3(0.0, -1.0, 0.0);  // unit vector from target towards the chaser start
+  double start_distance_m = 20.0;       // [m]
+  double capture_distance_m = 1.0;      // [m] capture point on the approach axis
+  double approach_duration_s = 1150.0;  // [s] time to go from start to capture point
+  double blend_time_s = 60.0;           // [s] acceleration and deceleration phases of the profile
+  double corridor_half_angle_rad = 0.17453292519943295;  // [rad] approach cone about the axis
+  double corridor_min_distance_m = 0.5; // [m] inside this range the cone is not checked
+  double capture_position_tol_m = 0.1;  // [m] capture: position error at the end
+  double capture_speed_tol_mps = 0.01;  // [m/s] capture: relative speed at the end
+  double capture_attitude_tol_rad = 0.0349;  // [rad] capture: attitude error at the end
+};
+
+struct ControlParams {
+  // LQR weights: state cost diag(q_pos * I, q_vel * I), input cost r_force * I (position), and the
+  // same shape for attitude. Gains are computed from these and the scenario's mass and inertia.
+  double position_q_pos = 1.0;      // [1/m^2]
+  double position_q_vel = 100.0;    // [s^2/m^2]
+  double position_r_force = 10.0;   // [1/N^2]
+  double attitude_q_angle = 100.0;  // [1/rad^2]
+  double attitude_q_rate = 1000.0;  // [s^2/rad^2]
+  double attitude_r_torque = 1.0;   // [1/(N m)^2]
+  // Thruster modulation unit: impulse accumulated per axis before a pulse is released.
+  double tmu_force_threshold_Ns = 0.05;    // [N s]
+  double tmu_torque_threshold_Nms = 0.05;  // [N m s]
+};
+
+}  // namespace chaser::model

@@ -1,0 +1,33 @@
+#pragma once
+// Sensor specifications. Each sensor adds a constant bias and white Gaussian noise, and delivers its
+// sample a whole number of control periods late (delay_s is validated to be a multiple of T).
+#include "core/types.hpp"
+
+namespace chaser::model {
+
+struct LidarParams {  // relative position of the chaser from the target, MSR LVLH axes
+  double noise_sigma_m = 0.001;     // [m] per axis, 1-sigma
+  Vec3 bias_m = Vec3::Zero();       // [m]
+  double delay_s = 0.0;             // [s]
+  double fov_half_angle_rad = 0.35; // [rad] target must stay within this cone about body +x
+};
+
+struct StarTrackerParams {  // chaser attitude q_inertial_from_body
+  double noise_sigma_rad = 1e-5;    // [rad] per axis, 1-sigma, body frame
+  Vec3 bias_rad = Vec3::Zero();     // [rad] constant misalignment, body frame
+  double delay_s = 0.0;             // [s]
+};
+
+struct GyroParams {  // chaser body rate omega_body
+  double noise_sigma_radps = 1e-6;  // [rad/s] per axis, 1-sigma
+  Vec3 bias_radps = Vec3::Zero();   // [rad/s]
+  double delay_s = 0.0;             // [s]
+};
+
+struct SensorParams {
+  LidarParams lidar;
+  StarTrackerParams star_tracker;
+  GyroParams gyro;
+};
+
+}  // namespace chaser::model
