@@ -1,0 +1,58 @@
+#pragma once
+// Sensors on the plant side: they see the truth and add their errors.
+//   LIDAR:        r_meas = r_lvlh + bias + noise                       (per axis, LVLH)
+//   star tracker: q_meas = q_inertial_from_body * exp(bias + noise)   (small body-frame rotation)
+//   gyro:         omega_meas = omega_body + bias + noise                (per axis, body)
+// Noise is white Gaussian, drawn when the sample is taken. Each sensor delivers the sample taken
+// delay_s earlier (delay_s a whole number of control periods, at most kMaxSensorDelayPeriods),
+// through a fixed ring buffer. Until the ring holds that many samples, the oldest sample available
+// is delivered (at the first call: the one just taken).
+#include <array>
+#include <cstdint>
+
+#include "core/random.hpp"
+#include "core/time.hpp"
+#include "core/types.hpp"
+#include "model/messages.hpp"
+#include "model/sensors.hpp"
+
+namespace chaser::plant {
+
+inline constexpr int kMaxSensorDelayPeriods = 32;
+
+// The three named streams, constructed by the caller (see make_sensor_noise).
+struct SensorNoise {
+  RandomStream lidar;         // "sensors/lidar"
+  RandomStream star_tracker;  // "sensors/star_tracker"
+  RandomStream gyro;          // "sensors/gyro"
+};
+
+// The streams of a run, with their standard names.
+SensorNoise make_sensor_noise(std::uint64_t run_seed);
+
+// A delay line of samples taken once per control period.
+template <typename Sample>
+struct DelayLine {
+  std::array<Sample, kMaxSensorDelayPeriods + 1> ring{};
+  int newest = -1;         // index of the newest sample, -1 when empty
+  int filled = 0;          // samples held, up to ring.size()
+  int delay_periods = 0;   // [periods] age of the delivered sample
+};
+
+struct SensorState {
+  DelayLine<Vec3> lidar_r_lvlh_m;           // [m]
+  DelayLine<Quat> star_q_inertial_from_body;
+  DelayLine<Vec3> gyro_omega_body_radps;    // [rad/s]
+};
+
+// Delays in periods: round(delay_s / T), clamped to [0, kMaxSensorDelayPeriods] (the scenario
+// validator checks both the range and that the delay is a whole number of periods).
+SensorState make_sensor_state(const model::SensorParams& params, TimeNs period_ns);
+
+// Takes this period's samples of the truth at time t and returns the delivered (delayed)
+// measurements, stamped with t. Call once per control period. Allocation-free.
+model::SensorMeasurements sample_sensors(const model::SensorParams& params, SensorState& state, TimeNs t,
+                                         const Vec3& r_lvlh_m, const Quat& q_inertial_from_body,
+                                         const Vec3& omega_body_radps, SensorNoise& noise);
+
+}  // namespace chaser::plant

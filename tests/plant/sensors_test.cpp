@@ -1,0 +1,110 @@
+#include "plant/sensors.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/rotation.hpp"
+
+namespace chaser::plant {
+namespace {
+
+constexpr TimeNs kPeriodNs = 100'000'000;  // 0.1 s
+
+model::SensorParams noiseless() {
+  model::SensorParams s;
+  s.lidar.noise_sigma_m = 0.0;
+  s.star_tracker.noise_sigma_rad = 0.0;
+  s.gyro.noise_sigma_radps = 0.0;
+  return s;
+}
+
+// A truth that changes every period, so that each delayed sample is identifiable.
+Vec3 truth_r(int k) { return Vec3(1.0 + 0.1 * k, -20.0 + 0.01 * k, 0.3 * std::sin(k)); }
+Quat truth_q(int k) { return quat_from_rotation_vector(Vec3(0.01 * k, -0.2, 0.003 * k * k)); }
+Vec3 truth_w(int k) { return Vec3(1e-3 * k, -2e-3, 1e-4 * k * k); }
+
+// Without noise or bias, a sensor returns the truth bit for bit.
+TEST(Sensors, ZeroNoiseReturnsTruthExactly) {
+  const model::SensorParams params = noiseless();
+  SensorState state = make_sensor_state(params, kPeriodNs);
+  SensorNoise noise = make_sensor_noise(5);
+  for (int k = 0; k < 10; ++k) {
+    const auto y = sample_sensors(params, state, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), noise);
+    EXPECT_EQ(y.t, k * kPeriodNs);
+    EXPECT_EQ(y.r_lvlh_m, truth_r(k));
+    EXPECT_EQ(y.q_inertial_from_body.coeffs(), truth_q(k).coeffs());
+    EXPECT_EQ(y.omega_body_radps, truth_w(k));
+  }
+}
+
+// A delay of d periods returns exactly the truth of d periods earlier; before d samples exist, the
+// oldest sample (the first) is delivered. Each sensor has its own delay.
+TEST(Sensors, DelayReturnsTruthOfDPeriodsAgo) {
+  model::SensorParams params = noiseless();
+  params.lidar.delay_s = 0.3;
+  params.star_tracker.delay_s = 0.5;
+  params.gyro.delay_s = 3.2;  // 32 periods, the deepest line
+  SensorState state = make_sensor_state(params, kPeriodNs);
+  SensorNoise noise = make_sensor_noise(5);
+  for (int k = 0; k < 80; ++k) {
+    const auto y = sample_sensors(params, state, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), noise);
+    EXPECT_EQ(y.r_lvlh_m, truth_r(std::max(k - 3, 0))) << k;
+    EXPECT_EQ(y.q_inertial_from_body.coeffs(), truth_q(std::max(k - 5, 0)).coeffs()) << k;
+    EXPECT_EQ(y.omega_body_radps, truth_w(std::max(k - 32, 0))) << k;
+  }
+}
+
+// Noise statistics over N = 20000 samples: per axis, the mean is the bias within 5 sigma / sqrt(N)
+// and the standard deviation is sigma within 5 sigma / sqrt(2N) (standard errors of a Gaussian
+// sample's mean and standard deviation). The star-tracker error is read back as the body-frame
+// rotation vector q_true^-1 q_meas. Every star-tracker output is a unit quaternion.
+TEST(Sensors, NoiseStatisticsMatchBiasAndSigma) {
+  model::SensorParams params;
+  params.lidar.noise_sigma_m = 0.01;
+  params.lidar.bias_m = Vec3(0.02, -0.01, 0.005);
+  params.star_tracker.noise_sigma_rad = 2e-4;
+  params.star_tracker.bias_rad = Vec3(1e-4, -3e-4, 5e-5);
+  params.gyro.noise_sigma_radps = 1e-5;
+  params.gyro.bias_radps = Vec3(-2e-5, 1e-5, 3e-5);
+  SensorState state = make_sensor_state(params, kPeriodNs);
+  SensorNoise noise = make_sensor_noise(17);
+  const int n = 20000;
+  Vec3 sum[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  Vec3 sum2[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  for (int k = 0; k < n; ++k) {
+    const auto y = sample_sensors(params, state, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), noise);
+    ASSERT_NEAR(y.q_inertial_from_body.norm(), 1.0, 1e-15);
+    const Vec3 e[3] = {y.r_lvlh_m - truth_r(k), attitude_error_body(truth_q(k), y.q_inertial_from_body),
+                       y.omega_body_radps - truth_w(k)};
+    for (int s = 0; s < 3; ++s) sum[s] += e[s], sum2[s] += e[s].cwiseProduct(e[s]);
+  }
+  const Vec3 bias[3] = {params.lidar.bias_m, params.star_tracker.bias_rad, params.gyro.bias_radps};
+  const double sigma[3] = {params.lidar.noise_sigma_m, params.star_tracker.noise_sigma_rad,
+                           params.gyro.noise_sigma_radps};
+  for (int s = 0; s < 3; ++s) {
+    const Vec3 mean = sum[s] / n;
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(mean[a], bias[s][a], 5 * sigma[s] / std::sqrt(n)) << "sensor " << s << " axis " << a;
+      const double sd = std::sqrt(sum2[s][a] / n - mean[a] * mean[a]);
+      EXPECT_NEAR(sd, sigma[s], 5 * sigma[s] / std::sqrt(2.0 * n)) << "sensor " << s << " axis " << a;
+    }
+  }
+}
+
+// The three sensors draw from their own named streams: the same seed gives the same measurements.
+TEST(Sensors, SameSeedSameMeasurements) {
+  const model::SensorParams params;
+  SensorState a = make_sensor_state(params, kPeriodNs), b = make_sensor_state(params, kPeriodNs);
+  SensorNoise na = make_sensor_noise(9), nb = make_sensor_noise(9);
+  for (int k = 0; k < 5; ++k) {
+    const auto ya = sample_sensors(params, a, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), na);
+    const auto yb = sample_sensors(params, b, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), nb);
+    EXPECT_EQ(ya.r_lvlh_m, yb.r_lvlh_m);
+    EXPECT_EQ(ya.q_inertial_from_body.coeffs(), yb.q_inertial_from_body.coeffs());
+    EXPECT_EQ(ya.omega_body_radps, yb.omega_body_radps);
+  }
+}
+
+}  // namespace
+}  // namespace chaser::plant
