@@ -29,15 +29,22 @@ struct GuidanceParams {
 struct ControlParams {
   // LQR weights: state cost diag(q_pos * I, q_vel * I), input cost r_force * I (position), and the
   // same shape for attitude. Gains are computed from these and the scenario's mass and inertia.
-  double position_q_pos = 1.0;      // [1/m^2]
-  double position_q_vel = 100.0;    // [s^2/m^2]
-  double position_r_force = 10.0;   // [1/N^2]
-  double attitude_q_angle = 100.0;  // [1/rad^2]
-  double attitude_q_rate = 1000.0;  // [s^2/rad^2]
-  double attitude_r_torque = 1.0;   // [1/(N m)^2]
-  // Thruster modulation unit: impulse accumulated per axis before a pulse is released.
-  double tmu_force_threshold_Ns = 0.05;    // [N s]
-  double tmu_torque_threshold_Nms = 0.05;  // [N m s]
+  // For a double integrator of mass m these give w_n^2 = sqrt(q_pos / r) / m and
+  // (2 zeta w_n)^2 = q_vel / (r m^2) + 2 w_n^2 (docs/gnc.md). Defaults, for m = 2500 kg and
+  // I = diag(2000, 2500, 3000) kg m^2: position w_n = 0.04 rad/s, zeta = 0.9 (time constant 28 s);
+  // attitude w_n = 0.135-0.166 rad/s, zeta = 0.87-0.94 (time constant 6.4-8.5 s).
+  double position_q_pos = 16.0;        // [1/m^2]
+  double position_q_vel = 12000.0;     // [s^2/m^2]
+  double position_r_force = 1.0;       // [1/N^2]
+  double attitude_q_angle = 3000.0;    // [1/rad^2]
+  double attitude_q_rate = 170000.0;   // [s^2/rad^2]
+  double attitude_r_torque = 1.0;      // [1/(N m)^2]
+  // Thruster modulation unit: impulse accumulated per axis before a pulse is released. About one
+  // minimum impulse bit (22 N x 5 ms = 0.11 N s), so a released pulse is long enough to fire.
+  double tmu_force_threshold_Ns = 0.1;     // [N s]
+  double tmu_torque_threshold_Nms = 0.1;   // [N m s]
+  // Accumulator clamp (anti-windup) in periods of full per-axis thruster authority.
+  double tmu_windup_periods = 3.0;         // [-]
 };
 
 }  // namespace chaser::model

@@ -1,0 +1,48 @@
+// Flight-software sections: navigation, guidance, control (model/gnc.hpp) and the initial state.
+#include "io/scenario_sections.hpp"
+
+namespace chaser::io {
+
+void read_navigation(MapReader& r, model::NavigationParams& out) {
+  r.number("position_process_noise_mps2", Range::non_negative(), out.position_process_noise_mps2);
+  r.number("attitude_gain", Range::left_open(0.0, 1.0), out.attitude_gain);
+  r.number("gyro_bias_gain", Range::non_negative(), out.gyro_bias_gain);
+}
+
+// Distances and durations against each other are checked in validate_scenario.
+void read_guidance(MapReader& r, model::GuidanceParams& out) {
+  r.direction("approach_axis_lvlh", out.approach_axis_lvlh);
+  r.number("start_distance_m", Range::positive(), out.start_distance_m);
+  r.number("capture_distance_m", Range::positive(), out.capture_distance_m);
+  r.number("approach_duration_s", Range::positive(), out.approach_duration_s);
+  r.number("blend_time_s", Range::non_negative(), out.blend_time_s);
+  r.angle_deg("corridor_half_angle_deg", Range::open(0.0, 90.0), out.corridor_half_angle_rad);
+  r.number("corridor_min_distance_m", Range::non_negative(), out.corridor_min_distance_m);
+  r.number("capture_position_tol_m", Range::positive(), out.capture_position_tol_m);
+  r.number("capture_speed_tol_mps", Range::positive(), out.capture_speed_tol_mps);
+  r.angle_deg("capture_attitude_tol_deg", Range::left_open(0.0, 180.0), out.capture_attitude_tol_rad);
+}
+
+// LQR weights (model/gnc.hpp, gnc_changes.md): state weights q >= 0, input weights r > 0 so that
+// the input cost is positive definite; modulation thresholds and the anti-windup clamp > 0.
+void read_control(MapReader& r, model::ControlParams& out) {
+  r.number("position_q_pos", Range::non_negative(), out.position_q_pos);
+  r.number("position_q_vel", Range::non_negative(), out.position_q_vel);
+  r.number("position_r_force", Range::positive(), out.position_r_force);
+  r.number("attitude_q_angle", Range::non_negative(), out.attitude_q_angle);
+  r.number("attitude_q_rate", Range::non_negative(), out.attitude_q_rate);
+  r.number("attitude_r_torque", Range::positive(), out.attitude_r_torque);
+  r.number("tmu_force_threshold_Ns", Range::positive(), out.tmu_force_threshold_Ns);
+  r.number("tmu_torque_threshold_Nms", Range::positive(), out.tmu_torque_threshold_Nms);
+  r.number("tmu_windup_periods", Range::positive(), out.tmu_windup_periods);
+}
+
+void read_initial(MapReader& r, model::InitialState& out) {
+  r.vec3("r_lvlh_m", out.r_lvlh_m);
+  r.vec3("v_lvlh_mps", out.v_lvlh_mps);
+  r.boolean("use_guidance_start", out.use_guidance_start);
+  r.quaternion("q_lvlh_from_body", out.q_lvlh_from_body);
+  r.vec3("omega_body_radps", out.omega_body_radps);
+}
+
+}  // namespace chaser::io

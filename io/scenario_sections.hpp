@@ -1,0 +1,35 @@
+#pragma once
+// Readers of the scenario's sections and the cross-field validation (internal to io/). Each reader
+// reads every key of its section with its type and static range (docs/scenario.md); checks that
+// involve more than one key (a delay against the control period, capture against start distance,
+// the inertia matrix as a whole, the thruster set's controllability) are in validate_scenario.
+#include <string>
+
+#include "io/yaml_reader.hpp"
+#include "model/scenario.hpp"
+
+namespace chaser::io {
+
+// Upper bounds that keep every time representable as int64 nanoseconds with margin.
+inline constexpr double kMaxDurationS = 1e8;      // [s] about three years
+inline constexpr double kMaxControlPeriodS = 10.0;  // [s]
+
+// The whole document; `source` names the file for root-level problems.
+model::Scenario read_scenario(const YAML::Node& root, const std::string& source, Diagnostics& diag);
+
+void read_orbit(MapReader& r, model::OrbitParams& out);
+void read_chaser(MapReader& r, model::SpacecraftParams& out);
+void read_target(MapReader& r, model::TargetParams& out);
+void read_environment(MapReader& r, model::EnvironmentParams& out);
+void read_sensors(MapReader& r, model::SensorParams& out);
+void read_thrusters(MapReader& r, model::ThrusterSetParams& out);
+void read_faults(MapReader& root, std::vector<model::FaultParams>& out);
+void read_navigation(MapReader& r, model::NavigationParams& out);
+void read_guidance(MapReader& r, model::GuidanceParams& out);
+void read_control(MapReader& r, model::ControlParams& out);
+void read_initial(MapReader& r, model::InitialState& out);
+
+// Checks between keys; each runs only if the keys it uses were read without problems.
+void validate_scenario(const model::Scenario& s, Diagnostics& diag);
+
+}  // namespace chaser::io

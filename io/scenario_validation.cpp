@@ -1,0 +1,162 @@
+// Checks between keys: timing against the control period, inertia as a whole, controllability of
+// each thruster branch, fault onsets, guidance geometry. Each check runs only if the keys it uses
+// were read cleanly, so one bad value gives one error rather than a cascade.
+#include <cmath>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include "io/scenario_sections.hpp"
+#include "model/positive_span.hpp"
+#include "model/thruster_geometry.hpp"
+
+namespace chaser::io {
+namespace {
+
+// Times are integer nanoseconds inside a run (core/time.hpp); a file time must be one to within
+// rounding of its decimal text (1e-3 ns is far above double rounding of 1e8 s, 2e-8 ns relative).
+constexpr double kWholeNsTolerance = 1e-3;  // [ns]
+// Inertia: asymmetry and the triangle inequality are judged relative to the largest entry, at a
+// level far above the rounding of a decimal file value and far below any physical asymmetry.
+constexpr double kInertiaRelativeTolerance = 1e-9;
+// Longest sensor delay in control periods: plant/sensors.hpp kMaxSensorDelayPeriods (io/ may not
+// include plant/, so the value is repeated here; see docs/scenario.md).
+constexpr int kMaxSensorDelayPeriods = 32;
+
+std::optional<std::int64_t> whole_ns(double seconds) {
+  const double ns = seconds * 1e9;
+  const double rounded = std::round(ns);
+  if (!(std::abs(ns - rounded) <= kWholeNsTolerance)) return std::nullopt;
+  return static_cast<std::int64_t>(rounded);
+}
+
+// A thruster time that must lie in [0, T); valve times are also whole nanoseconds (the plant
+// schedules valve edges in integer ns, plant/thruster_hardware.hpp).
+void check_below_period(Diagnostics& d, const char* path, double value, double period_s,
+                        bool whole_nanoseconds) {
+  if (!d.clean(path)) return;
+  if (!(value < period_s))
+    d.add(path, fmt::format("must be in [0, control_period_s) = [0, {}) (got {})",
+                            format_number(period_s), format_number(value)));
+  else if (whole_nanoseconds && !whole_ns(value))
+    d.add(path, fmt::format("must be a whole number of nanoseconds (got {})", format_number(value)));
+}
+
+// A sensor delay: a whole number k of control periods (the sample is delivered k periods late),
+// k <= kMaxSensorDelayPeriods (the plant's delay line has that many slots).
+void check_sensor_delay(Diagnostics& d, const char* path, double value, double period_s,
+                        std::int64_t period_ns) {
+  if (!d.clean(path)) return;
+  const auto ns = whole_ns(value);
+  if (!ns || *ns % period_ns != 0 || *ns / period_ns > kMaxSensorDelayPeriods)
+    d.add(path, fmt::format("must be a whole multiple of control_period_s = {} in [0, {} periods] = "
+                            "[0, {}] (got {})", format_number(period_s), kMaxSensorDelayPeriods,
+                            format_number(kMaxSensorDelayPeriods * period_s), format_number(value)));
+}
+
+void check_timing(const model::Scenario& s, Diagnostics& d) {
+  if (!d.clean("control_period_s")) return;
+  const double period = s.control_period_s;
+  const auto period_ns = whole_ns(period);
+  if (!period_ns) {
+    d.add("control_period_s", fmt::format("must be a whole number of nanoseconds (got {})",
+                                          format_number(period)));
+    return;
+  }
+  if (d.clean("duration_s")) {
+    const auto duration_ns = whole_ns(s.duration_s);
+    if (!duration_ns || *duration_ns % *period_ns != 0)
+      d.add("duration_s", fmt::format("must be a positive multiple of control_period_s = {} (got {})",
+                                      format_number(period), format_number(s.duration_s)));
+  }
+  check_below_period(d, "thrusters.delay_max_s", s.thrusters.delay_max_s, period, false);
+  check_below_period(d, "thrusters.rise_time_s", s.thrusters.rise_time_s, period, true);
+  check_below_period(d, "thrusters.min_on_time_s", s.thrusters.min_on_time_s, period, true);
+  check_below_period(d, "thrusters.min_off_time_s", s.thrusters.min_off_time_s, period, true);
+  check_sensor_delay(d, "sensors.lidar.delay_s", s.sensors.lidar.delay_s, period, *period_ns);
+  check_sensor_delay(d, "sensors.star_tracker.delay_s", s.sensors.star_tracker.delay_s, period,
+                        *period_ns);
+  check_sensor_delay(d, "sensors.gyro.delay_s", s.sensors.gyro.delay_s, period, *period_ns);
+}
+
+// A rigid body's inertia is symmetric positive definite, and its principal moments satisfy
+// I1 + I2 >= I3 (each moment is an integral of squared distances, sum of two >= the third).
+void check_inertia(const Mat3& inertia, Diagnostics& d) {
+  const char* path = "chaser.inertia_kgm2";
+  if (!d.clean(path)) return;
+  const double scale = inertia.cwiseAbs().maxCoeff();
+  const double asymmetry = (inertia - inertia.transpose()).cwiseAbs().maxCoeff();
+  if (asymmetry > kInertiaRelativeTolerance * scale) {
+    d.add(path, fmt::format("must be symmetric (largest |I_ij - I_ji| is {})", format_number(asymmetry)));
+    return;
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia, Eigen::EigenvaluesOnly);
+  const Vec3 moments = eig.eigenvalues();  // ascending
+  const std::string listed = fmt::format("{:.6g}, {:.6g}, {:.6g}", moments(0), moments(1), moments(2));
+  if (!(moments(0) > 0.0)) {
+    d.add(path, fmt::format("must be positive definite (eigenvalues {})", listed));
+    return;
+  }
+  if (moments(2) > (moments(0) + moments(1)) * (1.0 + kInertiaRelativeTolerance))
+    d.add(path, fmt::format("principal moments {} violate the triangle inequality: the largest must "
+                            "be <= the sum of the other two", listed));
+}
+
+// Each branch alone must be able to produce any force and torque (Fonod 2015, section II.B: the
+// branches are redundant), i.e. the columns of its configuration matrix positively span R^6.
+void check_branches(const model::Scenario& s, Diagnostics& d) {
+  if (!d.clean("thrusters.list") || !d.clean("chaser.com_body_m")) return;
+  for (int branch = 0; branch < 2; ++branch) {
+    const model::ConfigMatrix m = model::configuration_matrix(s.thrusters, branch, s.chaser.com_body_m);
+    const model::PositiveSpanResult span = model::positive_span(m);
+    if (span.spans) continue;
+    const int first = model::branch_first(branch) + 1;
+    d.add("thrusters.list",
+          fmt::format("branch {} (T{}..T{}) cannot produce force and torque in every direction: no "
+                      "on-times >= 0 give a wrench along [{:.3f}] (force; torque about the centre of "
+                      "mass; M has rank {} of 6; positive-span tolerance {})",
+                      branch == 0 ? 'A' : 'B', first, first + model::kThrustersPerBranch - 1,
+                      fmt::join(span.blocked_direction, ", "), span.rank,
+                      format_number(model::kPositiveSpanTolerance)));
+  }
+}
+
+void check_faults(const model::Scenario& s, Diagnostics& d) {
+  if (!d.clean("duration_s")) return;
+  for (std::size_t i = 0; i < s.faults.size(); ++i) {
+    const std::string path = fmt::format("faults.{}.onset_s", i);
+    if (d.clean(path) && s.faults[i].onset_s > s.duration_s)
+      d.add(path, fmt::format("must be in [0, duration_s] = [0, {}] (got {})",
+                              format_number(s.duration_s), format_number(s.faults[i].onset_s)));
+  }
+}
+
+void check_guidance(const model::GuidanceParams& g, Diagnostics& d) {
+  if (!d.clean("guidance.start_distance_m")) return;
+  const std::string start = format_number(g.start_distance_m);
+  if (d.clean("guidance.capture_distance_m") && !(g.capture_distance_m < g.start_distance_m))
+    d.add("guidance.capture_distance_m", fmt::format("must be < guidance.start_distance_m = {} (got {})",
+                                                     start, format_number(g.capture_distance_m)));
+  if (d.clean("guidance.corridor_min_distance_m") && !(g.corridor_min_distance_m < g.start_distance_m))
+    d.add("guidance.corridor_min_distance_m",
+          fmt::format("must be < guidance.start_distance_m = {} (got {})", start,
+                      format_number(g.corridor_min_distance_m)));
+  if (d.clean("guidance.blend_time_s") && d.clean("guidance.approach_duration_s") &&
+      !(2.0 * g.blend_time_s <= g.approach_duration_s))
+    d.add("guidance.blend_time_s",
+          fmt::format("must be <= guidance.approach_duration_s / 2 = {} (got {})",
+                      format_number(g.approach_duration_s / 2.0), format_number(g.blend_time_s)));
+}
+
+}  // namespace
+
+void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
+  check_timing(s, diag);
+  check_inertia(s.chaser.inertia_kgm2, diag);
+  check_branches(s, diag);
+  check_faults(s, diag);
+  check_guidance(s.guidance, diag);
+}
+
+}  // namespace chaser::io
