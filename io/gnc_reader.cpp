@@ -26,10 +26,10 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
 // LQR weights (model/gnc.hpp, gnc_changes.md): state weights q >= 0, input weights r > 0 so that
 // the input cost is positive definite; modulation thresholds and the anti-windup clamp > 0.
 void read_control(MapReader& r, model::ControlParams& out) {
-  r.number("position_q_pos", Range::non_negative(), out.position_q_pos);
+  r.number("position_q_pos", Range::positive(), out.position_q_pos);
   r.number("position_q_vel", Range::non_negative(), out.position_q_vel);
   r.number("position_r_force", Range::positive(), out.position_r_force);
-  r.number("attitude_q_angle", Range::non_negative(), out.attitude_q_angle);
+  r.number("attitude_q_angle", Range::positive(), out.attitude_q_angle);
   r.number("attitude_q_rate", Range::non_negative(), out.attitude_q_rate);
   r.number("attitude_r_torque", Range::positive(), out.attitude_r_torque);
   r.number("tmu_force_threshold_Ns", Range::positive(), out.tmu_force_threshold_Ns);

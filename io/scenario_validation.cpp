@@ -20,9 +20,7 @@ constexpr double kWholeNsTolerance = 1e-3;  // [ns]
 // Inertia: asymmetry and the triangle inequality are judged relative to the largest entry, at a
 // level far above the rounding of a decimal file value and far below any physical asymmetry.
 constexpr double kInertiaRelativeTolerance = 1e-9;
-// Longest sensor delay in control periods: plant/sensors.hpp kMaxSensorDelayPeriods (io/ may not
-// include plant/, so the value is repeated here; see docs/scenario.md).
-constexpr int kMaxSensorDelayPeriods = 32;
+using model::kMaxSensorDelayPeriods;
 
 std::optional<std::int64_t> whole_ns(double seconds) {
   const double ns = seconds * 1e9;

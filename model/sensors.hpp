@@ -5,6 +5,10 @@
 
 namespace chaser::model {
 
+// Longest sensor delay in control periods: the plant's delay lines have this many slots and the
+// scenario loader rejects longer delays.
+inline constexpr int kMaxSensorDelayPeriods = 32;
+
 struct LidarParams {  // relative position of the chaser from the target, MSR LVLH axes
   double noise_sigma_m = 0.001;     // [m] per axis, 1-sigma
   Vec3 bias_m = Vec3::Zero();       // [m]

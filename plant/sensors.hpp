@@ -18,7 +18,7 @@
 
 namespace chaser::plant {
 
-inline constexpr int kMaxSensorDelayPeriods = 32;
+using model::kMaxSensorDelayPeriods;
 
 // The three named streams, constructed by the caller (see make_sensor_noise).
 struct SensorNoise {
