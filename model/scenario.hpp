@@ -23,8 +23,6 @@ struct InitialState {
   bool use_guidance_start = true;                // start on the approach axis, target-pointing, at rest
   Quat q_lvlh_from_body = Quat::Identity();      // used when use_guidance_start is false
   Vec3 omega_body_radps = Vec3::Zero();          // [rad/s] inertial rate, body axes
-  // Initial estimation errors handed to navigation.
-  Vec3 nav_position_error_m = Vec3::Zero();      // [m]
 };
 
 struct Scenario {
