@@ -1,0 +1,87 @@
+// Cost of one thruster allocation (Fonod 2015 sec. II.C) on the MSR branch-A geometry, over fixed
+// sets of 1000 pre-generated demands: typical control demands (|F_j| <= 1 N, |C_j| <= 1 N m, all
+// attainable), large unattainable ones (best effort), and a 90/10 mix of the two.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "core/random.hpp"
+#include "flight/thruster_allocation.hpp"
+#include "model/thruster_geometry.hpp"
+
+namespace chaser::flight {
+namespace {
+
+constexpr int kDemandCount = 1000;
+
+AllocationParams msr_allocation() {
+  const double p[4][3] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
+  const double d[4][3] = {
+      {0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
+  model::ThrusterSetParams set;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 pos(p[i][0], p[i][1], p[i][2]);
+    const Vec3 dir = Vec3(d[i][0], d[i][1], d[i][2]).normalized();
+    set.thrusters[i] = {pos, dir, 22.0};
+    set.thrusters[i + 4] = {-pos, -dir, 22.0};  // partner: same torque, opposite force
+  }
+  AllocationParams params;
+  params.config = model::configuration_matrix(set, 0, Vec3::Zero());
+  return params;
+}
+
+Vec6 small_demand(RandomStream& rng) {
+  Vec6 d;
+  for (int j = 0; j < 6; ++j) d[j] = rng.uniform(-1.0, 1.0);  // [N] then [N m]
+  return d;
+}
+
+// A random direction with a magnitude of 200 to 1000 (N and N m): beyond what the branch can
+// produce (at most ~50 N along an axis), so every call solves the best-effort problem.
+Vec6 large_demand(RandomStream& rng) {
+  Vec6 d;
+  for (int j = 0; j < 6; ++j) d[j] = rng.normal();
+  return d * (rng.uniform(200.0, 1000.0) / d.norm());
+}
+
+// kind 0: small, 1: large, 2: one large in ten.
+std::vector<Vec6> demands(int kind) {
+  RandomStream rng(1, "bench/allocation");
+  std::vector<Vec6> out;
+  for (int k = 0; k < kDemandCount; ++k) {
+    const bool large = kind == 1 || (kind == 2 && k % 10 == 9);
+    out.push_back(large ? large_demand(rng) : small_demand(rng));
+  }
+  return out;
+}
+
+void run(benchmark::State& state, int kind) {
+  const AllocationParams params = msr_allocation();
+  const std::vector<Vec6> set = demands(kind);
+  std::size_t k = 0;
+  long feasible = 0, pivots = 0;
+  for (auto _ : state) {
+    const AllocationResult result = allocate_thrusters(params, set[k]);
+    benchmark::DoNotOptimize(result);
+    feasible += result.feasible;
+    pivots += result.iterations;
+    k = k + 1 == set.size() ? 0 : k + 1;
+  }
+  const double calls = static_cast<double>(state.iterations());
+  state.counters["feasible_fraction"] = static_cast<double>(feasible) / calls;
+  state.counters["iterations_per_call"] = static_cast<double>(pivots) / calls;
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_AllocateSmallFeasible(benchmark::State& state) { run(state, 0); }
+void BM_AllocateLargeInfeasible(benchmark::State& state) { run(state, 1); }
+void BM_AllocateMixed(benchmark::State& state) { run(state, 2); }
+
+BENCHMARK(BM_AllocateSmallFeasible);
+BENCHMARK(BM_AllocateLargeInfeasible);
+BENCHMARK(BM_AllocateMixed);
+
+}  // namespace
+}  // namespace chaser::flight

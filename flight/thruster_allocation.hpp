@@ -1,0 +1,45 @@
+#pragma once
+// Thruster allocation of the thruster management function (TMF, Fonod 2015 sec. II.C).
+//
+// Given the wrench w_d = [F_d; C_d] that the controller and modulator ask the active branch to
+// realise on average over one control period, find the scaled on-times ton (0 <= ton_i <= 1,
+// eq. 2: [F; C] = M ton) that realise it with the least propellant:
+//
+//   min  sum_i ton_i   s.t.  M ton = w_d,  0 <= ton <= 1.                         (P)
+//
+// When w_d lies outside the attainable set {M ton : 0 <= ton <= 1}, (P) has no solution and the
+// allocator returns the weighted best effort, lexicographically:
+//
+//   E* = min  sum_j w_j |(M ton - w_d)_j|  over 0 <= ton <= 1,                    (E)
+//   then min sum_i ton_i among the ton attaining E*.
+//
+// Both are solved exactly (to floating-point pivoting accuracy) by a hand-written bounded-variable
+// primal simplex, deterministic and allocation-free; see thruster_allocation.cpp for the method.
+#include "core/types.hpp"
+#include "model/thrusters.hpp"
+
+namespace chaser::flight {
+
+struct AllocationParams {
+  // M [N; N m]: column i is the force and torque of thruster i open for a whole period (eq. 2).
+  model::ConfigMatrix config = model::ConfigMatrix::Zero();
+  Vec6 error_weights = Vec6::Ones();  // [1/N; 1/(N m)] w_j of the best-effort problem (E), all > 0
+};
+
+struct AllocationResult {
+  model::Ton8 ton = model::Ton8::Zero();  // [-] scaled on-times, 0 <= ton_i <= 1
+  bool feasible = false;                  // demand attainable: |M ton - demand| within tolerance
+  double propellant = 0.0;                // [-] sum of ton, the cost of (P), in full-period firings
+  Vec6 residual = Vec6::Zero();           // [N; N m] M ton - demand
+  double weighted_error = 0.0;            // [-] sum_j w_j |residual_j|, the value of (E)
+  int iterations = 0;                     // simplex iterations (pivots, bound flips), both phases
+  bool converged = false;  // false: iteration cap hit or non-finite/invalid input; ton is still
+                           // within [0, 1] but may not be optimal
+};
+
+// Solves (P), or (E) then least propellant when (P) is infeasible. Allocation-free, never throws,
+// bounded in time (iteration cap). Preconditions: finite config, error_weights > 0; otherwise the
+// result is ton = 0 with converged = false.
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench);
+
+}  // namespace chaser::flight

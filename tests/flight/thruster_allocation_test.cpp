@@ -1,0 +1,393 @@
+// Thruster allocation (Fonod 2015 sec. II.C) checked against COIN-OR CLP, an independent simplex
+// code, on the same linear programs: the equality LP (least propellant), and when that is
+// infeasible the weighted-L1 best effort followed by least propellant among its minimisers.
+#include "flight/thruster_allocation.hpp"
+
+#include <coin/ClpSimplex.hpp>
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "core/constants.hpp"
+#include "core/random.hpp"
+#include "model/thruster_geometry.hpp"
+
+namespace chaser::flight {
+namespace {
+
+constexpr int kN = model::kThrustersPerBranch;
+
+// Agreement with CLP. Both codes return a basic optimal solution and the optimal values are unique,
+// so they differ only by rounding (about 1e-15 relative for well-conditioned bases): 1e-9 relative
+// leaves six orders of margin and still catches any wrong vertex, whose values differ at O(1e-3).
+constexpr double kRelTol = 1e-9;
+// Propellant is a sum of non-negative on-times, so it has no cancellation and its relative accuracy
+// holds down to tiny demands; the floor covers optimal costs near zero, where an on-time that is
+// truly 0 can come out at rounding level (5e-17 seen): 1e-14 is ~50 ulp of one full on-time.
+constexpr double kPropellantFloor = 1e-14;
+// The weighted error sums |M ton - d| where M ton is formed from eight terms of size |M|: rounding
+// alone is ~8 eps |M| w per axis, so the floor is 1e-12 |M|_max w_max (1e3 times that).
+constexpr double kErrorFloorRel = 1e-12;
+
+// MSR branch A (layout of Fonod 2015 Fig. 3, values from the project brief), centre of mass at the
+// origin; column i = [22 d_i; p_i x 22 d_i] (eq. 2).
+model::ConfigMatrix msr_config() {
+  const double p[4][3] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
+  const double d[4][3] = {
+      {0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
+  model::ThrusterSetParams set;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 pos(p[i][0], p[i][1], p[i][2]);
+    const Vec3 dir = Vec3(d[i][0], d[i][1], d[i][2]).normalized();
+    set.thrusters[i] = {pos, dir, 22.0};
+    set.thrusters[i + 4] = {-pos, -dir, 22.0};  // partner: same torque, opposite force
+  }
+  return model::configuration_matrix(set, 0, Vec3::Zero());
+}
+
+// Eight thrusters at random positions in a 2 m box with random unit directions, redrawn until
+// M has rank 6 with a margin (smallest singular value above 1% of the largest).
+model::ConfigMatrix random_config(RandomStream& rng) {
+  for (;;) {
+    model::ThrusterSetParams set;
+    for (int i = 0; i < kN; ++i) {
+      const Vec3 pos(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      const Vec3 dir = Vec3(rng.normal(), rng.normal(), rng.normal()).normalized();
+      set.thrusters[i] = {pos, dir, 22.0};
+    }
+    const model::ConfigMatrix m = model::configuration_matrix(set, 0, Vec3::Zero());
+    const Eigen::JacobiSVD<model::ConfigMatrix> svd(m);
+    if (svd.singularValues()[5] > 0.01 * svd.singularValues()[0]) return m;
+  }
+}
+
+// Demands of three kinds so that both verdicts occur in numbers: kind 0, M t with t inside the unit
+// cube (attainable); kind 1, small control demands (|F_j| <= 1 N, |C_j| <= 1 N m); kinds 2 and 3,
+// random directions with a log-uniform magnitude from 1 to 3000 (mostly unattainable).
+Vec6 random_demand(RandomStream& rng, const model::ConfigMatrix& m, int kind) {
+  Vec6 d;
+  if (kind == 0) {
+    model::Ton8 t;
+    for (int i = 0; i < kN; ++i) t[i] = rng.uniform();
+    return m * t;
+  }
+  for (int j = 0; j < 6; ++j) d[j] = kind == 1 ? rng.uniform(-1, 1) : rng.normal();
+  if (kind >= 2) d *= std::exp(rng.uniform(0.0, std::log(3000.0))) / d.norm();
+  return d;
+}
+
+struct ClpOutcome {
+  bool optimal = false;
+  bool infeasible = false;
+  double objective = 0;
+};
+
+// min obj x s.t. row_lb <= A x <= row_ub, col_lb <= x <= col_ub by CLP's dual simplex, which ends
+// on a vertex meeting the rows, the error-budget row of stage 3 included (its primal simplex stops
+// at points overrunning that row by up to its tolerance). Stages 2 and 3 are feasible by
+// construction, so a tolerance at which CLP calls them infeasible is simply too tight for it.
+ClpOutcome solve_clp(const Eigen::MatrixXd& a, const std::vector<double>& col_lb,
+                     const std::vector<double>& col_ub, const std::vector<double>& obj,
+                     const std::vector<double>& row_lb, const std::vector<double>& row_ub,
+                     bool feasible_by_construction) {
+  std::vector<CoinBigIndex> start{0};
+  std::vector<int> index;
+  std::vector<double> value;
+  for (int c = 0; c < a.cols(); ++c) {
+    for (int r = 0; r < a.rows(); ++r)
+      if (a(r, c) != 0.0) index.push_back(r), value.push_back(a(r, c));
+    start.push_back(static_cast<CoinBigIndex>(index.size()));
+  }
+  // CLP's tolerances are absolute and it may leave a bound or row overrun by up to them. Near a
+  // vertex, propellant among the error minimisers can fall with the error budget at slopes up to
+  // ~1e6, so a 1e-10 overrun alone would break the 1e-9 comparison: use the tightest tolerance,
+  // relative to the largest right-hand side, at which CLP still proves a verdict.
+  double rhs_max = 1.0;
+  for (const double v : row_ub)
+    if (v < COIN_DBL_MAX) rhs_max = std::max(rhs_max, std::abs(v));
+  ClpOutcome out;
+  for (const double tol : {1e-13, 1e-12, 1e-11, 1e-10}) {
+    ClpSimplex model;
+    model.setLogLevel(0);
+    model.loadProblem(static_cast<int>(a.cols()), static_cast<int>(a.rows()), start.data(),
+                      index.data(), value.data(), col_lb.data(), col_ub.data(), obj.data(),
+                      row_lb.data(), row_ub.data());
+    model.setPrimalTolerance(tol * rhs_max);
+    model.setDualTolerance(tol);
+    model.scaling(0);  // tolerances then hold on the problem as stated, not on a scaled copy
+    model.dual();
+    out = {model.isProvenOptimal(), model.isProvenPrimalInfeasible(), model.objectiveValue()};
+    if (out.optimal || (out.infeasible && !feasible_by_construction)) break;
+  }
+  return out;
+}
+
+struct Reference {
+  bool feasible = false;
+  double propellant = 0;      // optimum of the equality LP, or of stage 3 when infeasible
+  double weighted_error = 0;  // optimum of the weighted-L1 LP (0 when feasible)
+  bool ok = false;            // CLP reached a proven verdict in every stage
+};
+
+Reference clp_reference(const model::ConfigMatrix& m, const Vec6& w, const Vec6& d) {
+  Reference ref;
+  const std::vector<double> rhs(d.data(), d.data() + 6);
+  const ClpOutcome eq = solve_clp(m, std::vector<double>(kN, 0.0), std::vector<double>(kN, 1.0),
+                                  std::vector<double>(kN, 1.0), rhs, rhs, false);
+  if (eq.optimal) {
+    ref.feasible = ref.ok = true;
+    ref.propellant = eq.objective;
+    return ref;
+  }
+  if (!eq.infeasible) return ref;
+  // Stage 2: M ton + e+ - e- = d, min w (e+ + e-).
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(7, kN + 12);
+  a.block(0, 0, 6, kN) = m;
+  a.block(0, kN, 6, 6) = Eigen::MatrixXd::Identity(6, 6);
+  a.block(0, kN + 6, 6, 6) = -Eigen::MatrixXd::Identity(6, 6);
+  std::vector<double> lb(kN + 12, 0.0), ub(kN + 12, COIN_DBL_MAX), obj(kN + 12, 0.0);
+  for (int i = 0; i < kN; ++i) ub[i] = 1.0;
+  for (int j = 0; j < 6; ++j) obj[kN + j] = obj[kN + 6 + j] = w[j];
+  const ClpOutcome err = solve_clp(a.topRows(6), lb, ub, obj, rhs, rhs, true);
+  if (!err.optimal) return ref;
+  ref.weighted_error = err.objective;
+  // Stage 3: the same rows plus w (e+ + e-) <= E*, min sum ton.
+  for (int j = 0; j < 6; ++j) a(6, kN + j) = a(6, kN + 6 + j) = w[j];
+  std::vector<double> row_lb = rhs, row_ub = rhs;
+  row_lb.push_back(-COIN_DBL_MAX);
+  row_ub.push_back(err.objective);
+  std::fill(obj.begin(), obj.end(), 0.0);
+  std::fill(obj.begin(), obj.begin() + kN, 1.0);
+  const ClpOutcome prop = solve_clp(a, lb, ub, obj, row_lb, row_ub, true);
+  ref.ok = prop.optimal;
+  ref.propellant = prop.objective;
+  return ref;
+}
+
+struct Tally {
+  int feasible = 0, infeasible = 0;
+  double worst_prop = 0, worst_error = 0;  // largest differences seen, relative to the tolerance
+  int max_iterations = 0;
+};
+
+// One demand: our result against CLP's, every property the brief lists.
+void check_against_clp(const AllocationParams& params, const Vec6& d, Tally& tally) {
+  const AllocationResult res = allocate_thrusters(params, d);
+  const Reference ref = clp_reference(params.config, params.error_weights, d);
+  ASSERT_TRUE(ref.ok) << "CLP gave no proven verdict for d = " << d.transpose();
+  ASSERT_TRUE(res.converged);
+  tally.max_iterations = std::max(tally.max_iterations, res.iterations);
+  for (int i = 0; i < kN; ++i) {
+    EXPECT_GE(res.ton[i], -1e-12);
+    EXPECT_LE(res.ton[i], 1.0 + 1e-12);
+  }
+  const double m_max = params.config.cwiseAbs().maxCoeff();
+  ASSERT_EQ(res.feasible, ref.feasible) << "d = " << d.transpose() << ", our weighted error "
+                                        << res.weighted_error;
+  const double prop_tol = kRelTol * std::abs(ref.propellant) + kPropellantFloor;
+  EXPECT_NEAR(res.propellant, ref.propellant, prop_tol) << "d = " << d.transpose();
+  tally.worst_prop =
+      std::max(tally.worst_prop, std::abs(res.propellant - ref.propellant) / prop_tol);
+  if (res.feasible) {
+    ++tally.feasible;
+    const double scale = std::max(m_max, d.cwiseAbs().maxCoeff());
+    EXPECT_LT(res.residual.cwiseAbs().maxCoeff(), 1e-9 * scale);
+    return;
+  }
+  ++tally.infeasible;
+  const double err_floor = kErrorFloorRel * m_max * params.error_weights.maxCoeff();
+  const double err_tol = kRelTol * std::abs(ref.weighted_error) + err_floor;
+  EXPECT_NEAR(res.weighted_error, ref.weighted_error, err_tol) << "d = " << d.transpose();
+  tally.worst_error =
+      std::max(tally.worst_error, std::abs(res.weighted_error - ref.weighted_error) / err_tol);
+}
+
+void report(const char* name, const Tally& t) {
+  std::printf("[%s] feasible %d, infeasible %d, worst |dprop|/tol %.2e, worst |derr|/tol %.2e, "
+              "max iterations %d\n",
+              name, t.feasible, t.infeasible, t.worst_prop, t.worst_error, t.max_iterations);
+}
+
+// 1200 demands on the MSR branch-A geometry, unit weights: same verdict and optimal values as CLP.
+TEST(ThrusterAllocation, MsrRandomDemandsMatchClp) {
+  RandomStream rng(2015, "test/allocation/msr");
+  AllocationParams params;
+  params.config = msr_config();
+  Tally tally;
+  for (int k = 0; k < 1200; ++k) {
+    check_against_clp(params, random_demand(rng, params.config, k % 4), tally);
+    if (HasFatalFailure()) return;
+  }
+  report("msr", tally);
+  EXPECT_GE(tally.feasible, 240);  // both verdicts are exercised in numbers (20% or more)
+  EXPECT_GE(tally.infeasible, 240);
+}
+
+// 60 random geometries x 20 demands, random weights in [0.2, 5]: the allocator is not tuned to
+// one layout or to unit weights.
+TEST(ThrusterAllocation, RandomGeometriesMatchClp) {
+  RandomStream rng(2015, "test/allocation/random");
+  Tally tally;
+  for (int g = 0; g < 60; ++g) {
+    AllocationParams params;
+    params.config = random_config(rng);
+    for (int j = 0; j < 6; ++j)
+      params.error_weights[j] = std::exp(rng.uniform(std::log(0.2), std::log(5.0)));
+    for (int k = 0; k < 20; ++k) {
+      check_against_clp(params, random_demand(rng, params.config, k % 4), tally);
+      if (HasFatalFailure()) return;
+    }
+  }
+  report("random geometries", tally);
+  EXPECT_GE(tally.feasible, 240);
+  EXPECT_GE(tally.infeasible, 240);
+}
+
+// Lexicographic best effort where the error minimisers are many: a planar layout (positions and
+// directions in the x-y plane) produces only F_x, F_y and C_z, so F_z, C_x and C_y of the demand
+// are missed whatever ton is, and every ton realising the other three axes minimises the error.
+// Among them the allocator must take the least propellant, which is the equality LP on those three
+// rows alone: an independent check of the second stage, which the random cases above rarely reach
+// because their error minimiser is almost always unique.
+TEST(ThrusterAllocation, PlanarLayoutBestEffortIsLeastPropellantOnReachableAxes) {
+  RandomStream rng(5, "test/allocation/planar");
+  Tally tally;
+  int many_minimisers = 0;
+  for (int g = 0; g < 20; ++g) {
+    model::ThrusterSetParams set;
+    for (int i = 0; i < kN; ++i) {
+      const double angle = rng.uniform(0.0, 2.0 * kPi);
+      set.thrusters[i] = {Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0),
+                          Vec3(std::cos(angle), std::sin(angle), 0.0), 22.0};
+    }
+    AllocationParams params;
+    params.config = model::configuration_matrix(set, 0, Vec3::Zero());
+    for (int j = 0; j < 6; ++j) params.error_weights[j] = rng.uniform(0.5, 2.0);
+    const int reachable[3] = {0, 1, 5};  // F_x, F_y, C_z
+    Eigen::Matrix<double, 3, kN> m3;
+    for (int r = 0; r < 3; ++r) m3.row(r) = params.config.row(reachable[r]);
+    for (int k = 0; k < 10; ++k) {
+      model::Ton8 t;
+      for (int i = 0; i < kN; ++i) t[i] = rng.uniform();
+      Vec6 d = params.config * t;  // reachable axes attainable...
+      for (const int j : {2, 3, 4}) d[j] = rng.uniform(-5, 5);  // ...the others not
+      const AllocationResult res = allocate_thrusters(params, d);
+      ASSERT_FALSE(res.feasible);
+      const double missed = params.error_weights[2] * std::abs(d[2]) +
+                            params.error_weights[3] * std::abs(d[3]) +
+                            params.error_weights[4] * std::abs(d[4]);
+      const double err_floor =
+          kErrorFloorRel * params.config.cwiseAbs().maxCoeff() * params.error_weights.maxCoeff();
+      EXPECT_NEAR(res.weighted_error, missed, err_floor);  // the reachable axes are met exactly
+      const std::vector<double> rhs = {d[0], d[1], d[5]};
+      const std::vector<double> zeros(kN, 0.0), ones(kN, 1.0);
+      const ClpOutcome eq = solve_clp(m3, zeros, ones, ones, rhs, rhs, true);
+      ASSERT_TRUE(eq.optimal);
+      EXPECT_NEAR(res.propellant, eq.objective, kRelTol * eq.objective + kPropellantFloor);
+      many_minimisers += eq.objective < t.sum() - 1e-6;  // t minimises the error, at more cost
+      check_against_clp(params, d, tally);
+    }
+  }
+  report("planar", tally);
+  EXPECT_GE(many_minimisers, 150);  // the second stage mattered in most cases
+}
+
+// Zero demand: ton = 0 is the only zero-propellant point and it is exact.
+TEST(ThrusterAllocation, ZeroDemandNeedsNoFiring) {
+  AllocationParams params;
+  params.config = msr_config();
+  const AllocationResult res = allocate_thrusters(params, Vec6::Zero());
+  EXPECT_TRUE(res.feasible);
+  EXPECT_TRUE(res.converged);
+  EXPECT_EQ(res.propellant, 0.0);
+  EXPECT_TRUE((res.ton.array() == 0.0).all());
+  EXPECT_TRUE((res.residual.array() == 0.0).all());
+}
+
+// A demand on the boundary of the attainable set: d = M t* with t* maximising c' M t over the cube,
+// i.e. t*_i = 1 where c' M_i > 0 and 0 elsewhere. Every t with M t = d attains that maximum, so t*
+// is the only solution: the allocator must find it, with its ton_i at 1 (to 1e-10). Pushing d out
+// by 1e-6 relative makes it unattainable, and the best effort then misses by about 1e-6 |d|.
+TEST(ThrusterAllocation, BoundaryDemandNeedsFullOnTimes) {
+  RandomStream rng(7, "test/allocation/boundary");
+  AllocationParams params;
+  params.config = msr_config();
+  Tally tally;
+  for (int k = 0; k < 50; ++k) {
+    Vec6 c;
+    for (int j = 0; j < 6; ++j) c[j] = rng.normal();
+    model::Ton8 t_star;
+    for (int i = 0; i < kN; ++i) t_star[i] = c.dot(params.config.col(i)) > 0.0 ? 1.0 : 0.0;
+    const Vec6 d = params.config * t_star;
+    const AllocationResult res = allocate_thrusters(params, d);
+    EXPECT_TRUE(res.feasible);
+    EXPECT_LT((res.ton - t_star).cwiseAbs().maxCoeff(), 1e-10);
+    check_against_clp(params, d, tally);
+    const AllocationResult out = allocate_thrusters(params, d * (1.0 + 1e-6));
+    EXPECT_FALSE(out.feasible);
+    EXPECT_LT(out.weighted_error, 1e-5 * d.cwiseAbs().sum());  // the miss is of order 1e-6 |d|
+    check_against_clp(params, d * (1.0 + 1e-6), tally);
+  }
+  report("boundary", tally);
+}
+
+// Degenerate demands along one column: s M_i is attainable with ton = s e_i, so the optimum costs
+// at most s, and it matches CLP whichever (possibly cheaper) combination is optimal.
+TEST(ThrusterAllocation, SingleColumnDemands) {
+  AllocationParams params;
+  params.config = msr_config();
+  Tally tally;
+  for (int i = 0; i < kN; ++i) {
+    for (const double s : {1e-6, 0.3, 1.0}) {
+      const Vec6 d = s * params.config.col(i);
+      const AllocationResult res = allocate_thrusters(params, d);
+      EXPECT_TRUE(res.feasible);
+      EXPECT_LE(res.propellant, s * (1.0 + 1e-12));
+      check_against_clp(params, d, tally);
+    }
+  }
+  report("single column", tally);
+}
+
+// Same input twice gives bit-identical output: no hidden state, no uninitialised memory.
+TEST(ThrusterAllocation, Deterministic) {
+  RandomStream rng(11, "test/allocation/determinism");
+  AllocationParams params;
+  params.config = msr_config();
+  for (int k = 0; k < 300; ++k) {
+    const Vec6 d = random_demand(rng, params.config, k % 4);
+    const AllocationResult a = allocate_thrusters(params, d);
+    const AllocationResult b = allocate_thrusters(params, d);
+    EXPECT_EQ(std::memcmp(a.ton.data(), b.ton.data(), sizeof(double) * kN), 0);
+    EXPECT_EQ(std::memcmp(a.residual.data(), b.residual.data(), sizeof(double) * 6), 0);
+    EXPECT_EQ(std::memcmp(&a.propellant, &b.propellant, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&a.weighted_error, &b.weighted_error, sizeof(double)), 0);
+    EXPECT_EQ(a.feasible, b.feasible);
+    EXPECT_EQ(a.iterations, b.iterations);
+  }
+}
+
+// Invalid input never hangs or throws: it returns ton = 0 and says it did not converge.
+TEST(ThrusterAllocation, InvalidInputIsFlagged) {
+  AllocationParams params;
+  params.config = msr_config();
+  Vec6 d = Vec6::Constant(0.1);
+  d[2] = std::numeric_limits<double>::quiet_NaN();
+  const AllocationResult nan_demand = allocate_thrusters(params, d);
+  EXPECT_FALSE(nan_demand.converged);
+  EXPECT_FALSE(nan_demand.feasible);
+  EXPECT_TRUE((nan_demand.ton.array() == 0.0).all());
+  params.error_weights[4] = 0.0;
+  const AllocationResult zero_weight = allocate_thrusters(params, Vec6::Constant(0.1));
+  EXPECT_FALSE(zero_weight.converged);
+  EXPECT_TRUE((zero_weight.ton.array() == 0.0).all());
+}
+
+}  // namespace
+}  // namespace chaser::flight
