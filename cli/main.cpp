@@ -1,0 +1,35 @@
+// chaser: the command-line entry point. Parses arguments and dispatches to a subcommand.
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "sim/summary.hpp"
+
+int main(int argc, char** argv) {
+  using namespace chaser::cli;
+  CLI::App app{"Chaser: thruster FDIR design and verification for rendezvous, docking and capture"};
+  app.set_version_flag("--version", std::string("chaser ") + chaser::sim::kChaserVersion);
+  app.require_subcommand(1);
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Fly one closed-loop run; writes telemetry.csv and summary.json");
+  run_cmd->add_option("scenario", run.scenario_path, "Scenario file (YAML)")->required();
+  run_cmd->add_option("--out", run.out_dir, "Output directory")->capture_default_str();
+  run_cmd->add_option("--seed", run.seed, "Run seed (replaces the scenario's seed)");
+  run_cmd->add_option("--set", run.overrides, "Override a scenario key: key.path=value (repeatable)");
+
+  std::string validate_path;
+  std::vector<std::string> validate_overrides;
+  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a scenario without running it");
+  validate_cmd->add_option("scenario", validate_path, "Scenario file (YAML)")->required();
+  validate_cmd->add_option("--set", validate_overrides, "Override a scenario key: key.path=value (repeatable)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  if (*run_cmd) return run_command(run);
+  if (*validate_cmd) return validate_command(validate_path, validate_overrides);
+  return kExitBadInput;
+}

@@ -1,0 +1,50 @@
+#include "flight/flight_software.hpp"
+
+#include "core/rotation.hpp"
+
+namespace chaser::flight {
+
+FlightParams make_flight_params(const model::Scenario& scenario) {
+  return FlightParams{
+      .mean_motion_radps = scenario.orbit.mean_motion_radps(),
+      .guidance = scenario.guidance,
+      .navigation = make_nav_params(scenario),
+      .position = make_position_control(scenario),
+      .attitude = make_attitude_control(scenario),
+      .tmu = make_tmu_params(scenario),
+      .management = make_thruster_management(scenario),
+  };
+}
+
+FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas) {
+  FlightOutput out;
+  if (!state.initialised) {
+    state.navigation = init_nav(params.navigation, meas);
+    state.initialised = true;
+  }
+  const double t_s = to_seconds(meas.t);
+  out.estimate = step_nav(params.navigation, state.navigation, meas, state.force_cmd_lvlh_N_prev);
+  out.reference = guidance_reference(params.guidance, params.mean_motion_radps, t_s);
+  out.force_demand_lvlh_N = position_control(params.position, out.estimate, out.reference);
+  out.torque_demand_body_Nm = attitude_control(params.attitude, out.estimate, out.reference);
+
+  // The force is wanted in LVLH; the thrusters are fixed in the body: rotate with the estimate.
+  const Quat q_inertial_from_lvlh_now = q_inertial_from_lvlh(params.mean_motion_radps, t_s);
+  const Quat q_body_from_lvlh = out.estimate.q_inertial_from_body.conjugate() * q_inertial_from_lvlh_now;
+  Vec6 demand_wrench;
+  demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
+
+  out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
+  const ThrusterManagementOutput managed =
+      manage_thrusters(params.management, state.active_branch, out.released_wrench);
+  tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
+
+  out.command = managed.command;
+  out.ton_active = managed.ton_active;
+  out.commanded_wrench = managed.commanded_wrench;
+  out.allocation_feasible = managed.feasible;
+  state.force_cmd_lvlh_N_prev = q_body_from_lvlh.conjugate() * managed.commanded_wrench.head<3>();
+  return out;
+}
+
+}  // namespace chaser::flight

@@ -1,0 +1,52 @@
+#pragma once
+// The on-board software of one control period, in order (DESIGN.md, "One control period"):
+// navigation -> guidance -> position and attitude control -> TMU -> TMF. It sees only sensor
+// measurements and its own commands, never the truth.
+#include "core/time.hpp"
+#include "flight/attitude_control.hpp"
+#include "flight/guidance.hpp"
+#include "flight/modulation.hpp"
+#include "flight/navigation.hpp"
+#include "flight/position_control.hpp"
+#include "flight/thruster_management.hpp"
+#include "model/messages.hpp"
+#include "model/scenario.hpp"
+
+namespace chaser::flight {
+
+struct FlightParams {
+  double mean_motion_radps = 0;  // [rad/s] n of the target orbit
+  model::GuidanceParams guidance;
+  NavParams navigation;
+  PositionControlParams position;
+  AttitudeControlParams attitude;
+  TmuParams tmu;
+  ThrusterManagementParams management;
+};
+
+FlightParams make_flight_params(const model::Scenario& scenario);
+
+struct FlightState {
+  NavState navigation;
+  TmuState tmu;
+  Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
+  int active_branch = 0;                      // 0 = A, 1 = B
+  bool initialised = false;
+};
+
+// Everything one period computed, for telemetry and for the plant (command).
+struct FlightOutput {
+  model::ThrusterCommand command;
+  NavEstimate estimate;
+  GuidanceRef reference;
+  Vec3 force_demand_lvlh_N = Vec3::Zero();   // [N] position controller output
+  Vec3 torque_demand_body_Nm = Vec3::Zero(); // [N m] attitude controller output
+  Vec6 released_wrench = Vec6::Zero();       // [N; N m] TMU output, body axes
+  Vec6 commanded_wrench = Vec6::Zero();      // [N; N m] M ton, body axes
+  model::Ton8 ton_active = model::Ton8::Zero();
+  bool allocation_feasible = true;
+};
+
+FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas);
+
+}  // namespace chaser::flight

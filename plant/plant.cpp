@@ -1,0 +1,76 @@
+#include "plant/plant.hpp"
+
+namespace chaser::plant {
+
+PlantStreams::PlantStreams(std::uint64_t seed)
+    : delay(seed, "thrusters/delay"),
+      force_noise(seed, "environment/force"),
+      torque_noise(seed, "environment/torque"),
+      sensors(make_sensor_noise(seed)) {}
+
+Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed) {
+  const TimeNs period_ns = from_seconds(scenario.control_period_s);
+  RandomStream dispersion(seed, "thrusters/dispersion");
+  PlantParams params{
+      .dynamics = make_dynamics_params(scenario),
+      .thrusters = make_thruster_hardware(scenario.thrusters, scenario.chaser.com_body_m, scenario.chaser.isp_s,
+                                          period_ns, dispersion),
+      .faults = scenario.faults,
+      .sensors = scenario.sensors,
+      .environment = scenario.environment,
+      .period_ns = period_ns,
+      .delay_max_ns = from_seconds(scenario.thrusters.delay_max_s),
+  };
+  PlantState state{
+      .rigid = initial,
+      .thrusters = ThrusterState{},
+      .sensors = make_sensor_state(scenario.sensors, period_ns),
+      .streams = PlantStreams(seed),
+      .last_profile = ThrustProfile{},
+  };
+  return Plant{std::move(params), std::move(state)};
+}
+
+model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t) {
+  return sample_sensors(params.sensors, state.sensors, t, state.rigid.r_lvlh_m, state.rigid.q_inertial_from_body,
+                        state.rigid.omega_body_radps, state.streams.sensors);
+}
+
+namespace {
+
+Vec3 draw_vector(RandomStream& stream, double sigma) {
+  if (sigma == 0.0) return Vec3::Zero();
+  const double x = stream.normal(), y = stream.normal(), z = stream.normal();
+  return sigma * Vec3(x, y, z);
+}
+
+}  // namespace
+
+void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
+  // tau(k): one delay for all thrusters, redrawn each period (Fonod 2015, eq. 1 and below).
+  state.last_delay_ns = static_cast<TimeNs>(state.streams.delay.uniform() * static_cast<double>(params.delay_max_ns));
+  schedule_period(params.thrusters, params.faults, state.thrusters, command, t_k, state.last_delay_ns,
+                  state.last_profile);
+
+  // Disturbances: bias plus white noise held over the period.
+  const auto& env = params.environment;
+  const Vec3 force_dist_lvlh_N = env.force_bias_lvlh_N + draw_vector(state.streams.force_noise, env.force_noise_sigma_N);
+  const Vec3 torque_dist_body_Nm =
+      env.torque_bias_body_Nm + draw_vector(state.streams.torque_noise, env.torque_noise_sigma_Nm);
+
+  const ThrustProfile& profile = state.last_profile;
+  for (int i = 0; i < profile.count; ++i) {
+    const ThrustPiece& piece = profile.pieces[i];
+    const PieceInput input{
+        .force_body_N = piece.force_body_N,
+        .torque_body_Nm = piece.torque_body_Nm + torque_dist_body_Nm,
+        .force_lvlh_N = force_dist_lvlh_N,
+        .mass_flow_kgps = piece.mass_flow_kgps,
+    };
+    propagate_piece(params.dynamics, state.rigid, to_seconds(piece.t_begin_ns),
+                    to_seconds(piece.t_end_ns - piece.t_begin_ns), input);
+  }
+  state.propellant_used_kg += profile.propellant_kg;
+}
+
+}  // namespace chaser::plant

@@ -1,0 +1,59 @@
+#include "sim/mission_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/rotation.hpp"
+
+namespace chaser::sim {
+
+namespace {
+
+double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+bool finite(const MonitorSample& s) {
+  return s.r_lvlh_m.allFinite() && s.v_lvlh_mps.allFinite() && s.q_inertial_from_body.coeffs().allFinite();
+}
+
+}  // namespace
+
+bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
+  if (!finite(s) || s.r_lvlh_m.norm() > kDivergedDistance_m) {
+    f.diverged = true;
+    f.diverged_at_s = s.t_s;
+    return false;
+  }
+  const auto& g = scenario.guidance;
+  const double range_m = s.r_lvlh_m.norm();
+  if (range_m > g.corridor_min_distance_m) {
+    const double corridor_angle = angle_between(s.r_lvlh_m, g.approach_axis_lvlh);
+    f.max_corridor_angle_rad = std::max(f.max_corridor_angle_rad, corridor_angle);
+    if (corridor_angle > g.corridor_half_angle_rad) {
+      if (f.corridor_violation_periods == 0) f.first_corridor_violation_s = s.t_s;
+      ++f.corridor_violation_periods;
+    }
+  }
+  // Line of sight from the chaser to the target, in body axes, against the boresight +x.
+  const Vec3 los_body = s.q_inertial_from_body.conjugate() * (s.q_inertial_from_lvlh * (-s.r_lvlh_m));
+  const double los_angle = angle_between(los_body, Vec3::UnitX());
+  f.max_line_of_sight_angle_rad = std::max(f.max_line_of_sight_angle_rad, los_angle);
+  if (los_angle > scenario.sensors.lidar.fov_half_angle_rad) ++f.out_of_view_periods;
+
+  const double attitude_error = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
+  f.max_attitude_error_rad = std::max(f.max_attitude_error_rad, attitude_error);
+  f.max_position_error_m = std::max(f.max_position_error_m, (s.r_lvlh_m - s.r_ref_lvlh_m).norm());
+  return true;
+}
+
+void monitor_final(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
+  const auto& g = scenario.guidance;
+  const Vec3 capture_point_lvlh_m = g.capture_distance_m * g.approach_axis_lvlh;
+  f.final_position_error_m = (s.r_lvlh_m - capture_point_lvlh_m).norm();
+  f.final_speed_mps = s.v_lvlh_mps.norm();
+  f.final_attitude_error_rad = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
+  f.capture_achieved = !f.diverged && f.final_position_error_m <= g.capture_position_tol_m &&
+                       f.final_speed_mps <= g.capture_speed_tol_mps &&
+                       f.final_attitude_error_rad <= g.capture_attitude_tol_rad;
+}
+
+}  // namespace chaser::sim

@@ -1,0 +1,44 @@
+#pragma once
+// The run's figures of merit, judged on the truth: corridor, target in view, attitude error against
+// the guidance reference, and capture at the end of the run.
+#include "core/types.hpp"
+#include "model/scenario.hpp"
+
+namespace chaser::sim {
+
+struct MissionFigures {
+  int corridor_violation_periods = 0;      // periods with the chaser outside the approach cone
+  double first_corridor_violation_s = -1;  // [s] -1 when the corridor was kept
+  double max_corridor_angle_rad = 0;       // [rad] largest angle from the approach axis (outside min range)
+  int out_of_view_periods = 0;             // periods with the target outside the LIDAR field of view
+  double max_line_of_sight_angle_rad = 0;  // [rad] largest angle between body +x and the target
+  double max_attitude_error_rad = 0;       // [rad] against the target-pointing reference
+  double max_position_error_m = 0;         // [m] against the guidance reference
+  double final_position_error_m = 0;       // [m] from the capture point at the end
+  double final_speed_mps = 0;              // [m/s] relative speed at the end
+  double final_attitude_error_rad = 0;     // [rad] at the end
+  bool capture_achieved = false;
+  bool diverged = false;                   // a state became non-finite or left the bounds
+  double diverged_at_s = -1;               // [s]
+};
+
+// Truth and reference at one period start, as the monitor needs them.
+struct MonitorSample {
+  double t_s;
+  Vec3 r_lvlh_m, v_lvlh_mps;
+  Quat q_inertial_from_body;
+  Vec3 r_ref_lvlh_m, v_ref_lvlh_mps;
+  Quat q_ref_inertial_from_body;
+  Quat q_inertial_from_lvlh;
+};
+
+// Divergence bound: far outside anything a 20 m approach can reach under control.
+inline constexpr double kDivergedDistance_m = 1e4;
+
+// Updates the running figures; returns false when the run has diverged and must stop.
+bool monitor_period(const model::Scenario& scenario, const MonitorSample& sample, MissionFigures& figures);
+
+// Final-state figures and the capture verdict.
+void monitor_final(const model::Scenario& scenario, const MonitorSample& sample, MissionFigures& figures);
+
+}  // namespace chaser::sim

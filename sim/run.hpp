@@ -1,0 +1,27 @@
+#pragma once
+// One closed-loop run: the fixed-order schedule of plant and flight blocks, period after period.
+#include <cstdint>
+#include <string>
+
+#include "model/scenario.hpp"
+#include "sim/mission_monitor.hpp"
+
+namespace chaser::sim {
+
+struct RunOptions {
+  std::string telemetry_path;  // empty: no telemetry (campaigns, benchmarks)
+};
+
+struct RunResult {
+  MissionFigures figures;
+  double propellant_used_kg = 0;  // [kg]
+  double simulated_s = 0;         // [s] simulated time actually flown (less than duration if diverged)
+  double wall_s = 0;              // [s] wall-clock time of the run loop
+  std::int64_t periods = 0;
+  std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
+  bool telemetry_ok = true;
+};
+
+RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options = {});
+
+}  // namespace chaser::sim

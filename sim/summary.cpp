@@ -1,0 +1,89 @@
+#include "sim/summary.hpp"
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+
+namespace chaser::sim {
+
+namespace {
+
+constexpr double kRadToDeg = 1.0 / kDegToRad;
+
+nlohmann::json faults_json(const model::Scenario& scenario) {
+  nlohmann::json faults = nlohmann::json::array();
+  for (const auto& f : scenario.faults) {
+    nlohmann::json j{{"thruster", fmt::format("T{}", f.thruster + 1)},
+                     {"kind", std::string(model::to_string(f.kind))},
+                     {"onset_s", f.onset_s}};
+    if (f.kind == model::FaultKind::kLeak) j["leak_size"] = f.leak_size, j["leak_slope_per_s"] = f.leak_slope_per_s;
+    if (f.kind == model::FaultKind::kLoss) j["loss_size"] = f.loss_size;
+    faults.push_back(j);
+  }
+  return faults;
+}
+
+}  // namespace
+
+nlohmann::json run_summary(const model::Scenario& scenario, const std::string& scenario_hash, const RunResult& r) {
+  const MissionFigures& f = r.figures;
+  return nlohmann::json{
+      {"chaser_version", kChaserVersion},
+      {"scenario", scenario.name},
+      {"scenario_hash", scenario_hash},
+      {"seed", scenario.seed},
+      {"faults", faults_json(scenario)},
+      {"duration_s", scenario.duration_s},
+      {"control_period_s", scenario.control_period_s},
+      {"approach_axis_lvlh", {scenario.guidance.approach_axis_lvlh.x(), scenario.guidance.approach_axis_lvlh.y(),
+                              scenario.guidance.approach_axis_lvlh.z()}},
+      {"corridor_half_angle_deg", scenario.guidance.corridor_half_angle_rad * kRadToDeg},
+      {"capture_distance_m", scenario.guidance.capture_distance_m},
+      {"simulated_s", r.simulated_s},
+      {"wall_s", r.wall_s},
+      {"simulated_s_per_wall_s", r.wall_s > 0 ? r.simulated_s / r.wall_s : 0.0},
+      {"capture_achieved", f.capture_achieved},
+      {"diverged", f.diverged},
+      {"diverged_at_s", f.diverged_at_s},
+      {"final_position_error_m", f.final_position_error_m},
+      {"final_speed_mps", f.final_speed_mps},
+      {"final_attitude_error_deg", f.final_attitude_error_rad * kRadToDeg},
+      {"corridor_kept", f.corridor_violation_periods == 0},
+      {"corridor_violation_s", f.corridor_violation_periods * scenario.control_period_s},
+      {"first_corridor_violation_s", f.first_corridor_violation_s},
+      {"max_corridor_angle_deg", f.max_corridor_angle_rad * kRadToDeg},
+      {"target_out_of_view_s", f.out_of_view_periods * scenario.control_period_s},
+      {"max_line_of_sight_angle_deg", f.max_line_of_sight_angle_rad * kRadToDeg},
+      {"max_attitude_error_deg", f.max_attitude_error_rad * kRadToDeg},
+      {"max_position_error_m", f.max_position_error_m},
+      {"propellant_used_kg", r.propellant_used_kg},
+      {"infeasible_allocation_periods", r.infeasible_allocations},
+  };
+}
+
+std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
+  const MissionFigures& f = r.figures;
+  std::string faults = scenario.faults.empty() ? "none" : "";
+  for (const auto& fault : scenario.faults)
+    faults += fmt::format("{}T{} {} at {:.0f} s", faults.empty() ? "" : ", ", fault.thruster + 1,
+                          model::to_string(fault.kind), fault.onset_s);
+  std::string out = fmt::format("{}: seed {}, fault: {}\n", scenario.name, scenario.seed, faults);
+  out += fmt::format("  flown {:.1f} s of {:.1f} s in {:.3f} s wall ({:.0f} x real time){}\n", r.simulated_s,
+                     scenario.duration_s, r.wall_s, r.wall_s > 0 ? r.simulated_s / r.wall_s : 0.0,
+                     f.diverged ? fmt::format(", DIVERGED at {:.1f} s", f.diverged_at_s) : "");
+  out += fmt::format("  capture: {}  (final position error {:.3f} m, speed {:.4f} m/s, attitude {:.2f} deg)\n",
+                     f.capture_achieved ? "ACHIEVED" : "NOT achieved", f.final_position_error_m, f.final_speed_mps,
+                     f.final_attitude_error_rad * kRadToDeg);
+  out += f.corridor_violation_periods == 0
+             ? fmt::format("  corridor: kept (max {:.2f} deg from the axis)\n", f.max_corridor_angle_rad * kRadToDeg)
+             : fmt::format("  corridor: VIOLATED for {:.1f} s from {:.1f} s (max {:.1f} deg)\n",
+                           f.corridor_violation_periods * scenario.control_period_s, f.first_corridor_violation_s,
+                           f.max_corridor_angle_rad * kRadToDeg);
+  out += fmt::format("  target out of view: {:.1f} s; max attitude error {:.2f} deg; max position error {:.3f} m\n",
+                     f.out_of_view_periods * scenario.control_period_s, f.max_attitude_error_rad * kRadToDeg,
+                     f.max_position_error_m);
+  out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
+  return out;
+}
+
+}  // namespace chaser::sim

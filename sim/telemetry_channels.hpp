@@ -1,0 +1,21 @@
+#pragma once
+// The channels of telemetry.csv and how one row is filled from a period's truth and flight output.
+#include <string>
+#include <vector>
+
+#include "flight/flight_software.hpp"
+#include "plant/plant.hpp"
+#include "sim/telemetry.hpp"
+
+namespace chaser::sim {
+
+std::vector<std::string> telemetry_channels();
+
+// One row for period k: the truth at its start (truth_at_start), the flight output computed from
+// the measurements at its start, and what the plant realised over it (plant_after: profile, delay,
+// propellant at the period end). Thruster columns follow the active branch's eight thrusters.
+void record_period(TelemetryWriter& writer, double t_s, const plant::RigidState& truth_at_start,
+                   const plant::PlantState& plant_after, const flight::FlightOutput& flight, int active_branch,
+                   const Vec3& attitude_error_body_rad);
+
+}  // namespace chaser::sim

@@ -1,0 +1,85 @@
+// The `chaser` command as a user meets it: exit codes, messages, files written.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct CommandResult {
+  int exit_code;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult run_chaser(const std::string& args) {
+  const std::string command = std::string(CHASER_BINARY) + " " + args + " 2>&1";
+  CommandResult result{-1, ""};
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+TEST(Cli, ValidateAcceptsTheShippedScenario) {
+  const CommandResult r = run_chaser("validate scenarios/msr_terminal.yaml");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("valid"), std::string::npos);
+}
+
+// Bad input exits with code 2 and names every offending key.
+TEST(Cli, ValidateReportsEveryProblemWithExitCode2) {
+  const CommandResult r = run_chaser(
+      "validate scenarios/msr_terminal.yaml --set chaser.mass_kg=-5 --set control_period_s=0 "
+      "--set 'faults=[{thruster: T17, kind: stuck_open, onset_s: 10}]'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("chaser.mass_kg"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("control_period_s"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("T17"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
+  EXPECT_EQ(run_chaser("validate no/such/file.yaml").exit_code, 2);
+  EXPECT_EQ(run_chaser("run").exit_code, 2);
+  EXPECT_EQ(run_chaser("fly scenarios/msr_terminal.yaml").exit_code, 2);
+  EXPECT_EQ(run_chaser("run scenarios/msr_terminal.yaml --seed notanumber").exit_code, 2);
+}
+
+// A short run writes telemetry.csv (a header plus one row per period) and summary.json.
+TEST(Cli, RunWritesTelemetryAndSummary) {
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_test";
+  std::filesystem::remove_all(dir);
+  const CommandResult r =
+      run_chaser("run scenarios/msr_terminal.yaml --set duration_s=20 --seed 7 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream telemetry(dir / "telemetry.csv");
+  std::string line;
+  int lines = 0;
+  std::string header;
+  while (std::getline(telemetry, line)) {
+    if (lines == 0) header = line;
+    ++lines;
+  }
+  EXPECT_EQ(lines, 1 + 200);  // 20 s at T = 0.1 s
+  for (const char* channel : {"t_s", "r_lvlh_x_m", "v_lvlh_z_mps", "q_inertial_from_body_w", "omega_body_y_radps",
+                              "r_est_lvlh_x_m", "force_demand_lvlh_x_N", "torque_demand_body_z_Nm", "ton_cmd_1",
+                              "ton_cmd_8", "ton_real_8", "propellant_used_kg"})
+    EXPECT_NE(header.find(channel), std::string::npos) << channel;
+  std::ifstream summary_file(dir / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  EXPECT_EQ(summary["seed"], 7);
+  EXPECT_EQ(summary["scenario_hash"].get<std::string>().size(), 16u);
+  for (const char* key : {"chaser_version", "final_position_error_m", "corridor_kept", "capture_achieved",
+                          "propellant_used_kg", "max_attitude_error_deg", "wall_s"})
+    EXPECT_TRUE(summary.contains(key)) << key;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
