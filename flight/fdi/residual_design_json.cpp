@@ -1,0 +1,93 @@
+#include "flight/fdi/residual_design_json.hpp"
+
+namespace chaser::flight::fdi {
+
+using nlohmann::json;
+
+namespace {
+
+json matrix_json(const Eigen::MatrixXd& m) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(m(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+json vector_json(const Eigen::VectorXd& v) {
+  return json(std::vector<double>(v.data(), v.data() + v.size()));
+}
+
+const char* low_rank_name(LowRankMethod m) {
+  return m == LowRankMethod::kTruncateSeenPart ? "truncate_seen_part" : "truncate_whole";
+}
+
+const char* weighting_name(WeightingChoice w) {
+  return w == WeightingChoice::kMaxWeakestDcGain ? "max_weakest_dc_gain" : "svd_order";
+}
+
+json inputs_json(const DesignInputs& in) {
+  return {{"name", in.name},
+          {"residual_unit", in.residual_unit},
+          {"period_s", in.period_s},
+          {"delta_min_s", in.delta_min_s},
+          {"delta_max_s", in.delta_max_s},
+          {"taylor_order", in.taylor_order},
+          {"residual_dim", in.residual_dim},
+          {"eigenvalues", in.eigenvalues},
+          {"use_cayley_hamilton", in.use_cayley_hamilton},
+          {"use_taylor", in.use_taylor},
+          {"low_rank", low_rank_name(in.low_rank)},
+          {"weighting", weighting_name(in.weighting)},
+          {"A", matrix_json(in.A)},
+          {"B", matrix_json(in.B)},
+          {"E_f", matrix_json(in.E_f)}};
+}
+
+json figures_json(const DesignFigures& f, const EigenstructureAssignment& a) {
+  json eig = json::array();
+  for (const auto& z : f.achieved_eigenvalues) eig.push_back({z.real(), z.imag()});
+  return {{"achieved_eigenvalues", eig},
+          {"assignability_error", a.relative_miss},
+          {"p_condition", a.p_condition},
+          {"frequency_hz", f.frequency_hz},
+          {"unknown_input_gain", vector_json(f.unknown_input_gain)},
+          {"unknown_input_gain_max", f.unknown_input_gain_max},
+          {"designed_input_gain", vector_json(f.designed_input_gain)},
+          {"designed_input_gain_max", f.designed_input_gain_max},
+          {"delay_gain", vector_json(f.delay_gain)},
+          {"delay_gain_max", f.delay_gain_max},
+          {"fault_gain", matrix_json(f.fault_gain)},
+          {"fault_gain_dc", vector_json(f.fault_gain_dc)},
+          {"command_delay_gain_max", vector_json(f.command_delay_gain_max)}};
+}
+
+}  // namespace
+
+json to_json(const ResidualDesign& d) {
+  return {{"inputs", inputs_json(d.inputs)},
+          {"A_bar", matrix_json(d.A_bar)},
+          {"B_bar", matrix_json(d.B_bar)},
+          {"C", matrix_json(d.inputs.C)},
+          {"E_f_bar", matrix_json(d.E_f_bar)},
+          {"L", matrix_json(d.L)},
+          {"Q", matrix_json(d.Q)},
+          {"unknown_input",
+           {{"columns", d.E_d.cols()},
+            {"seen_singular_values", vector_json(d.low_rank.singular_values)},
+            {"tied_directions", d.low_rank.tied.cols()},
+            {"chosen_directions", d.low_rank.choose},
+            {"low_rank_error", d.low_rank_error},
+            {"low_rank_optimum", d.low_rank_optimum},
+            {"E_d_star_rank", d.E_d_factors.E1.cols()},
+            {"E_d1", matrix_json(d.E_d_factors.E1)}}},
+          {"cayley_hamilton",
+           {{"coefficients", vector_json(d.cayley_hamilton.coefficients)},
+            {"s_min", vector_json(d.cayley_hamilton.s_min)},
+            {"s_max", vector_json(d.cayley_hamilton.s_max)}}},
+          {"figures", figures_json(d.figures, d.assignment)}};
+}
+
+}  // namespace chaser::flight::fdi

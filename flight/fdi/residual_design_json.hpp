@@ -1,0 +1,13 @@
+#pragma once
+// A residual generator design as JSON (for `chaser fdi design --out FILE.json`): the inputs that
+// matter, the matrices the runtime observer needs (A_bar, B_bar, C, L, Q), and the design figures.
+// Matrices are arrays of rows; complex numbers are [re, im].
+#include <nlohmann/json.hpp>
+
+#include "flight/fdi/residual_design.hpp"
+
+namespace chaser::flight::fdi {
+
+nlohmann::json to_json(const ResidualDesign& design);
+
+}  // namespace chaser::flight::fdi
