@@ -2,6 +2,7 @@
 # benchmarks. Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
+MAKEFLAGS += --no-print-directory
 PYTHON ?= /usr/bin/python3
 DEMO_OUT ?= demo-out
 

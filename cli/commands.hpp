@@ -19,7 +19,15 @@ struct RunArgs {
   std::vector<std::string> overrides;
 };
 
+struct FdiDesignArgs {
+  std::string scenario_path;
+  std::string model = "position";  // "position" or "attitude"
+  std::string out_path;            // empty: print only
+  std::vector<std::string> overrides;
+};
+
 int run_command(const RunArgs& args);
+int fdi_design_command(const FdiDesignArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 
 }  // namespace chaser::cli

@@ -23,6 +23,18 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("scenario", validate_path, "Scenario file (YAML)")->required();
   validate_cmd->add_option("--set", validate_overrides, "Override a scenario key: key.path=value (repeatable)");
 
+  FdiDesignArgs fdi_design;
+  CLI::App* fdi_cmd = app.add_subcommand("fdi", "Fault detection and isolation tools");
+  fdi_cmd->require_subcommand(1);
+  CLI::App* design_cmd =
+      fdi_cmd->add_subcommand("design", "Design the delay-robust residual generator (Fonod 2015, IV.A)");
+  design_cmd->add_option("scenario", fdi_design.scenario_path, "Scenario file (YAML)")->required();
+  design_cmd->add_option("--model", fdi_design.model, "Model the residual is built on")
+      ->check(CLI::IsMember({"position", "attitude"}))
+      ->capture_default_str();
+  design_cmd->add_option("--out", fdi_design.out_path, "Write the design and its figures as JSON");
+  design_cmd->add_option("--set", fdi_design.overrides, "Override a scenario key: key.path=value (repeatable)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -31,5 +43,6 @@ int main(int argc, char** argv) {
   }
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
+  if (*design_cmd) return fdi_design_command(fdi_design);
   return kExitBadInput;
 }

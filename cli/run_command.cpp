@@ -5,27 +5,13 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/scenario_input.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
 #include "sim/summary.hpp"
 
 namespace chaser::cli {
 
-namespace {
-
-// Loads and validates; prints every problem and returns nullopt on failure.
-std::optional<io::LoadResult> load_or_report(const std::string& path, const std::vector<std::string>& overrides) {
-  io::LoadResult loaded = io::load_scenario_file(path, overrides);
-  if (!loaded.errors.empty()) {
-    std::cerr << fmt::format("chaser: {} has {} problem{}:\n", path, loaded.errors.size(),
-                             loaded.errors.size() == 1 ? "" : "s")
-              << io::format_errors(loaded.errors);
-    return std::nullopt;
-  }
-  return loaded;
-}
-
-}  // namespace
 
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides) {
   const auto loaded = load_or_report(scenario_path, overrides);

@@ -23,8 +23,9 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
   r.angle_deg("capture_attitude_tol_deg", Range::left_open(0.0, 180.0), out.capture_attitude_tol_rad);
 }
 
-// LQR weights (model/gnc.hpp, gnc_changes.md): state weights q >= 0, input weights r > 0 so that
-// the input cost is positive definite; modulation thresholds and the anti-windup clamp > 0.
+// LQR weights (model/gnc.hpp): input weights r > 0 so that the input cost is positive definite;
+// position and angle weights > 0 too, for without them the Riccati equation has no stabilising
+// solution; rate weights >= 0. Modulation thresholds and the anti-windup clamp > 0.
 void read_control(MapReader& r, model::ControlParams& out) {
   r.number("position_q_pos", Range::positive(), out.position_q_pos);
   r.number("position_q_vel", Range::non_negative(), out.position_q_vel);

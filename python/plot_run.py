@@ -82,10 +82,12 @@ def plot_attitude(t, summary, run_dir):
 
 def plot_thrusters(t, summary, run_dir):
     fig, axes = plt.subplots(8, 1, figsize=(10, 9), sharex=True, constrained_layout=True)
+    # Nominal on-times are a few per cent of the period: scale to the largest one seen.
+    top = max(0.1, max(max(t[f"ton_cmd_{i}"].max(), t[f"ton_real_{i}"].max()) for i in range(1, 9)))
     for i, ax in enumerate(axes, start=1):
         ax.plot(t["t_s"], t[f"ton_real_{i}"], lw=0.6, color="tab:orange", label="realised")
         ax.plot(t["t_s"], t[f"ton_cmd_{i}"], lw=0.6, color="tab:blue", label="commanded")
-        ax.set_ylim(-0.05, 1.05)
+        ax.set_ylim(-0.05 * top, 1.05 * top)
         ax.set_ylabel(f"T{i}", rotation=0, labelpad=12)
         fault_lines(ax, summary)
     axes[0].legend(loc="upper left", fontsize=7, ncol=2)

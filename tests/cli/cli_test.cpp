@@ -83,3 +83,26 @@ TEST(Cli, RunWritesTelemetryAndSummary) {
 }
 
 }  // namespace
+
+namespace {
+
+// chaser fdi design prints the design figures and writes the design as JSON; the assigned
+// eigenvalues are the paper's (0.85 ... 0.95), which the library reaches to 1e-9.
+TEST(Cli, FdiDesignWritesTheDesign) {
+  const auto path = std::filesystem::temp_directory_path() / "chaser_fdi_design.json";
+  for (const char* model : {"position", "attitude"}) {
+    const CommandResult r =
+        run_chaser(std::string("fdi design scenarios/msr_terminal.yaml --model ") + model + " --out " + path.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("achieved eigenvalues: 0.8500 0.8700 0.8900 0.9100 0.9300 0.9500"), std::string::npos)
+        << r.output;
+    std::ifstream in(path);
+    const nlohmann::json design = nlohmann::json::parse(in);
+    EXPECT_FALSE(design.empty());
+  }
+  std::filesystem::remove(path);
+  EXPECT_EQ(run_chaser("fdi design scenarios/msr_terminal.yaml --model velocity").exit_code, 2);
+  EXPECT_EQ(run_chaser("fdi design scenarios/msr_terminal.yaml --set chaser.mass_kg=0").exit_code, 2);
+}
+
+}  // namespace

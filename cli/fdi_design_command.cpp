@@ -1,0 +1,76 @@
+// chaser fdi design: the offline design of the delay-robust residual generator (Fonod 2015, IV.A)
+// for the position or the attitude model of a scenario, with the figures a user judges it by.
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/scenario_input.hpp"
+#include "flight/fdi/design_inputs.hpp"
+#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/residual_design_json.hpp"
+#include "model/thruster_geometry.hpp"
+
+namespace chaser::cli {
+
+namespace {
+
+void print_design(const flight::fdi::ResidualDesign& d) {
+  const auto& f = d.figures;
+  const auto& a = d.assignment;
+  std::cout << fmt::format("{} model: T = {} s, delay in [{}, {}] s, Taylor order {}, n_r = {}\n", d.inputs.name,
+                           d.inputs.period_s, d.inputs.delta_min_s, d.inputs.delta_max_s, d.inputs.taylor_order,
+                           d.inputs.residual_dim);
+  std::cout << fmt::format("  unknown-input matrix E_d: {} columns; eq. 39 discards {:.1f} % of it (Frobenius)\n",
+                           d.E_d.cols(), 100.0 * d.low_rank_error / d.E_d.norm());
+  std::string eigenvalues;
+  for (const auto& lambda : f.achieved_eigenvalues)
+    eigenvalues += fmt::format(" {:.4f}{}", lambda.real(),
+                               std::abs(lambda.imag()) > 1e-12 ? fmt::format("{:+.4f}i", lambda.imag()) : "");
+  std::cout << "  achieved eigenvalues:" << eigenvalues << "\n";
+  std::string misses;
+  for (const double miss : a.relative_miss) misses += fmt::format(" {:.4f}", miss);
+  std::cout << fmt::format("  assignability error of the assigned eigenvectors:{}; cond(P) = {:.2f}\n", misses,
+                           a.p_condition);
+  std::cout << fmt::format("  worst gain unknown input -> residual: {:.3e} (after decoupling of E_d*: {:.3e})\n",
+                           f.unknown_input_gain_max, f.designed_input_gain_max);
+  std::cout << fmt::format("  worst gain command-through-delay -> residual: {:.3e} [{}]\n", f.delay_gain_max,
+                           d.inputs.residual_unit);
+  std::cout << "  DC gain fault -> residual per thruster [" << d.inputs.residual_unit << " per unit on-time]:\n   ";
+  for (int i = 0; i < f.fault_gain_dc.size(); ++i) std::cout << fmt::format(" T{}={:.3e}", i + 1, f.fault_gain_dc[i]);
+  std::cout << "\n";
+}
+
+}  // namespace
+
+int fdi_design_command(const FdiDesignArgs& args) {
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  const model::Scenario& scenario = *loaded->scenario;
+  const model::ConfigMatrix m = model::configuration_matrix(scenario.thrusters, 0, scenario.chaser.com_body_m);
+  const flight::fdi::DesignInputs inputs = args.model == "position"
+                                               ? flight::fdi::position_design_inputs(scenario, m)
+                                               : flight::fdi::attitude_design_inputs(scenario, m);
+  flight::fdi::ResidualDesign design;
+  try {
+    design = flight::fdi::design_residual_generator(inputs);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "chaser fdi design: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  print_design(design);
+  if (!args.out_path.empty()) {
+    std::ofstream out(args.out_path);
+    out << flight::fdi::to_json(design).dump(2) << '\n';
+    if (!out) {
+      std::cerr << fmt::format("chaser: cannot write {}\n", args.out_path);
+      return kExitFailure;
+    }
+    std::cout << fmt::format("  wrote {}\n", args.out_path);
+  }
+  return kExitOk;
+}
+
+}  // namespace chaser::cli
