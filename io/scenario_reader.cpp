@@ -26,6 +26,7 @@ model::Scenario read_scenario(const YAML::Node& root, const std::string& source,
   read_section(r, "navigation", [&](MapReader& m) { read_navigation(m, s.navigation); });
   read_section(r, "guidance", [&](MapReader& m) { read_guidance(m, s.guidance); });
   read_section(r, "control", [&](MapReader& m) { read_control(m, s.control); });
+  read_section(r, "fdi", [&](MapReader& m) { read_fdi(m, s.fdi); });
   read_section(r, "initial", [&](MapReader& m) { read_initial(m, s.initial); });
   read_faults(r, s.faults);
   r.finish();
@@ -75,6 +76,9 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
     m.number("noise_sigma_radps", Range::non_negative(), out.gyro.noise_sigma_radps);
     m.vec3("bias_radps", out.gyro.bias_radps);
     m.number("delay_s", Range::non_negative(), out.gyro.delay_s);
+  });
+  read_section(r, "propellant", [&](MapReader& m) {
+    m.number("noise_sigma_kg", Range::non_negative(), out.propellant.noise_sigma_kg);
   });
 }
 

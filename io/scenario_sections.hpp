@@ -28,6 +28,7 @@ void read_navigation(MapReader& r, model::NavigationParams& out);
 void read_guidance(MapReader& r, model::GuidanceParams& out);
 void read_control(MapReader& r, model::ControlParams& out);
 void read_initial(MapReader& r, model::InitialState& out);
+void read_fdi(MapReader& r, model::FdiParams& out);
 
 // Checks between keys; each runs only if the keys it uses were read without problems.
 void validate_scenario(const model::Scenario& s, Diagnostics& diag);

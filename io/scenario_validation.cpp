@@ -76,6 +76,10 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
   check_sensor_delay(d, "sensors.star_tracker.delay_s", s.sensors.star_tracker.delay_s, period,
                         *period_ns);
   check_sensor_delay(d, "sensors.gyro.delay_s", s.sensors.gyro.delay_s, period, *period_ns);
+  // The design decouples delays up to one period (l = 0, m = 1 in Fonod 2015, below eq. 20).
+  if (d.clean("fdi.design_delay_max_s") && s.fdi.design_delay_max_s > period)
+    d.add("fdi.design_delay_max_s", fmt::format("must be in (0, control_period_s = {}] (got {})", format_number(period),
+                                                format_number(s.fdi.design_delay_max_s)));
 }
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy

@@ -8,6 +8,7 @@
 #include "core/types.hpp"
 #include "model/environment.hpp"
 #include "model/faults.hpp"
+#include "model/fdi.hpp"
 #include "model/gnc.hpp"
 #include "model/orbit.hpp"
 #include "model/sensors.hpp"
@@ -39,6 +40,7 @@ struct Scenario {
   NavigationParams navigation;
   GuidanceParams guidance;
   ControlParams control;
+  FdiParams fdi;
   InitialState initial;
   std::vector<FaultParams> faults;
 };

@@ -2,6 +2,7 @@
 // Sensor specifications. Each sensor adds a constant bias and white Gaussian noise, and delivers its
 // sample a whole number of control periods late (delay_s is validated to be a multiple of T).
 #include "core/types.hpp"
+#include "model/fdi.hpp"
 
 namespace chaser::model {
 
@@ -32,6 +33,7 @@ struct SensorParams {
   LidarParams lidar;
   StarTrackerParams star_tracker;
   GyroParams gyro;
+  PropellantSensorParams propellant;
 };
 
 }  // namespace chaser::model

@@ -6,6 +6,7 @@ PlantStreams::PlantStreams(std::uint64_t seed)
     : delay(seed, "thrusters/delay"),
       force_noise(seed, "environment/force"),
       torque_noise(seed, "environment/torque"),
+      propellant_gauge(seed, "sensors/propellant"),
       sensors(make_sensor_noise(seed)) {}
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed) {
@@ -32,8 +33,12 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
 }
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t) {
-  return sample_sensors(params.sensors, state.sensors, t, state.rigid.r_lvlh_m, state.rigid.q_inertial_from_body,
-                        state.rigid.omega_body_radps, state.streams.sensors);
+  model::SensorMeasurements meas =
+      sample_sensors(params.sensors, state.sensors, t, state.rigid.r_lvlh_m, state.rigid.q_inertial_from_body,
+                     state.rigid.omega_body_radps, state.streams.sensors);
+  meas.propellant_used_kg = state.propellant_used_kg + state.streams.propellant_gauge.normal(
+                                                           0.0, params.sensors.propellant.noise_sigma_kg);
+  return meas;
 }
 
 namespace {
@@ -48,6 +53,9 @@ Vec3 draw_vector(RandomStream& stream, double sigma) {
 
 void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
   // tau(k): one delay for all thrusters, redrawn each period (Fonod 2015, eq. 1 and below).
+  for (int branch = 0; branch < 2; ++branch)
+    if (state.thrusters.latch_open[branch] != command.latch_open[branch])
+      set_latch(state.thrusters, branch, command.latch_open[branch]);
   state.last_delay_ns = static_cast<TimeNs>(state.streams.delay.uniform() * static_cast<double>(params.delay_max_ns));
   schedule_period(params.thrusters, params.faults, state.thrusters, command, t_k, state.last_delay_ns,
                   state.last_profile);

@@ -26,7 +26,7 @@ struct PlantParams {
 
 // Every noise source draws from its own named stream (DESIGN.md, deterministic randomness).
 struct PlantStreams {
-  RandomStream delay, force_noise, torque_noise;
+  RandomStream delay, force_noise, torque_noise, propellant_gauge;
   SensorNoise sensors;
   explicit PlantStreams(std::uint64_t seed);
 };

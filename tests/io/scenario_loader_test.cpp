@@ -111,6 +111,24 @@ TEST(ScenarioLoader, MsrFlightSoftwareMatchesModelDefaults) {
   EXPECT_EQ(s.initial.omega_body_radps, init.omega_body_radps);
 }
 
+// The fdi section carries the paper's design and test settings (Fonod 2015, IV.A.1 and IV.C):
+// eigenvalues 0.85 ... 0.95, h = 2, N_d = 10, J_th = 20, N = 10, N_c = 15, delays in [0, T).
+TEST(ScenarioLoader, MsrFdiSectionHasThePapersSettings) {
+  const LoadResult r = load_msr();
+  ASSERT_TRUE(r.scenario.has_value()) << format_errors(r.errors);
+  const model::FdiParams& f = r.scenario->fdi;
+  EXPECT_EQ(f.eigenvalues, (std::array<double, 6>{0.85, 0.87, 0.89, 0.91, 0.93, 0.95}));
+  EXPECT_EQ(f.taylor_order, 2);
+  EXPECT_EQ(f.design_delay_max_s, r.scenario->control_period_s);
+  EXPECT_EQ(f.glr_window, 10);
+  EXPECT_EQ(f.glr_threshold, 20.0);
+  EXPECT_EQ(f.isolation_window, 10);
+  EXPECT_EQ(f.confirmation_window, 15);
+  EXPECT_TRUE(f.position.enabled && f.attitude.enabled);
+  EXPECT_EQ(f.position.residual_dimension, 1);
+  EXPECT_GT(r.scenario->sensors.propellant.noise_sigma_kg, 0.0);
+}
+
 TEST(ScenarioLoader, TextAndFileGiveTheSameScenarioAndHash) {
   const LoadResult from_file = load_msr();
   const LoadResult from_text = load_scenario_text(msr_text());

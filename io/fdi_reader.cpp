@@ -1,0 +1,71 @@
+// The fdi section: residual-generator design, detection, isolation and recovery (model/fdi.hpp).
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "io/scenario_sections.hpp"
+
+namespace chaser::io {
+
+namespace {
+
+// Longest sliding window, in control periods: the on-board ring buffers have this many slots.
+constexpr std::uint64_t kMaxFdiWindow = 128;
+
+// A whole number in [lo, hi].
+void read_count_in(MapReader& r, std::string_view key, std::uint64_t lo, std::uint64_t hi, int& out) {
+  std::uint64_t value = 0;
+  if (!r.count(key, value)) return;
+  if (value < lo || value > hi) {
+    r.diagnostics().add(r.path_of(key), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, value));
+    return;
+  }
+  out = static_cast<int>(value);
+}
+
+// Six distinct real eigenvalues strictly inside the unit circle (the assigned left eigenvectors
+// must be real, and the observer stable: Fonod 2015, below eq. 38).
+void read_eigenvalues(MapReader& r, std::array<double, 6>& out) {
+  const auto node = r.child("eigenvalues", "a list of 6 numbers");
+  if (!node) return;
+  const std::string path = r.path_of("eigenvalues");
+  Diagnostics& diag = r.diagnostics();
+  if (!check_list(*node, path, 6, "a list of 6 numbers, each in (-1, 1)", diag)) return;
+  std::array<double, 6> values{};
+  bool ok = true;
+  for (int i = 0; i < 6; ++i)
+    ok &= read_number((*node)[i], join_path(path, std::to_string(i)), Range::open(-1.0, 1.0), diag, values[i]);
+  if (!ok) return;
+  std::array<double, 6> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    diag.add(path, "must be 6 distinct values (the eigenstructure assignment needs distinct eigenvalues)");
+    return;
+  }
+  out = values;
+}
+
+void read_scheme(MapReader& r, model::FdiSchemeParams& out) {
+  r.boolean("enabled", out.enabled);
+  read_count_in(r, "residual_dimension", 1, 3, out.residual_dimension);
+  r.number("sigma0", Range::positive(), out.sigma0);
+}
+
+}  // namespace
+
+// design_delay_max_s against the control period is checked in validate_scenario.
+void read_fdi(MapReader& r, model::FdiParams& out) {
+  read_eigenvalues(r, out.eigenvalues);
+  read_count_in(r, "taylor_order", 1, 8, out.taylor_order);
+  r.number("design_delay_max_s", Range::positive(), out.design_delay_max_s);
+  read_count_in(r, "glr_window", 2, kMaxFdiWindow, out.glr_window);
+  r.number("glr_threshold", Range::positive(), out.glr_threshold);
+  read_count_in(r, "isolation_window", 1, kMaxFdiWindow, out.isolation_window);
+  read_count_in(r, "confirmation_window", 1, kMaxFdiWindow, out.confirmation_window);
+  r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
+  r.boolean("recovery", out.recovery);
+  read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });
+  read_section(r, "attitude", [&](MapReader& m) { read_scheme(m, out.attitude); });
+}
+
+}  // namespace chaser::io

@@ -1,0 +1,38 @@
+#pragma once
+// Parameters of the thruster fault detection, isolation and recovery (Fonod 2015, sections IV-V).
+#include <array>
+
+namespace chaser::model {
+
+// One residual-generator scheme: built on the position model (eq. 12) or the attitude model (15).
+struct FdiSchemeParams {
+  bool enabled = true;
+  int residual_dimension = 1;   // [-] n_r (eq. 34); the paper uses 1
+  double sigma0 = 1e-3;         // [m or rad] fault-free standard deviation of the residual (eq. 41)
+};
+
+struct FdiParams {
+  // Design (eqs. 19-39): assigned observer eigenvalues, Taylor order h of Prop. 2, and the upper
+  // bound of the unknown part of the delay that the design decouples (the paper: T).
+  std::array<double, 6> eigenvalues{0.85, 0.87, 0.89, 0.91, 0.93, 0.95};  // [-] inside the unit circle
+  int taylor_order = 2;             // [-] h
+  double design_delay_max_s = 0.1;  // [s] in (0, T]
+  // Detection (eqs. 40-41), isolation (42-44) and confirmation (45) windows, in control periods.
+  int glr_window = 10;              // [-] N_d
+  double glr_threshold = 20.0;      // [-] J_th
+  int isolation_window = 10;        // [-] N
+  int confirmation_window = 15;     // [-] N_c
+  // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
+  double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
+  // Recovery: on a confirmed fault, close branch A's latch valve and fly on with branch B.
+  bool recovery = true;
+  FdiSchemeParams position;
+  FdiSchemeParams attitude;
+};
+
+// Tank gauging: the propellant used so far, as the flight software reads it.
+struct PropellantSensorParams {
+  double noise_sigma_kg = 1e-4;  // [kg] 1-sigma white noise per reading
+};
+
+}  // namespace chaser::model
