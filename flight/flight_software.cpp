@@ -13,6 +13,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .attitude = make_attitude_control(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
+      .fdir = make_fdir_params(scenario),
   };
 }
 
@@ -35,11 +36,26 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
-  const ThrusterManagementOutput managed =
-      manage_thrusters(params.management, state.active_branch, out.released_wrench);
+  ThrusterManagementOutput managed = manage_thrusters(params.management, state.active_branch, out.released_wrench);
+
+  // FDIR watches branch A's command; a confirmed fault switches to branch B from this period on.
+  if (state.active_branch == 0) {
+    const FdirInput fdir_in{.t_s = t_s,
+                            .meas = &meas,
+                            .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
+                            .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
+                            .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
+                            .ton = managed.ton_active};
+    out.fdir = step_fdir(params.fdir, state.fdir, fdir_in);
+    if (out.fdir.recover_now) {
+      state.active_branch = 1;
+      managed = manage_thrusters(params.management, state.active_branch, out.released_wrench);
+    }
+  }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
 
   out.command = managed.command;
+  out.command.latch_open = {!state.fdir.recovered, true};
   out.ton_active = managed.ton_active;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;

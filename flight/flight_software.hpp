@@ -4,6 +4,7 @@
 // measurements and its own commands, never the truth.
 #include "core/time.hpp"
 #include "flight/attitude_control.hpp"
+#include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
 #include "flight/modulation.hpp"
 #include "flight/navigation.hpp"
@@ -22,6 +23,7 @@ struct FlightParams {
   AttitudeControlParams attitude;
   TmuParams tmu;
   ThrusterManagementParams management;
+  FdirParams fdir;
 };
 
 FlightParams make_flight_params(const model::Scenario& scenario);
@@ -30,6 +32,7 @@ struct FlightState {
   NavState navigation;
   TmuState tmu;
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
+  FdirState fdir;
   int active_branch = 0;                      // 0 = A, 1 = B
   bool initialised = false;
 };
@@ -45,6 +48,7 @@ struct FlightOutput {
   Vec6 commanded_wrench = Vec6::Zero();      // [N; N m] M ton, body axes
   model::Ton8 ton_active = model::Ton8::Zero();
   bool allocation_feasible = true;
+  FdirOutput fdir;                           // both FDI schemes, event resolution, recovery
 };
 
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas);

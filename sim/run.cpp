@@ -47,6 +47,24 @@ MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, c
   };
 }
 
+SchemeResult scheme_result(bool enabled, const flight::fdi::FdiSchemeState& s, double isolated_s, double period_s) {
+  return SchemeResult{
+      .enabled = enabled,
+      .alarm_s = s.alarm ? static_cast<double>(s.alarm_period) * period_s : -1.0,
+      .isolated_s = isolated_s,
+      .isolated_thruster = s.confirmed >= 0 ? s.confirmed + 1 : -1,
+  };
+}
+
+FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState& s, double period_s) {
+  return FdirResult{
+      .position = scheme_result(p.fdir.position_enabled, s.fdir.position, s.fdir.position_isolated_s, period_s),
+      .attitude = scheme_result(p.fdir.attitude_enabled, s.fdir.attitude, s.fdir.attitude_isolated_s, period_s),
+      .recovery_s = s.fdir.recovery_s,
+      .recovered_thruster = s.fdir.recovered ? s.fdir.isolated_thruster + 1 : -1,
+  };
+}
+
 }  // namespace
 
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options) {
@@ -89,6 +107,7 @@ RunResult run_scenario(const model::Scenario& scenario, const RunOptions& option
   const flight::GuidanceRef final_ref = flight::guidance_reference(scenario.guidance, n, t_end_s);
   monitor_final(scenario, monitor_sample(t_end_s, n, plant.state.rigid, final_ref), result.figures);
 
+  result.fdir = fdir_result(flight_params, flight_state, scenario.control_period_s);
   result.propellant_used_kg = plant.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k;

@@ -23,6 +23,43 @@ nlohmann::json faults_json(const model::Scenario& scenario) {
   return faults;
 }
 
+// Times relative to the fault onset where there is a fault (detection and isolation delays, the
+// paper's t_d and t_i), absolute otherwise (a false alarm's time).
+nlohmann::json scheme_json(const SchemeResult& r, double onset_s) {
+  const auto since = [&](double t) { return t < 0 ? nlohmann::json(nullptr) : nlohmann::json(t - onset_s); };
+  return nlohmann::json{{"enabled", r.enabled},
+                        {"alarm_s", r.alarm_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(r.alarm_s)},
+                        {"detection_time_s", since(r.alarm_s)},
+                        {"isolation_time_s", since(r.isolated_s)},
+                        {"isolated_thruster", r.isolated_thruster < 0 ? nlohmann::json(nullptr)
+                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))}};
+}
+
+double first_onset_s(const model::Scenario& scenario) {
+  return scenario.faults.empty() ? 0.0 : scenario.faults.front().onset_s;
+}
+
+nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
+  const double onset = first_onset_s(scenario);
+  return nlohmann::json{
+      {"position_scheme", scheme_json(f.position, onset)},
+      {"attitude_scheme", scheme_json(f.attitude, onset)},
+      {"recovery_s", f.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.recovery_s)},
+      {"recovered_thruster",
+       f.recovered_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", f.recovered_thruster))},
+  };
+}
+
+std::string scheme_text(const char* name, const SchemeResult& r, double onset_s, bool has_fault) {
+  if (!r.enabled) return fmt::format("  {} scheme: off\n", name);
+  if (r.alarm_s < 0) return fmt::format("  {} scheme: no alarm\n", name);
+  std::string out = has_fault ? fmt::format("  {} scheme: alarm {:.1f} s after onset", name, r.alarm_s - onset_s)
+                              : fmt::format("  {} scheme: FALSE ALARM at {:.1f} s", name, r.alarm_s);
+  if (r.isolated_thruster > 0)
+    out += fmt::format(", T{} isolated {:.1f} s after onset", r.isolated_thruster, r.isolated_s - onset_s);
+  return out + "\n";
+}
+
 }  // namespace
 
 nlohmann::json run_summary(const model::Scenario& scenario, const std::string& scenario_hash, const RunResult& r) {
@@ -58,6 +95,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"max_position_error_m", f.max_position_error_m},
       {"propellant_used_kg", r.propellant_used_kg},
       {"infeasible_allocation_periods", r.infeasible_allocations},
+      {"fdir", fdir_json(scenario, r.fdir)},
   };
 }
 
@@ -82,6 +120,12 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   out += fmt::format("  target out of view: {:.1f} s; max attitude error {:.2f} deg; max position error {:.3f} m\n",
                      f.out_of_view_periods * scenario.control_period_s, f.max_attitude_error_rad * kRadToDeg,
                      f.max_position_error_m);
+  const double onset = first_onset_s(scenario);
+  out += scheme_text("position", r.fdir.position, onset, !scenario.faults.empty());
+  out += scheme_text("attitude", r.fdir.attitude, onset, !scenario.faults.empty());
+  if (r.fdir.recovery_s >= 0)
+    out += fmt::format("  recovery: branch A closed at {:.1f} s (T{} isolated), flying on branch B\n", r.fdir.recovery_s,
+                       r.fdir.recovered_thruster);
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
   return out;
 }

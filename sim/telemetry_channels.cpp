@@ -18,6 +18,15 @@ void add(TelemetryWriter& w, const Vec3& v) {
   for (int i = 0; i < 3; ++i) w.add(v[i]);
 }
 
+// Thruster indices 1..8 of branch A in telemetry, 0 for none.
+void add(TelemetryWriter& w, const flight::fdi::FdiSchemeOutput& s) {
+  add(w, s.residual);
+  w.add(s.glr);
+  w.add(s.alarm);
+  w.add(s.candidate + 1);
+  w.add(s.confirmed + 1);
+}
+
 void add(TelemetryWriter& w, const Quat& q) {
   w.add(q.w()), w.add(q.x()), w.add(q.y()), w.add(q.z());
 }
@@ -42,6 +51,15 @@ std::vector<std::string> telemetry_channels() {
   add_vector_names(n, "torque_cmd_body", "Nm");
   for (int i = 1; i <= model::kThrustersPerBranch; ++i) n.push_back(fmt::format("ton_cmd_{}", i));
   for (int i = 1; i <= model::kThrustersPerBranch; ++i) n.push_back(fmt::format("ton_real_{}", i));
+  for (const char* scheme : {"position", "attitude"}) {
+    for (int i = 1; i <= 3; ++i) n.push_back(fmt::format("residual_{}_{}", scheme, i));
+    n.push_back(fmt::format("glr_{}", scheme));
+    n.push_back(fmt::format("alarm_{}", scheme));
+    n.push_back(fmt::format("candidate_{}", scheme));
+    n.push_back(fmt::format("confirmed_{}", scheme));
+  }
+  n.push_back("over_consumption");
+  n.push_back("active_branch");
   n.push_back("delay_s");
   n.push_back("mass_kg");
   n.push_back("propellant_used_kg");
@@ -59,6 +77,9 @@ void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, c
   add(w, Vec3(f.commanded_wrench.head<3>())), add(w, Vec3(f.commanded_wrench.tail<3>()));
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(f.ton_active[i]);
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(plant.last_profile.ton_realised[model::branch_first(active_branch) + i]);
+  add(w, f.fdir.position), add(w, f.fdir.attitude);
+  w.add(f.fdir.over_consumption);
+  w.add(active_branch);
   w.add(to_seconds(plant.last_delay_ns));
   w.add(x.mass_kg);
   w.add(plant.propellant_used_kg);

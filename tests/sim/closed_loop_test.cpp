@@ -1,6 +1,7 @@
 // Closed-loop runs of the MSR terminal rendezvous scenario: the whole chain, plant and flight.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,7 +19,8 @@ model::Scenario msr_scenario() {
 }
 
 // Nominal parameters, no fault: for 20 seeds (delays, noises, disturbances, thruster dispersion all
-// redrawn) the chaser reaches the capture point inside the corridor with the target in view.
+// redrawn) the chaser reaches the capture point inside the corridor with the target in view, and
+// neither FDI scheme raises an alarm (J_th = 20 against a fault-free maximum of about 10).
 TEST(ClosedLoop, NominalApproachCapturesForTwentySeeds) {
   model::Scenario scenario = msr_scenario();
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -31,6 +33,8 @@ TEST(ClosedLoop, NominalApproachCapturesForTwentySeeds) {
     EXPECT_EQ(f.corridor_violation_periods, 0) << "seed " << seed << ", max angle " << f.max_corridor_angle_rad;
     EXPECT_EQ(f.out_of_view_periods, 0) << "seed " << seed;
     EXPECT_FALSE(f.diverged) << "seed " << seed;
+    EXPECT_LT(r.fdir.position.alarm_s, 0) << "seed " << seed << ": position-scheme false alarm";
+    EXPECT_LT(r.fdir.attitude.alarm_s, 0) << "seed " << seed << ": attitude-scheme false alarm";
     EXPECT_DOUBLE_EQ(r.simulated_s, scenario.duration_s);
   }
 }
@@ -39,6 +43,7 @@ TEST(ClosedLoop, NominalApproachCapturesForTwentySeeds) {
 // designed for fractions of a newton, so the run must show it (corridor, capture, propellant).
 TEST(ClosedLoop, StuckOpenWithoutDiagnosisIsVisibleInTheSummary) {
   model::Scenario scenario = msr_scenario();
+  scenario.fdi.position.enabled = scenario.fdi.attitude.enabled = scenario.fdi.recovery = false;
   const RunResult nominal = run_scenario(scenario);
   scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7, .onset_s = 1000.0}};
   const RunResult faulty = run_scenario(scenario);
@@ -46,6 +51,21 @@ TEST(ClosedLoop, StuckOpenWithoutDiagnosisIsVisibleInTheSummary) {
   EXPECT_FALSE(f.capture_achieved);
   EXPECT_GT(faulty.propellant_used_kg, nominal.propellant_used_kg + 1.0);  // > 1 kg extra over 200 s
   EXPECT_TRUE(f.corridor_violation_periods > 0 || f.max_attitude_error_rad > 0.1 || f.diverged);
+}
+
+// The same fault with the FDIR on: a scheme raises the alarm within seconds, recovery closes
+// branch A's latch valve (stopping the stuck thruster) and branch B brings the chaser to capture.
+TEST(ClosedLoop, StuckOpenIsDetectedAndRecoveredOnBranchB) {
+  model::Scenario scenario = msr_scenario();
+  scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7, .onset_s = 1000.0}};
+  const RunResult r = run_scenario(scenario);
+  const auto earliest = [](double a, double b) { return a < 0 ? b : (b < 0 ? a : std::min(a, b)); };
+  const double first_alarm_s = earliest(r.fdir.position.alarm_s, r.fdir.attitude.alarm_s);
+  EXPECT_GE(first_alarm_s, 1000.0);
+  EXPECT_LT(first_alarm_s, 1005.0);
+  EXPECT_GE(r.fdir.recovery_s, first_alarm_s);
+  EXPECT_TRUE(r.figures.capture_achieved);
+  EXPECT_EQ(r.figures.corridor_violation_periods, 0);
 }
 
 std::string read_file(const std::filesystem::path& path) {

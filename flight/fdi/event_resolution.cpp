@@ -1,0 +1,56 @@
+#include "flight/fdi/event_resolution.hpp"
+
+#include <cmath>
+
+#include "core/constants.hpp"
+
+namespace chaser::flight::fdi {
+
+std::vector<std::string> validate(const EventResolutionParams& params) {
+  std::vector<std::string> problems;
+  if (!(params.sensor_sigma_kg >= 0.0)) problems.push_back("event_resolution.sensor_sigma_kg: must be >= 0");
+  if (!(params.k_sigma > 0.0)) problems.push_back("event_resolution.k_sigma: must be > 0");
+  if (!(params.relative_margin >= 0.0)) problems.push_back("event_resolution.relative_margin: must be >= 0");
+  if (!(params.absolute_margin_kg >= 0.0))
+    problems.push_back("event_resolution.absolute_margin_kg: must be >= 0");
+  if (params.sensor_sigma_kg == 0.0 && params.absolute_margin_kg == 0.0)
+    problems.push_back("event_resolution: sensor_sigma_kg or absolute_margin_kg must be > 0");
+  return problems;
+}
+
+std::array<double, model::kThrustersPerBranch> nominal_mass_flow_kgps(
+    const model::ThrusterSetParams& thrusters, int branch, double isp_s) {
+  std::array<double, model::kThrustersPerBranch> flow{};
+  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+    flow[i] = thrusters.thrusters[model::branch_first(branch) + i].max_thrust_N /
+              (isp_s * kStandardGravity);
+  return flow;
+}
+
+double expected_propellant_increment_kg(const model::Ton8& ton,
+                                        const std::array<double, model::kThrustersPerBranch>& mass_flow_kgps,
+                                        double period_s) {
+  double sum = 0.0;
+  for (int i = 0; i < model::kThrustersPerBranch; ++i) sum += ton(i) * mass_flow_kgps[i];
+  return sum * period_s;
+}
+
+bool step_event_resolution(const EventResolutionParams& params, EventResolutionState& state,
+                           double measured_used_kg, double expected_increment_kg, bool alarm) {
+  if (!state.active) {
+    if (!alarm) return false;
+    state.active = true;  // the reference reading: nothing is predicted yet
+    state.reference_kg = measured_used_kg;
+    state.expected_since_alarm_kg = 0.0;
+    return state.over_consumption;
+  }
+  state.expected_since_alarm_kg += expected_increment_kg;
+  const double excess = measured_used_kg - state.reference_kg - state.expected_since_alarm_kg;
+  const double threshold = params.k_sigma * std::sqrt(2.0) * params.sensor_sigma_kg +
+                           params.relative_margin * state.expected_since_alarm_kg +
+                           params.absolute_margin_kg;
+  if (excess > threshold) state.over_consumption = true;
+  return state.over_consumption;
+}
+
+}  // namespace chaser::flight::fdi

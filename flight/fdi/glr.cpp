@@ -1,0 +1,105 @@
+#include "flight/fdi/glr.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace chaser::flight::fdi {
+
+namespace {
+
+int clamped_window(int window) { return std::clamp(window, 1, kMaxGlrWindow); }
+
+// Sigma0 restricted to its top-left n_r block, the identity elsewhere, so that whitening leaves the
+// unused components at zero.
+Mat3 embedded_covariance(const GlrParams& params) {
+  Mat3 sigma0 = Mat3::Identity();
+  const int n = params.residual_dim;
+  sigma0.topLeftCorner(n, n) = params.covariance0.topLeftCorner(n, n);
+  return sigma0;
+}
+
+Vec3 whiten(const GlrParams& params, const Vec3& r) {
+  Vec3 used = Vec3::Zero();
+  used.head(params.residual_dim) = r.head(params.residual_dim);
+  const Eigen::LLT<Mat3> llt(embedded_covariance(params));
+  return llt.matrixL().solve(used);  // L0^-1 r, Sigma0 = L0 L0^T
+}
+
+double increase_only(double rho_term, double rho) { return rho > 1.0 ? rho_term : 0.0; }
+
+}  // namespace
+
+std::vector<std::string> validate(const GlrParams& params) {
+  std::vector<std::string> problems;
+  if (params.window < 2 || params.window > kMaxGlrWindow)
+    problems.push_back("glr.window: must be in 2..128 (N_d > 1, eq. 41)");
+  if (!(params.threshold > 0.0)) problems.push_back("glr.threshold: must be > 0");
+  if (params.variant == GlrVariant::kScalar && !(params.sigma0 > 0.0 && std::isfinite(params.sigma0)))
+    problems.push_back("glr.sigma0: must be finite and > 0");
+  if (params.residual_dim < 1 || params.residual_dim > 3) {
+    problems.push_back("glr.residual_dim: must be in 1..3");
+  } else if (params.variant == GlrVariant::kWhitened) {
+    const int n = params.residual_dim;
+    const Mat3 block = embedded_covariance(params);
+    const bool symmetric = (params.covariance0.topLeftCorner(n, n) -
+                            params.covariance0.topLeftCorner(n, n).transpose())
+                               .cwiseAbs()
+                               .maxCoeff() <= 1e-12 * block.cwiseAbs().maxCoeff();
+    if (!block.allFinite() || !symmetric || Eigen::LLT<Mat3>(block).info() != Eigen::Success)
+      problems.push_back("glr.covariance0: top-left residual_dim block must be symmetric positive definite");
+    if (params.window < params.residual_dim + 1)
+      problems.push_back("glr.window: must exceed residual_dim for a nonsingular window covariance");
+  }
+  return problems;
+}
+
+double glr_scalar_statistic(double sum_r2, int window, double sigma0) {
+  const double n = window;
+  const double sigma0_sq = sigma0 * sigma0;
+  const double sigma1_sq = std::max(sum_r2 / n, kGlrVarianceFloor * sigma0_sq);
+  return n * std::log(sigma0) - 0.5 * n * (1.0 + std::log(sigma1_sq) - sigma1_sq / sigma0_sq);  // eq. 41
+}
+
+double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int window,
+                              GlrSides sides) {
+  Mat3 m = Mat3::Identity();
+  m.topLeftCorner(residual_dim, residual_dim) =
+      whitened_moment.topLeftCorner(residual_dim, residual_dim);
+  Eigen::SelfAdjointEigenSolver<Mat3> eig;
+  eig.computeDirect(m, Eigen::EigenvaluesOnly);
+  double sum = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const double mu = std::max(eig.eigenvalues()(j), kGlrVarianceFloor);
+    const double term = mu - std::log(mu) - 1.0;  // zero for the unused (identity) directions
+    sum += sides == GlrSides::kIncreaseOnly ? increase_only(term, mu) : term;
+  }
+  return 0.5 * window * sum;
+}
+
+GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
+  const int window = clamped_window(params.window);
+  const bool scalar = params.variant == GlrVariant::kScalar;
+  state.samples[state.next] = scalar ? Vec3(r(0), 0.0, 0.0) : whiten(params, r);
+  state.next = (state.next + 1) % window;
+  state.count = std::min(state.count + 1, window);
+  GlrOutput out;
+  if (state.count < window) return out;  // window not yet full: S = 0, no decision
+  if (scalar) {
+    double sum_r2 = 0.0;
+    for (int j = 0; j < window; ++j) sum_r2 += state.samples[j](0) * state.samples[j](0);
+    out.statistic = glr_scalar_statistic(sum_r2, window, params.sigma0);
+    if (params.sides == GlrSides::kIncreaseOnly && sum_r2 <= window * params.sigma0 * params.sigma0)
+      out.statistic = 0.0;
+  } else {
+    Mat3 moment = Mat3::Zero();
+    for (int j = 0; j < window; ++j) moment.noalias() += state.samples[j] * state.samples[j].transpose();
+    out.statistic =
+        glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides);
+  }
+  out.alarm = out.statistic > params.threshold;  // eq. 40
+  return out;
+}
+
+}  // namespace chaser::flight::fdi

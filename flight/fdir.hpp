@@ -1,0 +1,63 @@
+#pragma once
+// The on-board FDIR supervisor (Fonod 2015, Fig. 4-5 and section IV): the position-model and the
+// attitude-model FDI schemes side by side, the propellant-based event resolution (Remark 2), and
+// the recovery: once a scheme confirms a faulty thruster, close branch A's latch valve (which also
+// stops a stuck-open thruster) and fly on with the redundant branch B.
+//
+// The residual generators are designed in memory from the scenario when a run starts
+// (make_fdir_params), so dispersed campaigns never fly a stale design.
+#include "core/types.hpp"
+#include "flight/fdi/event_resolution.hpp"
+#include "flight/fdi/fdi_scheme.hpp"
+#include "model/messages.hpp"
+#include "model/scenario.hpp"
+
+namespace chaser::flight {
+
+struct FdirParams {
+  bool position_enabled = false;
+  bool attitude_enabled = false;
+  bool recovery = false;
+  fdi::FdiSchemeParams position;
+  fdi::FdiSchemeParams attitude;
+  fdi::EventResolutionParams event;
+  std::array<double, model::kThrustersPerBranch> mass_flow_kgps{};  // [kg/s] branch A, nominal
+  model::ConfigMatrix config = model::ConfigMatrix::Zero();         // nominal M of branch A
+  double period_s = 0.1;                                            // [s] T
+};
+
+// Designs both residual generators (flight/fdi/residual_design) for the scenario's branch A.
+FdirParams make_fdir_params(const model::Scenario& scenario);
+
+struct FdirState {
+  fdi::FdiSchemeState position;
+  fdi::FdiSchemeState attitude;
+  fdi::EventResolutionState event;
+  double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
+  double attitude_isolated_s = -1;
+  bool recovered = false;           // branch A closed, flying on branch B
+  double recovery_s = -1;           // [s]
+  int isolated_thruster = -1;       // 0..7 of branch A: the thruster recovery acted on
+};
+
+struct FdirOutput {
+  fdi::FdiSchemeOutput position;
+  fdi::FdiSchemeOutput attitude;
+  bool over_consumption = false;  // event resolution: cases 1/3 (true) or 2/4
+  bool recover_now = false;       // this period's confirmation triggers the switch to branch B
+};
+
+// Quantities of one period the FDI schemes read (flight-side only: measurements, estimates,
+// the reference attitude and the command of this period).
+struct FdirInput {
+  double t_s = 0;                           // [s]
+  const model::SensorMeasurements* meas = nullptr;
+  Quat q_est_inertial_from_body;           // navigation estimate
+  Quat q_ref_inertial_from_body;           // target-pointing reference
+  Quat q_inertial_from_lvlh;               // LVLH orientation now
+  model::Ton8 ton = model::Ton8::Zero();   // commanded on-times of branch A this period
+};
+
+FdirOutput step_fdir(const FdirParams& params, FdirState& state, const FdirInput& in);
+
+}  // namespace chaser::flight
