@@ -19,8 +19,9 @@ void apply_design_settings(const model::Scenario& s, const model::FdiSchemeParam
   inputs.residual_dim = scheme.residual_dimension;
 }
 
+// thruster_inputs: each thruster's input direction in the model (3 x 8: M_F or M_C).
 fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSchemeParams& scheme,
-                                   const fdi::DesignInputs& inputs) {
+                                   const fdi::DesignInputs& inputs, const fdi::Mat38& thruster_inputs) {
   const fdi::ResidualDesign design = fdi::design_residual_generator(inputs);
   fdi::FdiSchemeParams p;
   p.residual = fdi::make_residual_generator(design);
@@ -28,8 +29,18 @@ fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSch
   p.glr.threshold = s.fdi.glr_threshold;
   p.glr.sigma0 = scheme.sigma0;
   p.glr.residual_dim = scheme.residual_dimension;
+  p.glr.sides = s.fdi.glr_increase_only ? fdi::GlrSides::kIncreaseOnly : fdi::GlrSides::kTwoSided;
+  if (scheme.residual_dimension > 1) {  // eq. 41 generalised: whitened by the fault-free covariance
+    p.glr.variant = fdi::GlrVariant::kWhitened;
+    p.glr.covariance0 = scheme.sigma0 * scheme.sigma0 * Mat3::Identity();
+  }
   p.isolation.window = s.fdi.isolation_window;
   p.isolation.confirmation = s.fdi.confirmation_window;
+  p.isolation.settle = s.fdi.isolation_settle;
+  if (s.fdi.isolation_method == model::IsolationMethod::kSignature) {
+    p.isolation.criterion = fdi::IsolationCriterion::kSignature;
+    p.isolation.signature = fdi::make_signature_filter(p.residual, thruster_inputs);
+  }
   p.period_s = s.control_period_s;
   return p;
 }
@@ -46,12 +57,12 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   if (p.position_enabled) {
     fdi::DesignInputs inputs = fdi::position_design_inputs(s, p.config);
     apply_design_settings(s, s.fdi.position, inputs);
-    p.position = scheme_params(s, s.fdi.position, inputs);
+    p.position = scheme_params(s, s.fdi.position, inputs, p.config.topRows<3>());
   }
   if (p.attitude_enabled) {
     fdi::DesignInputs inputs = fdi::attitude_design_inputs(s, p.config);
     apply_design_settings(s, s.fdi.attitude, inputs);
-    p.attitude = scheme_params(s, s.fdi.attitude, inputs);
+    p.attitude = scheme_params(s, s.fdi.attitude, inputs, p.config.bottomRows<3>());
   }
   p.event.sensor_sigma_kg = s.sensors.propellant.noise_sigma_kg;
   p.event.absolute_margin_kg = s.fdi.over_consumption_threshold_kg;

@@ -45,6 +45,16 @@ void read_eigenvalues(MapReader& r, std::array<double, 6>& out) {
   out = values;
 }
 
+void read_isolation_method(MapReader& r, model::IsolationMethod& out) {
+  std::string text;
+  if (!r.text("isolation_method", text)) return;
+  if (text == "paper") out = model::IsolationMethod::kPaper;
+  else if (text == "signature") out = model::IsolationMethod::kSignature;
+  else
+    r.diagnostics().add(r.path_of("isolation_method"),
+                        fmt::format("must be one of paper, signature (got '{}')", text));
+}
+
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {
   r.boolean("enabled", out.enabled);
   read_count_in(r, "residual_dimension", 1, 3, out.residual_dimension);
@@ -62,6 +72,9 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   r.number("glr_threshold", Range::positive(), out.glr_threshold);
   read_count_in(r, "isolation_window", 1, kMaxFdiWindow, out.isolation_window);
   read_count_in(r, "confirmation_window", 1, kMaxFdiWindow, out.confirmation_window);
+  read_isolation_method(r, out.isolation_method);
+  read_count_in(r, "isolation_settle", 0, 10 * kMaxFdiWindow, out.isolation_settle);
+  r.boolean("glr_increase_only", out.glr_increase_only);
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
   r.boolean("recovery", out.recovery);
   read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });

@@ -11,6 +11,12 @@ struct FdiSchemeParams {
   double sigma0 = 1e-3;         // [m or rad] fault-free standard deviation of the residual (eq. 41)
 };
 
+// How the faulty thruster is named once the alarm is raised.
+enum class IsolationMethod {
+  kPaper,      // cross-correlation of the residual with the on-times, eqs. 42-45 (the published one)
+  kSignature,  // correlation with each thruster's residual signature (flight/fdi/isolation.hpp)
+};
+
 struct FdiParams {
   // Design (eqs. 19-39): assigned observer eigenvalues, Taylor order h of Prop. 2, and the upper
   // bound of the unknown part of the delay that the design decouples (the paper: T).
@@ -22,6 +28,9 @@ struct FdiParams {
   double glr_threshold = 20.0;      // [-] J_th
   int isolation_window = 10;        // [-] N
   int confirmation_window = 15;     // [-] N_c
+  IsolationMethod isolation_method = IsolationMethod::kPaper;
+  int isolation_settle = 0;         // [-] periods after the alarm before isolation starts (0: paper)
+  bool glr_increase_only = false;   // [-] only a residual increase counts (eq. 41 as printed: false)
   // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
   double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
   // Recovery: on a confirmed fault, close branch A's latch valve and fly on with branch B.
