@@ -39,15 +39,21 @@ BENCHMARK_CAPTURE(BM_EndToEnd, stuck_open_T8, true)->Unit(benchmark::kMillisecon
 
 // Shared set-up for the per-period benchmarks: a plant and flight software 500 s into the approach.
 struct LoopFixture {
-  model::Scenario scenario = msr_scenario();
+  model::Scenario scenario;
   plant::Plant plant;
   flight::FlightParams flight_params = flight::make_flight_params(scenario);
   flight::FlightState flight_state;
   TimeNs period_ns = from_seconds(scenario.control_period_s);
   TimeNs t_ns = 0;
 
-  LoopFixture() : plant(plant::make_plant(scenario, start_state(scenario), scenario.seed)) {
+  explicit LoopFixture(bool fdi_on = true)
+      : scenario(with_fdi(msr_scenario(), fdi_on)),
+        plant(plant::make_plant(scenario, start_state(scenario), scenario.seed)) {
     for (int k = 0; k < 5000; ++k) step();
+  }
+  static model::Scenario with_fdi(model::Scenario s, bool on) {
+    s.fdi.position.enabled = s.fdi.attitude.enabled = on;
+    return s;
   }
   static plant::RigidState start_state(const model::Scenario& s) {
     const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, s.orbit.mean_motion_radps(), 0.0);
@@ -65,12 +71,14 @@ struct LoopFixture {
   }
 };
 
-// One full control period: sensors, flight software, thruster model and propagation.
-void BM_ControlPeriod(benchmark::State& state) {
-  LoopFixture f;
+// One full control period: sensors, flight software, thruster model and propagation, with both
+// FDI schemes on (the scenario's) and off: the difference is what the FDI costs.
+void BM_ControlPeriod(benchmark::State& state, bool fdi_on) {
+  LoopFixture f(fdi_on);
   for (auto _ : state) f.step();
 }
-BENCHMARK(BM_ControlPeriod);
+BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_on, true);
+BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_off, false);
 
 // Thruster model and propagation of one period with a fixed command: T1 for 30 % and its partner
 // T5 for 60 % of the period (a pure torque plus a net force; five pieces with the delay).
@@ -89,13 +97,14 @@ BENCHMARK(BM_PropagationPeriod);
 // Flight software alone: navigation, guidance, control, TMU, TMF. The plant stays frozen 500 s into
 // the approach while the reference moves on, so the controllers demand thrust and the allocator
 // runs every period: a busier period than the closed loop's typical one.
-void BM_FlightPeriod(benchmark::State& state) {
-  LoopFixture f;
+void BM_FlightPeriod(benchmark::State& state, bool fdi_on) {
+  LoopFixture f(fdi_on);
   for (auto _ : state) {
     benchmark::DoNotOptimize(f.flight_period());
     f.t_ns += f.period_ns;
   }
 }
-BENCHMARK(BM_FlightPeriod);
+BENCHMARK_CAPTURE(BM_FlightPeriod, fdi_on, true);
+BENCHMARK_CAPTURE(BM_FlightPeriod, fdi_off, false);
 
 }  // namespace
