@@ -91,8 +91,8 @@ RunResult run_scenario(const model::Scenario& scenario, const RunOptions& option
     const plant::RigidState truth = plant.state.rigid;
 
     const model::SensorMeasurements meas = plant::sense_plant(plant.params, plant.state, t_k);
-    const int branch = flight_state.active_branch;
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
+    const int branch = flight_state.active_branch;  // the branch this period's command flies
     const MonitorSample sample = monitor_sample(t_s, n, truth, out.reference);
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);

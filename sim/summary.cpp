@@ -50,13 +50,18 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   };
 }
 
-std::string scheme_text(const char* name, const SchemeResult& r, double onset_s, bool has_fault) {
+// faulty_thruster: 1-based truth, 0 when the run has no fault.
+std::string scheme_text(const char* name, const SchemeResult& r, double onset_s, int faulty_thruster) {
+  const bool has_fault = faulty_thruster > 0;
   if (!r.enabled) return fmt::format("  {} scheme: off\n", name);
   if (r.alarm_s < 0) return fmt::format("  {} scheme: no alarm\n", name);
   std::string out = has_fault ? fmt::format("  {} scheme: alarm {:.1f} s after onset", name, r.alarm_s - onset_s)
                               : fmt::format("  {} scheme: FALSE ALARM at {:.1f} s", name, r.alarm_s);
   if (r.isolated_thruster > 0)
-    out += fmt::format(", T{} isolated {:.1f} s after onset", r.isolated_thruster, r.isolated_s - onset_s);
+    out += fmt::format(", T{} isolated {:.1f} s after onset{}", r.isolated_thruster, r.isolated_s - onset_s,
+                       has_fault && r.isolated_thruster != faulty_thruster
+                           ? fmt::format(" (WRONG: the fault is on T{})", faulty_thruster)
+                           : "");
   return out + "\n";
 }
 
@@ -121,8 +126,9 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                      f.out_of_view_periods * scenario.control_period_s, f.max_attitude_error_rad * kRadToDeg,
                      f.max_position_error_m);
   const double onset = first_onset_s(scenario);
-  out += scheme_text("position", r.fdir.position, onset, !scenario.faults.empty());
-  out += scheme_text("attitude", r.fdir.attitude, onset, !scenario.faults.empty());
+  const int faulty = scenario.faults.empty() ? 0 : scenario.faults.front().thruster + 1;
+  out += scheme_text("position", r.fdir.position, onset, faulty);
+  out += scheme_text("attitude", r.fdir.attitude, onset, faulty);
   if (r.fdir.recovery_s >= 0)
     out += fmt::format("  recovery: branch A closed at {:.1f} s (T{} isolated), flying on branch B\n", r.fdir.recovery_s,
                        r.fdir.recovered_thruster);
