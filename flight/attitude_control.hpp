@@ -13,7 +13,7 @@
 // diag(q_angle I, q_rate I), input weight r_torque I (model::ControlParams).
 #include "core/types.hpp"
 #include "flight/guidance.hpp"
-#include "flight/linear_models.hpp"
+#include "core/linear_models.hpp"
 #include "flight/navigation.hpp"
 #include "model/scenario.hpp"
 

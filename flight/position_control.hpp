@@ -5,7 +5,7 @@
 //   F_d = F_ff - K [r_hat - r_ref; v_hat - v_ref]                                      (LVLH, N)
 //   F_ff = m (a_ref(t + T/2) - A_acc [r_ref(t + T/2); v_ref(t + T/2)])
 //
-// A_acc are the acceleration rows of the continuous HCW matrix (flight/linear_models.hpp). The
+// A_acc are the acceleration rows of the continuous HCW matrix (core/linear_models.hpp). The
 // feed-forward is evaluated at the middle of the period it is held over (reference values carried
 // forward by T/2 with their derivatives, jerk included): with the force held constant, this is the
 // period mean of the required force to O(T^2), where the value at the start of the period would
@@ -15,7 +15,7 @@
 // state weight diag(q_pos I, q_vel I) and input weight r_force I (model::ControlParams).
 #include "core/types.hpp"
 #include "flight/guidance.hpp"
-#include "flight/linear_models.hpp"
+#include "core/linear_models.hpp"
 #include "flight/navigation.hpp"
 #include "model/scenario.hpp"
 

@@ -9,7 +9,7 @@
 // L is the steady-state gain from the filter DARE (core/riccati.hpp, steady_state_kalman); the
 // corrected covariance P+ that comes with it is the accuracy the filter claims.
 #include "core/types.hpp"
-#include "flight/linear_models.hpp"
+#include "core/linear_models.hpp"
 
 namespace chaser::flight {
 

@@ -1,5 +1,7 @@
 #include "flight/fdi/fdi_models.hpp"
 
+#include "core/linear_models.hpp"
+
 #include "core/rotation.hpp"
 
 namespace chaser::flight::fdi {
@@ -8,13 +10,7 @@ using Eigen::MatrixXd;
 
 LinearModel hcw_position_model(double mean_motion_radps, double mass_kg) {
   const double n = mean_motion_radps;
-  LinearModel model{MatrixXd::Zero(6, 6), MatrixXd::Zero(6, 3), MatrixXd::Zero(3, 6)};
-  model.A.topRightCorner(3, 3).setIdentity();
-  model.A(3, 0) = 3.0 * n * n;  // radial gravity-gradient minus centrifugal, Fonod 2015 eq. 8 linearised
-  model.A(5, 2) = -n * n;       // out-of-plane oscillation
-  model.A(3, 4) = 2.0 * n;      // Coriolis
-  model.A(4, 3) = -2.0 * n;
-  model.B.bottomRows(3) = MatrixXd::Identity(3, 3) / mass_kg;
+  LinearModel model{hcw_state_matrix(n), hcw_input_matrix() / mass_kg, MatrixXd::Zero(3, 6)};
   model.C.leftCols(3).setIdentity();
   return model;
 }

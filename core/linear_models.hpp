@@ -1,5 +1,6 @@
 #pragma once
-// Linear design models shared by navigation and control (continuous and zero-order-hold discrete).
+// Linear design models shared by navigation, control and fault diagnosis (continuous and
+// zero-order-hold discrete).
 //
 // HCW (Clohessy-Wiltshire) relative motion in the MSR LVLH frame, x radial out, y along-track,
 // z orbit normal (Fonod 2015, section III.A, linearised about the target's circular orbit):
@@ -8,7 +9,7 @@
 // I delta_omega' = C, i.e. a double integrator per axis driven by torque through I^-1.
 #include "core/types.hpp"
 
-namespace chaser::flight {
+namespace chaser {
 
 using Mat63 = Eigen::Matrix<double, 6, 3>;
 using Mat36 = Eigen::Matrix<double, 3, 6>;
@@ -31,4 +32,4 @@ DiscreteLinear6 discrete_hcw(double mean_motion_radps, double period_s);
 // Linearised attitude: state [theta_body; delta_omega_body], input torque [N m].
 DiscreteLinear6 discrete_attitude(const Mat3& inertia_kgm2, double period_s);
 
-}  // namespace chaser::flight
+}  // namespace chaser

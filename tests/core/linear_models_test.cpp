@@ -1,10 +1,10 @@
-#include "flight/linear_models.hpp"
+#include "core/linear_models.hpp"
 
 #include <gtest/gtest.h>
 
 #include "core/constants.hpp"
 
-namespace chaser::flight {
+namespace chaser {
 namespace {
 
 constexpr double kN = 8.53e-4;  // [rad/s]
@@ -49,4 +49,4 @@ TEST(LinearModels, AttitudeIsDoubleIntegratorThroughInertia) {
 }
 
 }  // namespace
-}  // namespace chaser::flight
+}  // namespace chaser

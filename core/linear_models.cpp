@@ -1,8 +1,8 @@
-#include "flight/linear_models.hpp"
+#include "core/linear_models.hpp"
 
 #include "core/discretize.hpp"
 
-namespace chaser::flight {
+namespace chaser {
 
 Mat6 hcw_state_matrix(double n) {
   Mat6 a = Mat6::Zero();
@@ -38,4 +38,4 @@ DiscreteLinear6 discrete_attitude(const Mat3& inertia_kgm2, double period_s) {
   return DiscreteLinear6{d.Ad, d.Bd};
 }
 
-}  // namespace chaser::flight
+}  // namespace chaser
