@@ -6,6 +6,7 @@
 #include "core/rotation.hpp"
 #include "flight/flight_software.hpp"
 #include "plant/plant.hpp"
+#include "plant/target.hpp"
 #include "sim/telemetry_channels.hpp"
 
 namespace chaser::sim {
@@ -100,7 +101,8 @@ RunResult run_scenario(const model::Scenario& scenario, const RunOptions& option
     result.infeasible_allocations += !out.allocation_feasible;
     if (telemetry && telemetry->ok())
       record_period(*telemetry, t_s, truth, plant.state, out, branch,
-                    attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body));
+                    attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
+                    plant::target_attitude(scenario.target, t_s));
   }
 
   const double t_end_s = to_seconds(k * period_ns);

@@ -39,6 +39,7 @@ std::vector<std::string> telemetry_channels() {
   add_vector_names(n, "v_lvlh", "mps");
   add_quat_names(n, "q_inertial_from_body");
   add_vector_names(n, "omega_body", "radps");
+  add_quat_names(n, "q_inertial_from_target");
   add_vector_names(n, "r_est_lvlh", "m");
   add_vector_names(n, "v_est_lvlh", "mps");
   add_quat_names(n, "q_est_inertial_from_body");
@@ -67,9 +68,11 @@ std::vector<std::string> telemetry_channels() {
 }
 
 void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, const plant::PlantState& plant,
-                   const flight::FlightOutput& f, int active_branch, const Vec3& attitude_error_body_rad) {
+                   const flight::FlightOutput& f, int active_branch, const Vec3& attitude_error_body_rad,
+                   const Quat& q_inertial_from_target) {
   w.add(t_s);
   add(w, x.r_lvlh_m), add(w, x.v_lvlh_mps), add(w, x.q_inertial_from_body), add(w, x.omega_body_radps);
+  add(w, q_inertial_from_target);
   add(w, f.estimate.r_lvlh_m), add(w, f.estimate.v_lvlh_mps), add(w, f.estimate.q_inertial_from_body);
   add(w, f.estimate.omega_body_radps);
   add(w, f.reference.r_lvlh_m), add(w, attitude_error_body_rad);

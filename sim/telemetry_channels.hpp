@@ -16,6 +16,6 @@ std::vector<std::string> telemetry_channels();
 // propellant at the period end). Thruster columns follow the active branch's eight thrusters.
 void record_period(TelemetryWriter& writer, double t_s, const plant::RigidState& truth_at_start,
                    const plant::PlantState& plant_after, const flight::FlightOutput& flight, int active_branch,
-                   const Vec3& attitude_error_body_rad);
+                   const Vec3& attitude_error_body_rad, const Quat& q_inertial_from_target);
 
 }  // namespace chaser::sim

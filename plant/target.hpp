@@ -1,0 +1,12 @@
+#pragma once
+// The passive target's attitude: fixed, or turning at a constant inertial rate (a slow tumble).
+// A constant inertial angular velocity w gives q_inertial_from_target(t) = exp(w t) * q(0); the
+// target's orbit motion defines the LVLH origin and is not repeated here.
+#include "core/types.hpp"
+#include "model/spacecraft.hpp"
+
+namespace chaser::plant {
+
+Quat target_attitude(const model::TargetParams& target, double t_s);
+
+}  // namespace chaser::plant
