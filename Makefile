@@ -26,6 +26,7 @@ demo: build
 	@./$(BUILD)/cli/chaser run scenarios/msr_terminal.yaml --out $(DEMO_OUT) \
 	  --set 'faults=[{thruster: T8, kind: stuck_open, onset_s: 1000}]'
 	@$(PYTHON) python/plot_run.py $(DEMO_OUT)
+	@$(PYTHON) python/plot_fdi.py $(DEMO_OUT)
 
 bench: build
 	@./$(BUILD)/bench/chaser_bench

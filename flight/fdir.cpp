@@ -72,7 +72,12 @@ FdirParams make_fdir_params(const model::Scenario& s) {
 
 FdirOutput step_fdir(const FdirParams& p, FdirState& state, const FdirInput& in) {
   FdirOutput out;
-  if (state.recovered) return out;  // the schemes watch branch A only
+  if (state.recovered) {  // the schemes watch branch A only: report their latched decisions
+    out.position.alarm = state.position.alarm, out.position.confirmed = state.position.confirmed;
+    out.attitude.alarm = state.attitude.alarm, out.attitude.confirmed = state.attitude.confirmed;
+    out.over_consumption = state.event.over_consumption;
+    return out;
+  }
   const model::SensorMeasurements& meas = *in.meas;
   const Vec6 wrench = p.config * in.ton;  // [N; N m] body axes, what the command asks for
 
