@@ -8,10 +8,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/scenario_input.hpp"
-#include "flight/fdi/design_inputs.hpp"
+#include "flight/fdir.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
-#include "model/thruster_geometry.hpp"
 
 namespace chaser::cli {
 
@@ -49,10 +48,8 @@ int fdi_design_command(const FdiDesignArgs& args) {
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& scenario = *loaded->scenario;
-  const model::ConfigMatrix m = model::configuration_matrix(scenario.thrusters, 0, scenario.chaser.com_body_m);
-  const flight::fdi::DesignInputs inputs = args.model == "position"
-                                               ? flight::fdi::position_design_inputs(scenario, m)
-                                               : flight::fdi::attitude_design_inputs(scenario, m);
+  const flight::fdi::DesignInputs inputs = flight::scheme_design_inputs(
+      scenario, args.model == "position" ? flight::FdiModel::kPosition : flight::FdiModel::kAttitude);
   flight::fdi::ResidualDesign design;
   try {
     design = flight::fdi::design_residual_generator(inputs);

@@ -4,20 +4,12 @@
 #include "flight/fdi/design_inputs.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_generator.hpp"
+#include "flight/guidance.hpp"
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
 
 namespace {
-
-// The scenario's design settings on top of the model-specific inputs.
-void apply_design_settings(const model::Scenario& s, const model::FdiSchemeParams& scheme,
-                           fdi::DesignInputs& inputs) {
-  inputs.eigenvalues.assign(s.fdi.eigenvalues.begin(), s.fdi.eigenvalues.end());
-  inputs.taylor_order = s.fdi.taylor_order;
-  inputs.delta_max_s = s.fdi.design_delay_max_s;
-  inputs.residual_dim = scheme.residual_dimension;
-}
 
 // thruster_inputs: each thruster's input direction in the model (3 x 8: M_F or M_C).
 fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSchemeParams& scheme,
@@ -47,6 +39,27 @@ fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSch
 
 }  // namespace
 
+fdi::DesignInputs scheme_design_inputs(const model::Scenario& s, FdiModel model) {
+  const model::ConfigMatrix config = model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
+  fdi::DesignInputs inputs;
+  if (model == FdiModel::kPosition) {
+    // The position model's input is the force in LVLH (eq. 20): the fault directions are those of
+    // the attitude the chaser flies, target pointing, not of body axes aligned with LVLH.
+    const Mat3 R_lvlh_from_body = target_pointing_q_lvlh_from_body(s.guidance.approach_axis_lvlh).toRotationMatrix();
+    inputs = fdi::position_design_inputs(s, config);
+    inputs.fault_inputs = R_lvlh_from_body * config.topRows<3>();
+    inputs.E_f = inputs.B * inputs.fault_inputs;
+  } else {
+    inputs = fdi::attitude_design_inputs(s, config);
+  }
+  const model::FdiSchemeParams& scheme = model == FdiModel::kPosition ? s.fdi.position : s.fdi.attitude;
+  inputs.eigenvalues.assign(s.fdi.eigenvalues.begin(), s.fdi.eigenvalues.end());
+  inputs.taylor_order = s.fdi.taylor_order;
+  inputs.delta_max_s = s.fdi.design_delay_max_s;
+  inputs.residual_dim = scheme.residual_dimension;
+  return inputs;
+}
+
 FdirParams make_fdir_params(const model::Scenario& s) {
   FdirParams p;
   p.config = model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
@@ -55,14 +68,12 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.position_enabled = s.fdi.position.enabled;
   p.attitude_enabled = s.fdi.attitude.enabled;
   if (p.position_enabled) {
-    fdi::DesignInputs inputs = fdi::position_design_inputs(s, p.config);
-    apply_design_settings(s, s.fdi.position, inputs);
-    p.position = scheme_params(s, s.fdi.position, inputs, p.config.topRows<3>());
+    const fdi::DesignInputs inputs = scheme_design_inputs(s, FdiModel::kPosition);
+    p.position = scheme_params(s, s.fdi.position, inputs, inputs.fault_inputs);
   }
   if (p.attitude_enabled) {
-    fdi::DesignInputs inputs = fdi::attitude_design_inputs(s, p.config);
-    apply_design_settings(s, s.fdi.attitude, inputs);
-    p.attitude = scheme_params(s, s.fdi.attitude, inputs, p.config.bottomRows<3>());
+    const fdi::DesignInputs inputs = scheme_design_inputs(s, FdiModel::kAttitude);
+    p.attitude = scheme_params(s, s.fdi.attitude, inputs, inputs.fault_inputs);
   }
   p.event.sensor_sigma_kg = s.sensors.propellant.noise_sigma_kg;
   p.event.absolute_margin_kg = s.fdi.over_consumption_threshold_kg;

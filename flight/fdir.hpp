@@ -7,6 +7,7 @@
 // The residual generators are designed in memory from the scenario when a run starts
 // (make_fdir_params), so dispersed campaigns never fly a stale design.
 #include "core/types.hpp"
+#include "flight/fdi/design_inputs.hpp"
 #include "flight/fdi/event_resolution.hpp"
 #include "flight/fdi/fdi_scheme.hpp"
 #include "model/messages.hpp"
@@ -25,6 +26,13 @@ struct FdirParams {
   model::ConfigMatrix config = model::ConfigMatrix::Zero();         // nominal M of branch A
   double period_s = 0.1;                                            // [s] T
 };
+
+enum class FdiModel { kPosition, kAttitude };
+
+// What the residual generator of one scheme is designed from: the scenario's model (eq. 12 or 15)
+// for branch A, the fault directions at the attitude flown (target pointing), and the fdi keys.
+// `chaser fdi design` and make_fdir_params both use it, so the printed design is the flown one.
+fdi::DesignInputs scheme_design_inputs(const model::Scenario& scenario, FdiModel model);
 
 // Designs both residual generators (flight/fdi/residual_design) for the scenario's branch A.
 FdirParams make_fdir_params(const model::Scenario& scenario);
