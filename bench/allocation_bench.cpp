@@ -10,6 +10,7 @@
 #include "core/random.hpp"
 #include "flight/thruster_allocation.hpp"
 #include "model/thruster_geometry.hpp"
+#include "tests/support/msr_branch_a.hpp"
 
 namespace chaser::flight {
 namespace {
@@ -17,16 +18,7 @@ namespace {
 constexpr int kDemandCount = 1000;
 
 AllocationParams msr_allocation() {
-  const double p[4][3] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
-  const double d[4][3] = {
-      {0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
-  model::ThrusterSetParams set;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 pos(p[i][0], p[i][1], p[i][2]);
-    const Vec3 dir = Vec3(d[i][0], d[i][1], d[i][2]).normalized();
-    set.thrusters[i] = {pos, dir, 22.0};
-    set.thrusters[i + 4] = {-pos, -dir, 22.0};  // partner: same torque, opposite force
-  }
+  const model::ThrusterSetParams set = testing::msr_branch_a_thrusters();
   AllocationParams params;
   params.config = model::configuration_matrix(set, 0, Vec3::Zero());
   return params;

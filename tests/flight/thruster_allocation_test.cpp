@@ -17,6 +17,7 @@
 #include "core/constants.hpp"
 #include "core/random.hpp"
 #include "model/thruster_geometry.hpp"
+#include "tests/support/msr_branch_a.hpp"
 
 namespace chaser::flight {
 namespace {
@@ -38,17 +39,7 @@ constexpr double kErrorFloorRel = 1e-12;
 // MSR branch A (layout of Fonod 2015 Fig. 3, values from the project brief), centre of mass at the
 // origin; column i = [22 d_i; p_i x 22 d_i] (eq. 2).
 model::ConfigMatrix msr_config() {
-  const double p[4][3] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
-  const double d[4][3] = {
-      {0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
-  model::ThrusterSetParams set;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 pos(p[i][0], p[i][1], p[i][2]);
-    const Vec3 dir = Vec3(d[i][0], d[i][1], d[i][2]).normalized();
-    set.thrusters[i] = {pos, dir, 22.0};
-    set.thrusters[i + 4] = {-pos, -dir, 22.0};  // partner: same torque, opposite force
-  }
-  return model::configuration_matrix(set, 0, Vec3::Zero());
+  return model::configuration_matrix(testing::msr_branch_a_thrusters(), 0, Vec3::Zero());
 }
 
 // Eight thrusters at random positions in a 2 m box with random unit directions, redrawn until

@@ -5,21 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/msr_branch_a.hpp"
+
 namespace chaser::model {
 namespace {
 
-// The MSR branch A layout of scenarios/msr_terminal.yaml: T1..T4, partners T5..T8 mirrored through
-// the reference point (position and direction negated).
-ThrusterSetParams msr_branch_a() {
-  const Vec3 positions[4] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
-  const Vec3 directions[4] = {{0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
-  ThrusterSetParams set;
-  for (int i = 0; i < 4; ++i) {
-    set.thrusters[i] = {positions[i], directions[i].normalized(), 22.0};
-    set.thrusters[i + 4] = {-positions[i], -directions[i].normalized(), 22.0};
-  }
-  return set;
-}
+ThrusterSetParams msr_branch_a() { return testing::msr_branch_a_thrusters(); }
 
 // Column i is [F_i; (p_i - c) x F_i] with |F_i| = 22 N.
 TEST(ThrusterGeometry, ColumnsAreForceAndMomentAboutTheCentreOfMass) {
