@@ -81,7 +81,8 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   return p;
 }
 
-FdirOutput step_fdir(const FdirParams& p, FdirState& state, const FdirInput& in) {
+FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
+                     const FdirInput& in) {
   FdirOutput out;
   if (state.recovered) {  // the schemes watch branch A only: report their latched decisions
     out.position.alarm = state.position.alarm, out.position.confirmed = state.position.confirmed;
@@ -89,7 +90,6 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const FdirInput& in)
     out.over_consumption = state.event.over_consumption;
     return out;
   }
-  const model::SensorMeasurements& meas = *in.meas;
   const Vec6 wrench = p.config * in.ton;  // [N; N m] body axes, what the command asks for
 
   // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.

@@ -55,17 +55,17 @@ struct FdirOutput {
   bool recover_now = false;       // this period's confirmation triggers the switch to branch B
 };
 
-// Quantities of one period the FDI schemes read (flight-side only: measurements, estimates,
-// the reference attitude and the command of this period).
+// Quantities of one period the FDI schemes read besides the measurements (flight-side only:
+// estimates, the reference attitude and the command of this period).
 struct FdirInput {
   double t_s = 0;                           // [s]
-  const model::SensorMeasurements* meas = nullptr;
   Quat q_est_inertial_from_body;           // navigation estimate
   Quat q_ref_inertial_from_body;           // target-pointing reference
   Quat q_inertial_from_lvlh;               // LVLH orientation now
   model::Ton8 ton = model::Ton8::Zero();   // commanded on-times of branch A this period
 };
 
-FdirOutput step_fdir(const FdirParams& params, FdirState& state, const FdirInput& in);
+FdirOutput step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
+                     const FdirInput& in);
 
 }  // namespace chaser::flight

@@ -40,12 +40,11 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
 
   // FDIR watches branch A's command; a confirmed fault switches to branch B from this period on.
   const FdirInput fdir_in{.t_s = t_s,
-                          .meas = &meas,
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
                           .ton = managed.ton_active};
-  out.fdir = step_fdir(params.fdir, state.fdir, fdir_in);
+  out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
   if (out.fdir.recover_now) {
     state.active_branch = 1;
     managed = manage_thrusters(params.management, state.active_branch, out.released_wrench);
