@@ -62,7 +62,6 @@ fdi::DesignInputs scheme_design_inputs(const model::Scenario& s, FdiModel model)
 
 FdirParams make_fdir_params(const model::Scenario& s) {
   FdirParams p;
-  p.config = model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
   p.period_s = s.control_period_s;
   p.recovery = s.fdi.recovery;
   p.position_enabled = s.fdi.position.enabled;
@@ -90,7 +89,7 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     out.over_consumption = state.event.over_consumption;
     return out;
   }
-  const Vec6 wrench = p.config * in.ton;  // [N; N m] body axes, what the command asks for
+  const Vec6& wrench = in.commanded_wrench;
 
   // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.
   const bool alarm_before = state.position.alarm || state.attitude.alarm;

@@ -23,7 +23,6 @@ struct FdirParams {
   fdi::FdiSchemeParams attitude;
   fdi::EventResolutionParams event;
   std::array<double, model::kThrustersPerBranch> mass_flow_kgps{};  // [kg/s] branch A, nominal
-  model::ConfigMatrix config = model::ConfigMatrix::Zero();         // nominal M of branch A
   double period_s = 0.1;                                            // [s] T
 };
 
@@ -63,6 +62,7 @@ struct FdirInput {
   Quat q_ref_inertial_from_body;           // target-pointing reference
   Quat q_inertial_from_lvlh;               // LVLH orientation now
   model::Ton8 ton = model::Ton8::Zero();   // commanded on-times of branch A this period
+  Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
 };
 
 FdirOutput step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,

@@ -43,7 +43,8 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
-                          .ton = managed.ton_active};
+                          .ton = managed.ton_active,
+                          .commanded_wrench = managed.commanded_wrench};
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
   if (out.fdir.recover_now) {
     state.active_branch = 1;
