@@ -70,12 +70,19 @@ FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState&
 
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
+  RunResult result = run_scenario(scenario, flight::make_flight_params(scenario), options);
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return result;
+}
+
+RunResult run_scenario(const model::Scenario& scenario, const flight::FlightParams& flight_params,
+                       const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
   const double n = scenario.orbit.mean_motion_radps();
   const TimeNs period_ns = from_seconds(scenario.control_period_s);
   const std::int64_t periods = from_seconds(scenario.duration_s) / period_ns;
 
   plant::Plant plant = plant::make_plant(scenario, initial_truth(scenario), scenario.seed);
-  const flight::FlightParams flight_params = flight::make_flight_params(scenario);
   flight::FlightState flight_state;
 
   std::unique_ptr<TelemetryWriter> telemetry;

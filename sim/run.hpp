@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "flight/flight_software.hpp"
 #include "model/scenario.hpp"
 #include "sim/mission_monitor.hpp"
 
@@ -30,13 +31,20 @@ struct RunResult {
   MissionFigures figures;
   double propellant_used_kg = 0;  // [kg]
   double simulated_s = 0;         // [s] simulated time actually flown (less than duration if diverged)
-  double wall_s = 0;              // [s] wall-clock time of the run loop
+  double wall_s = 0;              // [s] wall-clock time of the run (with the design when done by the run)
   std::int64_t periods = 0;
   std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
   bool telemetry_ok = true;
   FdirResult fdir;
 };
 
+// One run where the flight software is built from the same scenario as the plant (nominal = truth).
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options = {});
+
+// One run of a plant built from `truth` (a campaign's dispersed chaser, its seed and fault) flown by
+// flight software designed beforehand from the nominal scenario (make_flight_params). The design,
+// FDI included, is then done once per campaign and shared read-only by every run and thread.
+RunResult run_scenario(const model::Scenario& truth, const flight::FlightParams& flight_params,
+                       const RunOptions& options = {});
 
 }  // namespace chaser::sim
