@@ -1,6 +1,8 @@
 #include "sim/run.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "core/rotation.hpp"
@@ -92,6 +94,8 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   }
 
   RunResult result;
+  if (options.record_glr_per_second)
+    result.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(scenario.duration_s)), {0.0f, 0.0f});
   std::int64_t k = 0;
   for (; k < periods; ++k) {
     const TimeNs t_k = k * period_ns;
@@ -106,6 +110,11 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
     result.infeasible_allocations += !out.allocation_feasible;
+    if (options.record_glr_per_second) {
+      std::array<float, 2>& second = result.glr_max_per_s[static_cast<std::size_t>(t_s)];
+      second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr));
+      second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr));
+    }
     if (telemetry && telemetry->ok())
       record_period(*telemetry, t_s, truth, plant.state, out, branch,
                     attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),

@@ -1,7 +1,9 @@
 #pragma once
 // One closed-loop run: the fixed-order schedule of plant and flight blocks, period after period.
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "flight/flight_software.hpp"
 #include "model/scenario.hpp"
@@ -11,6 +13,7 @@ namespace chaser::sim {
 
 struct RunOptions {
   std::string telemetry_path;  // empty: no telemetry (campaigns, benchmarks)
+  bool record_glr_per_second = false;  // fill RunResult::glr_max_per_s (threshold selection)
 };
 
 // What one FDI scheme concluded over the run (times from the start of the run).
@@ -36,6 +39,9 @@ struct RunResult {
   std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
   bool telemetry_ok = true;
   FdirResult fdir;
+  // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole
+  // second of the run, [position, attitude] per second (index floor(t)); 0 for a disabled scheme.
+  std::vector<std::array<float, 2>> glr_max_per_s;
 };
 
 // One run where the flight software is built from the same scenario as the plant (nominal = truth).

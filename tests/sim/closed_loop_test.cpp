@@ -105,9 +105,17 @@ TEST(ClosedLoop, FlightDesignedFromNominalFliesADispersedPlant) {
   nominal.duration_s = 300.0;
   const flight::FlightParams flight = flight::make_flight_params(nominal);
   const RunResult own = run_scenario(nominal);
-  const RunResult shared = run_scenario(nominal, flight);
+  const RunResult shared = run_scenario(nominal, flight, {.telemetry_path = {}, .record_glr_per_second = true});
   EXPECT_EQ(own.propellant_used_kg, shared.propellant_used_kg);
   EXPECT_EQ(own.figures.final_position_error_m, shared.figures.final_position_error_m);
+  // The per-second GLR maxima: one entry per second, positive where a scheme runs, below J_th.
+  ASSERT_EQ(shared.glr_max_per_s.size(), 300u);
+  EXPECT_TRUE(own.glr_max_per_s.empty());
+  for (const auto& second : shared.glr_max_per_s) {
+    EXPECT_GT(second[0], 0.0f);
+    EXPECT_LT(second[0], nominal.fdi.glr_threshold);
+    EXPECT_LT(second[1], nominal.fdi.glr_threshold);
+  }
 
   model::Scenario truth = nominal;
   truth.chaser.mass_kg *= 1.1;
