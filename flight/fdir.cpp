@@ -1,5 +1,8 @@
 #include "flight/fdir.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/rotation.hpp"
 #include "flight/fdi/design_inputs.hpp"
 #include "flight/fdi/residual_design.hpp"
@@ -33,8 +36,42 @@ fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSch
     p.isolation.criterion = fdi::IsolationCriterion::kSignature;
     p.isolation.signature = fdi::make_signature_filter(p.residual, thruster_inputs);
   }
+  p.isolate = s.fdi.isolation_method != model::IsolationMethod::kDeficit;
   p.period_s = s.control_period_s;
   return p;
+}
+
+int whole_periods(double seconds, double period_s) { return static_cast<int>(std::lround(seconds / period_s)); }
+
+fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const model::ConfigMatrix& config) {
+  const double T = s.control_period_s;
+  fdi::DeficitIsolationParams p;
+  p.inertia_kgm2 = s.chaser.inertia_kgm2;
+  p.mass_kg = s.chaser.mass_kg;
+  p.force_body_N = config.topRows<3>();
+  p.torque_body_Nm = config.bottomRows<3>();
+  p.period_s = T;
+  p.before = whole_periods(s.fdi.deficit.window_before_s, T);
+  p.after = whole_periods(s.fdi.deficit.window_after_s, T);
+  p.max_window = whole_periods(s.fdi.deficit.window_max_s, T);
+  // The sensor specifications set the weights; a noiseless sensor gets a small floor so that the
+  // weights stay finite.
+  p.lidar_sigma_m = std::max(s.sensors.lidar.noise_sigma_m, 1e-6);
+  p.gyro_sigma_radps = std::max(s.sensors.gyro.noise_sigma_radps, 1e-9);
+  p.pulse_uncertainty = s.fdi.deficit.pulse_uncertainty;
+  p.min_gain = s.fdi.deficit.min_gain;
+  p.min_margin = s.fdi.deficit.min_margin;
+  return p;
+}
+
+// A scheme's isolation by the deficit bank: once the scheme has alarmed, the bank's decision (made
+// a few seconds later) becomes the scheme's confirmed thruster.
+void deficit_confirmation(const FdirParams& p, FdirState& state, fdi::DeficitDecisionState& decision,
+                          fdi::FdiSchemeState& scheme, fdi::FdiSchemeOutput& out) {
+  const fdi::DeficitDecision& d =
+      fdi::step_deficit_decision(p.deficit, state.deficit_bank, decision, scheme.alarm ? scheme.alarm_period : -1);
+  if (d.decided && d.thruster >= 0 && scheme.confirmed < 0) scheme.confirmed = d.thruster;
+  out.confirmed = scheme.confirmed;
 }
 
 }  // namespace
@@ -77,6 +114,9 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.event.sensor_sigma_kg = s.sensors.propellant.noise_sigma_kg;
   p.event.absolute_margin_kg = s.fdi.over_consumption_threshold_kg;
   p.mass_flow_kgps = fdi::nominal_mass_flow_kgps(s.thrusters, 0, s.chaser.isp_s);
+  p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
+  if (p.deficit_isolation)
+    p.deficit = deficit_params(s, model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m));
   return p;
 }
 
@@ -97,12 +137,21 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
       p.event, state.event, meas.propellant_used_kg,
       fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s), alarm_before);
 
+  const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
+  if (p.deficit_isolation)
+    fdi::push_deficit_sample(p.deficit, state.deficit_bank,
+                             {.omega_body_radps = meas.omega_body_radps,
+                              .r_lvlh_m = meas.r_lvlh_m,
+                              .q_lvlh_from_body = q_lvlh_from_body,
+                              .ton = in.ton,
+                              .mass_kg = p.deficit.mass_kg - meas.propellant_used_kg});
+
   if (p.position_enabled) {
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
-    const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
     out.position = fdi::step_fdi_scheme(p.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption);
+    if (p.deficit_isolation) deficit_confirmation(p, state, state.position_deficit, state.position, out.position);
     if (out.position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
   }
   if (p.attitude_enabled) {
@@ -111,8 +160,12 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     const Vec3 angles = attitude_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
     out.attitude =
         fdi::step_fdi_scheme(p.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption);
+    if (p.deficit_isolation) deficit_confirmation(p, state, state.attitude_deficit, state.attitude, out.attitude);
     if (out.attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }
+
+  // The fault-free noise estimate of the deficit bank must not learn from the fault.
+  if (state.position.alarm || state.attitude.alarm) state.deficit_bank.frozen = true;
 
   // Recovery on the first confirmation by either scheme.
   const int confirmed = out.position.confirmed >= 0 ? out.position.confirmed : out.attitude.confirmed;

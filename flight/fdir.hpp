@@ -4,9 +4,15 @@
 // the recovery: once a scheme confirms a faulty thruster, close branch A's latch valve (which also
 // stops a stuck-open thruster) and fly on with the redundant branch B.
 //
+// Isolation is either each scheme's own (eqs. 42-45, or the signature variant) or, with
+// isolation_method deficit, the impulse-deficit bank (flight/fdi/deficit_isolation.hpp): the
+// schemes then only detect, and after a scheme's alarm the bank names the thruster for it and
+// says which fault it is and how large.
+//
 // The residual generators are designed in memory from the scenario when a run starts
 // (make_fdir_params), so dispersed campaigns never fly a stale design.
 #include "core/types.hpp"
+#include "flight/fdi/deficit_isolation.hpp"
 #include "flight/fdi/design_inputs.hpp"
 #include "flight/fdi/event_resolution.hpp"
 #include "flight/fdi/fdi_scheme.hpp"
@@ -22,6 +28,8 @@ struct FdirParams {
   fdi::FdiSchemeParams position;
   fdi::FdiSchemeParams attitude;
   fdi::EventResolutionParams event;
+  bool deficit_isolation = false;   // the deficit bank names the thruster for both schemes
+  fdi::DeficitIsolationParams deficit;
   std::array<double, model::kThrustersPerBranch> mass_flow_kgps{};  // [kg/s] branch A, nominal
   double period_s = 0.1;                                            // [s] T
 };
@@ -40,6 +48,9 @@ struct FdirState {
   fdi::FdiSchemeState position;
   fdi::FdiSchemeState attitude;
   fdi::EventResolutionState event;
+  fdi::DeficitBankState deficit_bank;           // samples of the last periods, with deficit isolation
+  fdi::DeficitDecisionState position_deficit;   // the bank's decision after each scheme's alarm
+  fdi::DeficitDecisionState attitude_deficit;
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
   bool recovered = false;           // branch A closed, flying on branch B

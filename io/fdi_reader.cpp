@@ -50,9 +50,20 @@ void read_isolation_method(MapReader& r, model::IsolationMethod& out) {
   if (!r.text("isolation_method", text)) return;
   if (text == "paper") out = model::IsolationMethod::kPaper;
   else if (text == "signature") out = model::IsolationMethod::kSignature;
+  else if (text == "deficit") out = model::IsolationMethod::kDeficit;
   else
     r.diagnostics().add(r.path_of("isolation_method"),
-                        fmt::format("must be one of paper, signature (got '{}')", text));
+                        fmt::format("must be one of paper, signature, deficit (got '{}')", text));
+}
+
+// Window lengths are checked against each other and the control period in validate_scenario.
+void read_deficit(MapReader& r, model::DeficitParams& out) {
+  r.number("window_before_s", Range::positive(), out.window_before_s);
+  r.number("window_after_s", Range::positive(), out.window_after_s);
+  r.number("window_max_s", Range::positive(), out.window_max_s);
+  r.number("pulse_uncertainty", Range::closed(0.0, 1.0), out.pulse_uncertainty);
+  r.number("min_gain", Range::non_negative(), out.min_gain);
+  r.number("min_margin", Range::non_negative(), out.min_margin);
 }
 
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {
@@ -75,6 +86,7 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   read_isolation_method(r, out.isolation_method);
   read_count_in(r, "isolation_settle", 0, 10 * kMaxFdiWindow, out.isolation_settle);
   r.boolean("glr_increase_only", out.glr_increase_only);
+  read_section(r, "deficit", [&](MapReader& m) { read_deficit(m, out.deficit); });
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
   r.boolean("recovery", out.recovery);
   read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });

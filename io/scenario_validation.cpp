@@ -53,6 +53,25 @@ void check_sensor_delay(Diagnostics& d, const char* path, double value, double p
                             format_number(kMaxSensorDelayPeriods * period_s), format_number(value)));
 }
 
+// The deficit isolation's windows, in whole periods: at least one period before the alarm, two
+// after it, the longest window holding both, and no longer than the on-board ring of samples.
+void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double period) {
+  const char* keys[] = {"fdi.deficit.window_before_s", "fdi.deficit.window_after_s", "fdi.deficit.window_max_s"};
+  for (const char* key : keys)
+    if (!d.clean(key)) return;
+  const double max_s = (model::kMaxDeficitWindowPeriods - 1) * period;
+  if (w.window_before_s < period)
+    d.add(keys[0], fmt::format("must be >= control_period_s = {} (got {})", format_number(period),
+                               format_number(w.window_before_s)));
+  if (w.window_after_s < 2 * period)
+    d.add(keys[1], fmt::format("must be >= 2 control periods = {} (got {})", format_number(2 * period),
+                               format_number(w.window_after_s)));
+  if (w.window_max_s < w.window_before_s + w.window_after_s || w.window_max_s > max_s)
+    d.add(keys[2], fmt::format("must be in [window_before_s + window_after_s = {}, {}] (got {})",
+                               format_number(w.window_before_s + w.window_after_s), format_number(max_s),
+                               format_number(w.window_max_s)));
+}
+
 void check_timing(const model::Scenario& s, Diagnostics& d) {
   if (!d.clean("control_period_s")) return;
   const double period = s.control_period_s;
@@ -80,6 +99,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
   if (d.clean("fdi.design_delay_max_s") && s.fdi.design_delay_max_s > period)
     d.add("fdi.design_delay_max_s", fmt::format("must be in (0, control_period_s = {}] (got {})", format_number(period),
                                                 format_number(s.fdi.design_delay_max_s)));
+  check_deficit_windows(d, s.fdi.deficit, period);
 }
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy

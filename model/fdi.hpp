@@ -15,6 +15,21 @@ struct FdiSchemeParams {
 enum class IsolationMethod {
   kPaper,      // cross-correlation of the residual with the on-times, eqs. 42-45 (the published one)
   kSignature,  // correlation with each thruster's residual signature (flight/fdi/isolation.hpp)
+  kDeficit,    // 6-DOF impulse-deficit hypothesis bank (flight/fdi/deficit_isolation.hpp)
+};
+
+// Samples the deficit isolation's on-board ring holds: its longest window is one less.
+inline constexpr int kMaxDeficitWindowPeriods = 160;
+
+// The impulse-deficit isolation (flight/fdi/deficit_isolation.hpp): its window about the alarm and
+// its decision thresholds.
+struct DeficitParams {
+  double window_before_s = 2.0;   // [s] fit window starts this long before the alarm (onsets scanned)
+  double window_after_s = 0.5;    // [s] first evaluation this long after the alarm
+  double window_max_s = 15.0;     // [s] longest window while the decision is ambiguous
+  double pulse_uncertainty = 0.01;  // [-] relative 1-sigma error of a commanded pulse's torque
+  double min_gain = 50.0;         // [-] log-likelihood gain the best hypothesis must reach
+  double min_margin = 25.0;       // [-] its lead over the second best
 };
 
 struct FdiParams {
@@ -31,6 +46,7 @@ struct FdiParams {
   IsolationMethod isolation_method = IsolationMethod::kPaper;
   int isolation_settle = 0;         // [-] periods after the alarm before isolation starts (0: paper)
   bool glr_increase_only = false;   // [-] only a residual increase counts (eq. 41 as printed: false)
+  DeficitParams deficit;            // used when isolation_method is kDeficit
   // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
   double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
   // Recovery: on a confirmed fault, close branch A's latch valve and fly on with branch B.

@@ -27,12 +27,13 @@ FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& s
     state.alarm = true;
     state.alarm_period = state.period;
   }
-  const IsolationOutput iso =
-      step_isolation(params.isolation, state.isolation, out.residual, ton, state.alarm,
-                     over_consumption);
-  if (state.confirmed < 0 && iso.confirmed >= 0) state.confirmed = iso.confirmed;
+  if (params.isolate) {
+    const IsolationOutput iso =
+        step_isolation(params.isolation, state.isolation, out.residual, ton, state.alarm, over_consumption);
+    if (state.confirmed < 0 && iso.confirmed >= 0) state.confirmed = iso.confirmed;
+    out.candidate = iso.candidate;
+  }
   out.alarm = state.alarm;
-  out.candidate = iso.candidate;
   out.confirmed = state.confirmed;
   out.alarm_time_s = state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
   ++state.period;

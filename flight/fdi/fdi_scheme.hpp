@@ -22,6 +22,7 @@ struct FdiSchemeParams {
   ResidualGeneratorParams residual;
   GlrParams glr;
   IsolationParams isolation;
+  bool isolate = true;    // false: the scheme only detects; the FDIR supervisor names the thruster
   double period_s = 0.1;  // [s] T, for the alarm time
 };
 

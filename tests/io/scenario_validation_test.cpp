@@ -62,7 +62,7 @@ const BadCase kBadCases[] = {
   {"fdi_eigenvalues_short", {"fdi.eigenvalues=[0.9,0.8]"}, "fdi.eigenvalues", "must be a list of 6 numbers, each in (-1, 1) (got a list of 2)"},
   {"fdi_glr_window_long", {"fdi.glr_window=129"}, "fdi.glr_window", "must be a whole number in [2, 128] (got 129)"},
   {"fdi_residual_dimension", {"fdi.attitude.residual_dimension=0"}, "fdi.attitude.residual_dimension", "must be a whole number in [1, 3] (got 0)"},
-  {"fdi_isolation_method_unknown", {"fdi.isolation_method=guess"}, "fdi.isolation_method", "must be one of paper, signature (got 'guess')"},
+  {"fdi_isolation_method_unknown", {"fdi.isolation_method=guess"}, "fdi.isolation_method", "must be one of paper, signature, deficit (got 'guess')"},
   {"fdi_sigma0_zero", {"fdi.position.sigma0=0"}, "fdi.position.sigma0", "must be > 0 (got 0)"},
   {"fdi_design_delay_beyond_period", {"fdi.design_delay_max_s=0.15"}, "fdi.design_delay_max_s", "must be in (0, control_period_s = 0.1] (got 0.15)"},
   {"propellant_noise_negative", {"sensors.propellant.noise_sigma_kg=-1"}, "sensors.propellant.noise_sigma_kg", "must be >= 0"},

@@ -1,0 +1,241 @@
+#include "flight/fdi/deficit_isolation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaser::flight::fdi {
+
+namespace {
+
+const DeficitSample& sample_at(const DeficitBankState& bank, std::int64_t index) {
+  return bank.ring[static_cast<std::size_t>(index % kMaxDeficitWindow)];
+}
+
+// Euler's equation over one period, less the commanded torque: what the thrusters did not do.
+Vec3 torque_row(const DeficitIsolationParams& p, const DeficitSample& now, const DeficitSample& next) {
+  const Mat3& I = p.inertia_kgm2;
+  const Vec3& w = now.omega_body_radps;
+  return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
+}
+
+// Per axis: the gyro noise alone, through the difference of two readings.
+Vec3 torque_noise_floor_sq(const DeficitIsolationParams& p) {
+  const double s = std::sqrt(2.0) * p.gyro_sigma_radps / p.period_s;
+  return (p.inertia_kgm2.array().square().rowwise().sum() * s * s).matrix();
+}
+
+// The 2 x 2 normal equations of (a, b) after r0, v0 are projected out.
+struct Normal2 {
+  double haa = 0, hab = 0, hbb = 0, ga = 0, gb = 0;
+};
+
+struct Fit2 {
+  double a = 0, b = 0, gain = 0;
+};
+
+// Maximise 2 g'x - x'Hx (the drop of the RSS) over a >= 0, b <= 0: every fault case has a
+// non-negative constant deficit and a non-positive command-proportional one (docs/fdi.md). The
+// optimum is the unconstrained one if feasible, else on a face or at the origin: try all, keep the best.
+Fit2 solve_constrained(const Normal2& n) {
+  auto value = [&](double a, double b) {
+    return 2.0 * (n.ga * a + n.gb * b) - (n.haa * a * a + 2.0 * n.hab * a * b + n.hbb * b * b);
+  };
+  Fit2 best{0.0, 0.0, 0.0};
+  const double det = n.haa * n.hbb - n.hab * n.hab;
+  if (det > 0.0) {
+    const double a = (n.hbb * n.ga - n.hab * n.gb) / det;
+    const double b = (n.haa * n.gb - n.hab * n.ga) / det;
+    if (a >= 0.0 && b <= 0.0) return Fit2{a, b, value(a, b)};
+  }
+  const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;
+  if (const double v = value(a_only, 0.0); v > best.gain) best = Fit2{a_only, 0.0, v};
+  const double b_only = n.hbb > 0.0 ? std::min(n.gb / n.hbb, 0.0) : 0.0;
+  if (const double v = value(0.0, b_only); v > best.gain) best = Fit2{0.0, b_only, v};
+  return best;
+}
+
+// Scratch arrays of one evaluation, sized for the longest window (on the stack: no allocation).
+struct Window {
+  int n = 0;
+  std::array<DeficitMat38, kMaxDeficitWindow> force_lvlh{};  // [m/s^2 per unit on-time] R M_F / m
+  std::array<Vec3, kMaxDeficitWindow> y_pos{};    // [m] position rows, detrended
+  std::array<Vec3, kMaxDeficitWindow> y_tau{};    // [N m] torque rows
+  std::array<Vec3, kMaxDeficitWindow> w_tau{};    // [1/(N m)^2] torque row weights
+  std::array<model::Ton8, kMaxDeficitWindow> ton{};
+  double g00 = 0, g01 = 0, g11 = 0;               // Gram matrix of [1, k] over the position rows
+};
+
+// p' G^-1 q for the straight-line projection: the part of <x, z> that r0 + v0 t explains.
+double line_part(const Window& w, double p0, double p1, double q0, double q1) {
+  const double det = w.g00 * w.g11 - w.g01 * w.g01;
+  return (p0 * (w.g11 * q0 - w.g01 * q1) + p1 * (w.g00 * q1 - w.g01 * q0)) / det;
+}
+
+double build_window(const DeficitIsolationParams& p, const DeficitBankState& bank, std::int64_t first, Window& w) {
+  const double T = p.period_s;
+  const Vec3 floor_sq = torque_noise_floor_sq(p);
+  const Vec3 sigma0_sq = bank.torque_mean_square.cwiseMax(floor_sq);
+  const DeficitMat38 abs_torque = p.torque_body_Nm.cwiseAbs();
+  Vec3 pos = Vec3::Zero(), vel = Vec3::Zero();
+  for (int k = 0; k < w.n; ++k) {
+    const DeficitSample& s = sample_at(bank, first + k);
+    w.force_lvlh[k] = s.q_lvlh_from_body.toRotationMatrix() * p.force_body_N / s.mass_kg;
+    w.ton[k] = s.ton;
+    w.y_pos[k] = s.r_lvlh_m - pos;  // what the commanded forces do not explain
+    const Vec3 acc = w.force_lvlh[k] * s.ton;
+    pos += T * vel + 0.5 * T * T * acc;
+    vel += T * acc;
+    if (k + 1 < w.n) {
+      w.y_tau[k] = torque_row(p, s, sample_at(bank, first + k + 1));
+      const Vec3 pulse = p.pulse_uncertainty * (abs_torque * s.ton);
+      w.w_tau[k] = (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
+    }
+  }
+  // No-fault fit: r0 + v0 t per axis; what it leaves are the detrended position rows.
+  w.g00 = w.n, w.g01 = 0.5 * w.n * (w.n - 1), w.g11 = (w.n - 1.0) * w.n * (2.0 * w.n - 1.0) / 6.0;
+  const double inv_var = 1.0 / (p.lidar_sigma_m * p.lidar_sigma_m);
+  double rss = 0;
+  for (int ax = 0; ax < 3; ++ax) {
+    double s0 = 0, s1 = 0;
+    for (int k = 0; k < w.n; ++k) s0 += w.y_pos[k](ax), s1 += k * w.y_pos[k](ax);
+    const double det = w.g00 * w.g11 - w.g01 * w.g01;
+    const double c0 = (w.g11 * s0 - w.g01 * s1) / det, c1 = (w.g00 * s1 - w.g01 * s0) / det;
+    for (int k = 0; k < w.n; ++k) {
+      w.y_pos[k](ax) -= c0 + c1 * k;
+      rss += inv_var * w.y_pos[k](ax) * w.y_pos[k](ax);
+    }
+  }
+  for (int k = 0; k + 1 < w.n; ++k) rss += w.y_tau[k].cwiseProduct(w.y_tau[k]).dot(w.w_tau[k]);
+  return rss;
+}
+
+// Normal equations of hypothesis i with onset kf (window-relative).
+Normal2 normal_equations(const DeficitIsolationParams& p, const Window& w, int i, int kf) {
+  const double T = p.period_s;
+  const double inv_var = 1.0 / (p.lidar_sigma_m * p.lidar_sigma_m);
+  Normal2 n;
+  // Position rows: the double integral of the deficit's acceleration from the onset on.
+  Vec3 pa = Vec3::Zero(), va = Vec3::Zero(), pb = Vec3::Zero(), vb = Vec3::Zero();
+  Vec3 sa0 = Vec3::Zero(), sa1 = Vec3::Zero(), sb0 = Vec3::Zero(), sb1 = Vec3::Zero();
+  Vec3 aa = Vec3::Zero(), ab = Vec3::Zero(), bb = Vec3::Zero();
+  for (int k = kf; k < w.n; ++k) {  // columns are zero before the onset
+    // pa, pb hold the columns' values at row k
+    aa += pa.cwiseProduct(pa), ab += pa.cwiseProduct(pb), bb += pb.cwiseProduct(pb);
+    n.ga += inv_var * pa.dot(w.y_pos[k]), n.gb += inv_var * pb.dot(w.y_pos[k]);
+    sa0 += pa, sa1 += k * pa, sb0 += pb, sb1 += k * pb;
+    const Vec3 acc_a = w.force_lvlh[k].col(i), acc_b = acc_a * w.ton[k](i);
+    pa += T * va + 0.5 * T * T * acc_a, va += T * acc_a;
+    pb += T * vb + 0.5 * T * T * acc_b, vb += T * acc_b;
+  }
+  for (int ax = 0; ax < 3; ++ax) {  // less what r0 + v0 t absorbs
+    n.haa += inv_var * (aa(ax) - line_part(w, sa0(ax), sa1(ax), sa0(ax), sa1(ax)));
+    n.hab += inv_var * (ab(ax) - line_part(w, sa0(ax), sa1(ax), sb0(ax), sb1(ax)));
+    n.hbb += inv_var * (bb(ax) - line_part(w, sb0(ax), sb1(ax), sb0(ax), sb1(ax)));
+  }
+  // Torque rows.
+  const Vec3 c = p.torque_body_Nm.col(i);
+  for (int k = kf; k + 1 < w.n; ++k) {
+    const Vec3 wc = w.w_tau[k].cwiseProduct(c);
+    const double cc = wc.dot(c), cy = wc.dot(w.y_tau[k]), u = w.ton[k](i);
+    n.haa += cc, n.hab += u * cc, n.hbb += u * u * cc;
+    n.ga += cy, n.gb += u * cy;
+  }
+  const double prior = 1.0 / (p.prior_sigma * p.prior_sigma);
+  n.haa += prior, n.hbb += prior;
+  return n;
+}
+
+}  // namespace
+
+std::vector<std::string> validate(const DeficitIsolationParams& p) {
+  std::vector<std::string> problems;
+  if (!(p.mass_kg > 0.0)) problems.push_back("mass_kg: must be > 0");
+  if (!(p.period_s > 0.0)) problems.push_back("period_s: must be > 0");
+  if (p.before < 1) problems.push_back("before: must be >= 1 period");
+  if (p.after < 2) problems.push_back("after: must be >= 2 periods");
+  if (p.max_window < p.before + p.after || p.max_window > kMaxDeficitWindow - 1)
+    problems.push_back("max_window: must be in [before + after, " + std::to_string(kMaxDeficitWindow - 1) + "]");
+  if (p.reevaluate_every < 1) problems.push_back("reevaluate_every: must be >= 1");
+  if (!(p.lidar_sigma_m > 0.0)) problems.push_back("lidar_sigma_m: must be > 0");
+  if (!(p.gyro_sigma_radps > 0.0)) problems.push_back("gyro_sigma_radps: must be > 0");
+  if (!(p.pulse_uncertainty >= 0.0)) problems.push_back("pulse_uncertainty: must be >= 0");
+  if (!(p.noise_time_constant_s > 0.0)) problems.push_back("noise_time_constant_s: must be > 0");
+  if (!(p.min_gain >= 0.0) || !(p.min_margin >= 0.0)) problems.push_back("min_gain, min_margin: must be >= 0");
+  if (!(p.prior_sigma > 0.0)) problems.push_back("prior_sigma: must be > 0");
+  return problems;
+}
+
+void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank, const DeficitSample& sample) {
+  if (bank.count == 0) bank.torque_mean_square = torque_noise_floor_sq(p);
+  if (bank.count > 0 && !bank.frozen) {
+    const Vec3 y = torque_row(p, sample_at(bank, bank.count - 1), sample);
+    const double alpha = std::min(1.0, p.period_s / p.noise_time_constant_s);
+    bank.torque_mean_square += alpha * (y.cwiseProduct(y) - bank.torque_mean_square);
+  }
+  bank.ring[static_cast<std::size_t>(bank.count % kMaxDeficitWindow)] = sample;
+  ++bank.count;
+}
+
+DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, const DeficitBankState& bank,
+                                              std::int64_t first, std::int64_t last_onset) {
+  DeficitHypotheses h;
+  first = std::max({first, std::int64_t{0}, bank.count - kMaxDeficitWindow});
+  Window w;
+  w.n = static_cast<int>(bank.count - first);
+  if (w.n < 3) return h;
+  h.rss_no_fault = build_window(p, bank, first, w);
+  h.rows = 3 * w.n + 3 * (w.n - 1);
+  const int last_kf = static_cast<int>(std::clamp<std::int64_t>(last_onset - first, 0, w.n - 2));
+  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+    h.gain(i) = -1.0;
+    for (int kf = 0; kf <= last_kf; ++kf) {
+      const Fit2 fit = solve_constrained(normal_equations(p, w, i, kf));
+      if (fit.gain > h.gain(i)) h.gain(i) = fit.gain, h.a(i) = fit.a, h.b(i) = fit.b, h.onset[i] = first + kf;
+    }
+  }
+  return h;
+}
+
+void classify_deficit(const DeficitIsolationParams& p, DeficitDecision& d) {
+  if (d.a > p.open_a) {
+    d.kind = model::FaultKind::kStuckOpen, d.size = 1.0;
+  } else if (d.a > p.leak_a) {
+    d.kind = model::FaultKind::kLeak, d.size = d.a;
+  } else if (d.b < p.closed_b) {
+    d.kind = model::FaultKind::kStuckClosed, d.size = 1.0;
+  } else {
+    d.kind = model::FaultKind::kLoss, d.size = -d.b;
+  }
+}
+
+const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& p, const DeficitBankState& bank,
+                                             DeficitDecisionState& state, std::int64_t alarm_sample) {
+  DeficitDecision& d = state.decision;
+  if (d.decided || alarm_sample < 0) return d;
+  if (state.alarm_sample < 0) state.alarm_sample = alarm_sample, state.next_evaluation = alarm_sample + p.after;
+  const std::int64_t now = bank.count - 1;
+  if (now < state.next_evaluation) return d;
+
+  const std::int64_t first = std::max<std::int64_t>(state.alarm_sample - p.before, 0);
+  const DeficitHypotheses h = evaluate_deficit_hypotheses(p, bank, first, state.alarm_sample);
+  int best = 0;
+  for (int i = 1; i < model::kThrustersPerBranch; ++i)
+    if (h.gain(i) > h.gain(best)) best = i;
+  double second = -1.0;
+  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+    if (i != best) second = std::max(second, h.gain(i));
+  const bool clear = h.gain(best) >= p.min_gain && h.gain(best) - second >= p.min_margin;
+  const bool last_chance = (bank.count - first) + p.reevaluate_every > p.max_window;
+  if (!clear && !last_chance) {
+    state.next_evaluation = now + p.reevaluate_every;
+    return d;
+  }
+  d.decided = true;
+  d.gain = h.gain(best), d.margin = h.gain(best) - second;
+  if (h.gain(best) < p.min_gain) return d;  // no thruster explains the alarm: name none
+  d.thruster = best, d.a = h.a(best), d.b = h.b(best), d.onset_sample = h.onset[best];
+  classify_deficit(p, d);
+  return d;
+}
+
+}  // namespace chaser::flight::fdi

@@ -1,0 +1,137 @@
+#pragma once
+// Thruster fault isolation by a bank of impulse-deficit hypotheses (Chaser's method; docs/fdi.md,
+// "Impulse-deficit isolation"). It replaces eqs. 42-45 where they cannot work in the closed loop:
+// the controller stops commanding a stuck-open or leaking thruster and its partner at once, so a
+// criterion that correlates the residual with the commands sees nothing (docs/fdi.md, findings 1-5).
+//
+// Hypothesis i: thruster i realises T_on,i(k) + delta_i(k) instead of the commanded T_on,i(k), with
+//   delta_i(k) = (a + b T_on,i(k)) [k >= k_f]
+// a constant part a (stuck open: 1, leak: about m_leak) and a part proportional to the command b
+// (stuck closed: -1, loss: -m_loss, stuck open: -1 when still commanded), from an onset k_f. On a
+// window of N periods around the alarm, weighted least squares over all six axes:
+//   torque rows, body axes, from the gyro, k = 0..N-2 (Euler's equation over one period):
+//     I (omega(k+1) - omega(k)) / T + omega(k) x I omega(k) - M_C T_on(k) = M_C,i delta_i(k)
+//   position rows, LVLH, from the LIDAR, k = 0..N-1 (the double integral of piecewise-constant
+//   accelerations; HCW terms below 1e-4 N equivalent here are left out):
+//     r(k) - sum_{j<k} T^2 (k - j - 1/2) R(j) M_F T_on(j) / m(j)
+//          = r0 + v0 t_k + sum_{j<k} T^2 (k - j - 1/2) R(j) M_F,i delta_i(j) / m(j)
+// with R(j) = R_lvlh_from_body from the estimated attitude (valid through a tumble: no small-angle
+// model), m(j) the nominal mass less the measured propellant used, r0 and v0 free.
+// The gain of hypothesis i is the drop of the weighted residual sum of squares from the no-fault
+// fit (r0, v0 only) to the best onset k_f of hypothesis i: a log-likelihood ratio (GLR) for
+// Gaussian row errors. Partners (same torque, opposite force) are told apart by the position rows.
+// The isolated thruster is the hypothesis with the largest gain, once it is large enough and ahead
+// of the second by a margin; (a, b) then say which fault it is and how large (this replaces the
+// propellant-based event resolution for the diagnosis).
+//
+// Weights: position rows 1/sigma_lidar; torque rows per axis 1/sigma with
+//   sigma^2 = sigma_0^2 + (epsilon |M_C| T_on(k))^2,
+// sigma_0 the RMS of the fault-free torque rows (an exponentially weighted estimate while no alarm,
+// never below the gyro noise floor I sqrt(2) sigma_gyro / T), epsilon the relative thrust and
+// timing error of a commanded pulse (delays spill part of a pulse into the next period).
+//
+// Computation: the r0, v0 columns are projected out in closed form (per axis, a straight-line fit
+// in t), so only 2 x 2 systems remain per hypothesis and onset: 8 x (onsets) of them per
+// evaluation, a fraction of a millisecond, done only after an alarm. Everything is fixed-size; the
+// per-period cost without an alarm is storing one sample and updating sigma_0.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/faults.hpp"
+#include "model/fdi.hpp"
+#include "model/thrusters.hpp"
+
+namespace chaser::flight::fdi {
+
+inline constexpr int kMaxDeficitWindow = model::kMaxDeficitWindowPeriods;  // periods the sample ring holds
+
+using DeficitMat38 = Eigen::Matrix<double, 3, model::kThrustersPerBranch>;
+using DeficitVec8 = Eigen::Matrix<double, model::kThrustersPerBranch, 1>;
+
+struct DeficitIsolationParams {
+  Mat3 inertia_kgm2 = Mat3::Identity();        // [kg m^2] nominal, about the CoM, body axes
+  double mass_kg = 1.0;                        // [kg] nominal wet mass at the start
+  DeficitMat38 force_body_N = DeficitMat38::Zero();    // [N] M_F, force per unit on-time, branch A
+  DeficitMat38 torque_body_Nm = DeficitMat38::Zero();  // [N m] M_C
+  double period_s = 0.1;                       // [s] T
+  int before = 20;        // [periods] the window starts this long before the alarm; onsets scanned there
+  int after = 30;         // [periods] first decision this long after the alarm
+  int max_window = 150;   // [periods] longest window while the decision is ambiguous
+  int reevaluate_every = 2;   // [periods] between evaluations while ambiguous
+  double lidar_sigma_m = 1e-3;           // [m] 1-sigma LIDAR noise per axis
+  double gyro_sigma_radps = 1e-6;        // [rad/s] 1-sigma gyro noise: floor of sigma_0
+  double pulse_uncertainty = 0.01;       // [-] epsilon
+  double noise_time_constant_s = 20.0;   // [s] of the sigma_0 estimate
+  double min_gain = 50.0;     // [-] gain the best hypothesis must reach to be named
+  double min_margin = 25.0;   // [-] gain of the best over the second best
+  double prior_sigma = 10.0;  // [-] weak Gaussian prior on a and b: keeps b defined for a
+                              //     thruster that is never commanded in the window
+  // Reading (a, b) as a fault case: a above open_a: stuck open; a above leak_a: leak; otherwise
+  // b below closed_b: stuck closed; otherwise thrust loss.
+  double open_a = 0.6, leak_a = 0.05, closed_b = -0.95;
+};
+
+// Problems with the parameters (empty when valid), each naming the field.
+std::vector<std::string> validate(const DeficitIsolationParams& params);
+
+// What the on-board software has in one period, stored for the fit.
+struct DeficitSample {
+  Vec3 omega_body_radps = Vec3::Zero();  // gyro
+  Vec3 r_lvlh_m = Vec3::Zero();          // LIDAR
+  Quat q_lvlh_from_body = Quat::Identity();  // estimated attitude
+  model::Ton8 ton = model::Ton8::Zero(); // commanded on-times of branch A, applied over this period
+  double mass_kg = 1.0;                  // [kg] nominal mass less the measured propellant used
+};
+
+struct DeficitBankState {
+  std::array<DeficitSample, kMaxDeficitWindow> ring{};
+  std::int64_t count = 0;               // samples pushed; sample p lives in ring[p % size]
+  Vec3 torque_mean_square = Vec3::Zero();  // [N^2 m^2] EW mean square of the fault-free torque rows
+  bool frozen = false;                  // sigma_0 stops adapting once an alarm is raised
+};
+
+// Stores this period's sample and, until frozen, updates the sigma_0 estimate with the torque row
+// of the previous period.
+void push_deficit_sample(const DeficitIsolationParams& params, DeficitBankState& bank, const DeficitSample& sample);
+
+// Every hypothesis fitted on samples [first, bank.count), onsets scanned over [first, last_onset].
+struct DeficitHypotheses {
+  DeficitVec8 gain = DeficitVec8::Zero();   // [-] drop of the weighted RSS from the no-fault fit
+  DeficitVec8 a = DeficitVec8::Zero();      // [-] constant deficit at the best onset
+  DeficitVec8 b = DeficitVec8::Zero();      // [-] command-proportional deficit
+  std::array<std::int64_t, model::kThrustersPerBranch> onset{};  // sample index of the best onset
+  double rss_no_fault = 0;                  // [-] weighted RSS of the no-fault fit
+  int rows = 0;                             // scalar rows in the fit
+};
+DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& params, const DeficitBankState& bank,
+                                              std::int64_t first, std::int64_t last_onset);
+
+struct DeficitDecision {
+  bool decided = false;
+  int thruster = -1;                       // 0..7 of branch A, -1: no hypothesis explains the alarm
+  model::FaultKind kind = model::FaultKind::kStuckOpen;  // read from (a, b), valid with thruster >= 0
+  double size = 0;                         // [-] leak a, loss -b (1 for stuck open / closed)
+  double a = 0, b = 0;                     // [-]
+  std::int64_t onset_sample = -1;          // estimated onset, sample index
+  double gain = 0, margin = 0;             // [-] best gain and its lead over the second
+};
+
+// One scheme's use of the bank: triggered by that scheme's alarm.
+struct DeficitDecisionState {
+  std::int64_t alarm_sample = -1;   // sample index of the alarm that triggered it
+  std::int64_t next_evaluation = -1;
+  DeficitDecision decision;         // latched once decided
+};
+
+// Call after push_deficit_sample each period. alarm_sample: the sample index of the scheme's first
+// alarm (-1 while none). Returns the decision (decided = false until made; latched after).
+const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& params, const DeficitBankState& bank,
+                                             DeficitDecisionState& state, std::int64_t alarm_sample);
+
+// The fault case and size (a, b) describe.
+void classify_deficit(const DeficitIsolationParams& params, DeficitDecision& decision);
+
+}  // namespace chaser::flight::fdi
