@@ -117,6 +117,14 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
   if (p.deficit_isolation)
     p.deficit = deficit_params(s, model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m));
+  p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
+  p.detector = fdi::DeficitDetectorParams{
+      .window = whole_periods(s.fdi.deficit.detection_window_s, s.control_period_s),
+      .threshold = s.fdi.deficit.detection_threshold,
+      .min_a = s.fdi.deficit.detection_min_constant,
+      .min_b = s.fdi.deficit.detection_min_proportional,
+      .evaluate_every = 1,
+  };
   return p;
 }
 
@@ -126,6 +134,7 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
   if (state.recovered) {  // the schemes watch branch A only: report their latched decisions
     out.position.alarm = state.position.alarm, out.position.confirmed = state.position.confirmed;
     out.attitude.alarm = state.attitude.alarm, out.attitude.confirmed = state.attitude.confirmed;
+    out.detector.alarm = state.detector.alarm, out.detector.confirmed = state.detector_deficit.decision.thruster;
     out.over_consumption = state.event.over_consumption;
     return out;
   }
@@ -145,6 +154,18 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
                               .q_lvlh_from_body = q_lvlh_from_body,
                               .ton = in.ton,
                               .mass_kg = p.deficit.mass_kg - meas.propellant_used_kg});
+  if (p.deficit_detection) {
+    fdi::step_deficit_detector(p.detector, p.deficit, state.deficit_bank, state.detector);
+    const fdi::DeficitDecision& d =
+        fdi::step_deficit_decision(p.deficit, state.deficit_bank, state.detector_deficit,
+                                   state.detector.alarm ? state.detector.alarm_sample : -1);
+    out.detector.glr = state.detector.statistic;
+    out.detector.alarm = state.detector.alarm;
+    out.detector.candidate = state.detector.suspect;
+    out.detector.confirmed = d.thruster;
+    out.detector.alarm_time_s = state.detector.alarm ? state.detector.alarm_sample * p.period_s : -1.0;
+    if (d.thruster >= 0 && state.detector_isolated_s < 0) state.detector_isolated_s = in.t_s;
+  }
 
   if (p.position_enabled) {
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
@@ -165,10 +186,12 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
   }
 
   // The fault-free noise estimate of the deficit bank must not learn from the fault.
-  if (state.position.alarm || state.attitude.alarm) state.deficit_bank.frozen = true;
+  if (state.position.alarm || state.attitude.alarm || state.detector.alarm) state.deficit_bank.frozen = true;
 
   // Recovery on the first confirmation by either scheme.
-  const int confirmed = out.position.confirmed >= 0 ? out.position.confirmed : out.attitude.confirmed;
+  int confirmed = -1;
+  for (const fdi::FdiSchemeOutput* scheme : {&out.position, &out.attitude, &out.detector})
+    if (confirmed < 0) confirmed = scheme->confirmed;
   if (p.recovery && confirmed >= 0) {
     state.recovered = true;
     state.recovery_s = in.t_s;

@@ -12,6 +12,7 @@
 // The residual generators are designed in memory from the scenario when a run starts
 // (make_fdir_params), so dispersed campaigns never fly a stale design.
 #include "core/types.hpp"
+#include "flight/fdi/deficit_detector.hpp"
 #include "flight/fdi/deficit_isolation.hpp"
 #include "flight/fdi/design_inputs.hpp"
 #include "flight/fdi/event_resolution.hpp"
@@ -30,6 +31,8 @@ struct FdirParams {
   fdi::EventResolutionParams event;
   bool deficit_isolation = false;   // the deficit bank names the thruster for both schemes
   fdi::DeficitIsolationParams deficit;
+  bool deficit_detection = false;   // the deficit detector runs as a third scheme
+  fdi::DeficitDetectorParams detector;
   std::array<double, model::kThrustersPerBranch> mass_flow_kgps{};  // [kg/s] branch A, nominal
   double period_s = 0.1;                                            // [s] T
 };
@@ -51,6 +54,9 @@ struct FdirState {
   fdi::DeficitBankState deficit_bank;           // samples of the last periods, with deficit isolation
   fdi::DeficitDecisionState position_deficit;   // the bank's decision after each scheme's alarm
   fdi::DeficitDecisionState attitude_deficit;
+  fdi::DeficitDetectorState detector;           // the third scheme
+  fdi::DeficitDecisionState detector_deficit;
+  double detector_isolated_s = -1;
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
   bool recovered = false;           // branch A closed, flying on branch B
@@ -61,6 +67,7 @@ struct FdirState {
 struct FdirOutput {
   fdi::FdiSchemeOutput position;
   fdi::FdiSchemeOutput attitude;
+  fdi::FdiSchemeOutput detector;  // the deficit detector: glr = its statistic, candidate = its suspect
   bool over_consumption = false;  // event resolution: cases 1/3 (true) or 2/4
   bool recover_now = false;       // this period's confirmation triggers the switch to branch B
 };

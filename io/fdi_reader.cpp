@@ -64,6 +64,11 @@ void read_deficit(MapReader& r, model::DeficitParams& out) {
   r.number("pulse_uncertainty", Range::closed(0.0, 1.0), out.pulse_uncertainty);
   r.number("min_gain", Range::non_negative(), out.min_gain);
   r.number("min_margin", Range::non_negative(), out.min_margin);
+  r.boolean("detection", out.detection);
+  r.number("detection_window_s", Range::positive(), out.detection_window_s);
+  r.number("detection_threshold", Range::positive(), out.detection_threshold);
+  r.number("detection_min_constant", Range::closed(0.0, 1.0), out.detection_min_constant);
+  r.number("detection_min_proportional", Range::closed(0.0, 1.0), out.detection_min_proportional);
 }
 
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {

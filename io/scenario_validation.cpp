@@ -70,6 +70,11 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
     d.add(keys[2], fmt::format("must be in [window_before_s + window_after_s = {}, {}] (got {})",
                                format_number(w.window_before_s + w.window_after_s), format_number(max_s),
                                format_number(w.window_max_s)));
+  const char* detection = "fdi.deficit.detection_window_s";
+  const double longest_s = model::kMaxDeficitDetectorWindowPeriods * period;
+  if (d.clean(detection) && (w.detection_window_s < 2 * period || w.detection_window_s > longest_s))
+    d.add(detection, fmt::format("must be in [2 control periods = {}, {}] (got {})", format_number(2 * period),
+                                 format_number(longest_s), format_number(w.detection_window_s)));
 }
 
 void check_timing(const model::Scenario& s, Diagnostics& d) {

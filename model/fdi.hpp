@@ -30,7 +30,16 @@ struct DeficitParams {
   double pulse_uncertainty = 0.01;  // [-] relative 1-sigma error of a commanded pulse's torque
   double min_gain = 50.0;         // [-] log-likelihood gain the best hypothesis must reach
   double min_margin = 25.0;       // [-] its lead over the second best
+  // The deficit detector (flight/fdi/deficit_detector.hpp): a third scheme on the gyro's torque rows.
+  bool detection = true;            // run it (with isolation_method deficit only)
+  double detection_window_s = 10.0; // [s] sliding window N T
+  double detection_threshold = 100.0;  // [-] on the gain S_i
+  double detection_min_constant = 0.05;      // [-] smallest constant deficit a that counts
+  double detection_min_proportional = 0.2;   // [-] smallest command-proportional deficit -b that counts
 };
+
+// Longest detector window the on-board sums hold, in periods.
+inline constexpr int kMaxDeficitDetectorWindowPeriods = 256;
 
 struct FdiParams {
   // Design (eqs. 19-39): assigned observer eigenvalues, Taylor order h of Prop. 2, and the upper

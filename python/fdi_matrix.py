@@ -32,7 +32,7 @@ CASES = {  # name -> the fault's extra keys (Fonod 2015, section V: middle of th
     "leak": "kind: leak, leak_size: 0.2, leak_slope_per_s: 0.1",
     "loss": "kind: loss, loss_size: 0.65",
 }
-SCHEMES = ("position", "attitude")
+SCHEMES = ("position", "attitude", "deficit")
 
 
 def run_one(binary, scenario, run_dir, sets, seed=None):

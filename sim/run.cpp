@@ -50,22 +50,41 @@ MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, c
   };
 }
 
-SchemeResult scheme_result(bool enabled, const flight::fdi::FdiSchemeState& s, double isolated_s, double period_s) {
-  return SchemeResult{
-      .enabled = enabled,
-      .alarm_s = s.alarm ? static_cast<double>(s.alarm_period) * period_s : -1.0,
-      .isolated_s = isolated_s,
-      .isolated_thruster = s.confirmed >= 0 ? s.confirmed + 1 : -1,
-  };
+// alarm_period: -1 for none; confirmed: 0-based, -1 for none.
+SchemeResult scheme_result(bool enabled, std::int64_t alarm_period, int confirmed, double isolated_s,
+                           const flight::fdi::DeficitDecision& diagnosis, double period_s) {
+  SchemeResult r;
+  r.enabled = enabled;
+  r.alarm_s = alarm_period >= 0 ? static_cast<double>(alarm_period) * period_s : -1.0;
+  r.isolated_s = isolated_s;
+  r.isolated_thruster = confirmed >= 0 ? confirmed + 1 : -1;
+  if (diagnosis.decided && diagnosis.thruster >= 0) {
+    r.diagnosed_kind = diagnosis.kind;
+    r.diagnosed_size = diagnosis.size;
+    r.estimated_onset_s = static_cast<double>(diagnosis.onset_sample) * period_s;
+  }
+  return r;
 }
 
 FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState& s, double period_s) {
-  return FdirResult{
-      .position = scheme_result(p.fdir.position_enabled, s.fdir.position, s.fdir.position_isolated_s, period_s),
-      .attitude = scheme_result(p.fdir.attitude_enabled, s.fdir.attitude, s.fdir.attitude_isolated_s, period_s),
-      .recovery_s = s.fdir.recovery_s,
-      .recovered_thruster = s.fdir.recovered ? s.fdir.isolated_thruster + 1 : -1,
+  const flight::FdirState& f = s.fdir;
+  FdirResult r{
+      .position = scheme_result(p.fdir.position_enabled, f.position.alarm ? f.position.alarm_period : -1,
+                                f.position.confirmed, f.position_isolated_s, f.position_deficit.decision, period_s),
+      .attitude = scheme_result(p.fdir.attitude_enabled, f.attitude.alarm ? f.attitude.alarm_period : -1,
+                                f.attitude.confirmed, f.attitude_isolated_s, f.attitude_deficit.decision, period_s),
+      .deficit = scheme_result(p.fdir.deficit_detection, f.detector.alarm ? f.detector.alarm_sample : -1,
+                               f.detector_deficit.decision.thruster, f.detector_isolated_s, f.detector_deficit.decision,
+                               period_s),
+      .recovery_s = f.recovery_s,
+      .recovered_thruster = f.recovered ? f.isolated_thruster + 1 : -1,
   };
+  for (const SchemeResult* scheme : {&r.position, &r.attitude, &r.deficit}) {
+    if (scheme->alarm_s >= 0 && (r.detection_s < 0 || scheme->alarm_s < r.detection_s)) r.detection_s = scheme->alarm_s;
+    if (scheme->isolated_s >= 0 && (r.isolation_s < 0 || scheme->isolated_s < r.isolation_s))
+      r.isolation_s = scheme->isolated_s, r.isolated_thruster = scheme->isolated_thruster;
+  }
+  return r;
 }
 
 }  // namespace
@@ -95,7 +114,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
 
   RunResult result;
   if (options.record_glr_per_second)
-    result.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(scenario.duration_s)), {0.0f, 0.0f});
+    result.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(scenario.duration_s)), {0.0f, 0.0f, 0.0f});
   std::int64_t k = 0;
   for (; k < periods; ++k) {
     const TimeNs t_k = k * period_ns;
@@ -111,9 +130,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
 
     result.infeasible_allocations += !out.allocation_feasible;
     if (options.record_glr_per_second) {
-      std::array<float, 2>& second = result.glr_max_per_s[static_cast<std::size_t>(t_s)];
+      std::array<float, 3>& second = result.glr_max_per_s[static_cast<std::size_t>(t_s)];
       second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr));
       second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr));
+      second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr));
     }
     if (telemetry && telemetry->ok())
       record_period(*telemetry, t_s, truth, plant.state, out, branch,

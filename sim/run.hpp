@@ -2,6 +2,7 @@
 // One closed-loop run: the fixed-order schedule of plant and flight blocks, period after period.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,19 @@ struct SchemeResult {
   double alarm_s = -1;        // [s] first GLR alarm, -1: none
   double isolated_s = -1;     // [s] thruster confirmed, -1: none
   int isolated_thruster = -1; // 1-based thruster number (T1..T8 of branch A), -1: none
+  // With isolation_method deficit: what the deficit bank read from the fit (flight/fdi/deficit_isolation.hpp).
+  std::optional<model::FaultKind> diagnosed_kind;  // empty: no diagnosis
+  double diagnosed_size = 0;   // [-] leak a or loss -b; 1 for stuck open / closed
+  double estimated_onset_s = -1;  // [s] the onset the fit found
 };
 
 struct FdirResult {
   SchemeResult position, attitude;
+  SchemeResult deficit;          // the deficit detector, the third scheme (enabled with isolation_method deficit)
+  // The FDIR as a whole: the first alarm of any scheme, the first confirmed thruster.
+  double detection_s = -1;       // [s] -1: none
+  double isolation_s = -1;       // [s] -1: none
+  int isolated_thruster = -1;    // 1-based, -1: none
   double recovery_s = -1;        // [s] branch A closed, branch B flying; -1: no recovery
   int recovered_thruster = -1;   // 1-based thruster the recovery acted on
 };
@@ -40,8 +50,8 @@ struct RunResult {
   bool telemetry_ok = true;
   FdirResult fdir;
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole
-  // second of the run, [position, attitude] per second (index floor(t)); 0 for a disabled scheme.
-  std::vector<std::array<float, 2>> glr_max_per_s;
+  // second of the run, [position, attitude, deficit] per second (index floor(t)); 0 for a disabled scheme.
+  std::vector<std::array<float, 3>> glr_max_per_s;
 };
 
 // One run where the flight software is built from the same scenario as the plant (nominal = truth).

@@ -23,6 +23,14 @@ nlohmann::json faults_json(const model::Scenario& scenario) {
   return faults;
 }
 
+// The deficit bank's reading of the fault, null when it made none.
+nlohmann::json diagnosis_json(const SchemeResult& r) {
+  if (!r.diagnosed_kind) return nullptr;
+  return nlohmann::json{{"fault", std::string(model::to_string(*r.diagnosed_kind))},
+                        {"size", r.diagnosed_size},
+                        {"onset_s", r.estimated_onset_s}};
+}
+
 // Times relative to the fault onset where there is a fault (detection and isolation delays, the
 // paper's t_d and t_i), absolute otherwise (a false alarm's time).
 nlohmann::json scheme_json(const SchemeResult& r, double onset_s) {
@@ -32,7 +40,8 @@ nlohmann::json scheme_json(const SchemeResult& r, double onset_s) {
                         {"detection_time_s", since(r.alarm_s)},
                         {"isolation_time_s", since(r.isolated_s)},
                         {"isolated_thruster", r.isolated_thruster < 0 ? nlohmann::json(nullptr)
-                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))}};
+                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))},
+                        {"diagnosis", diagnosis_json(r)}};
 }
 
 double first_onset_s(const model::Scenario& scenario) {
@@ -44,6 +53,11 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   return nlohmann::json{
       {"position_scheme", scheme_json(f.position, onset)},
       {"attitude_scheme", scheme_json(f.attitude, onset)},
+      {"deficit_scheme", scheme_json(f.deficit, onset)},
+      {"detection_time_s", f.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.detection_s - onset)},
+      {"isolation_time_s", f.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.isolation_s - onset)},
+      {"isolated_thruster", f.isolated_thruster < 0 ? nlohmann::json(nullptr)
+                                                    : nlohmann::json(fmt::format("T{}", f.isolated_thruster))},
       {"recovery_s", f.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.recovery_s)},
       {"recovered_thruster",
        f.recovered_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", f.recovered_thruster))},
@@ -62,6 +76,9 @@ std::string scheme_text(const char* name, const SchemeResult& r, double onset_s,
                        has_fault && r.isolated_thruster != faulty_thruster
                            ? fmt::format(" (WRONG: the fault is on T{})", faulty_thruster)
                            : "");
+  if (r.diagnosed_kind)
+    out += fmt::format(" [{} {:.2f}, onset {:.1f} s]", model::to_string(*r.diagnosed_kind), r.diagnosed_size,
+                       r.estimated_onset_s);
   return out + "\n";
 }
 
@@ -129,6 +146,7 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   const int faulty = scenario.faults.empty() ? 0 : scenario.faults.front().thruster + 1;
   out += scheme_text("position", r.fdir.position, onset, faulty);
   out += scheme_text("attitude", r.fdir.attitude, onset, faulty);
+  out += scheme_text("deficit", r.fdir.deficit, onset, faulty);
   if (r.fdir.recovery_s >= 0)
     out += fmt::format("  recovery: branch A closed at {:.1f} s (T{} isolated), flying on branch B\n", r.fdir.recovery_s,
                        r.fdir.recovered_thruster);

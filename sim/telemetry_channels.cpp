@@ -59,6 +59,7 @@ std::vector<std::string> telemetry_channels() {
     n.push_back(fmt::format("candidate_{}", scheme));
     n.push_back(fmt::format("confirmed_{}", scheme));
   }
+  for (const char* name : {"glr_deficit", "alarm_deficit", "candidate_deficit", "confirmed_deficit"}) n.push_back(name);
   n.push_back("over_consumption");
   n.push_back("active_branch");
   n.push_back("delay_s");
@@ -81,6 +82,8 @@ void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, c
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(f.ton_active[i]);
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(plant.last_profile.ton_realised[model::branch_first(active_branch) + i]);
   add(w, f.fdir.position), add(w, f.fdir.attitude);
+  w.add(f.fdir.detector.glr), w.add(f.fdir.detector.alarm);
+  w.add(f.fdir.detector.candidate + 1), w.add(f.fdir.detector.confirmed + 1);
   w.add(f.fdir.over_consumption);
   w.add(active_branch);
   w.add(to_seconds(plant.last_delay_ns));

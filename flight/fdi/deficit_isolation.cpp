@@ -11,47 +11,10 @@ const DeficitSample& sample_at(const DeficitBankState& bank, std::int64_t index)
   return bank.ring[static_cast<std::size_t>(index % kMaxDeficitWindow)];
 }
 
-// Euler's equation over one period, less the commanded torque: what the thrusters did not do.
-Vec3 torque_row(const DeficitIsolationParams& p, const DeficitSample& now, const DeficitSample& next) {
-  const Mat3& I = p.inertia_kgm2;
-  const Vec3& w = now.omega_body_radps;
-  return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
-}
-
 // Per axis: the gyro noise alone, through the difference of two readings.
 Vec3 torque_noise_floor_sq(const DeficitIsolationParams& p) {
   const double s = std::sqrt(2.0) * p.gyro_sigma_radps / p.period_s;
   return (p.inertia_kgm2.array().square().rowwise().sum() * s * s).matrix();
-}
-
-// The 2 x 2 normal equations of (a, b) after r0, v0 are projected out.
-struct Normal2 {
-  double haa = 0, hab = 0, hbb = 0, ga = 0, gb = 0;
-};
-
-struct Fit2 {
-  double a = 0, b = 0, gain = 0;
-};
-
-// Maximise 2 g'x - x'Hx (the drop of the RSS) over a >= 0, b <= 0: every fault case has a
-// non-negative constant deficit and a non-positive command-proportional one (docs/fdi.md). The
-// optimum is the unconstrained one if feasible, else on a face or at the origin: try all, keep the best.
-Fit2 solve_constrained(const Normal2& n) {
-  auto value = [&](double a, double b) {
-    return 2.0 * (n.ga * a + n.gb * b) - (n.haa * a * a + 2.0 * n.hab * a * b + n.hbb * b * b);
-  };
-  Fit2 best{0.0, 0.0, 0.0};
-  const double det = n.haa * n.hbb - n.hab * n.hab;
-  if (det > 0.0) {
-    const double a = (n.hbb * n.ga - n.hab * n.gb) / det;
-    const double b = (n.haa * n.gb - n.hab * n.ga) / det;
-    if (a >= 0.0 && b <= 0.0) return Fit2{a, b, value(a, b)};
-  }
-  const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;
-  if (const double v = value(a_only, 0.0); v > best.gain) best = Fit2{a_only, 0.0, v};
-  const double b_only = n.hbb > 0.0 ? std::min(n.gb / n.hbb, 0.0) : 0.0;
-  if (const double v = value(0.0, b_only); v > best.gain) best = Fit2{0.0, b_only, v};
-  return best;
 }
 
 // Scratch arrays of one evaluation, sized for the longest window (on the stack: no allocation).
@@ -73,9 +36,6 @@ double line_part(const Window& w, double p0, double p1, double q0, double q1) {
 
 double build_window(const DeficitIsolationParams& p, const DeficitBankState& bank, std::int64_t first, Window& w) {
   const double T = p.period_s;
-  const Vec3 floor_sq = torque_noise_floor_sq(p);
-  const Vec3 sigma0_sq = bank.torque_mean_square.cwiseMax(floor_sq);
-  const DeficitMat38 abs_torque = p.torque_body_Nm.cwiseAbs();
   Vec3 pos = Vec3::Zero(), vel = Vec3::Zero();
   for (int k = 0; k < w.n; ++k) {
     const DeficitSample& s = sample_at(bank, first + k);
@@ -86,9 +46,8 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
     pos += T * vel + 0.5 * T * T * acc;
     vel += T * acc;
     if (k + 1 < w.n) {
-      w.y_tau[k] = torque_row(p, s, sample_at(bank, first + k + 1));
-      const Vec3 pulse = p.pulse_uncertainty * (abs_torque * s.ton);
-      w.w_tau[k] = (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
+      w.y_tau[k] = deficit_torque_row(p, s, sample_at(bank, first + k + 1));
+      w.w_tau[k] = deficit_torque_weights(p, bank, s.ton);
     }
   }
   // No-fault fit: r0 + v0 t per axis; what it leaves are the detrended position rows.
@@ -110,10 +69,10 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
 }
 
 // Normal equations of hypothesis i with onset kf (window-relative).
-Normal2 normal_equations(const DeficitIsolationParams& p, const Window& w, int i, int kf) {
+DeficitNormal normal_equations(const DeficitIsolationParams& p, const Window& w, int i, int kf) {
   const double T = p.period_s;
   const double inv_var = 1.0 / (p.lidar_sigma_m * p.lidar_sigma_m);
-  Normal2 n;
+  DeficitNormal n;
   // Position rows: the double integral of the deficit's acceleration from the onset on.
   Vec3 pa = Vec3::Zero(), va = Vec3::Zero(), pb = Vec3::Zero(), vb = Vec3::Zero();
   Vec3 sa0 = Vec3::Zero(), sa1 = Vec3::Zero(), sb0 = Vec3::Zero(), sb1 = Vec3::Zero();
@@ -147,6 +106,40 @@ Normal2 normal_equations(const DeficitIsolationParams& p, const Window& w, int i
 
 }  // namespace
 
+Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& now, const DeficitSample& next) {
+  // Euler's equation over one period, less the commanded torque: what the thrusters did not do.
+  const Mat3& I = p.inertia_kgm2;
+  const Vec3& w = now.omega_body_radps;
+  return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
+}
+
+Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const model::Ton8& ton) {
+  const Vec3 sigma0_sq = bank.torque_mean_square.cwiseMax(torque_noise_floor_sq(p));
+  const Vec3 pulse = p.pulse_uncertainty * (p.torque_body_Nm.cwiseAbs() * ton);
+  return (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
+}
+
+// Maximise 2 g'x - x'Hx (the drop of the RSS) over a >= 0, b <= 0: every fault case has a
+// non-negative constant deficit and a non-positive command-proportional one (docs/fdi.md). The
+// optimum is the unconstrained one if feasible, else on a face or at the origin: try all, keep the best.
+DeficitFit fit_deficit(const DeficitNormal& n) {
+  auto value = [&](double a, double b) {
+    return 2.0 * (n.ga * a + n.gb * b) - (n.haa * a * a + 2.0 * n.hab * a * b + n.hbb * b * b);
+  };
+  DeficitFit best{0.0, 0.0, 0.0};
+  const double det = n.haa * n.hbb - n.hab * n.hab;
+  if (det > 0.0) {
+    const double a = (n.hbb * n.ga - n.hab * n.gb) / det;
+    const double b = (n.haa * n.gb - n.hab * n.ga) / det;
+    if (a >= 0.0 && b <= 0.0) return DeficitFit{a, b, value(a, b)};
+  }
+  const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;
+  if (const double v = value(a_only, 0.0); v > best.gain) best = DeficitFit{a_only, 0.0, v};
+  const double b_only = n.hbb > 0.0 ? std::min(n.gb / n.hbb, 0.0) : 0.0;
+  if (const double v = value(0.0, b_only); v > best.gain) best = DeficitFit{0.0, b_only, v};
+  return best;
+}
+
 std::vector<std::string> validate(const DeficitIsolationParams& p) {
   std::vector<std::string> problems;
   if (!(p.mass_kg > 0.0)) problems.push_back("mass_kg: must be > 0");
@@ -168,7 +161,7 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
 void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank, const DeficitSample& sample) {
   if (bank.count == 0) bank.torque_mean_square = torque_noise_floor_sq(p);
   if (bank.count > 0 && !bank.frozen) {
-    const Vec3 y = torque_row(p, sample_at(bank, bank.count - 1), sample);
+    const Vec3 y = deficit_torque_row(p, sample_at(bank, bank.count - 1), sample);
     const double alpha = std::min(1.0, p.period_s / p.noise_time_constant_s);
     bank.torque_mean_square += alpha * (y.cwiseProduct(y) - bank.torque_mean_square);
   }
@@ -189,7 +182,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     h.gain(i) = -1.0;
     for (int kf = 0; kf <= last_kf; ++kf) {
-      const Fit2 fit = solve_constrained(normal_equations(p, w, i, kf));
+      const DeficitFit fit = fit_deficit(normal_equations(p, w, i, kf));
       if (fit.gain > h.gain(i)) h.gain(i) = fit.gain, h.a(i) = fit.a, h.b(i) = fit.b, h.onset[i] = first + kf;
     }
   }

@@ -131,6 +131,22 @@ struct DeficitDecisionState {
 const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& params, const DeficitBankState& bank,
                                              DeficitDecisionState& state, std::int64_t alarm_sample);
 
+// Building blocks shared with the deficit detector (deficit_detector.hpp).
+// The torque row of sample `now` (Euler's equation over the period to `next`, less the commanded torque).
+Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSample& now, const DeficitSample& next);
+// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2), with the bank's sigma_0 estimate.
+Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
+                            const model::Ton8& ton);
+
+// The normal equations of (a, b) for one hypothesis, and their solution with a >= 0, b <= 0.
+struct DeficitNormal {
+  double haa = 0, hab = 0, hbb = 0, ga = 0, gb = 0;
+};
+struct DeficitFit {
+  double a = 0, b = 0, gain = 0;  // gain: 2 g'x - x'Hx at the optimum x = (a, b), >= 0
+};
+DeficitFit fit_deficit(const DeficitNormal& normal);
+
 // The fault case and size (a, b) describe.
 void classify_deficit(const DeficitIsolationParams& params, DeficitDecision& decision);
 
