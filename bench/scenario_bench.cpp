@@ -53,6 +53,7 @@ struct LoopFixture {
   }
   static model::Scenario with_fdi(model::Scenario s, bool on) {
     s.fdi.position.enabled = s.fdi.attitude.enabled = on;
+    if (!on) s.fdi.isolation_method = model::IsolationMethod::kPaper;  // no deficit bank, no detector
     return s;
   }
   static plant::RigidState start_state(const model::Scenario& s) {

@@ -3,8 +3,9 @@
 
 Usage: /usr/bin/python3 python/plot_fdi.py RUN_DIR [--threshold J_TH] [--before S] [--after S]
 
-One column per scheme (position, attitude); rows: the GLR statistic S(k) with the threshold J_th
-(eq. 41; J_th is not in summary.json, so it is an option, default 20 as in msr_terminal), the alarm
+One column per scheme (position, attitude, and the deficit detector when it ran); rows: the GLR
+statistic S(k) with the threshold J_th (eq. 41; from summary.json, --threshold overrides the
+position/attitude one), the alarm
 (eq. 40) with the over-consumption flag of the event resolution (Remark 2), and the candidate
 sigma^N(k) and confirmed thruster (eqs. 42-45) against the faulty one. Zoomed on the first fault's
 onset (from 20 s before to 80 s after by default); the whole run when there is no fault.
@@ -20,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-SCHEMES = ("position", "attitude")
+SCHEMES = ("position", "attitude", "deficit")
 
 
 def load(run_dir):
@@ -39,6 +40,9 @@ def scheme_title(name, fdir, fault):
         text += f", {fdir['isolated_thruster']} confirmed {fdir['isolation_time_s']:+.1f} s"
         if fault is not None:
             text += " (right)" if fdir["isolated_thruster"] == fault["thruster"] else " (WRONG)"
+    diagnosis = fdir.get("diagnosis")
+    if diagnosis:
+        text += f"\nread as {diagnosis['fault']} {diagnosis['size']:.2f} from {diagnosis['onset_s']:.1f} s"
     return text
 
 
@@ -81,7 +85,8 @@ def plot_scheme(axes, t, m, name, summary, threshold, fault, legend):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir", type=Path)
-    ap.add_argument("--threshold", type=float, default=20.0, help="J_th of the run (fdi.glr_threshold)")
+    ap.add_argument("--threshold", type=float, default=None,
+                    help="J_th of the position/attitude schemes (default: summary.json)")
     ap.add_argument("--before", type=float, default=20.0, help="seconds shown before the onset")
     ap.add_argument("--after", type=float, default=80.0, help="seconds shown after the onset")
     args = ap.parse_args()
@@ -91,10 +96,15 @@ def main():
     m = np.ones(len(t), bool)
     if fault is not None:
         m = (t["t_s"] >= fault["onset_s"] - args.before) & (t["t_s"] <= fault["onset_s"] + args.after)
-    fig, axes = plt.subplots(3, 2, figsize=(14, 7.5), sharex=True, constrained_layout=True,
-                             gridspec_kw={"height_ratios": [2, 1, 2]})
-    for col, name in enumerate(SCHEMES):
-        plot_scheme(axes[:, col], t, m, name, summary, args.threshold, fault, legend=col == 1)
+    fdir = summary["fdir"]
+    schemes = [s for s in SCHEMES if f"{s}_scheme" in fdir and f"glr_{s}" in t.dtype.names
+               and fdir[f"{s}_scheme"].get("enabled", True)]
+    thresholds = {s: args.threshold or fdir.get("glr_threshold", 20.0) for s in ("position", "attitude")}
+    thresholds["deficit"] = fdir.get("deficit_threshold", 100.0)
+    fig, axes = plt.subplots(3, len(schemes), figsize=(7 * len(schemes), 7.5), sharex=True,
+                             constrained_layout=True, gridspec_kw={"height_ratios": [2, 1, 2]}, squeeze=False)
+    for col, name in enumerate(schemes):
+        plot_scheme(axes[:, col], t, m, name, summary, thresholds[name], fault, legend=col == len(schemes) - 1)
         for ax in axes[:, col]:
             ax.grid(alpha=0.3)
             if fault is not None:

@@ -54,6 +54,8 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
       {"position_scheme", scheme_json(f.position, onset)},
       {"attitude_scheme", scheme_json(f.attitude, onset)},
       {"deficit_scheme", scheme_json(f.deficit, onset)},
+      {"glr_threshold", scenario.fdi.glr_threshold},                   // position and attitude schemes
+      {"deficit_threshold", scenario.fdi.deficit.detection_threshold}, // deficit scheme
       {"detection_time_s", f.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.detection_s - onset)},
       {"isolation_time_s", f.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.isolation_s - onset)},
       {"isolated_thruster", f.isolated_thruster < 0 ? nlohmann::json(nullptr)
