@@ -33,5 +33,39 @@ TEST(FdirClosedLoop, StuckOpenIsDetectedByBothSchemesWithinSeconds) {
   }
 }
 
+// Issue 3's acceptance, in the loop with nominal parameters: every thruster of branch A and each of
+// the four fault cases of Fonod 2015 (sizes in the middle of the paper's ranges), fault at 1000 s:
+// some scheme detects the fault and every scheme that confirms a thruster names the right one, and
+// the deficit bank reads the fault kind. Measured (docs/fdi.md): all 32 detected and isolated, 66
+// isolations right, 65/66 kinds right (a blocked T6, first commanded 94 s after the onset, read as
+// a 0.94 loss). The run ends 180 s after the onset: a blocked or weakened T4 is not commanded
+// before 1168 s and cannot be seen earlier by any method (docs/fdi.md, "Deficit detector").
+TEST(FdirClosedLoop, EveryThrusterAndFaultCaseIsDetectedAndIsolatedRight) {
+  model::Scenario scenario = msr_without_recovery();
+  scenario.duration_s = 1180.0;
+  const model::FaultKind kinds[] = {model::FaultKind::kStuckOpen, model::FaultKind::kStuckClosed,
+                                    model::FaultKind::kLeak, model::FaultKind::kLoss};
+  int kinds_right = 0, diagnoses = 0;
+  for (const model::FaultKind kind : kinds) {
+    for (int thruster = 0; thruster < 8; ++thruster) {
+      scenario.faults = {model::FaultParams{
+          .kind = kind, .thruster = thruster, .onset_s = 1000.0, .leak_size = 0.2, .loss_size = 0.65}};
+      const RunResult r = run_scenario(scenario);
+      const std::string name = std::string(model::to_string(kind)) + " T" + std::to_string(thruster + 1);
+      EXPECT_GE(r.fdir.detection_s, 1000.0) << name;
+      EXPECT_EQ(r.fdir.isolated_thruster, thruster + 1) << name;
+      for (const SchemeResult* scheme : {&r.fdir.position, &r.fdir.attitude, &r.fdir.deficit}) {
+        if (scheme->isolated_thruster < 0) continue;
+        EXPECT_EQ(scheme->isolated_thruster, thruster + 1) << name;
+        ASSERT_TRUE(scheme->diagnosed_kind.has_value()) << name;
+        ++diagnoses;
+        kinds_right += *scheme->diagnosed_kind == kind;
+      }
+    }
+  }
+  EXPECT_GE(diagnoses, 64);
+  EXPECT_GE(kinds_right, diagnoses - 2);
+}
+
 }  // namespace
 }  // namespace chaser::sim
