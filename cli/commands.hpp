@@ -26,7 +26,29 @@ struct FdiDesignArgs {
   std::vector<std::string> overrides;
 };
 
+// chaser campaign (docs/campaigns.md); empty strings mean "not given".
+struct CampaignArgs {
+  std::string scenario_path;
+  std::string runs;            // "N" or "case=N,case=N"
+  std::string cases;           // "none,stuck_open,..."
+  std::string out_dir = "campaign-out";
+  std::optional<int> threads;  // default: hardware concurrency
+  std::string shard;           // "I/M"
+  bool resume = false;
+  std::int64_t keep_telemetry = 0;
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> overrides;
+  std::string preset;
+};
+
+struct CampaignMergeArgs {
+  std::string out_dir;
+  std::vector<std::string> shard_dirs;
+};
+
 int run_command(const RunArgs& args);
+int campaign_command(const CampaignArgs& args);
+int campaign_merge_command(const CampaignMergeArgs& args);
 int fdi_design_command(const FdiDesignArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 

@@ -1,4 +1,6 @@
 // chaser: the command-line entry point. Parses arguments and dispatches to a subcommand.
+#include <iostream>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
@@ -35,6 +37,24 @@ int main(int argc, char** argv) {
   design_cmd->add_option("--out", fdi_design.out_path, "Write the design and its figures as JSON");
   design_cmd->add_option("--set", fdi_design.overrides, "Override a scenario key: key.path=value (repeatable)");
 
+  CampaignArgs campaign;
+  CLI::App* campaign_cmd = app.add_subcommand("campaign", "Monte Carlo campaign: runs.csv, summary.csv, summary.md (docs/campaigns.md)");
+  campaign_cmd->add_option("scenario", campaign.scenario_path, "Scenario file (YAML)");
+  campaign_cmd->add_option("--runs", campaign.runs, "Runs per case: N, or case=N,case=N");
+  campaign_cmd->add_option("--cases", campaign.cases, "Cases in order: none,stuck_open,stuck_closed,leak,loss");
+  campaign_cmd->add_option("--out", campaign.out_dir, "Campaign directory")->capture_default_str();
+  campaign_cmd->add_option("--threads", campaign.threads, "Worker threads (default: all cores)");
+  campaign_cmd->add_option("--shard", campaign.shard, "Run shard I/M of the campaign (0 <= I < M)");
+  campaign_cmd->add_flag("--resume", campaign.resume, "Finish the campaign already in --out");
+  campaign_cmd->add_option("--keep-telemetry", campaign.keep_telemetry, "Keep telemetry of runs with index < K");
+  campaign_cmd->add_option("--seed", campaign.seed, "Campaign seed (replaces campaign.seed)");
+  campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
+  campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign");
+  CampaignMergeArgs merge;
+  CLI::App* merge_cmd = campaign_cmd->add_subcommand("merge", "Merge the complete shards of one campaign");
+  merge_cmd->add_option("--out", merge.out_dir, "Merged campaign directory")->required();
+  merge_cmd->add_option("shards", merge.shard_dirs, "Shard directories")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -44,5 +64,13 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
   if (*design_cmd) return fdi_design_command(fdi_design);
+  if (*merge_cmd) return campaign_merge_command(merge);
+  if (*campaign_cmd) {
+    if (campaign.scenario_path.empty()) {
+      std::cerr << "chaser campaign: give a SCENARIO file (or the merge subcommand)\n";
+      return kExitBadInput;
+    }
+    return campaign_command(campaign);
+  }
   return kExitBadInput;
 }

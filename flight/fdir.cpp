@@ -61,6 +61,8 @@ fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const model
   p.pulse_uncertainty = s.fdi.deficit.pulse_uncertainty;
   p.min_gain = s.fdi.deficit.min_gain;
   p.min_margin = s.fdi.deficit.min_margin;
+  p.min_a = s.fdi.deficit.detection_min_constant;
+  p.min_b = s.fdi.deficit.detection_min_proportional;
   return p;
 }
 

@@ -13,6 +13,8 @@ namespace chaser::io {
 // Upper bounds that keep every time representable as int64 nanoseconds with margin.
 inline constexpr double kMaxDurationS = 1e8;      // [s] about three years
 inline constexpr double kMaxControlPeriodS = 10.0;  // [s]
+// Longest campaign run (onset + horizon): each run keeps a per-second GLR record of this length.
+inline constexpr double kMaxCampaignRunS = 1e6;     // [s] about 11 days
 
 // The whole document; `source` names the file for root-level problems.
 model::Scenario read_scenario(const YAML::Node& root, const std::string& source, Diagnostics& diag);
@@ -29,8 +31,11 @@ void read_guidance(MapReader& r, model::GuidanceParams& out);
 void read_control(MapReader& r, model::ControlParams& out);
 void read_initial(MapReader& r, model::InitialState& out);
 void read_fdi(MapReader& r, model::FdiParams& out);
+void read_campaign(MapReader& r, model::CampaignParams& out);
 
 // Checks between keys; each runs only if the keys it uses were read without problems.
 void validate_scenario(const model::Scenario& s, Diagnostics& diag);
+// The campaign run length against the control period (called by validate_scenario).
+void validate_campaign(const model::Scenario& s, Diagnostics& diag);
 
 }  // namespace chaser::io

@@ -184,6 +184,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   check_branches(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);
+  validate_campaign(s, diag);
 }
 
 }  // namespace chaser::io

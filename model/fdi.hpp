@@ -35,7 +35,7 @@ struct DeficitParams {
   double detection_window_s = 10.0; // [s] sliding window N T
   double detection_threshold = 100.0;  // [-] on the gain S_i
   double detection_min_constant = 0.05;      // [-] smallest constant deficit a that counts
-  double detection_min_proportional = 0.2;   // [-] smallest command-proportional deficit -b that counts
+  double detection_min_proportional = 0.3;   // [-] smallest command-proportional deficit -b that counts
 };
 
 // Longest detector window the on-board sums hold, in periods.

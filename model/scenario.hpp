@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/campaign.hpp"
 #include "model/environment.hpp"
 #include "model/faults.hpp"
 #include "model/fdi.hpp"
@@ -43,6 +44,7 @@ struct Scenario {
   FdiParams fdi;
   InitialState initial;
   std::vector<FaultParams> faults;
+  CampaignParams campaign;
 };
 
 }  // namespace chaser::model

@@ -30,14 +30,16 @@ RUNS_HEADER = (
     "position_isolated,position_false_alarm,position_missed,position_wrong_isolation,"
     "position_glr_max_before_onset,attitude_detection_s,attitude_isolation_s,attitude_isolated,"
     "attitude_false_alarm,attitude_missed,attitude_wrong_isolation,attitude_glr_max_before_onset,"
+    "deficit_detection_s,deficit_isolation_s,deficit_isolated,deficit_false_alarm,deficit_missed,"
+    "deficit_wrong_isolation,deficit_glr_max_before_onset,"
     "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
     "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s"
 ).split(",")
 TEXT_COLUMNS = ("seed", "case", "status")  # kept as text: a 64-bit seed does not fit a double
 CASES = ("none", "stuck_open", "stuck_closed", "leak", "loss")
-SCHEMES = ("position", "attitude", "fdir")
+SCHEMES = ("position", "attitude", "deficit", "fdir")
 GLR_SCHEMES = ("position", "attitude")  # the two with a GLR statistic S (eq. 41)
-COLORS = {"position": "tab:blue", "attitude": "tab:orange", "fdir": "tab:green"}
+COLORS = {"position": "tab:blue", "attitude": "tab:orange", "deficit": "tab:purple", "fdir": "tab:green"}
 RATES = ("P_nd", "P_f", "P_i", "capture_rate", "corridor_rate")
 
 

@@ -33,16 +33,20 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   ++state.rows;
 
   if (state.alarm || state.rows < p.window || state.rows % p.evaluate_every != 0) return;
+  // statistic: the largest gain; suspect: its thruster, among the material fits when there are any
+  // (then it is the one that raises the alarm).
   state.statistic = 0.0;
   state.suspect = -1;
-  bool fault = false;
+  double material_gain = -1.0;
+  int material_suspect = -1;
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     const auto s = state.sums.col(i);
     const DeficitFit fit = fit_deficit({.haa = s(0), .hab = s(1), .hbb = s(2), .ga = s(3), .gb = s(4)});
     if (fit.gain > state.statistic) state.statistic = fit.gain, state.suspect = i;
-    fault |= fit.gain > p.threshold && (fit.a >= p.min_a || fit.b <= -p.min_b);
+    if ((fit.a >= p.min_a || fit.b <= -p.min_b) && fit.gain > material_gain) material_gain = fit.gain, material_suspect = i;
   }
-  if (fault) {
+  if (material_suspect >= 0) state.suspect = material_suspect;
+  if (material_gain > p.threshold) {
     state.alarm = true;
     state.alarm_sample = bank.count - 1;
   }

@@ -34,7 +34,7 @@ struct DeficitDetectorParams {
   int window = 100;          // [periods] N
   double threshold = 100.0;  // [-] on S_i
   double min_a = 0.05;       // [-] smallest constant deficit that counts as a fault
-  double min_b = 0.2;        // [-] smallest command-proportional deficit that counts
+  double min_b = 0.3;        // [-] smallest command-proportional deficit that counts (a 20 % inertia error reads as 0.2)
   int evaluate_every = 1;    // [periods] between evaluations of the gains
 };
 
@@ -50,7 +50,8 @@ struct DeficitDetectorState {
   bool alarm = false;             // latched
   std::int64_t alarm_sample = -1; // sample index of the first alarm
   double statistic = 0;           // [-] max_i S_i (material or not), last evaluation
-  int suspect = -1;               // its thruster, 0..7 (a partner's twin is as likely)
+  int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
+                                  // a partner's twin (same torque) is as likely
 };
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.

@@ -113,8 +113,12 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
 }
 
+Vec3 deficit_sigma0_sq(const DeficitIsolationParams& p, const DeficitBankState& bank) {
+  return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(torque_noise_floor_sq(p));
+}
+
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const model::Ton8& ton) {
-  const Vec3 sigma0_sq = bank.torque_mean_square.cwiseMax(torque_noise_floor_sq(p));
+  const Vec3 sigma0_sq = deficit_sigma0_sq(p, bank);
   const Vec3 pulse = p.pulse_uncertainty * (p.torque_body_Nm.cwiseAbs() * ton);
   return (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
 }
@@ -153,6 +157,7 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
   if (!(p.gyro_sigma_radps > 0.0)) problems.push_back("gyro_sigma_radps: must be > 0");
   if (!(p.pulse_uncertainty >= 0.0)) problems.push_back("pulse_uncertainty: must be >= 0");
   if (!(p.noise_time_constant_s > 0.0)) problems.push_back("noise_time_constant_s: must be > 0");
+  if (p.noise_snapshot_periods < 1) problems.push_back("noise_snapshot_periods: must be >= 1");
   if (!(p.min_gain >= 0.0) || !(p.min_margin >= 0.0)) problems.push_back("min_gain, min_margin: must be >= 0");
   if (!(p.prior_sigma > 0.0)) problems.push_back("prior_sigma: must be > 0");
   return problems;
@@ -164,6 +169,10 @@ void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank
     const Vec3 y = deficit_torque_row(p, sample_at(bank, bank.count - 1), sample);
     const double alpha = std::min(1.0, p.period_s / p.noise_time_constant_s);
     bank.torque_mean_square += alpha * (y.cwiseProduct(y) - bank.torque_mean_square);
+    if (bank.count % p.noise_snapshot_periods == 0) {
+      bank.torque_mean_square_lagged = bank.torque_mean_square_snapshot;
+      bank.torque_mean_square_snapshot = bank.torque_mean_square;
+    }
   }
   bank.ring[static_cast<std::size_t>(bank.count % kMaxDeficitWindow)] = sample;
   ++bank.count;
@@ -217,7 +226,9 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& p, co
   double second = -1.0;
   for (int i = 0; i < model::kThrustersPerBranch; ++i)
     if (i != best) second = std::max(second, h.gain(i));
-  const bool clear = h.gain(best) >= p.min_gain && h.gain(best) - second >= p.min_margin;
+  const bool material = h.a(best) >= p.min_a || h.b(best) <= -p.min_b;
+  const bool named = h.gain(best) >= p.min_gain && material;
+  const bool clear = named && h.gain(best) - second >= p.min_margin;
   const bool last_chance = (bank.count - first) + p.reevaluate_every > p.max_window;
   if (!clear && !last_chance) {
     state.next_evaluation = now + p.reevaluate_every;
@@ -225,7 +236,7 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& p, co
   }
   d.decided = true;
   d.gain = h.gain(best), d.margin = h.gain(best) - second;
-  if (h.gain(best) < p.min_gain) return d;  // no thruster explains the alarm: name none
+  if (!named) return d;  // no thruster's fault explains the alarm: name none
   d.thruster = best, d.a = h.a(best), d.b = h.b(best), d.onset_sample = h.onset[best];
   classify_deficit(p, d);
   return d;

@@ -21,7 +21,8 @@
 // fit (r0, v0 only) to the best onset k_f of hypothesis i: a log-likelihood ratio (GLR) for
 // Gaussian row errors. Partners (same torque, opposite force) are told apart by the position rows.
 // The isolated thruster is the hypothesis with the largest gain, once it is large enough and ahead
-// of the second by a margin; (a, b) then say which fault it is and how large (this replaces the
+// of the second by a margin, and its deficit is material (a or -b large enough); (a, b) then say
+// which fault it is and how large (this replaces the
 // propellant-based event resolution for the diagnosis).
 //
 // Weights: position rows 1/sigma_lidar; torque rows per axis 1/sigma with
@@ -36,6 +37,7 @@
 // per-period cost without an alarm is storing one sample and updating sigma_0.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -65,8 +67,12 @@ struct DeficitIsolationParams {
   double gyro_sigma_radps = 1e-6;        // [rad/s] 1-sigma gyro noise: floor of sigma_0
   double pulse_uncertainty = 0.01;       // [-] epsilon
   double noise_time_constant_s = 20.0;   // [s] of the sigma_0 estimate
+  int noise_snapshot_periods = 100;      // [periods] between snapshots of it (the lag is 1-2 of these)
   double min_gain = 50.0;     // [-] gain the best hypothesis must reach to be named
   double min_margin = 25.0;   // [-] gain of the best over the second best
+  // Materiality: the best hypothesis is named only if its deficit is a fault's, not a model error's
+  // (a 20 % inertia error reads as b = -0.2 on the torque rows): a >= min_a or b <= -min_b.
+  double min_a = 0.05, min_b = 0.3;
   double prior_sigma = 10.0;  // [-] weak Gaussian prior on a and b: keeps b defined for a
                               //     thruster that is never commanded in the window
   // Reading (a, b) as a fault case: a above open_a: stuck open; a above leak_a: leak; otherwise
@@ -90,6 +96,11 @@ struct DeficitBankState {
   std::array<DeficitSample, kMaxDeficitWindow> ring{};
   std::int64_t count = 0;               // samples pushed; sample p lives in ring[p % size]
   Vec3 torque_mean_square = Vec3::Zero();  // [N^2 m^2] EW mean square of the fault-free torque rows
+  // The same estimate as it was 1-2 snapshot intervals ago (infinite until then). The weights use
+  // the smaller of the two, so the rows of a fault that has not yet raised an alarm (and so has
+  // not frozen the estimate) cannot inflate sigma_0 and hide themselves for a whole window.
+  Vec3 torque_mean_square_lagged = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 torque_mean_square_snapshot = Vec3::Constant(std::numeric_limits<double>::infinity());
   bool frozen = false;                  // sigma_0 stops adapting once an alarm is raised
 };
 
@@ -134,7 +145,9 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& param
 // Building blocks shared with the deficit detector (deficit_detector.hpp).
 // The torque row of sample `now` (Euler's equation over the period to `next`, less the commanded torque).
 Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSample& now, const DeficitSample& next);
-// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2), with the bank's sigma_0 estimate.
+// sigma_0^2 per axis: the smaller of the live and the lagged estimate, never below the gyro floor.
+Vec3 deficit_sigma0_sq(const DeficitIsolationParams& params, const DeficitBankState& bank);
+// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2).
 Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
                             const model::Ton8& ton);
 

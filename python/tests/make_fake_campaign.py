@@ -22,6 +22,8 @@ HEADER = (
     "position_isolated,position_false_alarm,position_missed,position_wrong_isolation,"
     "position_glr_max_before_onset,attitude_detection_s,attitude_isolation_s,attitude_isolated,"
     "attitude_false_alarm,attitude_missed,attitude_wrong_isolation,attitude_glr_max_before_onset,"
+    "deficit_detection_s,deficit_isolation_s,deficit_isolated,deficit_false_alarm,deficit_missed,"
+    "deficit_wrong_isolation,deficit_glr_max_before_onset,"
     "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
     "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s"
 ).split(",")
@@ -84,9 +86,10 @@ def make_run(rng, run, case):
     for axis in "xyz":
         row[f"com_{axis}_m"] = truncated_normal(rng, 0.03)
     names = ("detection_s", "isolation_s", "isolated", "false_alarm", "missed", "wrong_isolation")
-    for name, values in (("position", pos), ("attitude", att), ("fdir", fdir)):
+    for name, values in (("position", pos), ("attitude", att), ("deficit", att), ("fdir", fdir)):
         row.update({f"{name}_{k}": v for k, v in zip(names, values)})
     row["position_glr_max_before_onset"], row["attitude_glr_max_before_onset"] = pos[6], att[6]
+    row["deficit_glr_max_before_onset"] = 2.0 * att[6]
     row["recovery_s"] = fdir[1] + rng.uniform(1.0, 3.0) if fdir[2] > 0 and case != "none" else NAN
     row["capture"] = int(status == "ok" and rng.random() < (0.98 if good else 0.6))
     row["corridor_kept"] = int(status == "ok" and rng.random() < (0.97 if good else 0.5))
@@ -111,7 +114,7 @@ def write_summaries(out, rows, cases, envelope_max):
     columns = "scheme,case,runs,detected,mean_td_s,std_td_s,mean_ti_s,std_ti_s,P_nd,P_f,P_i," \
               "capture_rate,corridor_rate,mean_propellant_kg"
     lines, md = [columns], ["# Fake campaign summary", ""]
-    for s in ("position", "attitude", "fdir"):
+    for s in ("position", "attitude", "deficit", "fdir"):
         md += [f"## {s}", "", "| criterion | " + " | ".join(cases) + " |", "|---" * (len(cases) + 1) + "|"]
         cells = {}
         for case in cases:

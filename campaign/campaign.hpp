@@ -1,0 +1,35 @@
+#pragma once
+// A whole campaign (or one shard of it) into a directory: campaign.json, runs.csv, glr_runs.csv,
+// then summary.csv, summary.md and glr_envelope.csv (docs/campaigns.md).
+#include <cstdint>
+#include <string>
+
+#include "campaign/cases.hpp"
+#include "campaign/executor.hpp"
+#include "campaign/plan.hpp"
+
+namespace chaser::campaign {
+
+struct CampaignOptions {
+  std::string out_dir = "campaign-out";
+  Shard shard;
+  int threads = 1;
+  bool resume = false;
+  std::int64_t keep_telemetry = 0;  // runs with index < K keep DIR/runs/<run>/telemetry.csv, summary.json
+  bool progress = false;
+};
+
+enum class CampaignStatus { kOk, kBadInput, kFailure };
+
+struct CampaignOutcome {
+  CampaignStatus status = CampaignStatus::kOk;
+  std::string message;         // what went wrong, naming the option
+  std::int64_t shard_runs = 0; // runs of this shard
+  std::int64_t resumed = 0;    // runs found done in the directory (--resume)
+  ExecuteResult executed;      // runs flown now
+  double simulated_s = 0;      // [s] simulated time of the runs flown now (planned)
+};
+
+CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& options);
+
+}  // namespace chaser::campaign

@@ -1,0 +1,21 @@
+#pragma once
+// The fault of one campaign run (Fonod 2015, section V): a thruster uniform over the eight active
+// ones (branch A), the onset of the campaign, and a size uniform in the case's range.
+#include <cstdint>
+#include <optional>
+
+#include "campaign/cases.hpp"
+#include "model/campaign.hpp"
+#include "model/faults.hpp"
+
+namespace chaser::campaign {
+
+// Draws from the stream "campaign/fault" of the run seed: the thruster, then the size (leak and
+// loss only). Case none has no fault.
+std::optional<model::FaultParams> sample_fault(FaultCase fault_case, const model::CampaignParams& params,
+                                               std::uint64_t run_seed);
+
+// The size the runs.csv row reports: 1 for stuck cases, the leak or loss size, 0 without a fault.
+double fault_size(const std::optional<model::FaultParams>& fault);
+
+}  // namespace chaser::campaign

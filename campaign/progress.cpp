@@ -1,0 +1,54 @@
+#include "campaign/progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+#include <fmt/format.h>
+
+namespace chaser::campaign {
+
+namespace {
+
+constexpr std::chrono::milliseconds kRedrawInterval{250};
+
+std::string clock_text(double seconds) {
+  const auto s = static_cast<std::int64_t>(seconds + 0.5);
+  return s >= 3600 ? fmt::format("{}h{:02}m", s / 3600, s / 60 % 60) : fmt::format("{}m{:02}s", s / 60, s % 60);
+}
+
+}  // namespace
+
+bool stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
+
+Progress::Progress(std::int64_t total, bool enabled)
+    : total_(total), enabled_(enabled), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+
+double Progress::elapsed_s() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void Progress::draw(std::int64_t done, std::int64_t diverged) {
+  const double elapsed = elapsed_s();
+  const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
+  const std::string eta = rate > 0 ? clock_text(static_cast<double>(total_ - done) / rate) : "?";
+  std::fputs(fmt::format("\rcampaign: {}/{} runs, {:.1f} runs/s, ETA {}, {} diverged   ", done, total_, rate, eta,
+                         diverged).c_str(), stderr);
+  std::fflush(stderr);
+}
+
+void Progress::update(std::int64_t done, std::int64_t diverged) {
+  if (!enabled_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_draw_ < kRedrawInterval) return;
+  last_draw_ = now;
+  draw(done, diverged);
+}
+
+void Progress::finish(std::int64_t done, std::int64_t diverged) {
+  if (!enabled_) return;
+  draw(done, diverged);
+  std::fputc('\n', stderr);
+}
+
+}  // namespace chaser::campaign

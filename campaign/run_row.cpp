@@ -1,0 +1,189 @@
+#include "campaign/run_row.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace chaser::campaign {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Largest per-second GLR maximum over the whole seconds that end at or before the onset.
+double glr_before(const sim::RunResult& result, int scheme, double onset_s) {
+  const std::size_t seconds = std::isnan(onset_s) ? result.glr_max_per_s.size()
+                                                  : std::min(result.glr_max_per_s.size(),
+                                                             static_cast<std::size_t>(std::floor(onset_s)));
+  double best = 0.0;
+  for (std::size_t s = 0; s < seconds; ++s) best = std::max(best, static_cast<double>(result.glr_max_per_s[s][scheme]));
+  return best;
+}
+
+// alarm_s / isolated_s are run times (-1: none); with a fault, the paper's t_d and t_i from the onset.
+SchemeOutcome judge(double alarm_s, double isolated_s, int isolated, int fault_thruster, double onset_s,
+                    double glr_max) {
+  const bool fault = fault_thruster > 0;
+  const bool alarm = alarm_s >= 0.0;
+  const bool alarm_after = fault && alarm && alarm_s >= onset_s;
+  SchemeOutcome o{};
+  o.false_alarm = alarm && !alarm_after;
+  o.missed = fault && !alarm_after;
+  o.detection_s = alarm_after ? alarm_s - onset_s : kNaN;
+  o.isolation_s = alarm_after && isolated_s >= onset_s ? isolated_s - onset_s : kNaN;
+  o.isolated = isolated > 0 ? isolated : -1;
+  o.wrong_isolation = o.isolated > 0 && o.isolated != fault_thruster;
+  o.glr_max_before_onset = glr_max;
+  return o;
+}
+
+SchemeOutcome judge_scheme(const sim::SchemeResult& s, const RunRecord& r, double glr_max) {
+  return judge(s.alarm_s, s.isolated_s, s.isolated_thruster, r.fault_thruster, r.onset_s, glr_max);
+}
+
+// The FDIR as a whole (sim::FdirResult): the first alarm of any scheme; the confirmation the
+// recovery acted on, or with recovery off the first confirmation of any scheme.
+SchemeOutcome judge_fdir(const sim::FdirResult& f, const RunRecord& r) {
+  const bool recovered = f.recovery_s >= 0.0;
+  return judge(f.detection_s, recovered ? f.recovery_s : f.isolation_s,
+               recovered ? f.recovered_thruster : f.isolated_thruster, r.fault_thruster, r.onset_s,
+               std::max(r.position.glr_max_before_onset, r.attitude.glr_max_before_onset));
+}
+
+RunRecord base_record(const RunSetup& setup) {
+  RunRecord r;
+  r.run = setup.run;
+  r.seed = setup.seed;
+  r.fault_case = setup.fault_case;
+  r.fault_thruster = setup.fault ? setup.fault->thruster + 1 : 0;
+  r.fault_size = fault_size(setup.fault);
+  r.onset_s = setup.fault ? setup.fault->onset_s : kNaN;
+  r.chaser = setup.truth.chaser;
+  return r;
+}
+
+bool finite_figures(const sim::RunResult& result) {
+  return std::isfinite(result.propellant_used_kg) && std::isfinite(result.figures.final_position_error_m) &&
+         std::isfinite(result.figures.final_attitude_error_rad);
+}
+
+void number(std::string& out, double v) { append_number(out, v); }
+void flag(std::string& out, bool v) { out += v ? '1' : '0'; }
+void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_inserter(out), "{}", v); }
+
+// One scheme's seven columns, in the spec's order.
+#define CHASER_SCHEME_COLUMNS(scheme)                                                                  \
+  {#scheme "_detection_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }}, \
+  {#scheme "_isolation_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }}, \
+  {#scheme "_isolated", [](const RunRecord& r, std::string& o) { integer(o, r.scheme.isolated); }},      \
+  {#scheme "_false_alarm", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},   \
+  {#scheme "_missed", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},             \
+  {#scheme "_wrong_isolation", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
+
+}  // namespace
+
+std::string_view to_string(RunStatus s) {
+  switch (s) {
+    case RunStatus::kOk: return "ok";
+    case RunStatus::kDiverged: return "diverged";
+    case RunStatus::kError: return "error";
+  }
+  return "error";
+}
+
+void append_number(std::string& out, double value) {
+  if (std::isnan(value)) {
+    out += "nan";
+    return;
+  }
+  fmt::format_to(std::back_inserter(out), "{:.17g}", value);
+}
+
+RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, double planned_s) {
+  RunRecord r = base_record(setup);
+  const double half_period_s = 0.5 * setup.truth.control_period_s;
+  const bool short_run = result.simulated_s < planned_s - half_period_s;
+  r.status = result.figures.diverged || short_run || !finite_figures(result) ? RunStatus::kDiverged : RunStatus::kOk;
+  r.position = judge_scheme(result.fdir.position, r, glr_before(result, 0, r.onset_s));
+  r.attitude = judge_scheme(result.fdir.attitude, r, glr_before(result, 1, r.onset_s));
+  r.deficit = judge_scheme(result.fdir.deficit, r, glr_before(result, 2, r.onset_s));
+  r.fdir = judge_fdir(result.fdir, r);
+  r.recovery_s = result.fdir.recovery_s >= 0.0 ? result.fdir.recovery_s : kNaN;
+  r.capture = result.figures.capture_achieved;
+  r.corridor_kept = result.figures.corridor_violation_periods == 0;
+  r.target_in_view = result.figures.out_of_view_periods == 0;
+  r.propellant_kg = result.propellant_used_kg;
+  r.simulated_s = result.simulated_s;
+  return r;
+}
+
+RunRecord error_record(const RunSetup& setup) {
+  RunRecord r = base_record(setup);
+  r.status = RunStatus::kError;
+  const SchemeOutcome empty{kNaN, kNaN, -1, false, false, false, kNaN};
+  r.position = r.attitude = r.deficit = r.fdir = empty;
+  r.recovery_s = kNaN;
+  r.propellant_kg = kNaN;
+  return r;
+}
+
+const std::vector<RunColumn>& run_columns() {
+  // The one table of runs.csv columns (.coord/campaign_spec.md), in file order.
+  static const std::vector<RunColumn> columns = {
+      {"run", [](const RunRecord& r, std::string& o) { integer(o, r.run); }},
+      {"seed", [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
+      {"case", [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }},
+      {"status", [](const RunRecord& r, std::string& o) { o += to_string(r.status); }},
+      {"fault_thruster", [](const RunRecord& r, std::string& o) { integer(o, r.fault_thruster); }},
+      {"fault_size", [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }},
+      {"onset_s", [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }},
+      {"mass_kg", [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }},
+      {"inertia_xx_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }},
+      {"inertia_yy_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }},
+      {"inertia_zz_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }},
+      {"com_x_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }},
+      {"com_y_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }},
+      {"com_z_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }},
+      CHASER_SCHEME_COLUMNS(position),
+      {"position_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.position.glr_max_before_onset); }},
+      CHASER_SCHEME_COLUMNS(attitude),
+      {"attitude_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.attitude.glr_max_before_onset); }},
+      CHASER_SCHEME_COLUMNS(deficit),
+      {"deficit_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.deficit.glr_max_before_onset); }},
+      CHASER_SCHEME_COLUMNS(fdir),
+      {"recovery_s", [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }},
+      {"capture", [](const RunRecord& r, std::string& o) { flag(o, r.capture); }},
+      {"corridor_kept", [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }},
+      {"target_in_view", [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }},
+      {"propellant_kg", [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }},
+      {"simulated_s", [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }},
+  };
+  return columns;
+}
+
+#undef CHASER_SCHEME_COLUMNS
+
+std::string runs_header() {
+  std::string out;
+  for (const RunColumn& c : run_columns()) {
+    if (!out.empty()) out += ',';
+    out += c.name;
+  }
+  return out;
+}
+
+std::string format_row(const RunRecord& r) {
+  std::string out;
+  out.reserve(640);
+  bool first = true;
+  for (const RunColumn& c : run_columns()) {
+    if (!first) out += ',';
+    first = false;
+    c.write(r, out);
+  }
+  return out;
+}
+
+}  // namespace chaser::campaign

@@ -1,0 +1,64 @@
+#pragma once
+// One runs.csv row (.coord/campaign_spec.md): what a run was (seed, dispersed chaser, fault) and
+// what the FDI schemes and the mission made of it. The columns live in ONE table (run_row.cpp,
+// run_columns): adding a column is adding one line there.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "campaign/fault_sampling.hpp"
+#include "campaign/plan.hpp"
+#include "sim/run.hpp"
+
+namespace chaser::campaign {
+
+enum class RunStatus { kOk, kDiverged, kError };
+std::string_view to_string(RunStatus s);
+
+// One scheme's verdict on one run, judged against the truth (Fonod 2015, section V).
+struct SchemeOutcome {
+  double detection_s;          // [s] first alarm minus onset; NaN: none, or a false alarm, or case none
+  double isolation_s;          // [s] confirmation minus onset; NaN likewise
+  int isolated;                // confirmed thruster 1..8, -1: none
+  bool false_alarm;            // alarm before the onset (any alarm for case none)
+  bool missed;                 // fault case and no alarm at or after the onset
+  bool wrong_isolation;        // a thruster confirmed that is not the faulty one (any, for case none)
+  double glr_max_before_onset; // [-] largest GLR statistic before the onset (whole run for none)
+};
+
+struct RunRecord {
+  std::int64_t run = 0;
+  std::uint64_t seed = 0;
+  FaultCase fault_case = FaultCase::kNone;
+  RunStatus status = RunStatus::kOk;
+  int fault_thruster = 0;      // 1..8, 0 for case none
+  double fault_size = 0;       // [-] leak or loss size, 1 stuck, 0 none
+  double onset_s = 0;          // [s] NaN for case none
+  model::SpacecraftParams chaser;
+  SchemeOutcome position{}, attitude{}, deficit{}, fdir{};
+  double recovery_s = 0;       // [s] run time of the switch to branch B, NaN: none
+  bool capture = false, corridor_kept = false, target_in_view = false;
+  double propellant_kg = 0;    // [kg]
+  double simulated_s = 0;      // [s]
+};
+
+// The record of a flown run; status kDiverged when the monitor stopped it or it left the planned
+// duration early. `planned_s` is the run duration it should have flown.
+RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, double planned_s);
+// The record of a run that threw: no figures, every outcome empty.
+RunRecord error_record(const RunSetup& setup);
+
+struct RunColumn {
+  std::string_view name;
+  void (*write)(const RunRecord& r, std::string& out);
+};
+const std::vector<RunColumn>& run_columns();
+
+std::string runs_header();                    // column names joined by commas, no newline
+std::string format_row(const RunRecord& r);   // one row, no newline
+
+// Numbers as the spec writes them: {:.17g}, "nan" for a time that does not exist.
+void append_number(std::string& out, double value);
+
+}  // namespace chaser::campaign

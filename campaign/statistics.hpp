@@ -1,0 +1,71 @@
+#pragma once
+// One-pass statistics of a campaign (Fonod 2015, section V, Table 2): per scheme and case, the mean
+// and sample standard deviation of detection and isolation times (Welford's update: numerically
+// stable, constant memory, nothing quadratic in N) and the counts behind P_nd, P_f, P_i.
+// Fed in run-index order, the result is bit-identical however the runs were executed.
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "campaign/cases.hpp"
+
+namespace chaser::campaign {
+
+// Welford's running mean and sum of squared deviations.
+class RunningStats {
+ public:
+  void add(double x);
+  std::int64_t count() const { return n_; }
+  double mean() const;      // NaN when empty
+  double sample_std() const;  // (n - 1) normalisation; NaN when n < 2
+
+ private:
+  std::int64_t n_ = 0;
+  double mean_ = 0.0;
+  double m2_ = 0.0;
+};
+
+inline constexpr std::array<std::string_view, 4> kSchemes = {"position", "attitude", "deficit", "fdir"};
+
+// What the summary reads of one scheme in one runs.csv row.
+struct SchemeFacts {
+  double detection_s;  // NaN: not detected after the onset
+  double isolation_s;  // NaN: no confirmation after the onset
+  int isolated;        // 1..8 or -1
+  bool false_alarm, missed;
+};
+
+struct RowFacts {
+  FaultCase fault_case;
+  bool counted;        // status ok or diverged; error runs carry no figures
+  bool diverged, error;
+  int fault_thruster;
+  std::array<SchemeFacts, kSchemes.size()> schemes;  // kSchemes order
+  bool capture, corridor_kept;
+  double propellant_kg;
+};
+
+struct SchemeCaseStats {
+  std::int64_t runs = 0, detected = 0, missed = 0, false_alarms = 0, right_isolations = 0;
+  std::int64_t captures = 0, corridors_kept = 0;
+  RunningStats detection_s, isolation_s, propellant_kg;  // isolation: right isolations only
+};
+
+// Per case (in the campaign's case order) and scheme.
+class CampaignStats {
+ public:
+  explicit CampaignStats(std::vector<FaultCase> cases);
+  void add(const RowFacts& row);
+  const std::vector<FaultCase>& cases() const { return cases_; }
+  const SchemeCaseStats& at(std::size_t case_index, std::size_t scheme) const { return stats_[case_index][scheme]; }
+  std::int64_t diverged(std::size_t case_index) const { return diverged_[case_index]; }
+  std::int64_t errors(std::size_t case_index) const { return errors_[case_index]; }
+
+ private:
+  std::vector<FaultCase> cases_;
+  std::vector<std::array<SchemeCaseStats, kSchemes.size()>> stats_;
+  std::vector<std::int64_t> diverged_, errors_;
+};
+
+}  // namespace chaser::campaign

@@ -1,0 +1,63 @@
+// The campaign section: dispersions, fault population, onset and horizon of a Monte Carlo campaign
+// (model/campaign.hpp, docs/campaigns.md).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/scenario_sections.hpp"
+
+namespace chaser::io {
+
+namespace {
+
+// A [min, max] pair of keys: min <= max, judged only when both were read cleanly.
+void check_ordered(MapReader& r, std::string_view min_key, double min, std::string_view max_key, double max) {
+  Diagnostics& d = r.diagnostics();
+  const std::string min_path = r.path_of(min_key), max_path = r.path_of(max_key);
+  if (!d.clean(min_path) || !d.clean(max_path) || min <= max) return;
+  d.add(max_path, fmt::format("must be >= {} = {} (got {})", min_path, format_number(min), format_number(max)));
+}
+
+}  // namespace
+
+void read_campaign(MapReader& r, model::CampaignParams& out) {
+  r.count("seed", out.seed);
+  r.number("onset_s", Range::right_open(0.0, kMaxCampaignRunS), out.onset_s);
+  r.number("horizon_after_onset_s", Range::left_open(0.0, kMaxCampaignRunS), out.horizon_after_onset_s);
+  // Below 1 a truncated draw keeps mass and moments positive: (1 - 3 sigma) > 0.
+  r.number("mass_3sigma_rel", Range::right_open(0.0, 1.0), out.mass_3sigma_rel);
+  r.number("inertia_3sigma_rel", Range::right_open(0.0, 1.0), out.inertia_3sigma_rel);
+  r.number("com_3sigma_m", Range::non_negative(), out.com_3sigma_m);
+  r.number("leak_size_min", Range::left_open(0.0, 1.0), out.leak_size_min);
+  r.number("leak_size_max", Range::left_open(0.0, 1.0), out.leak_size_max);
+  r.number("leak_slope_per_s", Range::positive(), out.leak_slope_per_s);
+  r.number("loss_size_min", Range::left_open(0.0, 1.0), out.loss_size_min);
+  r.number("loss_size_max", Range::left_open(0.0, 1.0), out.loss_size_max);
+  r.number("threshold_margin", Range::positive(), out.threshold_margin);
+  std::uint64_t runs = 0;
+  if (r.count("runs_per_case", runs)) {
+    if (runs == 0)
+      r.diagnostics().add(r.path_of("runs_per_case"), "must be a whole number >= 1 (got 0)");
+    else
+      out.runs_per_case = runs;
+  }
+  check_ordered(r, "leak_size_min", out.leak_size_min, "leak_size_max", out.leak_size_max);
+  check_ordered(r, "loss_size_min", out.loss_size_min, "loss_size_max", out.loss_size_max);
+}
+
+// A campaign run flies onset_s + horizon_after_onset_s: a whole number of control periods, and
+// short enough that the per-second GLR record of a run stays small.
+void validate_campaign(const model::Scenario& s, Diagnostics& d) {
+  const char* path = "campaign.horizon_after_onset_s";
+  if (!d.clean("control_period_s") || !d.clean("campaign.onset_s") || !d.clean(path)) return;
+  const double run_s = s.campaign.onset_s + s.campaign.horizon_after_onset_s;
+  const double periods = run_s / s.control_period_s;
+  if (run_s > kMaxCampaignRunS)
+    d.add(path, fmt::format("campaign.onset_s + horizon_after_onset_s must be <= {} (got {})",
+                            format_number(kMaxCampaignRunS), format_number(run_s)));
+  else if (std::abs(periods - std::round(periods)) > 1e-6)
+    d.add(path, fmt::format("campaign.onset_s + horizon_after_onset_s = {} must be a whole multiple of "
+                            "control_period_s = {}", format_number(run_s), format_number(s.control_period_s)));
+}
+
+}  // namespace chaser::io

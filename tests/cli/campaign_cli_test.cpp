@@ -1,0 +1,163 @@
+// chaser campaign as a user meets it: bad input exits 2 naming the option, a campaign killed with
+// SIGKILL resumes to the very bytes of an uninterrupted one, shards merge.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exit_code;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult chaser(const std::string& args) {
+  const std::string command = std::string(CHASER_BINARY) + " " + args + " 2>&1";
+  CommandResult result{-1, ""};
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("chaser_campaign_cli_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+// Short runs: 100 s to the onset, 20 s after it (1200 periods, a few ms each).
+const std::string kShort =
+    "campaign scenarios/msr_terminal.yaml --set campaign.onset_s=100 --set campaign.horizon_after_onset_s=20 ";
+
+void expect_bad(const std::string& args, const std::string& fragment) {
+  const CommandResult r = chaser(kShort + args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  EXPECT_NE(r.output.find(fragment), std::string::npos) << args << "\n" << r.output;
+}
+
+TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
+  const std::string out = "--out " + fresh_dir("bad").string() + " ";
+  expect_bad(out + "--cases none,bogus", "--cases: unknown case 'bogus' (allowed: none, stuck_open, stuck_closed, leak, loss)");
+  expect_bad(out + "--runs 0", "--runs");
+  expect_bad(out + "--runs leak=-2", "--runs");
+  expect_bad(out + "--shard 3/3", "--shard: expected I/M with whole numbers 0 <= I < M (got '3/3')");
+  expect_bad(out + "--shard x", "--shard");
+  expect_bad(out + "--threads 0", "--threads");
+  expect_bad(out + "--preset nope", "--preset: unknown preset 'nope' (allowed: fonod2015-table2)");
+  expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
+  expect_bad(out + "--resume", "--resume");
+  EXPECT_EQ(chaser("campaign").exit_code, 2);
+  EXPECT_EQ(chaser("campaign merge --out " + fresh_dir("m0").string()).exit_code, 2);
+}
+
+// Runs a campaign in a child process and kills it with SIGKILL once `rows` rows are on disk.
+// Returns false if the campaign finished before it could be killed.
+bool kill_campaign_midway(const std::string& args, const fs::path& dir, std::size_t rows) {
+  std::vector<std::string> words;
+  std::istringstream split(args);
+  for (std::string w; split >> w;) words.push_back(w);
+  const pid_t pid = fork();
+  if (pid == 0) {  // the child becomes chaser itself, so the SIGKILL hits the campaign
+    std::vector<char*> argv{const_cast<char*>(CHASER_BINARY)};
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    execv(CHASER_BINARY, argv.data());
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const std::string runs = read_file(dir / "runs.csv");
+    if (static_cast<std::size_t>(std::count(runs.begin(), runs.end(), '\n')) > rows) break;
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+}
+
+// The proof of resume: kill -9 mid-way, a torn row appended as a kill during a write
+// leaves it, then --resume: every result file equals the uninterrupted campaign's, byte for byte.
+TEST(CampaignCli, ResumeAfterSigkillGivesTheUninterruptedBytes) {
+  const fs::path whole = fresh_dir("whole"), killed = fresh_dir("killed");
+  const std::string args = kShort + "--cases none,stuck_open,leak --runs 60 --threads 2 --seed 3 ";
+  const CommandResult full = chaser(args + "--out " + whole.string());
+  ASSERT_EQ(full.exit_code, 0) << full.output;
+  ASSERT_TRUE(kill_campaign_midway(args + "--out " + killed.string(), killed, 30)) << "finished before the kill";
+  std::ofstream(killed / "runs.csv", std::ios::app | std::ios::binary) << "77,123,stuck_open,ok,3,1,1";  // torn
+  const CommandResult resumed = chaser(args + "--resume --out " + killed.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("found done, resumed"), std::string::npos) << resumed.output;
+  for (const char* name : {"runs.csv", "summary.csv", "summary.md", "glr_envelope.csv", "campaign.json"})
+    EXPECT_TRUE(read_file(whole / name) == read_file(killed / name)) << name;
+}
+
+TEST(CampaignCli, ResumeOfADifferentCampaignIsRefused) {
+  const fs::path dir = fresh_dir("different");
+  ASSERT_EQ(chaser(kShort + "--cases none --runs 2 --out " + dir.string()).exit_code, 0);
+  const CommandResult r = chaser(kShort + "--cases none --runs 2 --seed 5 --resume --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("different campaign (differs in: scenario_hash, campaign_seed)"), std::string::npos)
+      << r.output;
+}
+
+// Two shards from the command line merge into the one-shard campaign; merging a shard twice or an
+// incomplete set is refused with exit code 2.
+TEST(CampaignCli, ShardsMergeAndBadMergesExitWith2) {
+  const std::string args = kShort + "--runs none=3,loss=2 --threads 1 ";
+  const fs::path whole = fresh_dir("mwhole"), s0 = fresh_dir("s0"), s1 = fresh_dir("s1"), merged = fresh_dir("merged");
+  ASSERT_EQ(chaser(args + "--out " + whole.string()).exit_code, 0);
+  ASSERT_EQ(chaser(args + "--shard 0/2 --out " + s0.string()).exit_code, 0);
+  ASSERT_EQ(chaser(args + "--shard 1/2 --out " + s1.string()).exit_code, 0);
+  const CommandResult twice = chaser("campaign merge --out " + merged.string() + " " + s0.string() + " " + s0.string());
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.output.find("overlapping shards"), std::string::npos) << twice.output;
+  EXPECT_EQ(chaser("campaign merge --out " + merged.string() + " " + s1.string()).exit_code, 2);
+  const CommandResult ok = chaser("campaign merge --out " + merged.string() + " " + s1.string() + " " + s0.string());
+  ASSERT_EQ(ok.exit_code, 0) << ok.output;
+  for (const char* name : {"runs.csv", "summary.csv", "summary.md", "glr_envelope.csv"})
+    EXPECT_TRUE(read_file(whole / name) == read_file(merged / name)) << name;
+}
+
+// --keep-telemetry K keeps the telemetry and summary of runs 0..K-1 only.
+TEST(CampaignCli, KeepTelemetryOfTheFirstRuns) {
+  const fs::path dir = fresh_dir("telemetry");
+  ASSERT_EQ(chaser(kShort + "--cases leak --runs 3 --keep-telemetry 2 --out " + dir.string()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "runs" / "1" / "telemetry.csv"));
+  EXPECT_TRUE(fs::exists(dir / "runs" / "1" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "runs" / "2"));
+}
+
+}  // namespace
