@@ -26,6 +26,7 @@ struct Window {
   std::array<Vec3, kMaxDeficitWindow> w_tau{};    // [1/(N m)^2] torque row weights
   std::array<model::Ton8, kMaxDeficitWindow> ton{};
   double g00 = 0, g01 = 0, g11 = 0;               // Gram matrix of [1, k] over the position rows
+  double rss_position = 0, rss_torque = 0;        // [-] weighted RSS of the no-fault fit, by block
 };
 
 // p' G^-1 q for the straight-line projection: the part of <x, z> that r0 + v0 t explains.
@@ -53,7 +54,7 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
   // No-fault fit: r0 + v0 t per axis; what it leaves are the detrended position rows.
   w.g00 = w.n, w.g01 = 0.5 * w.n * (w.n - 1), w.g11 = (w.n - 1.0) * w.n * (2.0 * w.n - 1.0) / 6.0;
   const double inv_var = 1.0 / (p.lidar_sigma_m * p.lidar_sigma_m);
-  double rss = 0;
+  double& rss = w.rss_position;
   for (int ax = 0; ax < 3; ++ax) {
     double s0 = 0, s1 = 0;
     for (int k = 0; k < w.n; ++k) s0 += w.y_pos[k](ax), s1 += k * w.y_pos[k](ax);
@@ -64,14 +65,16 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
       rss += inv_var * w.y_pos[k](ax) * w.y_pos[k](ax);
     }
   }
-  for (int k = 0; k + 1 < w.n; ++k) rss += w.y_tau[k].cwiseProduct(w.y_tau[k]).dot(w.w_tau[k]);
-  return rss;
+  for (int k = 0; k + 1 < w.n; ++k) w.rss_torque += w.y_tau[k].cwiseProduct(w.y_tau[k]).dot(w.w_tau[k]);
+  return w.rss_position + w.rss_torque;
 }
 
-// Normal equations of hypothesis i with onset kf (window-relative).
-DeficitNormal normal_equations(const DeficitIsolationParams& p, const Window& w, int i, int kf) {
+// Normal equations of hypothesis i with onset kf (window-relative), the position and torque blocks
+// weighted by the given scales (1, 1: as the weights say), the prior not included.
+DeficitNormal normal_equations(const DeficitIsolationParams& p, const Window& w, int i, int kf, double position_scale,
+                               double torque_scale) {
   const double T = p.period_s;
-  const double inv_var = 1.0 / (p.lidar_sigma_m * p.lidar_sigma_m);
+  const double inv_var = position_scale / (p.lidar_sigma_m * p.lidar_sigma_m);
   DeficitNormal n;
   // Position rows: the double integral of the deficit's acceleration from the onset on.
   Vec3 pa = Vec3::Zero(), va = Vec3::Zero(), pb = Vec3::Zero(), vb = Vec3::Zero();
@@ -94,14 +97,25 @@ DeficitNormal normal_equations(const DeficitIsolationParams& p, const Window& w,
   // Torque rows.
   const Vec3 c = p.torque_body_Nm.col(i);
   for (int k = kf; k + 1 < w.n; ++k) {
-    const Vec3 wc = w.w_tau[k].cwiseProduct(c);
+    const Vec3 wc = torque_scale * w.w_tau[k].cwiseProduct(c);
     const double cc = wc.dot(c), cy = wc.dot(w.y_tau[k]), u = w.ton[k](i);
     n.haa += cc, n.hab += u * cc, n.hbb += u * u * cc;
     n.ga += cy, n.gb += u * cy;
   }
+  return n;
+}
+
+DeficitNormal with_prior(const DeficitIsolationParams& p, DeficitNormal n) {
   const double prior = 1.0 / (p.prior_sigma * p.prior_sigma);
   n.haa += prior, n.hbb += prior;
   return n;
+}
+
+// Reduced chi-square of the torque rows at a fit: sum of squared weighted residuals per row.
+double torque_chi2_per_row(const DeficitIsolationParams& p, const Window& w, int i, int kf, double a, double b) {
+  const DeficitNormal t = normal_equations(p, w, i, kf, 0.0, 1.0);
+  const double rss = w.rss_torque - 2.0 * (a * t.ga + b * t.gb) + (a * a * t.haa + 2.0 * a * b * t.hab + b * b * t.hbb);
+  return std::max(rss, 0.0) / (3.0 * (w.n - 1));
 }
 
 }  // namespace
@@ -188,12 +202,29 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   h.rss_no_fault = build_window(p, bank, first, w);
   h.rows = 3 * w.n + 3 * (w.n - 1);
   const int last_kf = static_cast<int>(std::clamp<std::int64_t>(last_onset - first, 0, w.n - 2));
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
-    h.gain(i) = -1.0;
-    for (int kf = 0; kf <= last_kf; ++kf) {
-      const DeficitFit fit = fit_deficit(normal_equations(p, w, i, kf));
-      if (fit.gain > h.gain(i)) h.gain(i) = fit.gain, h.a(i) = fit.a, h.b(i) = fit.b, h.onset[i] = first + kf;
+  auto fit_all = [&](double torque_scale) {
+    for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+      h.gain(i) = -1.0;
+      for (int kf = 0; kf <= last_kf; ++kf) {
+        const DeficitFit fit = fit_deficit(with_prior(p, normal_equations(p, w, i, kf, 1.0, torque_scale)));
+        if (fit.gain > h.gain(i)) h.gain(i) = fit.gain, h.a(i) = fit.a, h.b(i) = fit.b, h.onset[i] = first + kf;
+      }
     }
+  };
+  fit_all(1.0);
+  // Model misfit: when even the best hypothesis leaves the torque rows far above their noise (a
+  // leak's ramp fitted as a step, a dispersed centre of mass or inertia), those rows would decide
+  // between hypotheses by how each bends a wrong model, not by evidence; partners, alike in torque,
+  // would be told apart by chance. Their weights are then divided by the misfit (the Birge ratio),
+  // so the position rows carry the choice between partners, and the fit is redone.
+  int best = 0;
+  for (int i = 1; i < model::kThrustersPerBranch; ++i)
+    if (h.gain(i) > h.gain(best)) best = i;
+  const double chi2 = torque_chi2_per_row(p, w, best, static_cast<int>(h.onset[best] - first), h.a(best), h.b(best));
+  if (chi2 > p.misfit_rescale_above) {
+    h.torque_scale = 1.0 / chi2;
+    h.rss_no_fault = w.rss_position + w.rss_torque * h.torque_scale;
+    fit_all(h.torque_scale);
   }
   return h;
 }

@@ -73,6 +73,8 @@ struct DeficitIsolationParams {
   // Materiality: the best hypothesis is named only if its deficit is a fault's, not a model error's
   // (a 20 % inertia error reads as b = -0.2 on the torque rows): a >= min_a or b <= -min_b.
   double min_a = 0.05, min_b = 0.3;
+  double misfit_rescale_above = 3.0;  // [-] torque rows' chi-square per row at the best fit above which
+                                      //     their weights are divided by it (evaluate_deficit_hypotheses)
   double prior_sigma = 10.0;  // [-] weak Gaussian prior on a and b: keeps b defined for a
                               //     thruster that is never commanded in the window
   // Reading (a, b) as a fault case: a above open_a: stuck open; a above leak_a: leak; otherwise
@@ -116,6 +118,7 @@ struct DeficitHypotheses {
   std::array<std::int64_t, model::kThrustersPerBranch> onset{};  // sample index of the best onset
   double rss_no_fault = 0;                  // [-] weighted RSS of the no-fault fit
   int rows = 0;                             // scalar rows in the fit
+  double torque_scale = 1.0;                // [-] 1, or 1 / the torque rows' misfit when it was rescaled
 };
 DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& params, const DeficitBankState& bank,
                                               std::int64_t first, std::int64_t last_onset);
