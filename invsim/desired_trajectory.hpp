@@ -1,0 +1,18 @@
+#pragma once
+// Desired trajectory of the approach (the "expected state" x_c of Zhou 2018, section 2.2), Hill
+// frame: a constant-velocity approach along x from the initial x0, then, from damping_start_s, the
+// exponential "index damping" phase x = x_dock + (x_s - x_dock) exp(-(t - t_s) / T) (section 3.2).
+// The approach velocity -(x0 - x_dock) / (t_s + T) makes x and x' continuous at t_s. The paper
+// gives neither the profile nor its numbers; y and z are held at 0 (on the docking axis).
+#include "core/types.hpp"
+#include "model/invsim.hpp"
+
+namespace chaser::invsim {
+
+// [m/s] velocity of the constant-velocity phase.
+double approach_velocity_mps(const model::InvSimTrajectoryParams& p, double x0_m);
+
+// [x y z x' y' z'] desired at time t [s] (t may exceed the run; the exponential continues).
+Vec6 desired_state(const model::InvSimTrajectoryParams& p, double x0_m, double t_s);
+
+}  // namespace chaser::invsim

@@ -1,0 +1,213 @@
+#include "invsim/inverse_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "invsim/desired_trajectory.hpp"
+#include "invsim/inverse_step.hpp"
+#include "invsim/phase_plane.hpp"
+#include "invsim/pulse_conversion.hpp"
+#include "invsim/relative_dynamics.hpp"
+#include "invsim/sensor_geometry.hpp"
+#include "invsim/thruster_set.hpp"
+
+namespace chaser::invsim {
+namespace {
+
+constexpr double kDivergedRangeM = 1e4;  // [m] beyond this the approach has clearly failed
+
+using GroupWrenches = std::array<std::array<Wrench, 2>, 3>;  // [axis][0: +, 1: -]
+
+// Everything derived once from the parameters and the fault set.
+struct RunContext {
+  RvdConstants rvd;
+  InverseModel inverse;
+  std::array<std::array<double, 2>, 3> u_max_nominal;  // [m/s^2] the pilot's u_max per group
+  Vec3 a0_radps2;                                      // attitude control accelerations
+  GroupWrenches translation;                           // healthy wrenches per group
+  GroupWrenches attitude;
+  long steps;
+  long sub_steps;  // attitude periods per IS step
+};
+
+int dir_index(int direction) { return direction > 0 ? 0 : 1; }
+
+RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
+  RunContext c{};
+  c.rvd = make_rvd_constants(p.mu_m3ps2, p.radius_m(), p.mass_kg, p.inertia_kgm2);
+  Vec6 weights;
+  for (int i = 0; i < 6; ++i) weights(i) = p.inverse.state_weights[i];
+  c.inverse = make_inverse_model(c.rvd.mean_motion_radps, p.step_s, p.inverse.horizon_steps, weights);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int d : {1, -1}) {
+      c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
+      c.translation[axis][dir_index(d)] = translation_wrench(p, faults, axis, d);
+      c.attitude[axis][dir_index(d)] = attitude_wrench(p, faults, axis, d);
+    }
+    const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
+    c.a0_radps2(axis) = nominal.torque_body_Nm(axis) / p.inertia_kgm2(axis, axis);
+  }
+  c.steps = std::lround(p.duration_s / p.step_s);
+  c.sub_steps = std::max(1L, std::lround(p.step_s / p.attitude.period_s));
+  return c;
+}
+
+// Steps 2-3: the inverse model's acceleration and its pulses.
+std::array<Pulse, 3> inverse_link(const RunContext& c, const model::InvSimParams& p,
+                                  const RvdState& s, double t, Vec3& u_body) {
+  Vec6 x;
+  x << s.r_hill_m, s.v_hill_mps;
+  const double horizon_end = t + p.step_s * p.inverse.horizon_steps;
+  const Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), horizon_end);
+  const Vec3 u_hill = inverse_step(c.inverse, x, x_c);
+  u_body = s.q_hill_from_body.toRotationMatrix().transpose() * u_hill;  // eq. 8 inverted
+  std::array<Pulse, 3> pulses{};
+  for (int axis = 0; axis < 3; ++axis) {
+    const double u_max = c.u_max_nominal[axis][dir_index(u_body(axis) >= 0.0 ? 1 : -1)];
+    const PulseParams pp{u_max, p.step_s, p.pulses.time_sensitivity,
+                         p.pulses.acceleration_sensitivity};
+    pulses[axis] = u_max > 0.0 ? convert_to_pulse(pp, u_body(axis)) : Pulse{0, 0.0};
+  }
+  return pulses;
+}
+
+// Integrates one attitude period [offset, offset + h] of the step, split at every valve edge.
+void propagate_period(const RunContext& c, const std::array<Pulse, 3>& translation, double offset,
+                      double h, const std::array<PhasePlaneCommand, 3>& attitude, RvdState& s,
+                      double& translation_fuel_Ns, double& attitude_fuel_Ns) {
+  std::array<double, 7> edges{};
+  std::size_t n = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    edges[n++] = std::clamp(translation[axis].on_time_s - offset, 0.0, h);
+    edges[n++] = std::clamp(attitude[axis].on_time_s, 0.0, h);
+  }
+  edges[n++] = h;
+  std::sort(edges.begin(), edges.end());
+  double start = 0.0;
+  for (double end : edges) {
+    if (end <= start) continue;
+    Wrench w;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Pulse& tp = translation[axis];
+      if (tp.direction != 0 && start < tp.on_time_s - offset) {
+        const Wrench& g = c.translation[axis][dir_index(tp.direction)];
+        w.force_body_N += g.force_body_N;
+        w.torque_body_Nm += g.torque_body_Nm;
+        translation_fuel_Ns += g.thrust_sum_N * (end - start);
+      }
+      const PhasePlaneCommand& ap = attitude[axis];
+      if (ap.direction != 0 && start < ap.on_time_s) {
+        const Wrench& g = c.attitude[axis][dir_index(ap.direction)];
+        w.force_body_N += g.force_body_N;
+        w.torque_body_Nm += g.torque_body_Nm;
+        attitude_fuel_Ns += g.thrust_sum_N * (end - start);
+      }
+    }
+    propagate_piece(c.rvd, w.force_body_N, w.torque_body_Nm, end - start, s);
+    start = end;
+  }
+}
+
+// Step 5 for one instant: line of sight and attitude against the limits.
+void record_limits(const model::InvSimParams& p, const RvdState& s, InvSimResult& r,
+                   LineOfSight& los, Vec3& euler) {
+  const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
+  euler = euler321_from_matrix(r_hill_from_body);
+  los = line_of_sight(s.r_hill_m, r_hill_from_body, p.sensor.position_body_m);
+  r.peak_azimuth_rad = std::max(r.peak_azimuth_rad, std::abs(los.azimuth_rad));
+  r.peak_elevation_rad = std::max(r.peak_elevation_rad, std::abs(los.elevation_rad));
+  r.peak_attitude_rad = r.peak_attitude_rad.cwiseMax(euler.cwiseAbs());
+  if (!target_in_view(los, p.sensor.azimuth_limit_rad, p.sensor.elevation_limit_rad))
+    r.target_always_in_view = false;
+  if (euler.cwiseAbs().maxCoeff() > p.sensor.attitude_limit_rad) r.attitude_within_limits = false;
+}
+
+// Step 4: the outer loop over one IS step.
+void forward_step(const RunContext& c, const model::InvSimParams& p,
+                  const std::array<Pulse, 3>& pulses, RvdState& s, InvSimResult& r,
+                  double& translation_fuel_Ns, double& attitude_fuel_Ns) {
+  const double h = p.step_s / static_cast<double>(c.sub_steps);
+  for (long j = 0; j < c.sub_steps; ++j) {
+    const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
+    const Vec3 euler = euler321_from_matrix(r_hill_from_body);
+    const Vec3 rate = relative_rate_body(c.rvd, s);
+    std::array<PhasePlaneCommand, 3> attitude{};
+    for (int axis = 0; axis < 3; ++axis)
+      attitude[axis] = step_phase_plane(p.attitude, c.a0_radps2(axis), euler(axis), rate(axis));
+    propagate_period(c, pulses, static_cast<double>(j) * h, h, attitude, s, translation_fuel_Ns,
+                     attitude_fuel_Ns);
+    LineOfSight los{};
+    Vec3 e;
+    record_limits(p, s, r, los, e);
+  }
+}
+
+bool finite_and_near(const RvdState& s) {
+  return s.r_hill_m.allFinite() && s.v_hill_mps.allFinite() && s.omega_body_radps.allFinite() &&
+         s.r_hill_m.norm() < kDivergedRangeM;
+}
+
+RvdState initial_state(const RunContext& c, const model::InvSimParams& p) {
+  RvdState s;
+  s.r_hill_m = p.r0_hill_m;
+  s.v_hill_mps = p.v0_hill_mps;
+  s.q_hill_from_body = Quat(matrix_from_euler321(p.euler0_rad));
+  s.omega_body_radps = p.omega0_rel_body_radps +
+      s.q_hill_from_body.toRotationMatrix().transpose() * Vec3(0.0, -c.rvd.mean_motion_radps, 0.0);
+  return s;
+}
+
+void finish_result(const model::InvSimParams& p, const RvdState& s, double translation_fuel_Ns,
+                   double attitude_fuel_Ns, InvSimResult& r) {
+  for (const AxisPulses& a : r.pulses) r.total_pulses += a.count[0] + a.count[1];
+  r.k_p = static_cast<double>(r.total_pulses) / p.pulses.basic_pulse_amount;  // eq. 22
+  const double exhaust_Ns_per_kg = p.isp_s * kStandardGravity;
+  r.attitude_propellant_kg = attitude_fuel_Ns / exhaust_Ns_per_kg;
+  r.propellant_kg = (translation_fuel_Ns + attitude_fuel_Ns) / exhaust_Ns_per_kg;
+  r.final_r_hill_m = s.r_hill_m;
+  r.final_v_hill_mps = s.v_hill_mps;
+  const Vec3 offset = s.r_hill_m - Vec3(p.trajectory.dock_x_m, 0.0, 0.0);
+  r.docked = !r.diverged && (offset.cwiseAbs().array() <= 0.5 * p.envelope_m.array()).all();
+}
+
+}  // namespace
+
+InvSimResult run_inverse_simulation(const model::InvSimParams& p,
+                                    const model::InvSimFaultSet& faults,
+                                    std::vector<InvSimSample>* history) {
+  const RunContext c = make_context(p, faults);
+  RvdState s = initial_state(c, p);
+  InvSimResult r;
+  double translation_fuel_Ns = 0.0, attitude_fuel_Ns = 0.0;
+  for (long k = 0; k < c.steps; ++k) {
+    const double t = static_cast<double>(k) * p.step_s;
+    Vec3 u_body;
+    const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, u_body);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (pulses[axis].direction == 0) continue;
+      AxisPulses& a = r.pulses[axis];
+      ++a.count[dir_index(pulses[axis].direction)];
+      a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
+    }
+    if (history != nullptr) {
+      LineOfSight los{};
+      Vec3 euler;
+      InvSimResult scratch;
+      record_limits(p, s, scratch, los, euler);
+      const Vec6 x_d = desired_state(p.trajectory, p.r0_hill_m.x(), t);
+      history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
+                          los.elevation_rad, u_body,
+                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}});
+    }
+    forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns);
+    if (!finite_and_near(s)) {
+      r.diverged = true;
+      break;
+    }
+  }
+  finish_result(p, s, translation_fuel_Ns, attitude_fuel_Ns, r);
+  return r;
+}
+
+}  // namespace chaser::invsim

@@ -1,0 +1,89 @@
+#include "io/invsim_loader.hpp"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "core/constants.hpp"
+
+namespace chaser::io {
+namespace {
+
+constexpr const char* kScenario = "scenarios/manual_rvd.yaml";
+
+bool has_error_at(const InvSimLoadResult& r, const std::string& key_path) {
+  return std::any_of(r.errors.begin(), r.errors.end(),
+                     [&](const ScenarioError& e) { return e.key_path == key_path; });
+}
+
+// The shipped scenario loads and carries the paper's Table 3 values.
+TEST(InvSimLoader, ShippedScenarioHasTable3Settings) {
+  const InvSimLoadResult r = load_invsim_file(kScenario);
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  const model::InvSimParams& p = *r.params;
+  EXPECT_EQ(p.r0_hill_m, Vec3(100.038, -0.0167, -0.023));
+  EXPECT_EQ(p.v0_hill_mps, Vec3(-0.0076, 0.131, -0.0087));
+  EXPECT_EQ(p.envelope_m, Vec3(4.0, 2.42, 2.42));
+  EXPECT_EQ(p.inverse.horizon_steps, 3);
+  EXPECT_EQ(p.step_s, 1.0);
+  EXPECT_EQ(p.duration_s, 1300.0);
+  EXPECT_EQ(p.pulses.basic_pulse_amount, 3000.0);
+  EXPECT_EQ(p.pulses.time_sensitivity, 0.35);
+  EXPECT_NEAR(p.sensor.azimuth_limit_rad, 10.0 * kDegToRad, 1e-15);
+  EXPECT_NEAR(p.sensor.attitude_limit_rad, 1.0 * kDegToRad, 1e-15);
+  ASSERT_EQ(p.thrusters.size(), 19u);
+  for (const model::InvSimThruster& t : p.thrusters) {
+    if (t.role == model::InvSimThrusterRole::kTranslation) {
+      EXPECT_EQ(t.thrust_N, 60.0);
+    }
+    if (t.role == model::InvSimThrusterRole::kAttitude) {
+      EXPECT_EQ(t.thrust_N, 25.0);
+    }
+  }
+  EXPECT_EQ(r.faults.failed_mask, 0u);
+}
+
+// Overrides reach the schema like the file (Scheme I: attitude thrusters at 50 N), and faults are
+// given by name.
+TEST(InvSimLoader, OverridesAndFaultsByName) {
+  const InvSimLoadResult r =
+      load_invsim_file(kScenario, {"thrusters.1.thrust_N=50", "faults=[e1, d2~]"});
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  EXPECT_EQ(r.params->thrusters[1].thrust_N, 50.0);
+  EXPECT_EQ(r.faults.failed_mask, (std::uint64_t{1} << 11) | (std::uint64_t{1} << 10));
+}
+
+// Every problem is reported at once with its key path: a bad value, a misspelt key, an unknown
+// axis, a duplicated name, a fault naming no thruster, a period that does not divide the step.
+TEST(InvSimLoader, ReportsEveryErrorWithItsKeyPath) {
+  const InvSimLoadResult r = load_invsim_file(
+      kScenario, {"chaser.mass_kg=-1", "pulses.time_sensitivty=0.3", "thrusters.7.axis=w",
+                  "thrusters.8.name=d1", "faults=[zz]", "attitude_control.period_s=0.3"});
+  EXPECT_FALSE(r.params.has_value());
+  EXPECT_TRUE(has_error_at(r, "chaser.mass_kg")) << format_errors(r.errors);
+  EXPECT_TRUE(has_error_at(r, "pulses.time_sensitivty")) << format_errors(r.errors);
+  EXPECT_TRUE(has_error_at(r, "thrusters.7.axis")) << format_errors(r.errors);
+  EXPECT_TRUE(has_error_at(r, "attitude_control.period_s")) << format_errors(r.errors);
+  // The thruster list has errors, so the cross-checks that need it (names, faults) wait.
+  const InvSimLoadResult names = load_invsim_file(kScenario, {"thrusters.8.name=d1", "faults=[zz]"});
+  EXPECT_TRUE(has_error_at(names, "thrusters.8.name")) << format_errors(names.errors);
+  const InvSimLoadResult faults = load_invsim_file(kScenario, {"faults=[zz, e1, e1]"});
+  EXPECT_TRUE(has_error_at(faults, "faults.0")) << format_errors(faults.errors);
+  EXPECT_TRUE(has_error_at(faults, "faults.2")) << format_errors(faults.errors);
+}
+
+// A layout that cannot push along an axis is rejected before any run.
+TEST(InvSimLoader, RejectsAGroupThatDoesNotPushAlongItsAxis) {
+  const InvSimLoadResult r = load_invsim_file(
+      kScenario, {"thrusters.7.direction_body=[0, 1, 0]", "thrusters.8.direction_body=[0, 1, 0]"});
+  EXPECT_TRUE(has_error_at(r, "thrusters")) << format_errors(r.errors);
+}
+
+TEST(InvSimLoader, MissingFileIsAnError) {
+  const InvSimLoadResult r = load_invsim_file("scenarios/no_such_file.yaml");
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].key_path, "scenarios/no_such_file.yaml");
+}
+
+}  // namespace
+}  // namespace chaser::io
