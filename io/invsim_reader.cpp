@@ -1,8 +1,6 @@
 // The inverse-simulation scenario (io/invsim_loader.hpp): reading of every section with its type
 // and static range, then the checks between keys. Schema in docs/invsim.md.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -11,6 +9,7 @@
 #include "core/constants.hpp"
 #include "io/invsim_loader.hpp"
 #include "io/overrides.hpp"
+#include "io/text_file.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace chaser::io {
@@ -276,18 +275,13 @@ InvSimLoadResult load_invsim_text(const std::string& yaml_text, const std::vecto
 }
 
 InvSimLoadResult load_invsim_file(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  std::ifstream file;
-  if (std::filesystem::is_regular_file(path, ec)) file.open(path, std::ios::binary);
-  if (!file.is_open()) {
+  const std::optional<std::string> text = read_text_file(path);
+  if (!text) {
     InvSimLoadResult result;
-    result.errors.push_back({path, "cannot open the scenario file (it does not exist, is not a "
-                                   "regular file, or is not readable)"});
+    result.errors.push_back({path, kUnreadableScenario});
     return result;
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return load_document(text.str(), path, overrides);
+  return load_document(*text, path, overrides);
 }
 
 std::optional<model::InvSimFaultSet> invsim_fault_set(const InvSimParams& p,

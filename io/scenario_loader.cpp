@@ -3,8 +3,6 @@
 // errors as values.
 #include "io/scenario_loader.hpp"
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -12,6 +10,7 @@
 #include "io/overrides.hpp"
 #include "io/scenario_hash.hpp"
 #include "io/scenario_sections.hpp"
+#include "io/text_file.hpp"
 
 namespace chaser::io {
 namespace {
@@ -61,18 +60,13 @@ LoadResult load_scenario_text(const std::string& yaml_text, const std::vector<st
 }
 
 LoadResult load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  std::ifstream file;
-  if (std::filesystem::is_regular_file(path, ec)) file.open(path, std::ios::binary);
-  if (!file.is_open()) {
+  const std::optional<std::string> text = read_text_file(path);
+  if (!text) {
     LoadResult result;
-    result.errors.push_back({path, "cannot open the scenario file (it does not exist, is not a regular "
-                                   "file, or is not readable)"});
+    result.errors.push_back({path, kUnreadableScenario});
     return result;
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return load_document(text.str(), path, overrides);
+  return load_document(*text, path, overrides);
 }
 
 std::string format_errors(const std::vector<ScenarioError>& errors) {
