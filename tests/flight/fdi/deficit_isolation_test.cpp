@@ -14,7 +14,7 @@
 #include "core/random.hpp"
 #include "core/rotation.hpp"
 #include "model/thruster_geometry.hpp"
-#include "tests/support/msr_branch_a.hpp"
+#include "tests/support/deficit_msr.hpp"
 
 // Independent tests of the impulse-deficit isolation: synthetic windows generated with the model the
 // header states (explicit Euler for the attitude, exact double integral for the position), checked
@@ -26,18 +26,8 @@ namespace {
 using model::FaultKind;
 constexpr int kN = model::kThrustersPerBranch;
 
-// MSR branch A (T5..T8 mirror T1..T4: same torque, opposite force about the origin = CoM),
-// inertia diag(2000, 2500, 3000) kg m^2, 2500 kg, T = 0.1 s.
-DeficitIsolationParams msr_params() {
-  const model::ConfigMatrix m = model::configuration_matrix(chaser::testing::msr_branch_a_thrusters(), 0, Vec3::Zero());
-  DeficitIsolationParams p;
-  p.inertia_kgm2 = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();
-  p.mass_kg = 2500.0;
-  p.force_body_N = m.topRows<3>();
-  p.torque_body_Nm = m.bottomRows<3>();
-  p.period_s = 0.1;
-  return p;
-}
+// The MSR chaser's bank parameters (tests/support/deficit_msr.hpp).
+DeficitIsolationParams msr_params() { return chaser::testing::msr_deficit_params(); }
 
 struct Fault {
   FaultKind kind = FaultKind::kStuckOpen;
