@@ -48,7 +48,7 @@ std::string check_directory(const CampaignOptions& o, const nlohmann::ordered_js
 
 }  // namespace
 
-CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& options) {
+CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& options, const RunsExecutor& executor) {
   const nlohmann::ordered_json json = campaign_json(plan, options.shard);
   if (std::string e = check_directory(options, json); !e.empty()) return bad_input(e);
   std::error_code ec;
@@ -74,11 +74,12 @@ CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& op
   outcome.resumed = scan.runs_done;
   const RunRange todo{range.begin + scan.runs_done, range.end};
   const flight::FlightParams flight = flight::make_flight_params(plan.nominal);  // designed once, shared
-  outcome.executed = execute_runs(plan, flight, todo, *writer,
-                                  {.threads = options.threads,
-                                   .keep_telemetry = options.keep_telemetry,
-                                   .telemetry_root = (fs::path(options.out_dir) / "runs").string(),
-                                   .progress = options.progress});
+  const ExecuteOptions execute{.threads = options.threads,
+                               .keep_telemetry = options.keep_telemetry,
+                               .telemetry_root = (fs::path(options.out_dir) / "runs").string(),
+                               .progress = options.progress};
+  outcome.executed = executor ? executor(plan, flight, todo, *writer, execute)
+                              : execute_runs(plan, flight, todo, *writer, execute);
   outcome.simulated_s = static_cast<double>(outcome.executed.runs) * run_duration_s(plan.nominal);
   if (!outcome.executed.io_ok) return failure(fmt::format("cannot write the rows files in {}", options.out_dir));
   std::vector<FaultCase> cases;

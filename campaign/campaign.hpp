@@ -2,6 +2,7 @@
 // A whole campaign (or one shard of it) into a directory: campaign.json, runs.csv, glr_runs.csv,
 // then summary.csv, summary.md and glr_envelope.csv (docs/campaigns.md).
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "campaign/cases.hpp"
@@ -30,6 +31,12 @@ struct CampaignOutcome {
   double simulated_s = 0;      // [s] simulated time of the runs flown now (planned)
 };
 
-CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& options);
+// How the runs still to do are flown and handed to the writer in index order: execute_runs (a
+// thread pool) unless given; chaser campaign --mpi gives the MPI coordinator (mpi_runner.hpp).
+using RunsExecutor = std::function<ExecuteResult(const CampaignPlan&, const flight::FlightParams&, const RunRange&,
+                                                 RowsWriter&, const ExecuteOptions&)>;
+
+CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& options,
+                             const RunsExecutor& executor = {});
 
 }  // namespace chaser::campaign

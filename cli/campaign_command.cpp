@@ -1,12 +1,15 @@
 // chaser campaign: a Monte Carlo campaign (or one shard of it), and chaser campaign merge
 // (docs/campaigns.md).
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "campaign/campaign.hpp"
+#include "campaign/campaign_json.hpp"
 #include "campaign/merge.hpp"
+#include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_input.hpp"
@@ -40,16 +43,20 @@ int report(const campaign::CampaignOutcome& o, const std::string& out_dir) {
   return kExitOk;
 }
 
-}  // namespace
+// Every input checked and loaded into a plan; nullopt after printing what is wrong.
+struct Prepared {
+  campaign::CampaignPlan plan;
+  campaign::CampaignOptions options;
+};
 
-int campaign_command(const CampaignArgs& args) {
+std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::vector<std::string> overrides;
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
       std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {})\n", args.preset,
                                kPresetTable2);
-      return kExitBadInput;
+      return std::nullopt;
     }
     overrides.push_back("fdi.recovery=false");  // the paper evaluates each scheme alone
     if (runs_text.empty() && args.cases.empty()) runs_text = kTable2Runs;
@@ -58,35 +65,61 @@ int campaign_command(const CampaignArgs& args) {
   overrides.insert(overrides.end(), args.overrides.begin(), args.overrides.end());  // the user's --set win
 
   const campaign::ShardParse shard = campaign::parse_shard(args.shard.empty() ? "0/1" : args.shard);
-  if (!shard.shard) {
-    std::cerr << "chaser campaign: " << shard.error << '\n';
-    return kExitBadInput;
-  }
-  if (args.threads && *args.threads < 1) {
-    std::cerr << fmt::format("chaser campaign: --threads: must be >= 1 (got {})\n", *args.threads);
-    return kExitBadInput;
-  }
-  if (args.keep_telemetry < 0) {
-    std::cerr << fmt::format("chaser campaign: --keep-telemetry: must be >= 0 (got {})\n", args.keep_telemetry);
-    return kExitBadInput;
+  std::string error = shard.shard ? "" : shard.error;
+  if (error.empty() && args.threads && *args.threads < 1)
+    error = fmt::format("--threads: must be >= 1 (got {})", *args.threads);
+  if (error.empty() && args.keep_telemetry < 0)
+    error = fmt::format("--keep-telemetry: must be >= 0 (got {})", args.keep_telemetry);
+  if (!error.empty()) {
+    std::cerr << "chaser campaign: " << error << '\n';
+    return std::nullopt;
   }
   const auto loaded = load_or_report(args.scenario_path, overrides);
-  if (!loaded) return kExitBadInput;
+  if (!loaded) return std::nullopt;
   const auto layout = campaign::parse_layout(args.cases, runs_text,
                                              static_cast<std::int64_t>(loaded->scenario->campaign.runs_per_case));
   if (!layout.error.empty()) {
     std::cerr << "chaser campaign: " << layout.error << '\n';
+    return std::nullopt;
+  }
+  // With --mpi every rank is one process per core by default: one worker thread each.
+  const int default_threads = args.mpi ? 1 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return Prepared{campaign::CampaignPlan{*loaded->scenario, loaded->hash, campaign::RunLayout(layout.cases)},
+                  campaign::CampaignOptions{.out_dir = args.out_dir,
+                                            .shard = *shard.shard,
+                                            .threads = args.threads.value_or(default_threads),
+                                            .resume = args.resume,
+                                            .keep_telemetry = args.keep_telemetry,
+                                            .progress = campaign::stderr_is_terminal()}};
+}
+
+// --mpi: every rank prepares; all go on only when all prepared the same campaign (none left waiting).
+int campaign_mpi(const CampaignArgs& args) {
+  const std::optional<Prepared> prepared = prepare(args);
+  const int rank = campaign::mpi_rank();
+  const std::string mine =
+      prepared ? campaign::campaign_json_text(campaign::campaign_json(prepared->plan, prepared->options.shard)) : "";
+  if (!campaign::mpi_all_agree(mine, rank)) {
+    if (prepared && rank == 0) std::cerr << "chaser campaign: another MPI rank could not prepare this campaign (see its message)\n";
     return kExitBadInput;
   }
-  const campaign::CampaignPlan plan{*loaded->scenario, loaded->hash, campaign::RunLayout(layout.cases)};
-  const int threads = args.threads ? *args.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const campaign::CampaignOptions options{.out_dir = args.out_dir,
-                                          .shard = *shard.shard,
-                                          .threads = threads,
-                                          .resume = args.resume,
-                                          .keep_telemetry = args.keep_telemetry,
-                                          .progress = campaign::stderr_is_terminal()};
-  return report(campaign::run_campaign(plan, options), args.out_dir);
+  Prepared p = *prepared;
+  p.options.progress = p.options.progress && rank == 0;
+  const campaign::CampaignOutcome outcome = campaign::run_campaign_mpi(p.plan, p.options, rank);
+  return rank == 0 ? report(outcome, args.out_dir) : kExitOk;
+}
+
+}  // namespace
+
+int campaign_command(const CampaignArgs& args) {
+  if (args.mpi && !campaign::mpi_built()) {
+    std::cerr << "chaser campaign: " << campaign::kNoMpiMessage << '\n';
+    return kExitBadInput;
+  }
+  if (args.mpi) return campaign_mpi(args);
+  const std::optional<Prepared> prepared = prepare(args);
+  if (!prepared) return kExitBadInput;
+  return report(campaign::run_campaign(prepared->plan, prepared->options), args.out_dir);
 }
 
 int campaign_merge_command(const CampaignMergeArgs& args) {

@@ -39,6 +39,7 @@ struct CampaignArgs {
   std::optional<std::uint64_t> seed;
   std::vector<std::string> overrides;
   std::string preset;
+  bool mpi = false;            // spread the runs over MPI ranks (main.cpp started MPI)
 };
 
 struct CampaignMergeArgs {

@@ -1,13 +1,35 @@
 // chaser: the command-line entry point. Parses arguments and dispatches to a subcommand.
 #include <iostream>
+#include <memory>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
+#include "campaign/mpi_runner.hpp"
 #include "cli/commands.hpp"
 #include "sim/summary.hpp"
 
+namespace {
+
+// chaser campaign --mpi: MPI starts before anything else, and only then (MPI_Init may rewrite argv).
+bool asks_for_mpi(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--mpi") return true;
+  return false;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace chaser::cli;
+  std::unique_ptr<chaser::campaign::MpiSession> mpi;
+  if (asks_for_mpi(argc, argv) && chaser::campaign::mpi_built()) {
+    mpi = std::make_unique<chaser::campaign::MpiSession>(argc, argv);
+    if (!mpi->ok()) {
+      std::cerr << "chaser campaign: " << mpi->error() << '\n';
+      return kExitFailure;
+    }
+  }
   CLI::App app{"Chaser: thruster FDIR design and verification for rendezvous, docking and capture"};
   app.set_version_flag("--version", std::string("chaser ") + chaser::sim::kChaserVersion);
   app.require_subcommand(1);
@@ -50,6 +72,7 @@ int main(int argc, char** argv) {
   campaign_cmd->add_option("--seed", campaign.seed, "Campaign seed (replaces campaign.seed)");
   campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
   campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign");
+  campaign_cmd->add_flag("--mpi", campaign.mpi, "Spread the runs over the ranks of mpirun/srun; rank 0 writes");
   CampaignMergeArgs merge;
   CLI::App* merge_cmd = campaign_cmd->add_subcommand("merge", "Merge the complete shards of one campaign");
   merge_cmd->add_option("--out", merge.out_dir, "Merged campaign directory")->required();
