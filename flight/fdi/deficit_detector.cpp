@@ -17,8 +17,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   if (bank.count < 2) return;
   // The row of the previous sample: its period has ended with this sample's gyro reading.
   const DeficitSample& now = bank.ring[static_cast<std::size_t>((bank.count - 2) % kMaxDeficitWindow)];
-  const DeficitSample& next = bank.ring[static_cast<std::size_t>((bank.count - 1) % kMaxDeficitWindow)];
-  const Vec3 y = deficit_torque_row(bp, now, next);
+  const Vec3& y = bank.last_torque_row;  // computed once by push_deficit_sample
   const Vec3 w = deficit_torque_weights(bp, bank, now.ton);
   DeficitSums row;
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {

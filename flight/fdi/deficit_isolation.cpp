@@ -128,7 +128,8 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
 }
 
 Vec3 deficit_sigma0_sq(const DeficitIsolationParams& p, const DeficitBankState& bank) {
-  return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(torque_noise_floor_sq(p));
+  (void)p;
+  return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(bank.noise_floor_sq);
 }
 
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const model::Ton8& ton) {
@@ -178,9 +179,10 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
 }
 
 void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank, const DeficitSample& sample) {
-  if (bank.count == 0) bank.torque_mean_square = torque_noise_floor_sq(p);
+  if (bank.count == 0) bank.torque_mean_square = bank.noise_floor_sq = torque_noise_floor_sq(p);
+  if (bank.count > 0) bank.last_torque_row = deficit_torque_row(p, sample_at(bank, bank.count - 1), sample);
   if (bank.count > 0 && !bank.frozen) {
-    const Vec3 y = deficit_torque_row(p, sample_at(bank, bank.count - 1), sample);
+    const Vec3& y = bank.last_torque_row;
     const double alpha = std::min(1.0, p.period_s / p.noise_time_constant_s);
     bank.torque_mean_square += alpha * (y.cwiseProduct(y) - bank.torque_mean_square);
     if (bank.count % p.noise_snapshot_periods == 0) {

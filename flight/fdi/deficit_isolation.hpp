@@ -104,6 +104,8 @@ struct DeficitBankState {
   Vec3 torque_mean_square_lagged = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 torque_mean_square_snapshot = Vec3::Constant(std::numeric_limits<double>::infinity());
   bool frozen = false;                  // sigma_0 stops adapting once an alarm is raised
+  Vec3 noise_floor_sq = Vec3::Zero();   // [N^2 m^2] the gyro floor of sigma_0^2, set at the first sample
+  Vec3 last_torque_row = Vec3::Zero();  // [N m] torque row of sample count - 2 (valid from count >= 2)
 };
 
 // Stores this period's sample and, until frozen, updates the sigma_0 estimate with the torque row
