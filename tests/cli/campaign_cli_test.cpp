@@ -11,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -158,6 +159,28 @@ TEST(CampaignCli, KeepTelemetryOfTheFirstRuns) {
   EXPECT_TRUE(fs::exists(dir / "runs" / "1" / "telemetry.csv"));
   EXPECT_TRUE(fs::exists(dir / "runs" / "1" / "summary.json"));
   EXPECT_FALSE(fs::exists(dir / "runs" / "2"));
+}
+
+}  // namespace
+
+namespace {
+
+int shell(const std::string& command) {
+  const int status = std::system((command + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// python/plot_campaign.py on a real campaign directory (every case, fault-free runs for the GLR
+// envelope): it must read what the engine writes and draw all four figures (Fonod 2015 Figs. 8,
+// 11, 12 and the outcome bars). Skipped where /usr/bin/python3 lacks numpy or matplotlib.
+TEST(CampaignCli, PlotCampaignDrawsEveryFigureFromARealCampaign) {
+  if (shell("/usr/bin/python3 -c 'import numpy, matplotlib'") != 0) GTEST_SKIP() << "no numpy/matplotlib";
+  const fs::path dir = fresh_dir("plot");
+  const CommandResult r = chaser(kShort + "--runs 3 --threads 2 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(shell("/usr/bin/python3 python/plot_campaign.py " + dir.string()), 0);
+  for (const char* png : {"detection_times.png", "isolation_times.png", "outcome.png", "glr_envelope.png"})
+    EXPECT_GT(fs::exists(dir / png) ? fs::file_size(dir / png) : 0u, 10000u) << png;
 }
 
 }  // namespace
