@@ -42,6 +42,14 @@ struct CampaignArgs {
   bool mpi = false;            // spread the runs over MPI ranks (main.cpp started MPI)
 };
 
+// chaser fmea (docs/invsim.md, "chaser fmea").
+struct FmeaArgs {
+  std::string scenario_path;
+  std::string out_dir = "fmea-out";
+  std::vector<std::string> overrides;
+  std::optional<int> threads;  // default: hardware concurrency
+};
+
 struct CampaignMergeArgs {
   std::string out_dir;
   std::vector<std::string> shard_dirs;
@@ -51,6 +59,7 @@ int run_command(const RunArgs& args);
 int campaign_command(const CampaignArgs& args);
 int campaign_merge_command(const CampaignMergeArgs& args);
 int fdi_design_command(const FdiDesignArgs& args);
+int fmea_command(const FmeaArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 
 }  // namespace chaser::cli

@@ -78,6 +78,13 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("--out", merge.out_dir, "Merged campaign directory")->required();
   merge_cmd->add_option("shards", merge.shard_dirs, "Shard directories")->required();
 
+  FmeaArgs fmea;
+  CLI::App* fmea_cmd = app.add_subcommand("fmea", "Thruster failure-mode analysis by inverse simulation (Zhou 2018): fmea.csv, fmea.md");
+  fmea_cmd->add_option("scenario", fmea.scenario_path, "Inverse-simulation scenario file (YAML)")->required();
+  fmea_cmd->add_option("--out", fmea.out_dir, "Output directory")->capture_default_str();
+  fmea_cmd->add_option("--set", fmea.overrides, "Override a scenario key: key.path=value (repeatable)");
+  fmea_cmd->add_option("--threads", fmea.threads, "Worker threads (default: all cores)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -87,6 +94,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
   if (*design_cmd) return fdi_design_command(fdi_design);
+  if (*fmea_cmd) return fmea_command(fmea);
   if (*merge_cmd) return campaign_merge_command(merge);
   if (*campaign_cmd) {
     if (campaign.scenario_path.empty()) {

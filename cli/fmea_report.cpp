@@ -1,0 +1,152 @@
+#include "cli/fmea_report.hpp"
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "invsim/thruster_set.hpp"
+
+namespace chaser::cli {
+namespace {
+
+using invsim::FmeaRow;
+using invsim::FmeaTable;
+
+double deg(double rad) { return rad / kDegToRad; }
+const char* yes_no(bool b) { return b ? "true" : "false"; }
+
+std::string pulse_cells(const invsim::InvSimResult& r, const char* sep) {
+  std::string out;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int d = 0; d < 2; ++d) out += fmt::format("{}{}", sep, r.pulses[axis].count[d]);
+  return out;
+}
+
+// "d1/d2~+e2/e1~" -> ("d1/d2~", "e2/e1~")
+std::pair<std::string, std::string> split_multi(const std::string& label) {
+  const auto plus = label.find('+');
+  if (plus == std::string::npos) return {label, ""};
+  return {label.substr(0, plus), label.substr(plus + 1)};
+}
+
+// Table 6's header cell: the pair and the z moments its failed thrusters leave ("d1/d1~ Mz+/Mz-").
+std::string moment_label(const model::InvSimParams& p, const std::string& pair) {
+  std::string moments;
+  std::size_t start = 0;
+  while (start <= pair.size()) {
+    const auto slash = pair.find('/', start);
+    const std::string name = pair.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    const auto i = invsim::find_thruster(p, name);
+    const double mz = i ? invsim::fault_disturbing_moment(p, *i).z() : 0.0;
+    if (!moments.empty()) moments += '/';
+    moments += mz > 0.0 ? "Mz+" : (mz < 0.0 ? "Mz-" : "Mz0");
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  return pair + " " + moments;
+}
+
+void table4(std::string& md, const std::vector<FmeaRow>& rows) {
+  md += "## Table 4: single-axis faults (pulses per body axis and direction, operational amount)\n\n";
+  md += "| Fault thrusters | x+ | x- | y+ | y- | z+ | z- | Operational amount k_p | Class |\n";
+  md += "|---|---|---|---|---|---|---|---|---|\n";
+  for (const FmeaRow& row : rows) {
+    const FmeaTable t = row.fmea_case.table;
+    if (t != FmeaTable::kNominal && t != FmeaTable::kSingleAxis) continue;
+    const std::string name = t == FmeaTable::kNominal ? "—" : row.fmea_case.mode.label;
+    md += fmt::format("| {}{} | {:.3f} | {} |\n", name, pulse_cells(row.result, " | "), row.result.k_p,
+                      invsim::risk_class_roman(row.risk));
+  }
+  md += "\n";
+}
+
+void table5(std::string& md, const std::vector<FmeaRow>& rows) {
+  md += "## Table 5: multi-axis faults\n\n";
+  md += "| x-axis | y-axis | x+ | x- | y+ | y- | z+ | z- | Operational rate k_p | Class |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const FmeaRow& row : rows) {
+    const FmeaTable t = row.fmea_case.table;
+    if (t != FmeaTable::kNominal && t != FmeaTable::kMultiAxis) continue;
+    const auto [x, y] = t == FmeaTable::kNominal ? std::pair<std::string, std::string>{"—", "—"}
+                                                  : split_multi(row.fmea_case.mode.label);
+    md += fmt::format("| {} | {}{} | {:.3f} | {} |\n", x, y, pulse_cells(row.result, " | "), row.result.k_p,
+                      invsim::risk_class_roman(row.risk));
+  }
+  md += "\n(The paper prints `---` for its uncontrollable rows; we keep the figures and mark them Class III.)\n\n";
+}
+
+// Table 6: the 4 x 4 grid of x-axis pairs (rows) and y-axis pairs (columns), in Table 5's order.
+void table6(std::string& md, const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+  std::vector<const FmeaRow*> multi;
+  for (const FmeaRow& row : rows)
+    if (row.fmea_case.table == FmeaTable::kMultiAxis) multi.push_back(&row);
+  if (multi.size() != 16) return;
+  md += "## Table 6: risk classes of the multi-axis faults\n\n|";
+  for (int c = 0; c < 4; ++c) md += " | " + moment_label(p, split_multi(multi[c]->fmea_case.mode.label).second);
+  md += " |\n|---|---|---|---|---|\n";
+  for (int r = 0; r < 4; ++r) {
+    md += "| " + moment_label(p, split_multi(multi[4 * r]->fmea_case.mode.label).first);
+    for (int c = 0; c < 4; ++c) md += fmt::format(" | {}", invsim::risk_class_roman(multi[4 * r + c]->risk));
+    md += " |\n";
+  }
+  md += "\n";
+}
+
+void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
+  md += "## Ranking by risk (most severe first)\n\n";
+  md += "| Rank | Mode | Class | k_p | peak az [deg] | peak el [deg] | peak attitude [deg] | deviation ratio | "
+        "docked | propellant [kg] |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t i : invsim::risk_order(rows)) {
+    const FmeaRow& row = rows[i];
+    const auto& r = row.result;
+    md += fmt::format("| {} | {} | {} ({}) | {:.3f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {:.2f} |\n", row.rank,
+                      row.fmea_case.mode.label, invsim::risk_class_roman(row.risk),
+                      invsim::risk_class_name(row.risk), r.k_p, deg(r.peak_azimuth_rad),
+                      deg(r.peak_elevation_rad), deg(r.peak_attitude_rad.maxCoeff()), row.deviation_ratio,
+                      r.docked ? "yes" : "no", r.propellant_kg);
+  }
+}
+
+}  // namespace
+
+std::string fmea_csv(const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+  std::string csv =
+      "mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,"
+      "peak_azimuth_deg,azimuth_limit_deg,peak_elevation_deg,elevation_limit_deg,"
+      "peak_roll_deg,peak_pitch_deg,peak_yaw_deg,attitude_limit_deg,deviation_ratio,"
+      "target_always_in_view,attitude_within_limits,docked,diverged,propellant_kg,"
+      "controllable,risk_class,risk_rank\n";
+  for (const FmeaRow& row : rows) {
+    const auto& r = row.result;
+    csv += fmt::format("{},{},{}{},{},{:.4f},", row.fmea_case.mode.label, invsim::table_name(row.fmea_case.table),
+                       invsim::failed_names(p, row.fmea_case.mode.faults), pulse_cells(r, ","), r.total_pulses,
+                       r.k_p);
+    csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},",
+                       deg(r.peak_azimuth_rad), deg(p.sensor.azimuth_limit_rad), deg(r.peak_elevation_rad),
+                       deg(p.sensor.elevation_limit_rad), deg(r.peak_attitude_rad.x()),
+                       deg(r.peak_attitude_rad.y()), deg(r.peak_attitude_rad.z()),
+                       deg(p.sensor.attitude_limit_rad), row.deviation_ratio);
+    csv += fmt::format("{},{},{},{},{:.4f},{},{},{}\n", yes_no(r.target_always_in_view),
+                       yes_no(r.attitude_within_limits), yes_no(r.docked), yes_no(r.diverged), r.propellant_kg,
+                       yes_no(row.controllable), invsim::risk_class_roman(row.risk), row.rank);
+  }
+  return csv;
+}
+
+std::string fmea_markdown(const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+  std::string md = fmt::format("# FMEA of scenario '{}' (Zhou 2018, inverse simulation)\n\n", p.name);
+  md += fmt::format(
+      "Pulses: steps in which a body axis' translation group fired in that direction; k_p = P / {:.0f} (eq. 22). "
+      "Classes (docs/invsim.md): I controllable, small deviation (peak |az| and |el| <= {:.0f}% of their limits "
+      "{:.1f}/{:.1f} deg); II controllable, large deviation; III uncontrollable (not docked, target out of "
+      "view, or attitude beyond +-{:.1f} deg).\n\n",
+      p.pulses.basic_pulse_amount, 100.0 * invsim::kLargeDeviationFraction, deg(p.sensor.azimuth_limit_rad),
+      deg(p.sensor.elevation_limit_rad), deg(p.sensor.attitude_limit_rad));
+  table4(md, rows);
+  table5(md, rows);
+  table6(md, p, rows);
+  ranking(md, rows);
+  return md;
+}
+
+}  // namespace chaser::cli

@@ -1,0 +1,120 @@
+#include "invsim/fmea.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <thread>
+
+namespace chaser::invsim {
+
+std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults) {
+  std::vector<FmeaCase> cases;
+  cases.push_back({FaultMode{"nominal", {}}, FmeaTable::kNominal});
+  for (auto& m : single_axis_fault_modes(p)) cases.push_back({std::move(m), FmeaTable::kSingleAxis});
+  for (auto& m : multi_axis_fault_modes(p)) cases.push_back({std::move(m), FmeaTable::kMultiAxis});
+  if (scenario_faults.failed_mask != 0)
+    cases.push_back({FaultMode{"scenario", scenario_faults}, FmeaTable::kScenario});
+  return cases;
+}
+
+std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<FmeaCase>& cases, int threads) {
+  std::vector<FmeaRow> rows(cases.size());
+  // Each worker takes the next case; every run is independent of the others and of the order, so
+  // the rows do not depend on the number of workers.
+  std::atomic<std::size_t> next{0};
+  auto work = [&]() {
+    for (std::size_t i = next++; i < cases.size(); i = next++) {
+      FmeaRow& row = rows[i];
+      row.fmea_case = cases[i];
+      row.result = run_inverse_simulation(p, cases[i].mode.faults);
+      row.deviation_ratio = deviation_ratio(p.sensor, row.result);
+      row.controllable = is_controllable(row.result);
+      row.risk = classify_risk(p.sensor, row.result);
+    }
+  };
+  const std::size_t workers = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1,
+                                                      std::max<std::size_t>(cases.size(), 1));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  rank_by_risk(rows);
+  return rows;
+}
+
+double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResult& r) {
+  const double ratio = std::max(r.peak_azimuth_rad / limits.azimuth_limit_rad,
+                                r.peak_elevation_rad / limits.elevation_limit_rad);
+  // A diverged run may leave non-finite peaks: the worst deviation, and a total order for ranking.
+  return std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
+}
+
+bool is_controllable(const InvSimResult& r) {
+  return r.docked && r.target_always_in_view && r.attitude_within_limits && !r.diverged;
+}
+
+RiskClass classify_risk(const model::InvSimSensorParams& limits, const InvSimResult& r) {
+  if (!is_controllable(r)) return RiskClass::kUncontrollable;
+  return deviation_ratio(limits, r) > kLargeDeviationFraction ? RiskClass::kLargeDeviation
+                                                              : RiskClass::kSmallDeviation;
+}
+
+std::vector<std::size_t> risk_order(const std::vector<FmeaRow>& rows) {
+  std::vector<std::size_t> order(rows.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const FmeaRow& x = rows[a];
+    const FmeaRow& y = rows[b];
+    if (x.risk != y.risk) return x.risk > y.risk;
+    if (x.result.k_p != y.result.k_p) return x.result.k_p > y.result.k_p;
+    return x.deviation_ratio > y.deviation_ratio;
+  });
+  return order;
+}
+
+void rank_by_risk(std::vector<FmeaRow>& rows) {
+  const std::vector<std::size_t> order = risk_order(rows);
+  for (std::size_t k = 0; k < order.size(); ++k) rows[order[k]].rank = static_cast<int>(k) + 1;
+}
+
+std::string failed_names(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
+  std::string out;
+  for (std::size_t i = 0; i < p.thrusters.size(); ++i) {
+    if (!faults.failed(i)) continue;
+    if (!out.empty()) out += ' ';
+    out += p.thrusters[i].name;
+  }
+  return out;
+}
+
+std::string_view risk_class_name(RiskClass c) {
+  switch (c) {
+    case RiskClass::kSmallDeviation: return "controllable, small deviation";
+    case RiskClass::kLargeDeviation: return "controllable, large deviation";
+    case RiskClass::kUncontrollable: return "uncontrollable";
+  }
+  return "";
+}
+
+std::string_view risk_class_roman(RiskClass c) {
+  switch (c) {
+    case RiskClass::kSmallDeviation: return "I";
+    case RiskClass::kLargeDeviation: return "II";
+    case RiskClass::kUncontrollable: return "III";
+  }
+  return "";
+}
+
+std::string_view table_name(FmeaTable t) {
+  switch (t) {
+    case FmeaTable::kNominal: return "nominal";
+    case FmeaTable::kSingleAxis: return "table2";
+    case FmeaTable::kMultiAxis: return "table5";
+    case FmeaTable::kScenario: return "scenario";
+  }
+  return "";
+}
+
+}  // namespace chaser::invsim

@@ -1,0 +1,127 @@
+#include "invsim/fmea.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "core/constants.hpp"
+#include "io/invsim_loader.hpp"
+
+namespace chaser::invsim {
+namespace {
+
+model::InvSimParams scenario() {
+  const io::InvSimLoadResult loaded = io::load_invsim_file("scenarios/manual_rvd.yaml");
+  EXPECT_TRUE(loaded.errors.empty()) << io::format_errors(loaded.errors);
+  return *loaded.params;
+}
+
+model::InvSimSensorParams limits() {
+  model::InvSimSensorParams s;
+  s.azimuth_limit_rad = 10.0 * kDegToRad;
+  s.elevation_limit_rad = 10.0 * kDegToRad;
+  s.attitude_limit_rad = 1.0 * kDegToRad;
+  return s;
+}
+
+// A controllable result with the given peaks [deg].
+InvSimResult result(double az_deg, double el_deg, double yaw_deg) {
+  InvSimResult r;
+  r.docked = true;
+  r.peak_azimuth_rad = az_deg * kDegToRad;
+  r.peak_elevation_rad = el_deg * kDegToRad;
+  r.peak_attitude_rad = Vec3(0.0, 0.0, yaw_deg * kDegToRad);
+  return r;
+}
+
+// The case list is the nominal run, Table 2's 24 modes, Table 5's 16 modes and the scenario's own
+// fault set (only when it is not empty), in that order.
+TEST(Fmea, CasesAreNominalTable2Table5ThenScenario) {
+  const model::InvSimParams p = scenario();
+  const std::vector<FmeaCase> cases = fmea_cases(p, {});
+  ASSERT_EQ(cases.size(), 41u);
+  EXPECT_EQ(cases[0].mode.label, "nominal");
+  EXPECT_EQ(cases[0].mode.faults.failed_mask, 0u);
+  EXPECT_EQ(cases[1].table, FmeaTable::kSingleAxis);
+  EXPECT_EQ(cases[1].mode.label, "d1");
+  EXPECT_EQ(cases[25].table, FmeaTable::kMultiAxis);
+  EXPECT_EQ(cases[25].mode.label, "d1/d1~+e1/e1~");
+  const std::vector<FmeaCase> with_user = fmea_cases(p, model::InvSimFaultSet{0b11});
+  ASSERT_EQ(with_user.size(), 42u);
+  EXPECT_EQ(with_user.back().table, FmeaTable::kScenario);
+  EXPECT_EQ(failed_names(p, with_user.back().mode.faults), "engine a");
+}
+
+// The deviation ratio is the larger line-of-sight peak over its limit (azimuth 4 of 10 deg: 0.4;
+// elevation 6 of 10: 0.6); the attitude, held at the phase-plane opening line, is not in it.
+// Ratios of degrees converted the same way: exact up to rounding (1e-12).
+TEST(Fmea, DeviationRatioIsTheLargerLineOfSightPeakOverItsLimit) {
+  EXPECT_NEAR(deviation_ratio(limits(), result(4.0, 2.0, 0.7)), 0.4, 1e-12);
+  EXPECT_NEAR(deviation_ratio(limits(), result(4.0, 6.0, 0.1)), 0.6, 1e-12);
+  InvSimResult diverged = result(0.0, 0.0, 0.0);
+  diverged.peak_azimuth_rad = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isinf(deviation_ratio(limits(), diverged)));
+}
+
+// Class boundaries: half the az/el limit separates small from large; losing the docking, the
+// target or the attitude limit (or diverging) is uncontrollable whatever the peaks.
+TEST(Fmea, RiskClassBoundaries) {
+  EXPECT_EQ(classify_risk(limits(), result(4.9, 4.9, 0.9)), RiskClass::kSmallDeviation);
+  EXPECT_EQ(classify_risk(limits(), result(5.1, 0.0, 0.0)), RiskClass::kLargeDeviation);
+  EXPECT_EQ(classify_risk(limits(), result(0.0, 5.1, 0.0)), RiskClass::kLargeDeviation);
+  InvSimResult r = result(1.0, 1.0, 0.1);
+  r.docked = false;
+  EXPECT_EQ(classify_risk(limits(), r), RiskClass::kUncontrollable);
+  r = result(1.0, 1.0, 0.1);
+  r.target_always_in_view = false;
+  EXPECT_EQ(classify_risk(limits(), r), RiskClass::kUncontrollable);
+  r = result(1.0, 1.0, 0.1);
+  r.attitude_within_limits = false;
+  EXPECT_FALSE(is_controllable(r));
+  r = result(1.0, 1.0, 0.1);
+  r.diverged = true;
+  EXPECT_FALSE(is_controllable(r));
+}
+
+// Ranking: class first (III before II before I), then the workload k_p, then the deviation.
+TEST(Fmea, RankingOrdersByClassThenWorkloadThenDeviation) {
+  std::vector<FmeaRow> rows(4);
+  rows[0].risk = RiskClass::kSmallDeviation;
+  rows[0].result.k_p = 0.9;
+  rows[1].risk = RiskClass::kUncontrollable;
+  rows[1].result.k_p = 0.1;
+  rows[2].risk = RiskClass::kSmallDeviation;
+  rows[2].result.k_p = 0.9;
+  rows[2].deviation_ratio = 0.3;
+  rows[3].risk = RiskClass::kLargeDeviation;
+  rank_by_risk(rows);
+  EXPECT_EQ(rows[1].rank, 1);
+  EXPECT_EQ(rows[3].rank, 2);
+  EXPECT_EQ(rows[2].rank, 3);
+  EXPECT_EQ(rows[0].rank, 4);
+}
+
+// The runs are independent, so the rows must not depend on the number of workers; the nominal run
+// of the shipped scenario docks with the target in view (docs/invsim.md), hence Class I.
+TEST(Fmea, RowsDoNotDependOnThreadsAndNominalIsClassI) {
+  const model::InvSimParams p = scenario();
+  std::vector<FmeaCase> cases = fmea_cases(p, {});
+  cases.resize(6);
+  const std::vector<FmeaRow> one = run_fmea(p, cases, 1);
+  const std::vector<FmeaRow> three = run_fmea(p, cases, 3);
+  ASSERT_EQ(one.size(), cases.size());
+  ASSERT_EQ(three.size(), cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    EXPECT_EQ(one[i].fmea_case.mode.label, cases[i].mode.label);
+    EXPECT_EQ(three[i].fmea_case.mode.label, cases[i].mode.label);
+    EXPECT_EQ(one[i].result.total_pulses, three[i].result.total_pulses);
+    EXPECT_EQ(one[i].result.propellant_kg, three[i].result.propellant_kg);  // bitwise: same arithmetic
+    EXPECT_EQ(one[i].rank, three[i].rank);
+  }
+  EXPECT_TRUE(one[0].controllable);
+  EXPECT_EQ(one[0].risk, RiskClass::kSmallDeviation);
+}
+
+}  // namespace
+}  // namespace chaser::invsim
