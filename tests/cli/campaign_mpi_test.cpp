@@ -5,6 +5,8 @@
 // not on PATH or chaser was built without MPI.
 #include <gtest/gtest.h>
 
+#include "tests/support/command.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -20,21 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int exit_code;
-  std::string output;  // stdout and stderr together
-};
+using chaser::testing::CommandResult;
+using chaser::testing::read_file;
 
-CommandResult shell(const std::string& command) {
-  CommandResult result{-1, ""};
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+CommandResult shell(const std::string& command) { return chaser::testing::run_shell(command); }
 
 bool mpirun_found() {
   const char* path = std::getenv("PATH");
@@ -50,13 +41,6 @@ bool mpirun_found() {
 std::string mpirun(int ranks) {
   return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 mpirun -n " + std::to_string(ranks) +
          " --oversubscribe --bind-to none --mca btl self,vader " + std::string(CHASER_BINARY) + " ";
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 fs::path fresh_dir(const std::string& name) {

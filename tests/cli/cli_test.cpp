@@ -9,23 +9,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/support/command.hpp"
+
 namespace {
 
-struct CommandResult {
-  int exit_code;
-  std::string output;  // stdout and stderr together
-};
+using chaser::testing::CommandResult;
 
 CommandResult run_chaser(const std::string& args) {
-  const std::string command = std::string(CHASER_BINARY) + " " + args + " 2>&1";
-  CommandResult result{-1, ""};
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return chaser::testing::run_shell(std::string(CHASER_BINARY) + " " + args);
 }
 
 TEST(Cli, ValidateAcceptsTheShippedScenario) {

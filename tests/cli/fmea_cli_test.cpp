@@ -2,6 +2,8 @@
 // a bad key exits 2 naming it, and the files do not depend on --threads.
 #include <gtest/gtest.h>
 
+#include "tests/support/command.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -16,28 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int exit_code;
-  std::string output;  // stdout and stderr together
-};
+using chaser::testing::CommandResult;
+using chaser::testing::read_file;
 
 CommandResult chaser(const std::string& args) {
-  const std::string command = std::string(CHASER_BINARY) + " " + args + " 2>&1";
-  CommandResult result{-1, ""};
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return chaser::testing::run_shell(std::string(CHASER_BINARY) + " " + args);
 }
 
 std::vector<std::string> lines(const std::string& text) {
