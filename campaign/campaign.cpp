@@ -17,14 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-CampaignOutcome outcome_of(CampaignStatus status, std::string message) {
-  CampaignOutcome o;
-  o.status = status;
-  o.message = std::move(message);
-  return o;
-}
-CampaignOutcome bad_input(std::string message) { return outcome_of(CampaignStatus::kBadInput, std::move(message)); }
-CampaignOutcome failure(std::string message) { return outcome_of(CampaignStatus::kFailure, std::move(message)); }
+CampaignOutcome bad_input(std::string message) { return CampaignOutcome::bad_input(std::move(message)); }
+CampaignOutcome failure(std::string message) { return CampaignOutcome::failure(std::move(message)); }
 
 // --resume: the directory must hold this very campaign (same scenario after overrides, cases,
 // seed, shard). Without --resume it must not hold a campaign at all: nothing is overwritten.

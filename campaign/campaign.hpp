@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 
 #include "campaign/cases.hpp"
 #include "campaign/executor.hpp"
@@ -29,6 +30,15 @@ struct CampaignOutcome {
   std::int64_t resumed = 0;    // runs found done in the directory (--resume)
   ExecuteResult executed;      // runs flown now
   double simulated_s = 0;      // [s] simulated time of the runs flown now (planned)
+
+  static CampaignOutcome bad_input(std::string message) { return with(CampaignStatus::kBadInput, std::move(message)); }
+  static CampaignOutcome failure(std::string message) { return with(CampaignStatus::kFailure, std::move(message)); }
+  static CampaignOutcome with(CampaignStatus status, std::string message) {
+    CampaignOutcome o;
+    o.status = status;
+    o.message = std::move(message);
+    return o;
+  }
 };
 
 // How the runs still to do are flown and handed to the writer in index order: execute_runs (a

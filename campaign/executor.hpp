@@ -30,6 +30,9 @@ struct ExecuteResult {
   double wall_s = 0;           // [s]
 };
 
+// Where run `run` keeps its telemetry: root/<run> for run < keep, empty (none) otherwise.
+std::string telemetry_dir(const std::string& root, std::int64_t keep, std::int64_t run);
+
 ExecuteResult execute_runs(const CampaignPlan& plan, const flight::FlightParams& flight, const RunRange& todo,
                            RowsWriter& writer, const ExecuteOptions& options);
 

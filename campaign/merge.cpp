@@ -24,13 +24,7 @@ struct ShardDir {
   CampaignInfo info;
 };
 
-CampaignOutcome outcome_of(CampaignStatus status, std::string message) {
-  CampaignOutcome o;
-  o.status = status;
-  o.message = std::move(message);
-  return o;
-}
-CampaignOutcome bad_input(std::string message) { return outcome_of(CampaignStatus::kBadInput, std::move(message)); }
+CampaignOutcome bad_input(std::string message) { return CampaignOutcome::bad_input(std::move(message)); }
 
 // Every row of the shard is there and nothing after them.
 std::string check_complete(const ShardDir& s) {
@@ -109,7 +103,7 @@ CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::
 
   std::error_code ec;
   fs::create_directories(out_dir, ec);
-  if (ec) return outcome_of(CampaignStatus::kFailure, fmt::format("cannot create --out directory {}: {}", out_dir, ec.message()));
+  if (ec) return CampaignOutcome::failure(fmt::format("cannot create --out directory {}: {}", out_dir, ec.message()));
   nlohmann::ordered_json merged = shards.front().json;
   const std::int64_t total = merged.at("total_runs").get<std::int64_t>();
   merged["shard"] = {0, 1};
@@ -117,11 +111,11 @@ CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::
   std::ofstream(fs::path(out_dir) / "campaign.json", std::ios::binary) << campaign_json_text(merged);
   if (!concatenate(shards, out_dir, "runs.csv", runs_header()) ||
       !concatenate(shards, out_dir, "glr_runs.csv", kGlrRunsHeader))
-    return outcome_of(CampaignStatus::kFailure, fmt::format("cannot write the rows files in {}", out_dir));
+    return CampaignOutcome::failure(fmt::format("cannot write the rows files in {}", out_dir));
   std::vector<FaultCase> cases;
   for (const CaseRuns& c : shards.front().info.cases) cases.push_back(c.fault_case);
   const std::string error = write_summaries(out_dir, cases, shards.front().info.summary);
-  if (!error.empty()) return outcome_of(CampaignStatus::kFailure, error);
+  if (!error.empty()) return CampaignOutcome::failure(error);
   CampaignOutcome outcome;
   outcome.shard_runs = total;
   return outcome;

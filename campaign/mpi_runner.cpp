@@ -21,6 +21,7 @@
 
 #include "campaign/progress.hpp"
 #include "campaign/run_one.hpp"
+#include "campaign/run_schedule.hpp"
 
 namespace chaser::campaign {
 
@@ -30,8 +31,8 @@ namespace {
 // kTagResult (a packed RunOutput, which is also the next request). From rank 0: kTagRun (int64 run
 // index) or kTagStop, one answer per request. A rank is done when each of its requests got a stop.
 enum Tag : int { kTagReady = 1, kTagResult = 2, kTagRun = 3, kTagStop = 4 };
-constexpr std::int64_t kNoMoreRuns = -1;
-constexpr std::int64_t kWindowFull = -2;
+constexpr std::int64_t kNoMoreRuns = RunSchedule::kNoMoreRuns;
+constexpr std::int64_t kWindowFull = RunSchedule::kWindowFull;
 // Idle pause of the polling main threads: short against a run (milliseconds to seconds), long
 // enough not to steal a core from the workers.
 constexpr auto kPollPause = std::chrono::microseconds(300);
@@ -62,42 +63,6 @@ RunOutput unpack(const std::vector<char>& bytes) {
   std::cerr << "chaser campaign: MPI rank " << rank << ": " << message << "; aborting the job\n";
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::terminate();  // MPI_Abort does not return
-}
-
-// Rank 0's reorder buffer, as in executor.cpp: runs are handed out in increasing order, at most
-// `window` ahead of the next row to write, and written strictly in order.
-struct Schedule {
-  std::mutex mutex;
-  std::condition_variable window_moved;
-  std::int64_t next_claim = 0, next_write = 0, window = 1;
-  std::map<std::int64_t, RunOutput> pending;
-  ExecuteResult result;
-};
-
-std::int64_t claim(Schedule& s, std::int64_t end) {  // rank 0's worker threads: wait for the window
-  std::unique_lock lock(s.mutex);
-  s.window_moved.wait(lock, [&] { return s.next_claim >= end || s.next_claim < s.next_write + s.window; });
-  return s.next_claim < end ? s.next_claim++ : kNoMoreRuns;
-}
-
-std::int64_t try_claim(Schedule& s, std::int64_t end) {  // the coordinator: never waits
-  std::lock_guard lock(s.mutex);
-  if (s.next_claim >= end) return kNoMoreRuns;
-  return s.next_claim < s.next_write + s.window ? s.next_claim++ : kWindowFull;
-}
-
-void deliver(Schedule& s, RunOutput out, RowsWriter& writer, Progress& progress) {
-  std::lock_guard lock(s.mutex);
-  s.pending.emplace(out.run, std::move(out));
-  for (auto it = s.pending.find(s.next_write); it != s.pending.end(); it = s.pending.find(s.next_write)) {
-    s.result.io_ok &= writer.append(it->second);
-    s.result.diverged += it->second.diverged;
-    ++s.result.runs;
-    s.pending.erase(it);
-    ++s.next_write;
-  }
-  progress.update(s.result.runs, s.result.diverged);
-  s.window_moved.notify_all();
 }
 
 // Rank 0's main thread: takes one message if any. A result goes to `finished`; the message's
@@ -154,31 +119,26 @@ void coordinate(int world_size, const std::function<std::int64_t()>& next_run,
   }
 }
 
-std::string telemetry_dir(const std::string& root, std::int64_t keep, std::int64_t run) {
-  return run < keep ? (std::filesystem::path(root) / std::to_string(run)).string() : std::string();
-}
-
 // Rank 0's RunsExecutor: its worker threads and the other ranks share one schedule.
 ExecuteResult execute_mpi(int world_size, const CampaignPlan& plan, const flight::FlightParams& flight,
                           const RunRange& todo, RowsWriter& writer, const ExecuteOptions& options) {
   const int threads = std::max(1, options.threads);
-  Schedule s;
-  s.next_claim = s.next_write = todo.begin;
-  s.window = static_cast<std::int64_t>(threads) * world_size * kReorderWindowPerThread;
+  RunSchedule s(todo.begin, todo.end, static_cast<std::int64_t>(threads) * world_size * kReorderWindowPerThread);
   Progress progress(todo.size(), options.progress);
   const auto worker = [&] {
-    for (std::int64_t run = claim(s, todo.end); run >= 0; run = claim(s, todo.end))
-      deliver(s, run_one(plan, flight, run, telemetry_dir(options.telemetry_root, options.keep_telemetry, run)),
-              writer, progress);
+    for (std::int64_t run = s.claim(); run >= 0; run = s.claim())
+      s.deliver(run_one(plan, flight, run, telemetry_dir(options.telemetry_root, options.keep_telemetry, run)),
+                writer, progress);
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  coordinate(world_size, [&] { return try_claim(s, todo.end); },
-             [&](RunOutput out) { deliver(s, std::move(out), writer, progress); });
+  coordinate(world_size, [&] { return s.try_claim(); },
+             [&](RunOutput out) { s.deliver(std::move(out), writer, progress); });
   for (std::thread& t : pool) t.join();
-  progress.finish(s.result.runs, s.result.diverged);
-  s.result.wall_s = progress.elapsed_s();
-  return s.result;
+  ExecuteResult result = s.result();
+  progress.finish(result.runs, result.diverged);
+  result.wall_s = progress.elapsed_s();
+  return result;
 }
 
 // Another rank: its worker threads take runs from `inbox` and leave rows in `outbox`; the main

@@ -127,13 +127,12 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
 }
 
-Vec3 deficit_sigma0_sq(const DeficitIsolationParams& p, const DeficitBankState& bank) {
-  (void)p;
+Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
   return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(bank.noise_floor_sq);
 }
 
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const model::Ton8& ton) {
-  const Vec3 sigma0_sq = deficit_sigma0_sq(p, bank);
+  const Vec3 sigma0_sq = deficit_sigma0_sq(bank);
   const Vec3 pulse = p.pulse_uncertainty * (p.torque_body_Nm.cwiseAbs() * ton);
   return (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
 }

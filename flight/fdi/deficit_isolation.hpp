@@ -151,7 +151,7 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& param
 // The torque row of sample `now` (Euler's equation over the period to `next`, less the commanded torque).
 Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSample& now, const DeficitSample& next);
 // sigma_0^2 per axis: the smaller of the live and the lagged estimate, never below the gyro floor.
-Vec3 deficit_sigma0_sq(const DeficitIsolationParams& params, const DeficitBankState& bank);
+Vec3 deficit_sigma0_sq(const DeficitBankState& bank);
 // Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2).
 Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
                             const model::Ton8& ton);

@@ -12,21 +12,13 @@ campaign.json also carries glr_threshold and threshold_margin, which the spec le
 """
 import argparse
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
 
-HEADER = (
-    "run,seed,case,status,fault_thruster,fault_size,onset_s,mass_kg,inertia_xx_kgm2,inertia_yy_kgm2,"
-    "inertia_zz_kgm2,com_x_m,com_y_m,com_z_m,position_detection_s,position_isolation_s,"
-    "position_isolated,position_false_alarm,position_missed,position_wrong_isolation,"
-    "position_glr_max_before_onset,attitude_detection_s,attitude_isolation_s,attitude_isolated,"
-    "attitude_false_alarm,attitude_missed,attitude_wrong_isolation,attitude_glr_max_before_onset,"
-    "deficit_detection_s,deficit_isolation_s,deficit_isolated,deficit_false_alarm,deficit_missed,"
-    "deficit_wrong_isolation,deficit_glr_max_before_onset,"
-    "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
-    "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s"
-).split(",")
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from plot_campaign import RUNS_HEADER as HEADER  # noqa: E402  the spec's columns, in one place
 # case -> (median detection time [s] of the position and attitude schemes, probability of a miss)
 CASES = {"stuck_open": ((3.0, 1.2), 0.0), "stuck_closed": ((15.0, 8.0), 0.05),
          "leak": ((25.0, 10.0), 0.08), "loss": ((12.0, 6.0), 0.04)}
