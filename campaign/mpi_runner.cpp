@@ -60,7 +60,8 @@ RunOutput unpack(const std::vector<char>& bytes) {
 }
 
 [[noreturn]] void abort_job(int rank, const std::string& message) {
-  std::cerr << "chaser campaign: MPI rank " << rank << ": " << message << "; aborting the job\n";
+  // One write per line: the ranks share stderr, and a line written piecewise tears.
+  std::cerr << ("chaser campaign: MPI rank " + std::to_string(rank) + ": " + message + "; aborting the job\n");
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::terminate();  // MPI_Abort does not return
 }
@@ -258,8 +259,8 @@ bool mpi_all_agree(const std::string& campaign, int rank) {
   MPI_Bcast(root.data(), static_cast<int>(size), MPI_CHAR, 0, MPI_COMM_WORLD);
   const bool same = !campaign.empty() && campaign == root;
   if (!campaign.empty() && !root.empty() && !same)
-    std::cerr << "chaser campaign: MPI rank " << rank << " prepared another campaign than rank 0 (a scenario file, "
-              << "--set or option differs between the ranks)\n";
+    std::cerr << ("chaser campaign: MPI rank " + std::to_string(rank) +
+                  " prepared another campaign than rank 0 (a scenario file, --set or option differs between the ranks)\n");
   int mine = same ? 1 : 0, all = 0;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
   return all == 1;

@@ -24,11 +24,11 @@ constexpr const char* kTable2Runs = "none=200,stuck_open=1600,stuck_closed=1600,
 
 int report(const campaign::CampaignOutcome& o, const std::string& out_dir) {
   if (o.status == campaign::CampaignStatus::kBadInput) {
-    std::cerr << "chaser campaign: " << o.message << '\n';
+    std::cerr << ("chaser campaign: " + o.message + '\n');
     return kExitBadInput;
   }
   if (o.status == campaign::CampaignStatus::kFailure) {
-    std::cerr << "chaser campaign: " << o.message << '\n';
+    std::cerr << ("chaser campaign: " + o.message + '\n');
     return kExitFailure;
   }
   const campaign::ExecuteResult& e = o.executed;
@@ -71,7 +71,7 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   if (error.empty() && args.keep_telemetry < 0)
     error = fmt::format("--keep-telemetry: must be >= 0 (got {})", args.keep_telemetry);
   if (!error.empty()) {
-    std::cerr << "chaser campaign: " << error << '\n';
+    std::cerr << ("chaser campaign: " + error + '\n');
     return std::nullopt;
   }
   const auto loaded = load_or_report(args.scenario_path, overrides);
@@ -79,7 +79,7 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   const auto layout = campaign::parse_layout(args.cases, runs_text,
                                              static_cast<std::int64_t>(loaded->scenario->campaign.runs_per_case));
   if (!layout.error.empty()) {
-    std::cerr << "chaser campaign: " << layout.error << '\n';
+    std::cerr << ("chaser campaign: " + layout.error + '\n');
     return std::nullopt;
   }
   // With --mpi every rank is one process per core by default: one worker thread each.
@@ -113,7 +113,7 @@ int campaign_mpi(const CampaignArgs& args) {
 
 int campaign_command(const CampaignArgs& args) {
   if (args.mpi && !campaign::mpi_built()) {
-    std::cerr << "chaser campaign: " << campaign::kNoMpiMessage << '\n';
+    std::cerr << ("chaser campaign: " + std::string(campaign::kNoMpiMessage) + '\n');
     return kExitBadInput;
   }
   if (args.mpi) return campaign_mpi(args);

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   if (asks_for_mpi(argc, argv) && chaser::campaign::mpi_built()) {
     mpi = std::make_unique<chaser::campaign::MpiSession>(argc, argv);
     if (!mpi->ok()) {
-      std::cerr << "chaser campaign: " << mpi->error() << '\n';
+      std::cerr << ("chaser campaign: " + mpi->error() + '\n');
       return kExitFailure;
     }
   }

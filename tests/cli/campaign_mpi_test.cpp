@@ -141,6 +141,8 @@ TEST_F(CampaignMpi, BadInputEndsEveryRankWithExit2) {
   const CommandResult other = shell(env + "timeout 300 mpirun --oversubscribe --bind-to none --mca btl self,vader -n 1 " +
                                     rank + " : -n 1 " + rank + " --seed 7");
   EXPECT_EQ(other.exit_code, 2) << other.output;
+  // Found by a torn line here in a fresh-root run: each rank now writes a message in one write,
+  // so the two ranks' lines on the shared stderr cannot interleave inside a line.
   EXPECT_NE(other.output.find("MPI rank 1 prepared another campaign than rank 0"), std::string::npos) << other.output;
   EXPECT_FALSE(fs::exists(dir / "runs.csv"));
 
