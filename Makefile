@@ -6,7 +6,9 @@ MAKEFLAGS += --no-print-directory
 PYTHON ?= /usr/bin/python3
 DEMO_OUT ?= demo-out
 
-.PHONY: all deps configure build test demo bench clean
+FMEA_OUT ?= fmea-out
+
+.PHONY: all deps configure build test demo fmea bench clean
 
 all: build
 
@@ -28,8 +30,13 @@ demo: build
 	@$(PYTHON) python/plot_run.py $(DEMO_OUT)
 	@$(PYTHON) python/plot_fdi.py $(DEMO_OUT)
 
+# Zhou 2018's failure-mode analysis and reconfiguration study, with the search and per-mode plots.
+fmea: build
+	@./$(BUILD)/cli/chaser fmea scenarios/manual_rvd.yaml --out $(FMEA_OUT) --optimize --history
+	@$(PYTHON) python/plot_invsim.py $(FMEA_OUT)
+
 bench: build
 	@./$(BUILD)/bench/chaser_bench
 
 clean:
-	rm -rf $(BUILD) $(DEMO_OUT)
+	rm -rf $(BUILD) $(DEMO_OUT) $(FMEA_OUT)

@@ -48,6 +48,8 @@ struct FmeaArgs {
   std::string out_dir = "fmea-out";
   std::vector<std::string> overrides;
   std::optional<int> threads;  // default: hardware concurrency
+  bool optimize = false;       // search the scenario's free mounting choices (optimize.choices)
+  bool history = false;        // write DIR/history for python/plot_invsim.py
 };
 
 struct CampaignMergeArgs {

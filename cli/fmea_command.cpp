@@ -1,5 +1,5 @@
-// chaser fmea: the failure-mode and effects analysis of the manually controlled approach
-// (Zhou 2018; docs/invsim.md, "chaser fmea").
+// chaser fmea: the failure-mode and effects analysis of the manually controlled approach and the
+// comparison of thruster layouts (Zhou 2018; docs/invsim.md, "chaser fmea").
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -15,6 +15,7 @@
 #include "cli/commands.hpp"
 #include "cli/fmea_report.hpp"
 #include "invsim/fmea.hpp"
+#include "invsim/layout_study.hpp"
 #include "io/invsim_loader.hpp"
 
 namespace chaser::cli {
@@ -26,18 +27,31 @@ bool write_text(const std::filesystem::path& path, const std::string& text) {
   return static_cast<bool>(out);
 }
 
-void print_summary(const std::vector<invsim::FmeaRow>& rows, double seconds, int threads) {
-  std::array<int, 3> per_class{0, 0, 0};
-  for (const auto& row : rows) ++per_class[static_cast<int>(row.risk)];
-  std::cout << fmt::format("chaser fmea: {} modes in {:.2f} s on {} thread{}: class I {}, class II {}, class III {}\n",
-                           rows.size(), seconds, threads, threads == 1 ? "" : "s", per_class[0], per_class[1],
-                           per_class[2]);
+void print_summary(const std::vector<FmeaLayout>& layouts, double seconds, int threads) {
+  std::size_t modes = 0;
+  for (const FmeaLayout& layout : layouts) modes += layout.rows.size();
+  std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes) in {:.2f} s on {} thread{}\n", modes,
+                           layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(), seconds,
+                           threads, threads == 1 ? "" : "s");
+  for (const FmeaLayout& layout : layouts) {
+    const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
+    std::cout << fmt::format("  {}: class I {}, class II {}, class III {}; propellant {:.1f} kg\n", layout.name,
+                             s.per_class[0], s.per_class[1], s.per_class[2], s.propellant_kg);
+  }
+  const auto& rows = layouts.front().rows;
   const auto order = invsim::risk_order(rows);
   for (std::size_t k = 0; k < std::min<std::size_t>(3, order.size()); ++k) {
     const auto& row = rows[order[k]];
     std::cout << fmt::format("  #{} {}: {}, k_p {:.3f}\n", row.rank, row.fmea_case.mode.label,
                              invsim::risk_class_name(row.risk), row.result.k_p);
   }
+}
+
+std::vector<FmeaLayout> layouts_of(const io::InvSimLoadResult& loaded) {
+  std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
+  for (const model::InvSimConfiguration& c : loaded.study.configurations)
+    layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
+  return layouts;
 }
 
 }  // namespace
@@ -54,7 +68,11 @@ int fmea_command(const FmeaArgs& args) {
               << io::format_errors(loaded.errors);
     return kExitBadInput;
   }
-  const model::InvSimParams& params = *loaded.params;
+  if (args.optimize && loaded.study.free_choices.empty()) {
+    std::cerr << fmt::format("chaser fmea: --optimize: {} marks no free mounting choice (optimize.choices)\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
   std::error_code ec;
   std::filesystem::create_directories(args.out_dir, ec);
   if (ec) {
@@ -63,20 +81,40 @@ int fmea_command(const FmeaArgs& args) {
   }
   const int threads = args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<invsim::FmeaRow> rows =
-      invsim::run_fmea(params, invsim::fmea_cases(params, loaded.faults), threads);
+  const std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults);
+  std::vector<FmeaLayout> layouts = layouts_of(loaded);
+  std::vector<model::InvSimParams> params;
+  for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
+  std::vector<std::vector<std::vector<invsim::InvSimSample>>> histories;
+  auto rows = invsim::run_fmea(params, cases, threads, args.history ? &histories : nullptr);
+  for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
+  std::vector<invsim::LayoutCandidate> optimized;
+  if (args.optimize) optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices, cases, threads);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path out(args.out_dir);
-  for (const auto& [name, text] : {std::pair{"fmea.csv", fmea_csv(params, rows)},
-                                   std::pair{"fmea.md", fmea_markdown(params, rows)}}) {
+  std::vector<std::pair<std::string, std::string>> files{
+      {"fmea.csv", fmea_csv(layouts)},
+      {"fmea.md", fmea_markdown(layouts, args.optimize ? &optimized : nullptr, loaded.study.optimize_keep)}};
+  if (args.optimize) files.emplace_back("optimize.csv", optimize_csv(optimized));
+  for (const auto& [name, text] : files) {
     if (!write_text(out / name, text)) {
       std::cerr << fmt::format("chaser fmea: cannot write {}\n", (out / name).string());
       return kExitFailure;
     }
   }
-  print_summary(rows, seconds, threads);
-  std::cout << fmt::format("  wrote {} and {}\n", (out / "fmea.csv").string(), (out / "fmea.md").string());
+  std::string error;
+  if (args.history && !write_fmea_histories(out, layouts, histories, error)) {
+    std::cerr << "chaser fmea: " << error << "\n";
+    return kExitFailure;
+  }
+  print_summary(layouts, seconds, threads);
+  if (args.optimize && !optimized.empty())
+    std::cout << fmt::format("  --optimize: {} candidates; best: {} (class III {}, {:.1f} kg)\n", optimized.size(),
+                             optimized.front().configuration.name, optimized.front().summary.per_class[2],
+                             optimized.front().summary.propellant_kg);
+  std::cout << fmt::format("  wrote {}{}\n", (out / "fmea.md").string(),
+                           args.history ? " and " + (out / "history").string() : std::string());
   return kExitOk;
 }
 

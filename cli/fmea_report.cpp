@@ -28,7 +28,7 @@ std::pair<std::string, std::string> split_multi(const std::string& label) {
   return {label.substr(0, plus), label.substr(plus + 1)};
 }
 
-// Table 6's header cell: the pair and the z moments its failed thrusters leave ("d1/d1~ Mz+/Mz-").
+// Table 6's header cell: the pair and the moments its failed thrusters leave ("d1/d1~ Mz+/Mz-").
 std::string moment_label(const model::InvSimParams& p, const std::string& pair) {
   std::string moments;
   std::size_t start = 0;
@@ -36,9 +36,13 @@ std::string moment_label(const model::InvSimParams& p, const std::string& pair) 
     const auto slash = pair.find('/', start);
     const std::string name = pair.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
     const auto i = invsim::find_thruster(p, name);
-    const double mz = i ? invsim::fault_disturbing_moment(p, *i).z() : 0.0;
+    // The paper's layout disturbs yaw only; another layout may turn a lost thruster's moment to
+    // roll or pitch (Scheme II), so the label names the dominant axis.
+    const Vec3 m = i ? invsim::fault_disturbing_moment(p, *i) : Vec3::Zero();
+    Eigen::Index axis = 2;
+    if (m.cwiseAbs().maxCoeff(&axis) == 0.0) axis = 2;
     if (!moments.empty()) moments += '/';
-    moments += mz > 0.0 ? "Mz+" : (mz < 0.0 ? "Mz-" : "Mz0");
+    moments += fmt::format("M{}{}", static_cast<char>('x' + axis), m(axis) > 0.0 ? "+" : (m(axis) < 0.0 ? "-" : "0"));
     if (slash == std::string::npos) break;
     start = slash + 1;
   }
@@ -75,12 +79,14 @@ void table5(std::string& md, const std::vector<FmeaRow>& rows) {
 }
 
 // Table 6: the 4 x 4 grid of x-axis pairs (rows) and y-axis pairs (columns), in Table 5's order.
-void table6(std::string& md, const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+}  // namespace
+
+void append_table6(std::string& md, const model::InvSimParams& p, const std::vector<FmeaRow>& rows, const std::string& title) {
   std::vector<const FmeaRow*> multi;
   for (const FmeaRow& row : rows)
     if (row.fmea_case.table == FmeaTable::kMultiAxis) multi.push_back(&row);
   if (multi.size() != 16) return;
-  md += "## Table 6: risk classes of the multi-axis faults\n\n|";
+  md += title + "|";
   for (int c = 0; c < 4; ++c) md += " | " + moment_label(p, split_multi(multi[c]->fmea_case.mode.label).second);
   md += " |\n|---|---|---|---|---|\n";
   for (int r = 0; r < 4; ++r) {
@@ -90,6 +96,8 @@ void table6(std::string& md, const model::InvSimParams& p, const std::vector<Fme
   }
   md += "\n";
 }
+
+namespace {
 
 void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
   md += "## Ranking by risk (most severe first)\n\n";
@@ -109,43 +117,54 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 
 }  // namespace
 
-std::string fmea_csv(const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+std::string fmea_csv(const std::vector<FmeaLayout>& layouts) {
   std::string csv =
-      "mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,"
+      "configuration,mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,"
       "peak_azimuth_deg,azimuth_limit_deg,peak_elevation_deg,elevation_limit_deg,"
       "peak_roll_deg,peak_pitch_deg,peak_yaw_deg,attitude_limit_deg,deviation_ratio,"
       "target_always_in_view,attitude_within_limits,docked,diverged,propellant_kg,"
-      "controllable,risk_class,risk_rank\n";
-  for (const FmeaRow& row : rows) {
-    const auto& r = row.result;
-    csv += fmt::format("{},{},{}{},{},{:.4f},", row.fmea_case.mode.label, invsim::table_name(row.fmea_case.table),
-                       invsim::failed_names(p, row.fmea_case.mode.faults), pulse_cells(r, ","), r.total_pulses,
-                       r.k_p);
-    csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},",
-                       deg(r.peak_azimuth_rad), deg(p.sensor.azimuth_limit_rad), deg(r.peak_elevation_rad),
-                       deg(p.sensor.elevation_limit_rad), deg(r.peak_attitude_rad.x()),
-                       deg(r.peak_attitude_rad.y()), deg(r.peak_attitude_rad.z()),
-                       deg(p.sensor.attitude_limit_rad), row.deviation_ratio);
-    csv += fmt::format("{},{},{},{},{:.4f},{},{},{}\n", yes_no(r.target_always_in_view),
-                       yes_no(r.attitude_within_limits), yes_no(r.docked), yes_no(r.diverged), r.propellant_kg,
-                       yes_no(row.controllable), invsim::risk_class_roman(row.risk), row.rank);
+      "attitude_propellant_kg,roll_on_time_s,pitch_on_time_s,yaw_on_time_s,controllable,risk_class,risk_rank\n";
+  for (const FmeaLayout& layout : layouts) {
+    const model::InvSimParams& p = layout.params;
+    for (const FmeaRow& row : layout.rows) {
+      const auto& r = row.result;
+      csv += fmt::format("{},{},{},{}{},{},{:.4f},", layout.name, row.fmea_case.mode.label,
+                         invsim::table_name(row.fmea_case.table), invsim::failed_names(p, row.fmea_case.mode.faults),
+                         pulse_cells(r, ","), r.total_pulses, r.k_p);
+      csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},",
+                         deg(r.peak_azimuth_rad), deg(p.sensor.azimuth_limit_rad), deg(r.peak_elevation_rad),
+                         deg(p.sensor.elevation_limit_rad), deg(r.peak_attitude_rad.x()),
+                         deg(r.peak_attitude_rad.y()), deg(r.peak_attitude_rad.z()),
+                         deg(p.sensor.attitude_limit_rad), row.deviation_ratio);
+      csv += fmt::format("{},{},{},{},{:.4f},{:.4f},{:.2f},{:.2f},{:.2f},{},{},{}\n", yes_no(r.target_always_in_view),
+                         yes_no(r.attitude_within_limits), yes_no(r.docked), yes_no(r.diverged), r.propellant_kg,
+                         r.attitude_propellant_kg, r.attitude_on_time_s.x(), r.attitude_on_time_s.y(),
+                         r.attitude_on_time_s.z(), yes_no(row.controllable), invsim::risk_class_roman(row.risk),
+                         row.rank);
+    }
   }
   return csv;
 }
 
-std::string fmea_markdown(const model::InvSimParams& p, const std::vector<FmeaRow>& rows) {
+std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
+                          const std::vector<invsim::LayoutCandidate>* optimized, int keep) {
+  const model::InvSimParams& p = layouts.front().params;
+  const std::vector<FmeaRow>& rows = layouts.front().rows;
   std::string md = fmt::format("# FMEA of scenario '{}' (Zhou 2018, inverse simulation)\n\n", p.name);
   md += fmt::format(
       "Pulses: steps in which a body axis' translation group fired in that direction; k_p = P / {:.0f} (eq. 22). "
-      "Classes (docs/invsim.md): I controllable, small deviation (peak |az| and |el| <= {:.0f}% of their limits "
-      "{:.1f}/{:.1f} deg); II controllable, large deviation; III uncontrollable (not docked, target out of "
-      "view, or attitude beyond +-{:.1f} deg).\n\n",
-      p.pulses.basic_pulse_amount, 100.0 * invsim::kLargeDeviationFraction, deg(p.sensor.azimuth_limit_rad),
-      deg(p.sensor.elevation_limit_rad), deg(p.sensor.attitude_limit_rad));
+      "Classes (docs/invsim.md): III uncontrollable (not docked, or the target left the {:.1f}/{:.1f} deg field "
+      "of view); II controllable with a large deviation (peak |az| or |el| above {:.0f}% of its limit, or the "
+      "attitude beyond +-{:.1f} deg); I the other controllable modes. Tables 4-6 and the ranking are for the "
+      "scenario's own layout (`baseline`).\n\n",
+      p.pulses.basic_pulse_amount, deg(p.sensor.azimuth_limit_rad), deg(p.sensor.elevation_limit_rad),
+      100.0 * invsim::kLargeDeviationFraction, deg(p.sensor.attitude_limit_rad));
   table4(md, rows);
   table5(md, rows);
-  table6(md, p, rows);
+  append_table6(md, p, rows, "## Table 6: risk classes of the multi-axis faults\n\n");
   ranking(md, rows);
+  if (layouts.size() > 1) append_reconfiguration(md, layouts);
+  if (optimized != nullptr) append_optimization(md, layouts, *optimized, keep);
   return md;
 }
 

@@ -1,15 +1,45 @@
 #pragma once
-// The files of `chaser fmea` (docs/invsim.md, "chaser fmea"): fmea.csv, one row per mode, and
-// fmea.md, Zhou 2018's Tables 4, 5 and 6 in the paper's layout followed by the ranking by risk.
+// The files of `chaser fmea` (docs/invsim.md, "chaser fmea"): fmea.csv, one row per layout and mode;
+// fmea.md, Zhou 2018's Tables 4, 5 and 6 in the paper's layout and the ranking by risk for the
+// scenario's own layout, then the comparison of the layouts (Schemes I and II, section 4.2) and the
+// --optimize search; optimize.csv, every candidate of the search, best first; and the per-step
+// histories that python/plot_invsim.py draws.
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "invsim/fmea.hpp"
+#include "invsim/layout_study.hpp"
 #include "model/invsim.hpp"
 
 namespace chaser::cli {
 
-std::string fmea_csv(const model::InvSimParams& p, const std::vector<invsim::FmeaRow>& rows);
-std::string fmea_markdown(const model::InvSimParams& p, const std::vector<invsim::FmeaRow>& rows);
+struct FmeaLayout {
+  std::string name;         // "baseline" for the scenario's own layout, else the configuration's
+  std::string description;
+  model::InvSimParams params;
+  std::vector<invsim::FmeaRow> rows;
+};
+
+std::string fmea_csv(const std::vector<FmeaLayout>& layouts);
+// `optimized`: the --optimize candidates, best first (nullptr: no search); `keep` of them are listed.
+std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
+                          const std::vector<invsim::LayoutCandidate>* optimized, int keep);
+std::string optimize_csv(const std::vector<invsim::LayoutCandidate>& candidates);
+
+// Table 6's 4 x 4 grid of the multi-axis modes' classes, after `title` (nothing without 16 of them).
+void append_table6(std::string& md, const model::InvSimParams& p, const std::vector<invsim::FmeaRow>& rows,
+                   const std::string& title);
+
+// Markdown sections comparing the layouts and the search (cli/fmea_layout_report.cpp).
+void append_reconfiguration(std::string& md, const std::vector<FmeaLayout>& layouts);
+void append_optimization(std::string& md, const std::vector<FmeaLayout>& layouts,
+                         const std::vector<invsim::LayoutCandidate>& optimized, int keep);
+
+// DIR/history/index.csv (configuration,mode,file) and DIR/history/<layout>/<NN>_<mode>.csv, one row
+// per IS step, for every row of every layout; false (with `error`) on an I/O failure.
+bool write_fmea_histories(const std::filesystem::path& dir, const std::vector<FmeaLayout>& layouts,
+                          const std::vector<std::vector<std::vector<invsim::InvSimSample>>>& histories,
+                          std::string& error);
 
 }  // namespace chaser::cli

@@ -79,11 +79,13 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("shards", merge.shard_dirs, "Shard directories")->required();
 
   FmeaArgs fmea;
-  CLI::App* fmea_cmd = app.add_subcommand("fmea", "Thruster failure-mode analysis by inverse simulation (Zhou 2018): fmea.csv, fmea.md");
+  CLI::App* fmea_cmd = app.add_subcommand("fmea", "Thruster failure-mode analysis and reconfiguration by inverse simulation (Zhou 2018): fmea.csv, fmea.md");
   fmea_cmd->add_option("scenario", fmea.scenario_path, "Inverse-simulation scenario file (YAML)")->required();
   fmea_cmd->add_option("--out", fmea.out_dir, "Output directory")->capture_default_str();
   fmea_cmd->add_option("--set", fmea.overrides, "Override a scenario key: key.path=value (repeatable)");
   fmea_cmd->add_option("--threads", fmea.threads, "Worker threads (default: all cores)");
+  fmea_cmd->add_flag("--optimize", fmea.optimize, "Also search the scenario's free mounting choices (optimize.choices): optimize.csv");
+  fmea_cmd->add_flag("--history", fmea.history, "Write per-step histories (DIR/history) for python/plot_invsim.py");
 
   try {
     app.parse(argc, argv);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <thread>
+#include <utility>
 
 namespace chaser::invsim {
 
@@ -20,27 +21,38 @@ std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvS
 }
 
 std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<FmeaCase>& cases, int threads) {
-  std::vector<FmeaRow> rows(cases.size());
-  // Each worker takes the next case; every run is independent of the others and of the order, so
-  // the rows do not depend on the number of workers.
+  return std::move(run_fmea(std::vector<model::InvSimParams>{p}, cases, threads).front());
+}
+
+std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams>& layouts,
+                                           const std::vector<FmeaCase>& cases, int threads,
+                                           std::vector<std::vector<std::vector<InvSimSample>>>* histories) {
+  std::vector<std::vector<FmeaRow>> rows(layouts.size(), std::vector<FmeaRow>(cases.size()));
+  if (histories != nullptr)
+    histories->assign(layouts.size(), std::vector<std::vector<InvSimSample>>(cases.size()));
+  // Each worker takes the next (layout, case) pair; every run is independent of the others and of
+  // the order, so the rows do not depend on the number of workers.
+  const std::size_t total = layouts.size() * cases.size();
   std::atomic<std::size_t> next{0};
   auto work = [&]() {
-    for (std::size_t i = next++; i < cases.size(); i = next++) {
-      FmeaRow& row = rows[i];
+    for (std::size_t k = next++; k < total; k = next++) {
+      const std::size_t l = k / cases.size(), i = k % cases.size();
+      const model::InvSimParams& p = layouts[l];
+      FmeaRow& row = rows[l][i];
       row.fmea_case = cases[i];
-      row.result = run_inverse_simulation(p, cases[i].mode.faults);
+      row.result = run_inverse_simulation(p, cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr);
       row.deviation_ratio = deviation_ratio(p.sensor, row.result);
       row.controllable = is_controllable(row.result);
       row.risk = classify_risk(p.sensor, row.result);
     }
   };
-  const std::size_t workers = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1,
-                                                      std::max<std::size_t>(cases.size(), 1));
+  const std::size_t workers =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, std::max<std::size_t>(total, 1));
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
-  rank_by_risk(rows);
+  for (auto& layout_rows : rows) rank_by_risk(layout_rows);
   return rows;
 }
 
@@ -51,14 +63,12 @@ double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResu
   return std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
 }
 
-bool is_controllable(const InvSimResult& r) {
-  return r.docked && r.target_always_in_view && r.attitude_within_limits && !r.diverged;
-}
+bool is_controllable(const InvSimResult& r) { return r.docked && r.target_always_in_view && !r.diverged; }
 
 RiskClass classify_risk(const model::InvSimSensorParams& limits, const InvSimResult& r) {
   if (!is_controllable(r)) return RiskClass::kUncontrollable;
-  return deviation_ratio(limits, r) > kLargeDeviationFraction ? RiskClass::kLargeDeviation
-                                                              : RiskClass::kSmallDeviation;
+  const bool large = deviation_ratio(limits, r) > kLargeDeviationFraction || !r.attitude_within_limits;
+  return large ? RiskClass::kLargeDeviation : RiskClass::kSmallDeviation;
 }
 
 std::vector<std::size_t> risk_order(const std::vector<FmeaRow>& rows) {

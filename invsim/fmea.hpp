@@ -5,15 +5,14 @@
 //
 // Risk classes (Zhou 2018, section 4.1: controllable small deviation, controllable large deviation,
 // uncontrollable). The paper names them but gives no numeric boundary; ours:
-//  - controllable: docked, the target in view at every attitude period, the attitude within its
-//    limit throughout, and the run did not diverge;
+//  - controllable: docked, the target in view at every attitude period (the paper: out of view,
+//    "the mission would fail without other sensors"), and the run did not diverge;
 //  - deviation ratio: the larger of peak |az| / az limit and peak |el| / el limit (the line of
-//    sight; the paper's Class II is "a large deviation of the yaw and the azimuth", and the yaw
-//    shows in the azimuth). The attitude is not in the ratio: the phase-plane controller holds a
-//    disturbed axis at its opening line d, which the shipped scenario puts at half the attitude
-//    limit by design, so it would not discriminate; the attitude limit itself is in "controllable";
-//  - small deviation (Class I): controllable with ratio <= kLargeDeviationFraction (half the
-//    az/el limits); large deviation (Class II): controllable above it; Class III: not controllable.
+//    sight; the paper's Class II is "a large deviation of the yaw and the azimuth");
+//  - large deviation (Class II): controllable with the ratio above kLargeDeviationFraction (half
+//    the az/el limits), or with the attitude beyond its +-1 deg limit at some time (the yaw
+//    deviation of Class II); small deviation (Class I): the other controllable modes;
+//    Class III: not controllable.
 // Ranking, most severe first: class, then the operational amount k_p (the paper's risk is the
 // pilot's compensatory workload, section 3.2), then the deviation ratio, then the mode order.
 #include <cstddef>
@@ -51,6 +50,13 @@ std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvS
 
 // Runs every case on `threads` workers (>= 1); rows in case order whatever `threads`.
 std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<FmeaCase>& cases, int threads);
+
+// Every case on every layout (one InvSimParams per thruster configuration), all pairs shared by
+// `threads` workers; result[l] holds layout l's rows in case order, ranked within the layout.
+// With `histories`, (*histories)[l][i] receives the per-step history of case i on layout l.
+std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams>& layouts,
+                                           const std::vector<FmeaCase>& cases, int threads,
+                                           std::vector<std::vector<std::vector<InvSimSample>>>* histories = nullptr);
 
 // Judging one result, and the ranking of all rows (sets FmeaRow::rank).
 double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResult& r);

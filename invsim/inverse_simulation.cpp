@@ -133,8 +133,10 @@ void forward_step(const RunContext& c, const model::InvSimParams& p,
     const Vec3 euler = euler321_from_matrix(r_hill_from_body);
     const Vec3 rate = relative_rate_body(c.rvd, s);
     std::array<PhasePlaneCommand, 3> attitude{};
-    for (int axis = 0; axis < 3; ++axis)
+    for (int axis = 0; axis < 3; ++axis) {
       attitude[axis] = step_phase_plane(p.attitude, c.a0_radps2(axis), euler(axis), rate(axis));
+      if (attitude[axis].direction != 0) r.attitude_on_time_s(axis) += std::clamp(attitude[axis].on_time_s, 0.0, h);
+    }
     propagate_period(c, pulses, static_cast<double>(j) * h, h, attitude, s, translation_fuel_Ns,
                      attitude_fuel_Ns);
     LineOfSight los{};

@@ -42,6 +42,7 @@ struct InvSimResult {
   Vec3 final_v_hill_mps = Vec3::Zero();  // [m/s]
   double propellant_kg = 0.0;         // [kg] translation + attitude
   double attitude_propellant_kg = 0.0;  // [kg]
+  Vec3 attitude_on_time_s = Vec3::Zero();  // [s] summed opening time of the attitude couples per body axis
   bool diverged = false;              // non-finite state or the chaser beyond 10 km: run stopped
 };
 

@@ -9,12 +9,14 @@
 
 #include "io/scenario_loader.hpp"
 #include "model/invsim.hpp"
+#include "model/invsim_study.hpp"
 
 namespace chaser::io {
 
 struct InvSimLoadResult {
   std::optional<model::InvSimParams> params;  // set only if errors is empty
   model::InvSimFaultSet faults;               // the file's `faults` list (thrusters shut down)
+  model::InvSimStudy study;                   // `configurations` and `optimize` (empty if absent)
   std::vector<ScenarioError> errors;          // every problem found
 };
 

@@ -8,6 +8,7 @@
 
 #include "core/constants.hpp"
 #include "io/invsim_loader.hpp"
+#include "io/invsim_study_reader.hpp"
 #include "io/overrides.hpp"
 #include "io/text_file.hpp"
 #include "io/yaml_reader.hpp"
@@ -178,14 +179,15 @@ void validate_timing(const InvSimParams& p, Diagnostics& diag) {
     diag.add("chaser.inertia_kgm2", "must be diagonal and positive (body axes are principal, eq. 10)");
 }
 
+}  // namespace
+
 // Every (axis, direction) group must push along its axis, every attitude couple turn about its
 // axis, and names must be unique.
-void validate_thrusters(const InvSimParams& p, Diagnostics& diag) {
-  if (!diag.clean("thrusters")) return;
+void check_invsim_layout(const InvSimParams& p, const std::string& key_path, Diagnostics& diag) {
   std::set<std::string> names;
   for (std::size_t i = 0; i < p.thrusters.size(); ++i)
     if (!names.insert(p.thrusters[i].name).second)
-      diag.add(fmt::format("thrusters.{}.name", i),
+      diag.add(join_path(key_path, fmt::format("{}.name", i)),
                fmt::format("'{}' is used by an earlier thruster", p.thrusters[i].name));
   for (int axis = 0; axis < 3; ++axis) {
     for (int d : {1, -1}) {
@@ -198,15 +200,17 @@ void validate_thrusters(const InvSimParams& p, Diagnostics& diag) {
           torque += t.sign * d * t.position_body_m.cross(t.thrust_N * t.direction_body)(axis);
       }
       if (!(force * d > 0.0))
-        diag.add("thrusters", fmt::format("the translation group {}{} must push along {}{}",
+        diag.add(key_path, fmt::format("the translation group {}{} must push along {}{}",
                                           d > 0 ? '+' : '-', char('x' + axis), d > 0 ? '+' : '-',
                                           char('x' + axis)));
       if (!(torque * d > 0.0))
-        diag.add("thrusters", fmt::format("the attitude thrusters of axis {} must turn about {}{}",
+        diag.add(key_path, fmt::format("the attitude thrusters of axis {} must turn about {}{}",
                                           char('x' + axis), d > 0 ? '+' : '-', char('x' + axis)));
     }
   }
 }
+
+namespace {
 
 std::optional<YAML::Node> parse_document(const std::string& text, const std::string& source,
                                          Diagnostics& diag) {
@@ -254,9 +258,12 @@ InvSimLoadResult load_document(const std::string& text, const std::string& sourc
     MapReader r(*root, "", diag);
     read_sections(r, p);
     const std::vector<std::string> fault_names = read_fault_names(r);
-    r.finish();
     validate_timing(p, diag);
-    validate_thrusters(p, diag);
+    if (diag.clean("thrusters")) check_invsim_layout(p, "thrusters", diag);
+    if (diag.clean("thrusters")) read_invsim_study(r, p, result.study);
+    r.accept("configurations");
+    r.accept("optimize");
+    r.finish();
     std::vector<ScenarioError> fault_errors;
     if (diag.clean("thrusters")) {
       if (auto faults = invsim_fault_set(p, fault_names, "faults", fault_errors)) result.faults = *faults;

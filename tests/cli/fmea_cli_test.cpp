@@ -38,22 +38,74 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-// The shipped scenario: header + nominal + 24 Table 2 + 16 Table 5 rows (its `faults` is empty);
-// the markdown has the paper's tables and the ranking.
-TEST(FmeaCli, ShippedScenarioWritesOneRowPerMode) {
+// The shipped scenario: header + (nominal + 24 Table 2 + 16 Table 5 rows) for the baseline and its
+// two configurations (Schemes I and II; its `faults` is empty); the markdown has the paper's tables,
+// the ranking and the comparison of the layouts.
+TEST(FmeaCli, ShippedScenarioWritesOneRowPerLayoutAndMode) {
   const fs::path out = fresh_dir("ok");
   const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --threads 2 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("41 modes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("123 runs (3 layouts x 41 modes)"), std::string::npos) << r.output;
   const std::vector<std::string> csv = lines(read_file(out / "fmea.csv"));
-  ASSERT_EQ(csv.size(), 42u);
-  EXPECT_EQ(csv[0].rfind("mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,", 0), 0u);
-  EXPECT_EQ(csv[1].rfind("nominal,nominal,,", 0), 0u) << csv[1];
-  EXPECT_EQ(csv[2].rfind("d1,table2,d1,", 0), 0u) << csv[2];
-  EXPECT_EQ(csv[26].rfind("d1/d1~+e1/e1~,table5,d1 d1~ e1 e1~,", 0), 0u) << csv[26];
+  ASSERT_EQ(csv.size(), 1u + 3u * 41u);
+  EXPECT_EQ(csv[0].rfind("configuration,mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,", 0), 0u);
+  EXPECT_EQ(csv[1].rfind("baseline,nominal,nominal,,", 0), 0u) << csv[1];
+  EXPECT_EQ(csv[2].rfind("baseline,d1,table2,d1,", 0), 0u) << csv[2];
+  EXPECT_EQ(csv[26].rfind("baseline,d1/d1~+e1/e1~,table5,d1 d1~ e1 e1~,", 0), 0u) << csv[26];
+  EXPECT_EQ(csv[42].rfind("scheme_I,nominal,", 0), 0u) << csv[42];
+  EXPECT_EQ(csv[83].rfind("scheme_II,nominal,", 0), 0u) << csv[83];
   const std::string md = read_file(out / "fmea.md");
-  for (const char* heading : {"## Table 4", "## Table 5", "## Table 6", "## Ranking by risk"})
+  for (const char* heading : {"## Table 4", "## Table 5", "## Table 6", "## Ranking by risk", "## Reconfiguration",
+                              "### Table 6 with layout scheme_II"})
     EXPECT_NE(md.find(heading), std::string::npos) << heading;
+  EXPECT_FALSE(fs::exists(out / "history"));  // only with --history
+  EXPECT_FALSE(fs::exists(out / "optimize.csv"));  // only with --optimize
+}
+
+// --optimize flies every combination of the free choices (3 x 2 x 2 x 2 x 2 = 48 in the shipped
+// scenario) and writes them all, best first; --history writes one file per layout and mode, listed
+// in history/index.csv, and python/plot_invsim.py draws them.
+TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
+  const fs::path out = fresh_dir("opt");
+  const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --optimize --history --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("--optimize: 48 candidates"), std::string::npos) << r.output;
+  const std::vector<std::string> ranked = lines(read_file(out / "optimize.csv"));
+  ASSERT_EQ(ranked.size(), 1u + 48u);
+  EXPECT_EQ(ranked[1].rfind("1,\"attitude_thrust=", 0), 0u) << ranked[1];
+  EXPECT_NE(read_file(out / "fmea.md").find("## Optimisation"), std::string::npos);
+  const std::vector<std::string> index = lines(read_file(out / "history" / "index.csv"));
+  ASSERT_EQ(index.size(), 1u + 3u * 41u);
+  EXPECT_EQ(index[0], "configuration,mode,file");
+  EXPECT_EQ(index[26], "baseline,d1/d1~+e1/e1~,baseline/25_d1-d1n+e1-e1n.csv");
+  const std::vector<std::string> history = lines(read_file(out / "history" / "baseline" / "00_nominal.csv"));
+  ASSERT_EQ(history.size(), 1u + 1300u);  // one row per 1 s step of the 1300 s run
+  EXPECT_EQ(history[0].rfind("t_s,x_m,y_m,z_m,", 0), 0u);
+  const CommandResult plot = chaser::testing::run_shell("/usr/bin/python3 python/plot_invsim.py " + out.string() +
+                                                        " --modes nominal d1/d2~+e2/e1~");
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  EXPECT_TRUE(fs::exists(out / "plots" / "baseline" / "00_nominal.png")) << plot.output;
+  EXPECT_TRUE(fs::exists(out / "plots" / "scheme_II" / "31_d1-d2n+e2-e1n.png")) << plot.output;
+}
+
+// Without free choices, --optimize is bad input (exit 2), not an empty search; an empty list of
+// choices is a scenario error naming its key.
+TEST(FmeaCli, OptimizeWithoutChoicesIsBadInput) {
+  const fs::path out = fresh_dir("noopt");
+  fs::create_directories(out);
+  const std::string shipped = read_file("scenarios/manual_rvd.yaml");
+  const auto cut = shipped.find("\noptimize:");
+  ASSERT_NE(cut, std::string::npos);
+  const fs::path scenario = out / "no_choices.yaml";
+  std::ofstream(scenario) << shipped.substr(0, cut) << "\nfaults: []\n";
+  CommandResult r = chaser("fmea " + scenario.string() + " --optimize --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("optimize.choices"), std::string::npos) << r.output;
+  EXPECT_EQ(chaser("fmea " + scenario.string() + " --out " + out.string()).exit_code, 0);
+  r = chaser("fmea scenarios/manual_rvd.yaml --set 'optimize.choices=[]' --optimize --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("optimize.choices: must be a list of free choices with 1 to"), std::string::npos)
+      << r.output;
 }
 
 // A user fault set in the scenario adds one last row, named "scenario".
@@ -62,8 +114,9 @@ TEST(FmeaCli, ScenarioFaultsAddARow) {
   const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --set 'faults=[d1, e2~]' --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::vector<std::string> csv = lines(read_file(out / "fmea.csv"));
-  ASSERT_EQ(csv.size(), 43u);
-  EXPECT_EQ(csv.back().rfind("scenario,scenario,d1 e2~,", 0), 0u) << csv.back();
+  ASSERT_EQ(csv.size(), 1u + 3u * 42u);
+  EXPECT_EQ(csv[42].rfind("baseline,scenario,scenario,d1 e2~,", 0), 0u) << csv[42];
+  EXPECT_EQ(csv.back().rfind("scheme_II,scenario,scenario,d1 e2~,", 0), 0u) << csv.back();
 }
 
 TEST(FmeaCli, BadInputExitsWith2AndNamesTheKey) {

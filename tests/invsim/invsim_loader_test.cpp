@@ -79,6 +79,67 @@ TEST(InvSimLoader, RejectsAGroupThatDoesNotPushAlongItsAxis) {
   EXPECT_TRUE(has_error_at(r, "thrusters")) << format_errors(r.errors);
 }
 
+// The shipped study: Schemes I and II as configurations (by thruster name), and five free choices
+// for --optimize (3 x 2 x 2 x 2 x 2 candidates); the loader keeps only what is written.
+TEST(InvSimLoader, ShippedStudyHasSchemesIAndIIAndFiveFreeChoices) {
+  const InvSimLoadResult r = load_invsim_file(kScenario);
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  const model::InvSimStudy& study = r.study;
+  ASSERT_EQ(study.configurations.size(), 2u);
+  EXPECT_EQ(study.configurations[0].name, "scheme_I");
+  ASSERT_EQ(study.configurations[0].changes.size(), 6u);
+  EXPECT_EQ(study.configurations[0].changes[0].thruster, 1u);  // a
+  EXPECT_EQ(study.configurations[0].changes[0].thrust_N, 50.0);
+  EXPECT_FALSE(study.configurations[0].changes[0].position_body_m.has_value());
+  EXPECT_EQ(study.configurations[1].name, "scheme_II");
+  ASSERT_EQ(study.configurations[1].changes.size(), 4u);
+  EXPECT_EQ(study.configurations[1].changes[0].thruster, 7u);  // d1
+  EXPECT_EQ(study.configurations[1].changes[0].position_body_m, Vec3(-1.5, 0.0, 0.7));
+  ASSERT_EQ(study.free_choices.size(), 5u);
+  EXPECT_EQ(model::candidate_count(study.free_choices), 48u);
+  EXPECT_EQ(study.optimize_keep, 5);
+}
+
+// Study errors name their key: an unknown thruster, a reserved or repeated name, a name that cannot
+// name a directory, a change that leaves nothing to change, a configuration whose layout cannot push
+// along an axis, two choices changing one thruster, `keep` out of range.
+TEST(InvSimLoader, StudyErrorsNameTheirKey) {
+  const auto errors_of = [](std::vector<std::string> overrides) { return load_invsim_file(kScenario, overrides); };
+  InvSimLoadResult r = errors_of({"configurations.0.thrusters={zz: {thrust_N: 50}}"});
+  EXPECT_TRUE(has_error_at(r, "configurations.0.thrusters.zz")) << format_errors(r.errors);
+  r = errors_of({"configurations.0.name=baseline"});
+  EXPECT_TRUE(has_error_at(r, "configurations.0.name")) << format_errors(r.errors);
+  r = errors_of({"configurations.1.name=scheme_I"});
+  EXPECT_TRUE(has_error_at(r, "configurations.1.name")) << format_errors(r.errors);
+  r = errors_of({"configurations.0.name=a/b"});
+  EXPECT_TRUE(has_error_at(r, "configurations.0.name")) << format_errors(r.errors);
+  r = errors_of({"configurations.0.thrusters.a={}"});
+  EXPECT_TRUE(has_error_at(r, "configurations.0.thrusters.a")) << format_errors(r.errors);
+  r = errors_of({"configurations.0.thrusters.a.thrust_N=-5"});
+  EXPECT_TRUE(has_error_at(r, "configurations.0.thrusters.a.thrust_N")) << format_errors(r.errors);
+  r = errors_of({"configurations.1.thrusters={d1: {direction_body: [0, 1, 0]}, d2: {direction_body: [0, 1, 0]}}"});
+  EXPECT_TRUE(has_error_at(r, "configurations.1")) << format_errors(r.errors);
+  r = errors_of({"optimize.choices.1.options.1.thrusters={e1: {position_body_m: [0, 1, 0]}}"});
+  EXPECT_TRUE(has_error_at(r, "optimize.choices.3")) << format_errors(r.errors);  // e_negative, the later one
+  r = errors_of({"optimize.keep=0"});
+  EXPECT_TRUE(has_error_at(r, "optimize.keep")) << format_errors(r.errors);
+  r = errors_of({"optimize.choices.0.options.1.name=25N"});
+  EXPECT_TRUE(has_error_at(r, "optimize.choices.0.options.1.name")) << format_errors(r.errors);
+  r = errors_of({"optimize.bogus=1"});
+  EXPECT_TRUE(has_error_at(r, "optimize.bogus")) << format_errors(r.errors);
+}
+
+// The number of candidates is bounded: 13 choices of 2 options give 8192 > 4096, an error at
+// optimize.choices rather than a search that never ends.
+TEST(InvSimLoader, TooManyCandidatesIsAnError) {
+  std::string choices = "optimize.choices=[";
+  for (int k = 0; k < 13; ++k)
+    choices += (k ? ", " : "") + std::string("{name: c") + std::to_string(k) + ", options: [{name: p}, {name: q}]}";
+  choices += "]";
+  const InvSimLoadResult r = load_invsim_file(kScenario, {choices});
+  EXPECT_TRUE(has_error_at(r, "optimize.choices")) << format_errors(r.errors);
+}
+
 TEST(InvSimLoader, MissingFileIsAnError) {
   const InvSimLoadResult r = load_invsim_file("scenarios/no_such_file.yaml");
   ASSERT_EQ(r.errors.size(), 1u);

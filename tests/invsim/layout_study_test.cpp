@@ -1,0 +1,132 @@
+#include "invsim/layout_study.hpp"
+
+#include <gtest/gtest.h>
+
+#include "io/invsim_loader.hpp"
+#include "model/invsim_study.hpp"
+
+namespace chaser::invsim {
+namespace {
+
+io::InvSimLoadResult shipped() {
+  io::InvSimLoadResult loaded = io::load_invsim_file("scenarios/manual_rvd.yaml");
+  EXPECT_TRUE(loaded.errors.empty()) << io::format_errors(loaded.errors);
+  return loaded;
+}
+
+model::InvSimConfiguration option(std::string name, std::size_t thruster, double thrust_N) {
+  model::InvSimConfiguration c;
+  c.name = std::move(name);
+  model::InvSimThrusterChange change;
+  change.thruster = thruster;
+  change.thrust_N = thrust_N;
+  c.changes.push_back(change);
+  return c;
+}
+
+// Applying a configuration changes exactly the fields it sets (and renormalises a direction).
+TEST(LayoutStudy, ApplyChangesOnlyTheGivenFields) {
+  const model::InvSimParams base = *shipped().params;
+  model::InvSimConfiguration c = option("x", 1, 50.0);
+  model::InvSimThrusterChange moved;
+  moved.thruster = 7;
+  moved.position_body_m = Vec3(-1.5, 0.0, 0.7);
+  moved.direction_body = Vec3(2.0, 0.0, 0.0);
+  c.changes.push_back(moved);
+  const model::InvSimParams p = model::apply_configuration(base, c);
+  EXPECT_EQ(p.thrusters[1].thrust_N, 50.0);
+  EXPECT_EQ(p.thrusters[1].position_body_m, base.thrusters[1].position_body_m);
+  EXPECT_EQ(p.thrusters[7].position_body_m, Vec3(-1.5, 0.0, 0.7));
+  EXPECT_EQ(p.thrusters[7].direction_body, Vec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(p.thrusters[7].thrust_N, base.thrusters[7].thrust_N);
+  for (std::size_t i = 8; i < p.thrusters.size(); ++i) EXPECT_EQ(p.thrusters[i].position_body_m, base.thrusters[i].position_body_m);
+}
+
+// Candidates enumerate the product in mixed radix, the first choice varying slowest; each takes the
+// changes of its options in order; the count saturates above the cap.
+TEST(LayoutStudy, CandidatesEnumerateTheProduct) {
+  std::vector<model::InvSimFreeChoice> choices(2);
+  choices[0] = {"level", {option("low", 1, 25.0), option("high", 1, 50.0)}};
+  choices[1] = {"d", {model::InvSimConfiguration{"keep", "", {}}, option("a", 7, 30.0), option("b", 7, 90.0)}};
+  ASSERT_EQ(model::candidate_count(choices), 6u);
+  EXPECT_EQ(model::candidate(choices, 0).name, "level=low, d=keep");
+  EXPECT_EQ(model::candidate(choices, 2).name, "level=low, d=b");
+  EXPECT_EQ(model::candidate(choices, 3).name, "level=high, d=keep");
+  const model::InvSimConfiguration last = model::candidate(choices, 5);
+  EXPECT_EQ(last.name, "level=high, d=b");
+  ASSERT_EQ(last.changes.size(), 2u);
+  EXPECT_EQ(last.changes[0].thrust_N, 50.0);
+  EXPECT_EQ(last.changes[1].thrust_N, 90.0);
+  std::vector<model::InvSimFreeChoice> many(13, model::InvSimFreeChoice{"c", {option("p", 1, 25.0), option("q", 1, 30.0)}});
+  EXPECT_EQ(model::candidate_count(many), model::kMaxOptimizeCandidates + 1);
+}
+
+FmeaRow row(std::uint64_t failed_mask, RiskClass risk, double propellant_kg) {
+  FmeaRow r;
+  r.fmea_case.mode.faults.failed_mask = failed_mask;
+  r.risk = risk;
+  r.controllable = risk != RiskClass::kUncontrollable;
+  r.result.propellant_kg = propellant_kg;
+  r.result.k_p = 0.1;
+  return r;
+}
+
+// The summary counts fault modes (not the nominal row) per class, the most failed thrusters in a
+// controllable mode and the fewest in a lost one, and sums the propellant of every row.
+TEST(LayoutStudy, SummaryCountsClassesAndTolerance) {
+  const std::vector<FmeaRow> rows{row(0, RiskClass::kSmallDeviation, 4.0), row(0b1, RiskClass::kSmallDeviation, 4.5),
+                                  row(0b1111, RiskClass::kLargeDeviation, 5.0),
+                                  row(0b111, RiskClass::kUncontrollable, 6.0),
+                                  row(0b1111'0000, RiskClass::kUncontrollable, 6.0)};
+  const LayoutSummary s = summarize_layout(rows);
+  EXPECT_TRUE(s.nominal_controllable);
+  EXPECT_EQ(s.fault_modes, 4);
+  EXPECT_EQ(s.per_class[0], 1);
+  EXPECT_EQ(s.per_class[1], 1);
+  EXPECT_EQ(s.per_class[2], 2);
+  EXPECT_EQ(s.controllable, 2);
+  EXPECT_EQ(s.most_failed_tolerated, 4);
+  EXPECT_EQ(s.fewest_failed_lost, 3);
+  EXPECT_DOUBLE_EQ(s.propellant_kg, 25.5);
+  EXPECT_DOUBLE_EQ(s.mean_k_p, 0.1);
+}
+
+// Better first: a nominal run that docks, more controllable modes, fewer Class II, less propellant.
+TEST(LayoutStudy, OrderPrefersControllabilityThenPropellant) {
+  LayoutSummary a, b, c, d;
+  a.nominal_controllable = b.nominal_controllable = c.nominal_controllable = true;
+  a.controllable = 40, a.per_class = {30, 10, 0}, a.propellant_kg = 100.0;
+  b.controllable = 40, b.per_class = {40, 0, 0}, b.propellant_kg = 200.0;
+  c.controllable = 40, c.per_class = {40, 0, 0}, c.propellant_kg = 150.0;
+  d.controllable = 40, d.per_class = {40, 0, 0}, d.propellant_kg = 10.0;  // but the nominal run fails
+  EXPECT_EQ(layout_order({a, b, c, d}), (std::vector<std::size_t>{2, 1, 0, 3}));
+}
+
+// The search over the shipped choices restricted to two (attitude level x d_forward plane, 6
+// candidates) on a few modes returns every candidate once, best first, and does not depend on the
+// number of workers.
+TEST(LayoutStudy, SearchIsCompleteOrderedAndThreadIndependent) {
+  const io::InvSimLoadResult loaded = shipped();
+  std::vector<model::InvSimFreeChoice> choices(loaded.study.free_choices.begin(), loaded.study.free_choices.begin() + 2);
+  std::vector<FmeaCase> cases = fmea_cases(*loaded.params, {});
+  cases = {cases[0], cases[31]};  // nominal and d1/d2~+e2/e1~, Class III in the baseline layout
+  const std::vector<LayoutCandidate> one = search_layouts(*loaded.params, choices, cases, 1);
+  const std::vector<LayoutCandidate> two = search_layouts(*loaded.params, choices, cases, 2);
+  ASSERT_EQ(one.size(), 6u);
+  ASSERT_EQ(two.size(), 6u);
+  std::vector<LayoutSummary> summaries;
+  for (std::size_t k = 0; k < one.size(); ++k) {
+    EXPECT_EQ(one[k].configuration.name, two[k].configuration.name);
+    EXPECT_EQ(one[k].summary.propellant_kg, two[k].summary.propellant_kg);  // bitwise: same runs
+    summaries.push_back(one[k].summary);
+    if (k > 0) {
+      EXPECT_FALSE(better_layout(one[k].summary, one[k - 1].summary)) << k;
+    }
+  }
+  // Only the baseline's candidate (25 N, x-o-y) loses the mode; it must come last.
+  EXPECT_EQ(one.back().configuration.name, "attitude_thrust=25N, d_forward=xoy");
+  EXPECT_EQ(one.back().summary.per_class[2], 1);
+}
+
+}  // namespace
+}  // namespace chaser::invsim
