@@ -50,6 +50,7 @@ struct FmeaArgs {
   std::optional<int> threads;  // default: hardware concurrency
   bool optimize = false;       // search the scenario's free mounting choices (optimize.choices)
   bool history = false;        // write DIR/history for python/plot_invsim.py
+  bool three_axis = false;     // add the 64 three-axis modes (x, y and z double faults)
 };
 
 struct CampaignMergeArgs {

@@ -81,7 +81,7 @@ int fmea_command(const FmeaArgs& args) {
   }
   const int threads = args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults);
+  const std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis);
   std::vector<FmeaLayout> layouts = layouts_of(loaded);
   std::vector<model::InvSimParams> params;
   for (const FmeaLayout& layout : layouts) params.push_back(layout.params);

@@ -99,6 +99,30 @@ void append_table6(std::string& md, const model::InvSimParams& p, const std::vec
 
 namespace {
 
+// The three-axis modes (ours): Table 5's 16 x-y modes down, the four z pairs across, the class.
+void three_axis_grid(std::string& md, const std::vector<FmeaRow>& rows) {
+  std::vector<const FmeaRow*> modes;
+  for (const FmeaRow& row : rows)
+    if (row.fmea_case.table == FmeaTable::kThreeAxis) modes.push_back(&row);
+  if (modes.size() != 64) return;
+  int controllable = 0;
+  for (const FmeaRow* row : modes) controllable += row->controllable ? 1 : 0;
+  md += fmt::format("## Three-axis faults (six failed thrusters; ours): {} of 64 controllable\n\n| x + y |", controllable);
+  const auto z_pair = [](const FmeaRow* row) {
+    const std::string& label = row->fmea_case.mode.label;
+    return label.substr(label.rfind('+') + 1);
+  };
+  for (int c = 0; c < 4; ++c) md += fmt::format(" {} |", z_pair(modes[static_cast<std::size_t>(c)]));
+  md += "\n|---|---|---|---|---|\n";
+  for (std::size_t r = 0; r < 16; ++r) {
+    const std::string& label = modes[4 * r]->fmea_case.mode.label;
+    md += fmt::format("| {} |", label.substr(0, label.rfind('+')));
+    for (std::size_t c = 0; c < 4; ++c) md += fmt::format(" {} |", invsim::risk_class_roman(modes[4 * r + c]->risk));
+    md += "\n";
+  }
+  md += "\n";
+}
+
 void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
   md += "## Ranking by risk (most severe first)\n\n";
   md += "| Rank | Mode | Class | k_p | peak az [deg] | peak el [deg] | peak attitude [deg] | deviation ratio | "
@@ -162,6 +186,7 @@ std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
   table4(md, rows);
   table5(md, rows);
   append_table6(md, p, rows, "## Table 6: risk classes of the multi-axis faults\n\n");
+  three_axis_grid(md, rows);
   ranking(md, rows);
   if (layouts.size() > 1) append_reconfiguration(md, layouts);
   if (optimized != nullptr) append_optimization(md, layouts, *optimized, keep);

@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
   fmea_cmd->add_option("--set", fmea.overrides, "Override a scenario key: key.path=value (repeatable)");
   fmea_cmd->add_option("--threads", fmea.threads, "Worker threads (default: all cores)");
   fmea_cmd->add_flag("--optimize", fmea.optimize, "Also search the scenario's free mounting choices (optimize.choices): optimize.csv");
+  fmea_cmd->add_flag("--three-axis", fmea.three_axis, "Add the 64 three-axis modes (x, y and z double faults: six failed thrusters)");
   fmea_cmd->add_flag("--history", fmea.history, "Write per-step histories (DIR/history) for python/plot_invsim.py");
 
   try {

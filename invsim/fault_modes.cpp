@@ -67,4 +67,20 @@ std::vector<FaultMode> multi_axis_fault_modes(const model::InvSimParams& p) {
   return modes;
 }
 
+std::vector<FaultMode> three_axis_fault_modes(const model::InvSimParams& p) {
+  std::vector<FaultMode> modes;
+  const auto z = axis_thrusters(p, 'f');
+  if (!z) return modes;
+  for (const FaultMode& xy : multi_axis_fault_modes(p)) {
+    for (const auto& pz : kDoublePairs) {
+      FaultMode mode = xy;
+      mode.label += "+";
+      add(p, (*z)[pz[0]], mode);
+      add(p, (*z)[pz[1]], mode);
+      modes.push_back(mode);
+    }
+  }
+  return modes;
+}
+
 }  // namespace chaser::invsim

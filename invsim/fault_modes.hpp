@@ -7,6 +7,9 @@
 //  - Table 5 (multi-axis): one x-axis double fault with one y-axis double fault, both drawn from
 //    the pairs {d1, d1~}, {d1, d2~}, {d2, d1~}, {d2, d2~} and {e1, e1~}, {e1, e2~}, {e2, e1~},
 //    {e2, e2~}: 16 modes, in the paper's row order.
+//  - three-axis (ours, beyond the paper): each Table 5 mode with one z-axis double fault from
+//    {f1, f1~}, {f1, f2~}, {f2, f1~}, {f2, f2~}: 64 modes of six failed thrusters, for the paper's
+//    "the maximum tolerant number of faulty thrusters reaches six" (section 4.2).
 // Thrusters are found by the paper's names (d1 ... f2~); a scenario without them yields no modes
 // for the missing names' axis.
 #include <string>
@@ -23,5 +26,6 @@ struct FaultMode {
 
 std::vector<FaultMode> single_axis_fault_modes(const model::InvSimParams& p);  // Table 2 / 4
 std::vector<FaultMode> multi_axis_fault_modes(const model::InvSimParams& p);   // Table 5
+std::vector<FaultMode> three_axis_fault_modes(const model::InvSimParams& p);   // Table 5 x z pairs
 
 }  // namespace chaser::invsim

@@ -10,11 +10,14 @@
 
 namespace chaser::invsim {
 
-std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults) {
+std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults,
+                                 bool three_axis) {
   std::vector<FmeaCase> cases;
   cases.push_back({FaultMode{"nominal", {}}, FmeaTable::kNominal});
   for (auto& m : single_axis_fault_modes(p)) cases.push_back({std::move(m), FmeaTable::kSingleAxis});
   for (auto& m : multi_axis_fault_modes(p)) cases.push_back({std::move(m), FmeaTable::kMultiAxis});
+  if (three_axis)
+    for (auto& m : three_axis_fault_modes(p)) cases.push_back({std::move(m), FmeaTable::kThreeAxis});
   if (scenario_faults.failed_mask != 0)
     cases.push_back({FaultMode{"scenario", scenario_faults}, FmeaTable::kScenario});
   return cases;
@@ -122,6 +125,7 @@ std::string_view table_name(FmeaTable t) {
     case FmeaTable::kNominal: return "nominal";
     case FmeaTable::kSingleAxis: return "table2";
     case FmeaTable::kMultiAxis: return "table5";
+    case FmeaTable::kThreeAxis: return "three_axis";
     case FmeaTable::kScenario: return "scenario";
   }
   return "";

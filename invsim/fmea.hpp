@@ -28,7 +28,7 @@ namespace chaser::invsim {
 
 inline constexpr double kLargeDeviationFraction = 0.5;  // [-] of the azimuth / elevation limits
 
-enum class FmeaTable { kNominal, kSingleAxis, kMultiAxis, kScenario };  // Table 4 / 2, 5, user
+enum class FmeaTable { kNominal, kSingleAxis, kMultiAxis, kThreeAxis, kScenario };  // Table 4 / 2, 5, ours, user
 enum class RiskClass { kSmallDeviation, kLargeDeviation, kUncontrollable };  // Class I, II, III
 
 struct FmeaCase {
@@ -45,8 +45,10 @@ struct FmeaRow {
   int rank = 0;                  // 1 = most severe
 };
 
-// Nominal ("nominal"), Table 2, Table 5, then the scenario's faults ("scenario") when not empty.
-std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults);
+// Nominal ("nominal"), Table 2, Table 5, with `three_axis` the 64 three-axis modes, then the
+// scenario's faults ("scenario") when not empty.
+std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults,
+                                 bool three_axis = false);
 
 // Runs every case on `threads` workers (>= 1); rows in case order whatever `threads`.
 std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<FmeaCase>& cases, int threads);
@@ -72,6 +74,6 @@ std::string failed_names(const model::InvSimParams& p, const model::InvSimFaultS
 
 std::string_view risk_class_name(RiskClass c);  // "controllable, small deviation", ...
 std::string_view risk_class_roman(RiskClass c); // "I", "II", "III"
-std::string_view table_name(FmeaTable t);       // "nominal", "table2", "table5", "scenario"
+std::string_view table_name(FmeaTable t);       // "nominal", "table2", "table5", "three_axis", "scenario"
 
 }  // namespace chaser::invsim

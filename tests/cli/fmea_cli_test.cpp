@@ -108,6 +108,17 @@ TEST(FmeaCli, OptimizeWithoutChoicesIsBadInput) {
       << r.output;
 }
 
+// --three-axis adds the 64 six-thruster modes to every layout (3 x 105 rows), after Table 5.
+TEST(FmeaCli, ThreeAxisModesAddSixtyFourRowsPerLayout) {
+  const fs::path out = fresh_dir("three");
+  const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --three-axis --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> csv = lines(read_file(out / "fmea.csv"));
+  ASSERT_EQ(csv.size(), 1u + 3u * 105u);
+  EXPECT_EQ(csv[42].rfind("baseline,d1/d1~+e1/e1~+f1/f1~,three_axis,d1 d1~ e1 e1~ f1 f1~,", 0), 0u) << csv[42];
+  EXPECT_NE(read_file(out / "fmea.md").find("## Three-axis faults"), std::string::npos);
+}
+
 // A user fault set in the scenario adds one last row, named "scenario".
 TEST(FmeaCli, ScenarioFaultsAddARow) {
   const fs::path out = fresh_dir("user");

@@ -40,5 +40,21 @@ TEST(FaultModes, Table5MultiAxisModes) {
   for (const FaultMode& m : modes) EXPECT_EQ(std::bitset<64>(m.faults.failed_mask).count(), 4u);
 }
 
+// Our three-axis extension: every Table 5 mode with each of the four z pairs, 64 modes of six
+// distinct failed thrusters, each the union of its Table 5 mode and its z pair.
+TEST(FaultModes, ThreeAxisModesAddAZPairToEachTable5Mode) {
+  const model::InvSimParams p = scenario();
+  const std::vector<FaultMode> xy = multi_axis_fault_modes(p);
+  const std::vector<FaultMode> modes = three_axis_fault_modes(p);
+  ASSERT_EQ(modes.size(), 64u);
+  EXPECT_EQ(modes[0].label, "d1/d1~+e1/e1~+f1/f1~");
+  EXPECT_EQ(modes[63].label, "d2/d2~+e2/e2~+f2/f2~");
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    EXPECT_EQ(std::bitset<64>(modes[k].faults.failed_mask).count(), 6u) << modes[k].label;
+    EXPECT_EQ(modes[k].faults.failed_mask & xy[k / 4].faults.failed_mask, xy[k / 4].faults.failed_mask);
+    EXPECT_EQ(modes[k].label.rfind(xy[k / 4].label + "+f", 0), 0u) << modes[k].label;
+  }
+}
+
 }  // namespace
 }  // namespace chaser::invsim
