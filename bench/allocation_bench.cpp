@@ -1,8 +1,11 @@
 // Cost of one thruster allocation (Fonod 2015 sec. II.C) on the MSR branch-A geometry, over fixed
 // sets of 1000 pre-generated demands: typical control demands (|F_j| <= 1 N, |C_j| <= 1 N m, all
-// attainable), large unattainable ones (best effort), and a 90/10 mix of the two.
+// attainable), large unattainable ones (best effort), and a 90/10 mix of the two; and the warm start
+// (AllocationWarmStart) against the cold solve on a controller-like sequence: a slowly varying
+// attainable demand M t(k), t a random walk of 0.01 per step in [0, 1]^8.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -71,7 +74,31 @@ void BM_AllocateSmallFeasible(benchmark::State& state) { run(state, 0); }
 void BM_AllocateLargeInfeasible(benchmark::State& state) { run(state, 1); }
 void BM_AllocateMixed(benchmark::State& state) { run(state, 2); }
 
+// The slowly varying sequence, solved cold (state.range(0) == 0) or with the warm start (1).
+void BM_AllocateWarmSequence(benchmark::State& state) {
+  const AllocationParams params = msr_allocation();
+  RandomStream rng(1, "bench/allocation_walk");
+  model::Ton8 t = model::Ton8::Constant(0.3);
+  std::vector<Vec6> set;
+  for (int k = 0; k < kDemandCount; ++k) {
+    for (int i = 0; i < model::kThrustersPerBranch; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
+    set.push_back(params.config * t);
+  }
+  const bool use_warm = state.range(0) == 1;
+  AllocationWarmStart warm;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const AllocationResult result = use_warm ? allocate_thrusters(params, set[k], warm) : allocate_thrusters(params, set[k]);
+    benchmark::DoNotOptimize(result);
+    k = k + 1 == set.size() ? 0 : k + 1;
+  }
+  state.counters["warm_hit_fraction"] =
+      use_warm ? static_cast<double>(warm.hits) / static_cast<double>(warm.hits + warm.solves) : 0.0;
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_AllocateSmallFeasible);
+BENCHMARK(BM_AllocateWarmSequence)->Arg(0)->Arg(1);
 BENCHMARK(BM_AllocateLargeInfeasible);
 BENCHMARK(BM_AllocateMixed);
 

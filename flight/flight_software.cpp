@@ -36,7 +36,8 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
-  ThrusterManagementOutput managed = manage_thrusters(params.management, state.active_branch, out.released_wrench);
+  ThrusterManagementOutput managed = manage_thrusters(params.management, state.active_branch, out.released_wrench,
+                                                      state.allocation_warm[static_cast<std::size_t>(state.active_branch)]);
 
   // FDIR watches branch A's command; a confirmed fault switches to branch B from this period on.
   const FdirInput fdir_in{.t_s = t_s,
@@ -48,7 +49,8 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
   if (out.fdir.recover_now) {
     state.active_branch = 1;
-    managed = manage_thrusters(params.management, state.active_branch, out.released_wrench);
+    managed = manage_thrusters(params.management, state.active_branch, out.released_wrench,
+                               state.allocation_warm[static_cast<std::size_t>(state.active_branch)]);
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
 

@@ -2,6 +2,8 @@
 // The on-board software of one control period, in order (DESIGN.md, "One control period"):
 // navigation -> guidance -> position and attitude control -> TMU -> TMF. It sees only sensor
 // measurements and its own commands, never the truth.
+#include <array>
+
 #include "core/time.hpp"
 #include "flight/attitude_control.hpp"
 #include "flight/fdir.hpp"
@@ -34,6 +36,7 @@ struct FlightState {
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
   FdirState fdir;
   int active_branch = 0;                      // 0 = A, 1 = B
+  std::array<AllocationWarmStart, 2> allocation_warm;  // per branch: optimal bases kept by the TMF
   bool initialised = false;
 };
 

@@ -25,6 +25,14 @@
 // inverse B^-1 (6x6) updated by one Gauss-Jordan step per pivot costs ~100 flops and a handful of
 // pivots suffice; everything is fixed-size on the stack, deterministic (no threads, no randomness,
 // fixed evaluation order) and bounded in time, which a general solver does not promise.
+// Warm start (AllocationWarmStart): the duals y = B^-T c_B of a basis do not depend on the demand,
+// so a basis optimal for (P) at one demand stays dual feasible for every demand; where its basic
+// values x_B = B^-1 (b - N x_N) (nonbasic on-times at their bounds, error variables at 0) are within
+// [0, 1] it is primal feasible too, hence optimal for the new demand: the answer costs one 6x6
+// product and a refinement step. Only bases whose six basic variables are on-times are kept (a basic
+// error variable would have to stay exactly 0), and the answer is checked like a solved one
+// (`attainable`); anything else falls back to the two-phase solve, whose optimal basis is then
+// kept. The infeasible case (E) is always solved.
 // Numerics: the problem is scaled by powers of two (exact) so that |M_ij| <= 1 and w_j <= 1, which
 // makes the tolerances below dimensionless; B^-1 is recomputed from an LU factorisation every
 // kReinvertPeriod pivots, and before optimality is accepted the basic values and the duals are
@@ -296,19 +304,22 @@ bool valid_input(const AllocationParams& params, const Vec6& demand) {
 
 }  // namespace
 
-AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
-  AllocationResult result;
-  fill_result(params, demand_wrench, model::Ton8::Zero(), result);
-  if (!valid_input(params, demand_wrench)) return result;  // converged = false, ton = 0
-  if ((demand_wrench.array() == 0.0).all()) {  // ton = 0 is the unique zero-cost solution
-    result.feasible = result.converged = true;
-    return result;
-  }
-  const double wrench_scale = power_of_two_above(params.config.cwiseAbs().maxCoeff());
-  const double weight_scale = power_of_two_above(params.error_weights.maxCoeff());
-  Lp lp;
-  init_phase1(lp, params.config / wrench_scale, params.error_weights / weight_scale,
-              demand_wrench / wrench_scale);
+namespace {
+
+struct Scaling {
+  double wrench = 1.0;  // [N or N m] power of two, |M_ij| / wrench <= 1
+  double weight = 1.0;  // power of two, w_j / weight <= 1
+};
+
+Scaling scaling_of(const AllocationParams& params) {
+  return {power_of_two_above(params.config.cwiseAbs().maxCoeff()),
+          power_of_two_above(params.error_weights.maxCoeff())};
+}
+
+// The two-phase solve; `lp` keeps the final basis.
+void solve(const AllocationParams& params, const Vec6& demand, const Scaling& scale, Lp& lp,
+           AllocationResult& result) {
+  init_phase1(lp, params.config / scale.wrench, params.error_weights / scale.weight, demand / scale.wrench);
   const bool phase1_done = run_simplex(lp);
   model::Ton8 ton = ton_of(lp);
   result.feasible = attainable(lp, ton);
@@ -318,8 +329,96 @@ AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& 
     result.converged = run_simplex(lp);
     ton = ton_of(lp);
   }
-  fill_result(params, demand_wrench, ton, result);
+  fill_result(params, demand, ton, result);
   result.iterations = lp.iterations;
+}
+
+// The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
+// solver's own Harris tolerance) and attain b; the refinement step is the one of recompute_basics.
+bool try_slot(const AllocationWarmStart::Slot& slot, const model::ConfigMatrix& m_scaled, const Vec6& b,
+              model::Ton8& ton) {
+  Vec6 rhs = b;
+  for (int i = 0; i < kTon; ++i)
+    if ((slot.upper >> i) & 1U) rhs -= m_scaled.col(i);
+  Vec6 x = slot.binv * rhs;
+  Vec6 residual = rhs;
+  for (int r = 0; r < kRows; ++r) residual -= m_scaled.col(slot.basis[r]) * x[r];
+  x += slot.binv * residual;
+  const double tol = kPrimalTol * b.cwiseAbs().maxCoeff();
+  if ((x.array() < -tol).any() || (x.array() > 1.0 + tol).any()) return false;
+  for (int i = 0; i < kTon; ++i) ton[i] = ((slot.upper >> i) & 1U) ? 1.0 : 0.0;
+  for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
+  const double err = (m_scaled * ton - b).cwiseAbs().maxCoeff();
+  const double terms = b.cwiseAbs().maxCoeff() + (m_scaled.cwiseAbs() * ton).maxCoeff();
+  return err <= kFeasibilityTol * terms;
+}
+
+// Keeps the optimal basis of a solved attainable demand when its basic variables are on-times.
+void remember(const Lp& lp, AllocationWarmStart& warm) {
+  AllocationWarmStart::Slot slot;
+  Mat6 basis_matrix;
+  for (int r = 0; r < kRows; ++r) {
+    if (lp.basis[r] >= kTon) return;
+    slot.basis[r] = lp.basis[r];
+    basis_matrix.col(r) = lp.a.col(lp.basis[r]);
+  }
+  for (int i = 0; i < kTon; ++i)
+    if (lp.at[i] == At::kUpper) slot.upper |= static_cast<std::uint8_t>(1U << i);
+  const Eigen::PartialPivLU<Mat6> lu(basis_matrix);  // fresh, not the updated B^-1 of the pivots
+  slot.binv = lu.inverse();
+  slot.valid = true;
+  warm.slots[static_cast<std::size_t>(warm.next_free)] = slot;
+  warm.last_hit = warm.next_free;
+  warm.next_free = (warm.next_free + 1) % AllocationWarmStart::kSlots;
+}
+
+}  // namespace
+
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
+  AllocationResult result;
+  fill_result(params, demand_wrench, model::Ton8::Zero(), result);
+  if (!valid_input(params, demand_wrench)) return result;  // converged = false, ton = 0
+  if ((demand_wrench.array() == 0.0).all()) {  // ton = 0 is the unique zero-cost solution
+    result.feasible = result.converged = true;
+    return result;
+  }
+  Lp lp;
+  solve(params, demand_wrench, scaling_of(params), lp, result);
+  return result;
+}
+
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
+                                    AllocationWarmStart& warm) {
+  AllocationResult result;
+  fill_result(params, demand_wrench, model::Ton8::Zero(), result);
+  if (!valid_input(params, demand_wrench)) return result;
+  if ((demand_wrench.array() == 0.0).all()) {
+    result.feasible = result.converged = true;
+    return result;
+  }
+  if (warm.config != params.config) {  // another problem: the kept bases do not belong to it
+    warm.slots = {};
+    warm.last_hit = warm.next_free = 0;
+    warm.config = params.config;
+  }
+  const Scaling scale = scaling_of(params);
+  const model::ConfigMatrix m_scaled = params.config / scale.wrench;
+  const Vec6 b = demand_wrench / scale.wrench;
+  for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {
+    const int s = (warm.last_hit + k) % AllocationWarmStart::kSlots;
+    model::Ton8 ton;
+    if (!warm.slots[static_cast<std::size_t>(s)].valid || !try_slot(warm.slots[static_cast<std::size_t>(s)], m_scaled, b, ton))
+      continue;
+    warm.last_hit = s;
+    ++warm.hits;
+    result.feasible = result.converged = true;
+    fill_result(params, demand_wrench, ton, result);
+    return result;
+  }
+  Lp lp;
+  solve(params, demand_wrench, scale, lp, result);
+  ++warm.solves;
+  if (result.feasible && result.converged) remember(lp, warm);
   return result;
 }
 

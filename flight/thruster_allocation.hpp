@@ -15,6 +15,9 @@
 //
 // Both are solved exactly (to floating-point pivoting accuracy) by a hand-written bounded-variable
 // primal simplex, deterministic and allocation-free; see thruster_allocation.cpp for the method.
+#include <array>
+#include <cstdint>
+
 #include "core/types.hpp"
 #include "model/thrusters.hpp"
 
@@ -41,5 +44,30 @@ struct AllocationResult {
 // bounded in time (iteration cap). Preconditions: finite config, error_weights > 0; otherwise the
 // result is ton = 0 with converged = false.
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench);
+
+// Optimal bases of earlier attainable demands of one configuration matrix, tried before a solve
+// (thruster_allocation.cpp, "Warm start"): a controller's demands change slowly, so the optimal
+// basis of (P) often stays the same and the answer is one 6x6 product instead of a simplex.
+struct AllocationWarmStart {
+  static constexpr int kSlots = 4;
+  struct Slot {
+    bool valid = false;
+    std::array<int, 6> basis{};  // on-time index basic in each row (all six basic are on-times)
+    std::uint8_t upper = 0;      // bit i: nonbasic on-time i is at its upper bound 1
+    Mat6 binv = Mat6::Zero();    // inverse of the scaled basis matrix
+  };
+  std::array<Slot, kSlots> slots{};
+  int last_hit = 0;                                  // slot tried first
+  int next_free = 0;                                 // slot replaced next (round robin)
+  model::ConfigMatrix config = model::ConfigMatrix::Zero();  // the problem the slots belong to
+  std::int64_t hits = 0;                             // answers from a slot (statistics)
+  std::int64_t solves = 0;                           // answers from the simplex
+};
+
+// The same answer as allocate_thrusters (the same optimum of (P) or (E); where (P) has several
+// optimal on-time vectors, possibly another of them), from a cached basis when one is still
+// optimal; `warm` learns the optimal basis of every attainable demand it had to solve.
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
+                                    AllocationWarmStart& warm);
 
 }  // namespace chaser::flight

@@ -14,10 +14,10 @@ ThrusterManagementParams make_thruster_management(const model::Scenario& scenari
 }
 
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, int active_branch,
-                                          const Vec6& demand_wrench) {
+                                          const Vec6& demand_wrench, AllocationWarmStart& warm) {
   ThrusterManagementOutput out;
   const AllocationParams& allocation = params.allocation[active_branch];
-  const AllocationResult result = allocate_thrusters(allocation, demand_wrench);
+  const AllocationResult result = allocate_thrusters(allocation, demand_wrench, warm);
   out.ton_active = result.ton;
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.
   for (int i = 0; i < model::kThrustersPerBranch; ++i)

@@ -25,7 +25,8 @@ struct ThrusterManagementOutput {
   bool feasible = true;            // the allocator reached the demand exactly
 };
 
+// `warm`: the active branch's warm start (flight state; one per branch, see AllocationWarmStart).
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, int active_branch,
-                                          const Vec6& demand_wrench);
+                                          const Vec6& demand_wrench, AllocationWarmStart& warm);
 
 }  // namespace chaser::flight

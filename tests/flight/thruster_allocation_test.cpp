@@ -364,6 +364,49 @@ TEST(ThrusterAllocation, Deterministic) {
   }
 }
 
+// The warm start returns an optimum of the same problem: on a controller-like sequence (a slowly
+// turning attainable demand, with jumps, unattainable demands and a change of configuration, as at
+// a branch switch) every answer has the cold solve's feasibility verdict and propellant (the LP's
+// optimal value is unique, so equal cost at a feasible point means optimal: tolerances as for CLP),
+// meets an attainable demand to the cold residual's accuracy, and is bitwise the cold answer where
+// it had to solve (unattainable demands). The fast path must actually serve most slow steps.
+TEST(ThrusterAllocation, WarmStartGivesTheColdOptimum) {
+  RandomStream rng(2024, "warm_start");
+  AllocationParams params;
+  params.config = msr_config();
+  AllocationParams other;
+  other.config = random_config(rng);
+  AllocationWarmStart warm;
+  model::Ton8 t = model::Ton8::Constant(0.3);
+  int slow_steps = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const bool switched = k >= 3000;  // the last quarter on another configuration
+    const AllocationParams& p = switched ? other : params;
+    for (int i = 0; i < kN; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
+    Vec6 d = p.config * t;
+    if (k % 97 == 0) d = random_demand(rng, p.config, 1);            // a jump
+    else if (k % 53 == 0) d = random_demand(rng, p.config, 3);       // unattainable
+    else ++slow_steps;
+    const AllocationResult cold = allocate_thrusters(p, d);
+    const std::int64_t solves_before = warm.solves;
+    const AllocationResult hot = allocate_thrusters(p, d, warm);
+    ASSERT_EQ(hot.feasible, cold.feasible) << k;
+    EXPECT_TRUE(hot.converged) << k;
+    EXPECT_NEAR(hot.propellant, cold.propellant, kRelTol * cold.propellant + kPropellantFloor) << k;
+    if (cold.feasible) {
+      const double scale = d.cwiseAbs().maxCoeff() + (p.config.cwiseAbs() * hot.ton).maxCoeff();
+      EXPECT_LE(hot.residual.cwiseAbs().maxCoeff(), 1e-11 * scale) << k;
+      EXPECT_TRUE((hot.ton.array() >= 0.0).all() && (hot.ton.array() <= 1.0).all()) << k;
+    }
+    if (warm.solves > solves_before) {
+      EXPECT_EQ(std::memcmp(hot.ton.data(), cold.ton.data(), sizeof(double) * kN), 0) << k;
+    }
+  }
+  EXPECT_EQ(warm.config, other.config);  // the slots were dropped at the switch
+  EXPECT_GT(warm.hits, slow_steps / 2) << "hits " << warm.hits << " of " << slow_steps << " slow steps";
+  std::printf("warm start: %lld of 4000 answered from a kept basis\n", static_cast<long long>(warm.hits));
+}
+
 // Invalid input never hangs or throws: it returns ton = 0 and says it did not converge.
 TEST(ThrusterAllocation, InvalidInputIsFlagged) {
   AllocationParams params;
