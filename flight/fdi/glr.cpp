@@ -20,11 +20,17 @@ Mat3 embedded_covariance(const GlrParams& params) {
   return sigma0;
 }
 
-Vec3 whiten(const GlrParams& params, const Vec3& r) {
+// L0^-1 r of the used components, Sigma0 = L0 L0^T; Sigma0 is constant, so it is factorised once
+// per run (the state belongs to one set of parameters).
+Vec3 whiten(const GlrParams& params, GlrState& state, const Vec3& r) {
+  if (!state.whitening_ready) {
+    const Eigen::LLT<Mat3> llt(embedded_covariance(params));
+    state.whitening = llt.matrixL().solve(Mat3::Identity());
+    state.whitening_ready = true;
+  }
   Vec3 used = Vec3::Zero();
   used.head(params.residual_dim) = r.head(params.residual_dim);
-  const Eigen::LLT<Mat3> llt(embedded_covariance(params));
-  return llt.matrixL().solve(used);  // L0^-1 r, Sigma0 = L0 L0^T
+  return state.whitening * used;
 }
 
 double increase_only(double rho_term, double rho) { return rho > 1.0 ? rho_term : 0.0; }
@@ -67,6 +73,14 @@ double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int
   Mat3 m = Mat3::Identity();
   m.topLeftCorner(residual_dim, residual_dim) =
       whitened_moment.topLeftCorner(residual_dim, residual_dim);
+  // Two-sided: sum_j (mu_j - log mu_j - 1) = tr m - log det m - 3 when every mu_j is above the
+  // floor, which holds when 4 det / tr^2 (a lower bound of the smallest mu_j: mu_2 mu_3 <= tr^2 / 4)
+  // is; no eigenvalues (and their trigonometry) needed.
+  if (sides == GlrSides::kTwoSided) {
+    const double trace = m.trace(), det = m.determinant();
+    if (det > 0.0 && 4.0 * det > kGlrVarianceFloor * trace * trace)
+      return 0.5 * window * (trace - std::log(det) - 3.0);
+  }
   Eigen::SelfAdjointEigenSolver<Mat3> eig;
   eig.computeDirect(m, Eigen::EigenvaluesOnly);
   double sum = 0.0;
@@ -81,7 +95,7 @@ double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int
 GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
   const int window = clamped_window(params.window);
   const bool scalar = params.variant == GlrVariant::kScalar;
-  state.samples[state.next] = scalar ? Vec3(r(0), 0.0, 0.0) : whiten(params, r);
+  state.samples[state.next] = scalar ? Vec3(r(0), 0.0, 0.0) : whiten(params, state, r);
   state.next = (state.next + 1) % window;
   state.count = std::min(state.count + 1, window);
   GlrOutput out;

@@ -64,6 +64,8 @@ struct GlrState {
   std::array<Vec3, kMaxGlrWindow> samples{};  // ring buffer: r_1 (kScalar) or L0^-1 r (kWhitened)
   int next = 0;                               // slot of the next sample
   int count = 0;                              // samples stored, up to the window
+  Mat3 whitening = Mat3::Identity();          // L0^-1 of the embedded Sigma0, factorised at the first step
+  bool whitening_ready = false;
 };
 
 struct GlrOutput {
