@@ -46,14 +46,14 @@ struct LoopFixture {
   TimeNs period_ns = from_seconds(scenario.control_period_s);
   TimeNs t_ns = 0;
 
-  explicit LoopFixture(bool fdi_on = true)
-      : scenario(with_fdi(msr_scenario(), fdi_on)),
+  explicit LoopFixture(bool fdi_on = true, bool deficit = true)
+      : scenario(with_fdi(msr_scenario(), fdi_on, deficit)),
         plant(plant::make_plant(scenario, start_state(scenario), scenario.seed)) {
     for (int k = 0; k < 5000; ++k) step();
   }
-  static model::Scenario with_fdi(model::Scenario s, bool on) {
+  static model::Scenario with_fdi(model::Scenario s, bool on, bool deficit) {
     s.fdi.position.enabled = s.fdi.attitude.enabled = on;
-    if (!on) s.fdi.isolation_method = model::IsolationMethod::kPaper;  // no deficit bank, no detector
+    if (!on || !deficit) s.fdi.isolation_method = model::IsolationMethod::kPaper;  // no deficit bank, no detector
     return s;
   }
   static plant::RigidState start_state(const model::Scenario& s) {
@@ -72,14 +72,16 @@ struct LoopFixture {
   }
 };
 
-// One full control period: sensors, flight software, thruster model and propagation, with both
-// FDI schemes on (the scenario's) and off: the difference is what the FDI costs.
-void BM_ControlPeriod(benchmark::State& state, bool fdi_on) {
-  LoopFixture f(fdi_on);
+// One full control period: sensors, flight software, thruster model and propagation, with the
+// scenario's FDI (both published schemes, Chaser's deficit bank and detector), with the published
+// method alone (isolation_method: paper), and off: the differences are what each costs.
+void BM_ControlPeriod(benchmark::State& state, bool fdi_on, bool deficit) {
+  LoopFixture f(fdi_on, deficit);
   for (auto _ : state) f.step();
 }
-BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_on, true);
-BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_off, false);
+BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_on, true, true);
+BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_published, true, false);
+BENCHMARK_CAPTURE(BM_ControlPeriod, fdi_off, false, false);
 
 // Thruster model and propagation of one period with a fixed command: T1 for 30 % and its partner
 // T5 for 60 % of the period (a pure torque plus a net force; five pieces with the delay).
