@@ -88,6 +88,25 @@ TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
   EXPECT_TRUE(fs::exists(out / "plots" / "scheme_II" / "31_d1-d2n+e2-e1n.png")) << plot.output;
 }
 
+// python/plot_invsim.py on a small fake fmea directory (2 layouts x 3 modes: classes I-III, one
+// out of view): 6 mode plots, 2 overviews and the layouts' comparison; a directory that is not an
+// fmea output is exit 2 naming the missing file.
+TEST(FmeaCli, PlotterDrawsAFakeDirectoryAndRejectsAWrongOne) {
+  const fs::path fake = fresh_dir("fake");
+  ASSERT_EQ(chaser::testing::run_shell("/usr/bin/python3 python/tests/make_fake_fmea.py " + fake.string()).exit_code, 0);
+  const CommandResult plot = chaser::testing::run_shell("/usr/bin/python3 python/plot_invsim.py " + fake.string());
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  int pngs = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(fake / "plots")) pngs += entry.path().extension() == ".png";
+  EXPECT_EQ(pngs, 9) << plot.output;
+  EXPECT_TRUE(fs::exists(fake / "plots" / "configurations.png"));
+  const fs::path empty = fresh_dir("empty");
+  fs::create_directories(empty);
+  const CommandResult wrong = chaser::testing::run_shell("/usr/bin/python3 python/plot_invsim.py " + empty.string());
+  EXPECT_EQ(wrong.exit_code, 2) << wrong.output;
+  EXPECT_NE(wrong.output.find("fmea.csv"), std::string::npos) << wrong.output;
+}
+
 // Without free choices, --optimize is bad input (exit 2), not an empty search; an empty list of
 // choices is a scenario error naming its key.
 TEST(FmeaCli, OptimizeWithoutChoicesIsBadInput) {
