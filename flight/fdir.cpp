@@ -173,7 +173,7 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
-    out.position = fdi::step_fdi_scheme(p.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption);
+    fdi::step_fdi_scheme(p.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption, out.position);
     if (p.deficit_isolation) deficit_confirmation(p, state, state.position_deficit, state.position, out.position);
     if (out.position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
   }
@@ -181,8 +181,8 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     // Eq. 16-17: u_c = M_C T_on; y is the measured attitude about the target-pointing reference,
     // the small angles of the linearised model (eq. 15).
     const Vec3 angles = attitude_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
-    out.attitude =
-        fdi::step_fdi_scheme(p.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption);
+    fdi::step_fdi_scheme(p.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption,
+                         out.attitude);
     if (p.deficit_isolation) deficit_confirmation(p, state, state.attitude_deficit, state.attitude, out.attitude);
     if (out.attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }

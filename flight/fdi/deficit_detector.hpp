@@ -18,7 +18,8 @@
 // of Fonod 2015's ranges are 10-100 % of a thruster. Partners (same torque) are alike here; the
 // deficit bank's position rows tell them apart after the alarm.
 //
-// Cost: about 150 flops per period to keep the sums and the 8 gains every `evaluate_every` periods.
+// Cost: about 150 flops per period to keep the sums and the 8 gains every `evaluate_every` periods
+// (bench: BM_DeficitDetectorPeriod).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -40,19 +41,30 @@ struct DeficitDetectorParams {
 
 std::vector<std::string> validate(const DeficitDetectorParams& params);
 
-// The window's five sums per thruster: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy].
-using DeficitSums = Eigen::Matrix<double, 5, model::kThrustersPerBranch>;
+// The window's five sums, row i for thruster i: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy]. Column-major:
+// each sum of the eight thrusters is contiguous, so the fits run on whole columns.
+using DeficitSums = Eigen::Matrix<double, model::kThrustersPerBranch, 5>;
 
 struct DeficitDetectorState {
   std::array<DeficitSums, kMaxDeficitDetectorWindow> ring{};  // each row's contribution
   DeficitSums sums = DeficitSums::Zero();
   std::int64_t rows = 0;          // torque rows added
+  int slot = 0;                   // rows % window: the ring slot of the next row
+  int phase = 0;                  // rows % evaluate_every (counters: no integer division per period)
   bool alarm = false;             // latched
   std::int64_t alarm_sample = -1; // sample index of the first alarm
   double statistic = 0;           // [-] max_i S_i (material or not), last evaluation
   int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
                                   // a partner's twin (same torque) is as likely
 };
+
+// fit_deficit (deficit_isolation.hpp) of every thruster's row of the sums, written as selects
+// without branches so that the compiler vectorises it: equal to fit_deficit bit for bit (the same
+// operations in the same order on each lane; tested).
+struct DeficitFits {
+  DeficitVec8 a = DeficitVec8::Zero(), b = DeficitVec8::Zero(), gain = DeficitVec8::Zero();
+};
+DeficitFits fit_deficits(const DeficitSums& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,

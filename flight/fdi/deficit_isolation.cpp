@@ -139,23 +139,23 @@ Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankSt
 
 // Maximise 2 g'x - x'Hx (the drop of the RSS) over a >= 0, b <= 0: every fault case has a
 // non-negative constant deficit and a non-positive command-proportional one (docs/fdi.md). The
-// optimum is the unconstrained one if feasible, else on a face or at the origin: try all, keep the best.
+// optimum is the unconstrained one if feasible, else on a face or at the origin: the better face.
+// At an optimum (unconstrained, or on a face) H x = g in the free coordinates, so the drop is g'x:
+// no cancellation between 2 g'x and x'Hx. fit_deficits (deficit_detector.hpp) is the same
+// arithmetic for eight hypotheses at once and must stay equal to this bit for bit.
 DeficitFit fit_deficit(const DeficitNormal& n) {
-  auto value = [&](double a, double b) {
-    return 2.0 * (n.ga * a + n.gb * b) - (n.haa * a * a + 2.0 * n.hab * a * b + n.hbb * b * b);
-  };
-  DeficitFit best{0.0, 0.0, 0.0};
   const double det = n.haa * n.hbb - n.hab * n.hab;
   if (det > 0.0) {
     const double a = (n.hbb * n.ga - n.hab * n.gb) / det;
     const double b = (n.haa * n.gb - n.hab * n.ga) / det;
-    if (a >= 0.0 && b <= 0.0) return DeficitFit{a, b, value(a, b)};
+    if (a >= 0.0 && b <= 0.0) return DeficitFit{a, b, a * n.ga + b * n.gb};
   }
   const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;
-  if (const double v = value(a_only, 0.0); v > best.gain) best = DeficitFit{a_only, 0.0, v};
   const double b_only = n.hbb > 0.0 ? std::min(n.gb / n.hbb, 0.0) : 0.0;
-  if (const double v = value(0.0, b_only); v > best.gain) best = DeficitFit{0.0, b_only, v};
-  return best;
+  const double gain_a = std::max(0.0, a_only * n.ga);  // +0 at the origin, never -0
+  const double gain_b = std::max(0.0, b_only * n.gb);
+  if (gain_b > gain_a) return DeficitFit{0.0, b_only, gain_b};
+  return DeficitFit{a_only, 0.0, gain_a};
 }
 
 std::vector<std::string> validate(const DeficitIsolationParams& p) {
@@ -184,13 +184,14 @@ void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank
     const Vec3& y = bank.last_torque_row;
     const double alpha = std::min(1.0, p.period_s / p.noise_time_constant_s);
     bank.torque_mean_square += alpha * (y.cwiseProduct(y) - bank.torque_mean_square);
-    if (bank.count % p.noise_snapshot_periods == 0) {
+    if (bank.snapshot_phase == 0) {
       bank.torque_mean_square_lagged = bank.torque_mean_square_snapshot;
       bank.torque_mean_square_snapshot = bank.torque_mean_square;
     }
   }
   bank.ring[static_cast<std::size_t>(bank.count % kMaxDeficitWindow)] = sample;
   ++bank.count;
+  bank.snapshot_phase = bank.snapshot_phase + 1 < p.noise_snapshot_periods ? bank.snapshot_phase + 1 : 0;
 }
 
 DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, const DeficitBankState& bank,

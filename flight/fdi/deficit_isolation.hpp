@@ -97,6 +97,7 @@ struct DeficitSample {
 struct DeficitBankState {
   std::array<DeficitSample, kMaxDeficitWindow> ring{};
   std::int64_t count = 0;               // samples pushed; sample p lives in ring[p % size]
+  int snapshot_phase = 0;               // count % noise_snapshot_periods (kept, not divided per period)
   Vec3 torque_mean_square = Vec3::Zero();  // [N^2 m^2] EW mean square of the fault-free torque rows
   // The same estimate as it was 1-2 snapshot intervals ago (infinite until then). The weights use
   // the smaller of the two, so the rows of a fault that has not yet raised an alarm (and so has
@@ -161,7 +162,7 @@ struct DeficitNormal {
   double haa = 0, hab = 0, hbb = 0, ga = 0, gb = 0;
 };
 struct DeficitFit {
-  double a = 0, b = 0, gain = 0;  // gain: 2 g'x - x'Hx at the optimum x = (a, b), >= 0
+  double a = 0, b = 0, gain = 0;  // gain: 2 g'x - x'Hx at the optimum x = (a, b) (= g'x there), >= 0
 };
 DeficitFit fit_deficit(const DeficitNormal& normal);
 

@@ -17,9 +17,8 @@ std::vector<std::string> validate(const FdiSchemeParams& params) {
   return problems;
 }
 
-FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
-                                const Vec3& u_c, const model::Ton8& ton, bool over_consumption) {
-  FdiSchemeOutput out;
+void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
+                     const model::Ton8& ton, bool over_consumption, FdiSchemeOutput& out) {
   out.residual = step_residual(params.residual, state.residual, y, u_c);
   const GlrOutput glr = step_glr(params.glr, state.glr, out.residual);
   out.glr = glr.statistic;
@@ -32,12 +31,13 @@ FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& s
         step_isolation(params.isolation, state.isolation, out.residual, ton, state.alarm, over_consumption);
     if (state.confirmed < 0 && iso.confirmed >= 0) state.confirmed = iso.confirmed;
     out.candidate = iso.candidate;
+  } else {
+    out.candidate = -1;
   }
   out.alarm = state.alarm;
   out.confirmed = state.confirmed;
   out.alarm_time_s = state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
   ++state.period;
-  return out;
 }
 
 }  // namespace chaser::flight::fdi

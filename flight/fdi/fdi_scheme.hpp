@@ -51,7 +51,15 @@ std::vector<std::string> validate(const FdiSchemeParams& params);
 // One period. y: measurement [m or rad]; u_c: model input [N in LVLH or N m] (residual_generator.hpp);
 // ton: commanded scaled on-times of the active branch this period; over_consumption: the event
 // resolution's flag (event_resolution.hpp), read by the paper's isolation criterion.
-FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
-                                const Vec3& u_c, const model::Ton8& ton, bool over_consumption);
+// The result is written into `out` (every field): the FDIR supervisor passes its own output, which
+// saves copying a returned struct through the stack every period (a store-forwarding stall).
+void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
+                     const model::Ton8& ton, bool over_consumption, FdiSchemeOutput& out);
+inline FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
+                                       const Vec3& u_c, const model::Ton8& ton, bool over_consumption) {
+  FdiSchemeOutput out;
+  step_fdi_scheme(params, state, y, u_c, ton, over_consumption, out);
+  return out;
+}
 
 }  // namespace chaser::flight::fdi

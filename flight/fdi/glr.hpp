@@ -28,7 +28,8 @@
 //     per dimension (two-sided) instead of infinity.
 //   - Window not yet full (fewer than N_d samples since the start): S = 0 and no alarm.
 //   - No drift: the window sums are recomputed from the ring buffer every period (N_d <= 128
-//     samples, at most 6 products each), not updated by add-and-subtract.
+//     samples, at most 6 products each), not updated by add-and-subtract. The scalar test keeps
+//     r_1^2 itself in the ring and sums it with two accumulators (half the dependency chain).
 #include <array>
 #include <string>
 #include <vector>
@@ -61,7 +62,8 @@ struct GlrParams {
 };
 
 struct GlrState {
-  std::array<Vec3, kMaxGlrWindow> samples{};  // ring buffer: r_1 (kScalar) or L0^-1 r (kWhitened)
+  std::array<Vec3, kMaxGlrWindow> samples{};  // ring buffer of L0^-1 r (kWhitened)
+  std::array<double, kMaxGlrWindow> r1_squared{};  // ring buffer of r_1^2 (kScalar), same slots
   int next = 0;                               // slot of the next sample
   int count = 0;                              // samples stored, up to the window
   Mat3 whitening = Mat3::Identity();          // L0^-1 of the embedded Sigma0, factorised at the first step

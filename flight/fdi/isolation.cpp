@@ -25,7 +25,7 @@ void store_sample(const IsolationParams& params, IsolationState& state, const Ve
     const Mat68 driven = f.B_thr * ton.asDiagonal();
     state.signature_state = f.A_c * state.signature_state + driven;  // z_i(k + 1)
   }
-  state.next = (state.next + 1) % window;
+  state.next = state.next + 1 < window ? state.next + 1 : 0;
   state.count = std::min(state.count + 1, window);
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/constants.hpp"
 
 namespace chaser {
@@ -13,6 +15,26 @@ TEST(Rotation, RotationVectorRoundTrip) {
     const Quat q = quat_from_rotation_vector(v);
     EXPECT_NEAR(q.norm(), 1.0, 1e-15);
     EXPECT_LT((rotation_vector_from_quat(q) - v).norm(), 1e-14 * (1.0 + v.norm()));
+  }
+}
+
+// The small-angle series equals the atan2 formula (2 atan2(|v|, w) / |v|) v within 2 ulp of the
+// angle, from 1e-12 rad up to and across the switch at x = |v| / w = 1/128 (0.895 deg), for
+// quaternions of either sign; above it the atan2 branch is used unchanged.
+TEST(Rotation, SmallAngleSeriesEqualsAtan2) {
+  const Vec3 axis = Vec3(0.3, -0.8, 0.52).normalized();
+  const double switch_angle = 2.0 * std::atan(1.0 / 128.0);
+  for (double angle = 1e-12; angle < 0.1; angle *= 1.05) {
+    for (const double a : {angle, switch_angle * (1 - 1e-12), switch_angle * (1 + 1e-12)}) {
+      Quat q(Eigen::AngleAxisd(a, axis));
+      for (const double sign : {1.0, -1.0}) {
+        const Quat qs(sign * q.coeffs());
+        const Quat qp = qs.w() < 0.0 ? Quat(-qs.coeffs()) : qs;
+        const double n = qp.vec().norm();
+        const Vec3 reference = (2.0 * std::atan2(n, qp.w()) / n) * qp.vec();
+        EXPECT_LE((rotation_vector_from_quat(qs) - reference).norm(), 4.5e-16 * reference.norm()) << a;
+      }
+    }
   }
 }
 
