@@ -26,8 +26,9 @@ DeficitFits fit_deficits(const DeficitSums& sums) {
   DeficitFits f;
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     const double det = haa[i] * hbb[i] - hab[i] * hab[i];
-    const double a_free = (hbb[i] * ga[i] - hab[i] * gb[i]) / det;
-    const double b_free = (haa[i] * gb[i] - hab[i] * ga[i]) / det;
+    const double inv_det = 1.0 / det;
+    const double a_free = (hbb[i] * ga[i] - hab[i] * gb[i]) * inv_det;
+    const double b_free = (haa[i] * gb[i] - hab[i] * ga[i]) * inv_det;
     const double gain_free = a_free * ga[i] + b_free * gb[i];
     const double a_ratio = std::max(ga[i] / haa[i], 0.0), b_ratio = std::min(gb[i] / hbb[i], 0.0);
     const double a_only = haa[i] > 0.0 ? a_ratio : 0.0;

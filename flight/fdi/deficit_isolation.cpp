@@ -124,7 +124,8 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   // Euler's equation over one period, less the commanded torque: what the thrusters did not do.
   const Mat3& I = p.inertia_kgm2;
   const Vec3& w = now.omega_body_radps;
-  return I * (next.omega_body_radps - w) / p.period_s + w.cross(I * w) - p.torque_body_Nm * now.ton;
+  const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
+  return I * d_omega_dt + w.cross(I * w) - p.torque_body_Nm * now.ton;
 }
 
 Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
@@ -146,8 +147,9 @@ Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankSt
 DeficitFit fit_deficit(const DeficitNormal& n) {
   const double det = n.haa * n.hbb - n.hab * n.hab;
   if (det > 0.0) {
-    const double a = (n.hbb * n.ga - n.hab * n.gb) / det;
-    const double b = (n.haa * n.gb - n.hab * n.ga) / det;
+    const double inv_det = 1.0 / det;
+    const double a = (n.hbb * n.ga - n.hab * n.gb) * inv_det;
+    const double b = (n.haa * n.gb - n.hab * n.ga) * inv_det;
     if (a >= 0.0 && b <= 0.0) return DeficitFit{a, b, a * n.ga + b * n.gb};
   }
   const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;

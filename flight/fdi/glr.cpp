@@ -95,29 +95,34 @@ double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int
 
 GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
   const int window = clamped_window(params.window);
-  const bool scalar = params.variant == GlrVariant::kScalar;
-  if (scalar)
-    state.r1_squared[state.next] = r(0) * r(0);
-  else
-    state.samples[state.next] = whiten(params, state, r);
-  state.next = state.next + 1 < window ? state.next + 1 : 0;  // no integer division in the loop
+  const int slot = state.next < window ? state.next : 0;  // the oldest sample's slot takes r(k)
+  state.next = slot + 1 < window ? slot + 1 : 0;          // no integer division in the loop
   state.count = std::min(state.count + 1, window);
+  const bool full = state.count == window;                // else S = 0 and no decision
   GlrOutput out;
-  if (state.count < window) return out;  // window not yet full: S = 0, no decision
-  if (scalar) {
-    double even = 0.0, odd = 0.0;  // two chains: the sum is latency-bound, not throughput-bound
-    int j = 0;
-    for (; j + 1 < window; j += 2) even += state.r1_squared[j], odd += state.r1_squared[j + 1];
-    if (j < window) even += state.r1_squared[j];
-    const double sum_r2 = even + odd;
-    out.statistic = glr_scalar_statistic(sum_r2, window, params.sigma0);
-    if (params.sides == GlrSides::kIncreaseOnly && sum_r2 <= window * params.sigma0 * params.sigma0)
-      out.statistic = 0.0;
+  if (params.variant == GlrVariant::kScalar) {
+    const double r1_squared = r(0) * r(0);
+    if (full) {
+      // The other N_d - 1 samples are summed before the slot is overwritten (a value just stored,
+      // read back by a wider load, would stall the loop), in two chains (the sum is latency-bound).
+      const std::array<double, kMaxGlrWindow>& ring = state.r1_squared;
+      double even = 0.0, odd = 0.0;
+      int j = 0;
+      for (; j + 1 < window; j += 2) even += j == slot ? 0.0 : ring[j], odd += j + 1 == slot ? 0.0 : ring[j + 1];
+      if (j < window && j != slot) even += ring[j];
+      const double sum_r2 = even + odd + r1_squared;
+      out.statistic = glr_scalar_statistic(sum_r2, window, params.sigma0);
+      if (params.sides == GlrSides::kIncreaseOnly && sum_r2 <= window * params.sigma0 * params.sigma0)
+        out.statistic = 0.0;
+    }
+    state.r1_squared[slot] = r1_squared;
   } else {
-    Mat3 moment = Mat3::Zero();
-    for (int j = 0; j < window; ++j) moment.noalias() += state.samples[j] * state.samples[j].transpose();
-    out.statistic =
-        glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides);
+    state.samples[slot] = whiten(params, state, r);
+    if (full) {
+      Mat3 moment = Mat3::Zero();
+      for (int j = 0; j < window; ++j) moment.noalias() += state.samples[j] * state.samples[j].transpose();
+      out.statistic = glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides);
+    }
   }
   out.alarm = out.statistic > params.threshold;  // eq. 40
   return out;
