@@ -112,14 +112,20 @@ void init_phase1(Lp& lp, const model::ConfigMatrix& m_scaled, const Vec6& w_scal
 
 // Basic values from the nonbasic ones, x_B = B^-1 (b - N x_N), plus one refinement step with the
 // residual, which removes the error B^-1 has gathered through its updates.
+// x_B = B^-1 rhs with one step of iterative refinement (B's columns: a's columns `basis`).
+template <class Columns>
+Vec6 refined_basics(const Mat6& binv, const Columns& a, const std::array<int, kRows>& basis, const Vec6& rhs) {
+  Vec6 x_basic = binv * rhs;
+  Vec6 residual = rhs;
+  for (int r = 0; r < kRows; ++r) residual -= a.col(basis[r]) * x_basic[r];
+  return x_basic + binv * residual;
+}
+
 void recompute_basics(Lp& lp) {
   Vec6 rhs = lp.b;
   for (int j = 0; j < kCols; ++j)
     if (lp.at[j] != At::kBasic && lp.x[j] != 0.0) rhs -= lp.a.col(j) * lp.x[j];
-  Vec6 x_basic = lp.binv * rhs;
-  Vec6 residual = rhs;
-  for (int r = 0; r < kRows; ++r) residual -= lp.a.col(lp.basis[r]) * x_basic[r];
-  x_basic += lp.binv * residual;
+  const Vec6 x_basic = refined_basics(lp.binv, lp.a, lp.basis, rhs);
   for (int r = 0; r < kRows; ++r) lp.x[lp.basis[r]] = x_basic[r];
   lp.fresh = true;
 }
@@ -289,22 +295,31 @@ void fill_result(const AllocationParams& params, const Vec6& demand, const model
   result.weighted_error = params.error_weights.cwiseProduct(result.residual.cwiseAbs()).sum();
 }
 
-// Phase-1 verdict: the residual is zero up to rounding of the terms that form it.
-bool attainable(const Lp& lp, const model::Ton8& ton) {
-  const auto m = lp.a.leftCols<kTon>();
-  const double residual = (m * ton - lp.b).cwiseAbs().maxCoeff();
-  const double terms = lp.b.cwiseAbs().maxCoeff() + (m.cwiseAbs() * ton).maxCoeff();
+// Phase-1 verdict: M ton = b up to rounding of the terms that form it (M, b scaled).
+template <class Config>
+bool attains(const Config& m, const Vec6& b, const model::Ton8& ton) {
+  const double residual = (m * ton - b).cwiseAbs().maxCoeff();
+  const double terms = b.cwiseAbs().maxCoeff() + (m.cwiseAbs() * ton).maxCoeff();
   return residual <= kFeasibilityTol * terms;
 }
+bool attainable(const Lp& lp, const model::Ton8& ton) { return attains(lp.a.leftCols<kTon>(), lp.b, ton); }
 
 bool valid_input(const AllocationParams& params, const Vec6& demand) {
   return demand.allFinite() && params.config.allFinite() && params.error_weights.allFinite() &&
          (params.error_weights.array() > 0.0).all();
 }
 
-}  // namespace
-
-namespace {
+// The answers that need no LP: invalid input (ton = 0, converged = false) and a zero demand (ton = 0
+// is the unique zero-cost solution). True when `result` is final.
+bool answered_without_lp(const AllocationParams& params, const Vec6& demand, AllocationResult& result) {
+  fill_result(params, demand, model::Ton8::Zero(), result);
+  if (!valid_input(params, demand)) return true;
+  if ((demand.array() == 0.0).all()) {
+    result.feasible = result.converged = true;
+    return true;
+  }
+  return false;
+}
 
 struct Scaling {
   double wrench = 1.0;  // [N or N m] power of two, |M_ij| / wrench <= 1
@@ -334,23 +349,18 @@ void solve(const AllocationParams& params, const Vec6& demand, const Scaling& sc
 }
 
 // The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
-// solver's own Harris tolerance) and attain b; the refinement step is the one of recompute_basics.
+// solver's own Harris tolerance) and attain b, as a solved answer must.
 bool try_slot(const AllocationWarmStart::Slot& slot, const model::ConfigMatrix& m_scaled, const Vec6& b,
               model::Ton8& ton) {
   Vec6 rhs = b;
   for (int i = 0; i < kTon; ++i)
     if ((slot.upper >> i) & 1U) rhs -= m_scaled.col(i);
-  Vec6 x = slot.binv * rhs;
-  Vec6 residual = rhs;
-  for (int r = 0; r < kRows; ++r) residual -= m_scaled.col(slot.basis[r]) * x[r];
-  x += slot.binv * residual;
+  const Vec6 x = refined_basics(slot.binv, m_scaled, slot.basis, rhs);
   const double tol = kPrimalTol * b.cwiseAbs().maxCoeff();
   if ((x.array() < -tol).any() || (x.array() > 1.0 + tol).any()) return false;
   for (int i = 0; i < kTon; ++i) ton[i] = ((slot.upper >> i) & 1U) ? 1.0 : 0.0;
   for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
-  const double err = (m_scaled * ton - b).cwiseAbs().maxCoeff();
-  const double terms = b.cwiseAbs().maxCoeff() + (m_scaled.cwiseAbs() * ton).maxCoeff();
-  return err <= kFeasibilityTol * terms;
+  return attains(m_scaled, b, ton);
 }
 
 // Keeps the optimal basis of a solved attainable demand when its basic variables are on-times.
@@ -376,12 +386,7 @@ void remember(const Lp& lp, AllocationWarmStart& warm) {
 
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
   AllocationResult result;
-  fill_result(params, demand_wrench, model::Ton8::Zero(), result);
-  if (!valid_input(params, demand_wrench)) return result;  // converged = false, ton = 0
-  if ((demand_wrench.array() == 0.0).all()) {  // ton = 0 is the unique zero-cost solution
-    result.feasible = result.converged = true;
-    return result;
-  }
+  if (answered_without_lp(params, demand_wrench, result)) return result;
   Lp lp;
   solve(params, demand_wrench, scaling_of(params), lp, result);
   return result;
@@ -390,12 +395,7 @@ AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& 
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
                                     AllocationWarmStart& warm) {
   AllocationResult result;
-  fill_result(params, demand_wrench, model::Ton8::Zero(), result);
-  if (!valid_input(params, demand_wrench)) return result;
-  if ((demand_wrench.array() == 0.0).all()) {
-    result.feasible = result.converged = true;
-    return result;
-  }
+  if (answered_without_lp(params, demand_wrench, result)) return result;
   if (warm.config != params.config) {  // another problem: the kept bases do not belong to it
     warm.slots = {};
     warm.last_hit = warm.next_free = 0;
@@ -406,9 +406,9 @@ AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& 
   const Vec6 b = demand_wrench / scale.wrench;
   for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {
     const int s = (warm.last_hit + k) % AllocationWarmStart::kSlots;
+    const AllocationWarmStart::Slot& slot = warm.slots[static_cast<std::size_t>(s)];
     model::Ton8 ton;
-    if (!warm.slots[static_cast<std::size_t>(s)].valid || !try_slot(warm.slots[static_cast<std::size_t>(s)], m_scaled, b, ton))
-      continue;
+    if (!slot.valid || !try_slot(slot, m_scaled, b, ton)) continue;
     warm.last_hit = s;
     ++warm.hits;
     result.feasible = result.converged = true;

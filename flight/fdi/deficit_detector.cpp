@@ -1,8 +1,5 @@
 #include "flight/fdi/deficit_detector.hpp"
 
-#include <algorithm>
-
-
 namespace chaser::flight::fdi {
 
 std::vector<std::string> validate(const DeficitDetectorParams& p) {
@@ -13,39 +10,6 @@ std::vector<std::string> validate(const DeficitDetectorParams& p) {
   if (!(p.min_a >= 0.0) || !(p.min_b >= 0.0)) problems.push_back("min_a, min_b: must be >= 0");
   if (p.evaluate_every < 1) problems.push_back("evaluate_every: must be >= 1");
   return problems;
-}
-
-DeficitFits fit_deficits(const DeficitSums& sums) {
-  // One lane per thruster; every candidate (free optimum, each face) is computed on every lane and
-  // the answer selected, as fit_deficit decides it. Lanes that divide by zero are never selected.
-  const double* haa = sums.col(0).data();
-  const double* hab = sums.col(1).data();
-  const double* hbb = sums.col(2).data();
-  const double* ga = sums.col(3).data();
-  const double* gb = sums.col(4).data();
-  DeficitFits f;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
-    const double det = haa[i] * hbb[i] - hab[i] * hab[i];
-    const double inv_det = 1.0 / det;
-    const double a_free = (hbb[i] * ga[i] - hab[i] * gb[i]) * inv_det;
-    const double b_free = (haa[i] * gb[i] - hab[i] * ga[i]) * inv_det;
-    const double gain_free = a_free * ga[i] + b_free * gb[i];
-    const double a_ratio = std::max(ga[i] / haa[i], 0.0), b_ratio = std::min(gb[i] / hbb[i], 0.0);
-    const double a_only = haa[i] > 0.0 ? a_ratio : 0.0;
-    const double b_only = hbb[i] > 0.0 ? b_ratio : 0.0;
-    // std::max(0.0, x): +0 at the origin, never -0. (A select between a product and 0 would stop
-    // the vectoriser: under -ftrapping-math it will not compute the product speculatively.)
-    const double gain_a = std::max(0.0, a_only * ga[i]);
-    const double gain_b = std::max(0.0, b_only * gb[i]);
-    const bool b_face = gain_b > gain_a;
-    double a = b_face ? 0.0 : a_only, b = b_face ? b_only : 0.0, gain = b_face ? gain_b : gain_a;
-    // Nested, not &&: a short-circuit is a branch, and the loop would not vectorise.
-    a = det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? a_free : a) : a) : a;
-    b = det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? b_free : b) : b) : b;
-    gain = det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? gain_free : gain) : gain) : gain;
-    f.a(i) = a, f.b(i) = b, f.gain(i) = gain;
-  }
-  return f;
 }
 
 void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolationParams& bp,

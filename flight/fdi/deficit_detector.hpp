@@ -19,7 +19,7 @@
 // deficit bank's position rows tell them apart after the alarm.
 //
 // Cost: about 150 flops per period to keep the sums and the 8 gains every `evaluate_every` periods
-// (bench: BM_DeficitDetectorPeriod).
+// (bench: BM_FdirPeriod/fdi_on less BM_FdirPeriod/fdi_published).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -41,9 +41,9 @@ struct DeficitDetectorParams {
 
 std::vector<std::string> validate(const DeficitDetectorParams& params);
 
-// The window's five sums, row i for thruster i: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy]. Column-major:
-// each sum of the eight thrusters is contiguous, so the fits run on whole columns.
-using DeficitSums = Eigen::Matrix<double, model::kThrustersPerBranch, 5>;
+// The window's five sums, row i for thruster i: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy], which are
+// the normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits).
+using DeficitSums = DeficitNormals8;
 
 struct DeficitDetectorState {
   std::array<DeficitSums, kMaxDeficitDetectorWindow> ring{};  // each row's contribution
@@ -57,14 +57,6 @@ struct DeficitDetectorState {
   int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
                                   // a partner's twin (same torque) is as likely
 };
-
-// fit_deficit (deficit_isolation.hpp) of every thruster's row of the sums, written as selects
-// without branches so that the compiler vectorises it: equal to fit_deficit bit for bit (the same
-// operations in the same order on each lane; tested).
-struct DeficitFits {
-  DeficitVec8 a = DeficitVec8::Zero(), b = DeficitVec8::Zero(), gain = DeficitVec8::Zero();
-};
-DeficitFits fit_deficits(const DeficitSums& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,

@@ -138,26 +138,53 @@ Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankSt
   return (sigma0_sq + pulse.cwiseProduct(pulse)).cwiseInverse();
 }
 
+namespace {
+
 // Maximise 2 g'x - x'Hx (the drop of the RSS) over a >= 0, b <= 0: every fault case has a
 // non-negative constant deficit and a non-positive command-proportional one (docs/fdi.md). The
-// optimum is the unconstrained one if feasible, else on a face or at the origin: the better face.
-// At an optimum (unconstrained, or on a face) H x = g in the free coordinates, so the drop is g'x:
-// no cancellation between 2 g'x and x'Hx. fit_deficits (deficit_detector.hpp) is the same
-// arithmetic for eight hypotheses at once and must stay equal to this bit for bit.
-DeficitFit fit_deficit(const DeficitNormal& n) {
-  const double det = n.haa * n.hbb - n.hab * n.hab;
-  if (det > 0.0) {
-    const double inv_det = 1.0 / det;
-    const double a = (n.hbb * n.ga - n.hab * n.gb) * inv_det;
-    const double b = (n.haa * n.gb - n.hab * n.ga) * inv_det;
-    if (a >= 0.0 && b <= 0.0) return DeficitFit{a, b, a * n.ga + b * n.gb};
+// optimum is the unconstrained one if feasible, else on the better face (the origin when neither
+// gains). At an optimum H x = g in the free coordinates, so the drop is g'x: no cancellation
+// between 2 g'x and x'Hx. Every candidate is computed and the answer selected, without branches,
+// so that fit_deficits' loop over eight hypotheses vectorises: the compiler will not compute a
+// product or a quotient speculatively (-ftrapping-math), hence all are computed up front and only
+// ready values are selected; a && would be a branch, hence the nested selects. The quotients of a
+// singular lane (det or hbb = 0: a thruster never commanded) are never selected.
+inline DeficitFit fit_lane(double haa, double hab, double hbb, double ga, double gb) {
+  const double det = haa * hbb - hab * hab;
+  const double inv_det = 1.0 / det;
+  const double a_free = (hbb * ga - hab * gb) * inv_det;
+  const double b_free = (haa * gb - hab * ga) * inv_det;
+  const double gain_free = a_free * ga + b_free * gb;
+  const double a_ratio = std::max(ga / haa, 0.0), b_ratio = std::min(gb / hbb, 0.0);
+  const double a_only = haa > 0.0 ? a_ratio : 0.0;
+  const double b_only = hbb > 0.0 ? b_ratio : 0.0;
+  const double gain_a = std::max(0.0, a_only * ga);  // +0 at the origin, never -0
+  const double gain_b = std::max(0.0, b_only * gb);
+  const bool b_face = gain_b > gain_a;
+  const double a_face = b_face ? 0.0 : a_only, b_face_value = b_face ? b_only : 0.0;
+  const double gain_face = b_face ? gain_b : gain_a;
+  return DeficitFit{
+      det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? a_free : a_face) : a_face) : a_face,
+      det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? b_free : b_face_value) : b_face_value) : b_face_value,
+      det > 0.0 ? (a_free >= 0.0 ? (b_free <= 0.0 ? gain_free : gain_face) : gain_face) : gain_face};
+}
+
+}  // namespace
+
+DeficitFit fit_deficit(const DeficitNormal& n) { return fit_lane(n.haa, n.hab, n.hbb, n.ga, n.gb); }
+
+DeficitFits fit_deficits(const DeficitNormals8& normals) {
+  const double* haa = normals.col(0).data();
+  const double* hab = normals.col(1).data();
+  const double* hbb = normals.col(2).data();
+  const double* ga = normals.col(3).data();
+  const double* gb = normals.col(4).data();
+  DeficitFits f;
+  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+    const DeficitFit fit = fit_lane(haa[i], hab[i], hbb[i], ga[i], gb[i]);
+    f.a(i) = fit.a, f.b(i) = fit.b, f.gain(i) = fit.gain;
   }
-  const double a_only = n.haa > 0.0 ? std::max(n.ga / n.haa, 0.0) : 0.0;
-  const double b_only = n.hbb > 0.0 ? std::min(n.gb / n.hbb, 0.0) : 0.0;
-  const double gain_a = std::max(0.0, a_only * n.ga);  // +0 at the origin, never -0
-  const double gain_b = std::max(0.0, b_only * n.gb);
-  if (gain_b > gain_a) return DeficitFit{0.0, b_only, gain_b};
-  return DeficitFit{a_only, 0.0, gain_a};
+  return f;
 }
 
 std::vector<std::string> validate(const DeficitIsolationParams& p) {

@@ -166,6 +166,16 @@ struct DeficitFit {
 };
 DeficitFit fit_deficit(const DeficitNormal& normal);
 
+// The normal equations of the eight hypotheses, row i for thruster i: [haa, hab, hbb, ga, gb].
+// Column-major: each quantity of the eight is contiguous, so they are fitted as whole columns.
+using DeficitNormals8 = Eigen::Matrix<double, model::kThrustersPerBranch, 5>;
+struct DeficitFits {
+  DeficitVec8 a = DeficitVec8::Zero(), b = DeficitVec8::Zero(), gain = DeficitVec8::Zero();
+};
+// fit_deficit of every row, in a loop the compiler vectorises (the same lane arithmetic, so the
+// same answer bit for bit; tested).
+DeficitFits fit_deficits(const DeficitNormals8& normals);
+
 // The fault case and size (a, b) describe.
 void classify_deficit(const DeficitIsolationParams& params, DeficitDecision& decision);
 

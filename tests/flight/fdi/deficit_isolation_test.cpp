@@ -4,7 +4,10 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -380,6 +383,49 @@ TEST(DeficitIsolation, FitSatisfiesKktConditions) {
                          (ne.haa * f.a * f.a + 2.0 * ne.hab * f.a * f.b + ne.hbb * f.b * f.b);
     EXPECT_NEAR(f.gain, value, 1e-9 * std::max(1.0, std::abs(value)));
   }
+}
+
+// fit_deficits, the detector's eight fits in one vectorised loop, on every kind of normal equations:
+// free optimum feasible, on the a >= 0 face, on the b <= 0 face, at the origin, and singular H (a
+// thruster never commanded in the window: hbb = hab = gb = 0). Each lane satisfies the KKT
+// conditions above (checked independently, 1e-9 relative) and equals fit_deficit bit for bit: the
+// vectorised loop must not change the lane arithmetic (as reassociation or contraction would).
+// Every case must be reached.
+TEST(DeficitIsolation, EightFitsSatisfyKktAndEqualTheScalarFit) {
+  constexpr int kN = model::kThrustersPerBranch;
+  RandomStream rng(7, "fit_deficits");
+  std::array<int, 5> reached{};  // free, a face, b face, origin, singular
+  for (int trial = 0; trial < 500; ++trial) {
+    DeficitNormals8 normals;
+    for (int i = 0; i < kN; ++i) {
+      const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 1.0), w = rng.uniform(0.1, 10.0);
+      const bool never_commanded = (trial + i) % 11 == 0;
+      // H = w [1 u; u u^2] summed over two rows: positive definite unless u1 = u2 (or no command).
+      const double haa = 2 * w, hab = never_commanded ? 0.0 : w * (u1 + u2);
+      const double hbb = never_commanded ? 0.0 : w * (u1 * u1 + u2 * u2);
+      normals.row(i) << haa, hab, hbb, rng.uniform(-5.0, 5.0), never_commanded ? 0.0 : rng.uniform(-5.0, 5.0);
+    }
+    const DeficitFits fits = fit_deficits(normals);
+    for (int i = 0; i < kN; ++i) {
+      const auto r = normals.row(i);
+      const DeficitNormal ne{r(0), r(1), r(2), r(3), r(4)};
+      const DeficitFit one = fit_deficit(ne);
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(fits.a(i)), std::bit_cast<std::uint64_t>(one.a)) << trial << " " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(fits.b(i)), std::bit_cast<std::uint64_t>(one.b)) << trial << " " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(fits.gain(i)), std::bit_cast<std::uint64_t>(one.gain)) << trial << " " << i;
+      const double da = ne.ga - ne.haa * one.a - ne.hab * one.b, db = ne.gb - ne.hab * one.a - ne.hbb * one.b;
+      // 1e-9 of the terms that form the gradient: with u1 close to u2, H is nearly singular and
+      // (a, b) large, so the gradient is a small difference of large terms.
+      const double terms = std::abs(ne.ga) + std::abs(ne.gb) + (ne.haa + 2 * std::abs(ne.hab) + ne.hbb) * (one.a - one.b);
+      const double tol = 1e-9 * (terms + 10.0);
+      ASSERT_GE(one.a, 0.0);
+      ASSERT_LE(one.b, 0.0);
+      if (one.a > 0.0) EXPECT_NEAR(da, 0.0, tol); else EXPECT_LE(da, tol);
+      if (one.b < 0.0) EXPECT_NEAR(db, 0.0, tol); else EXPECT_GE(db, -tol);
+      ++reached[ne.hbb == 0.0 ? 4 : one.a > 0 && one.b < 0 ? 0 : one.a > 0 ? 1 : one.b < 0 ? 2 : 3];
+    }
+  }
+  for (int kind = 0; kind < 5; ++kind) EXPECT_GT(reached[kind], 20) << "case " << kind << " barely tested";
 }
 
 struct Case {
