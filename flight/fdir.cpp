@@ -120,12 +120,15 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   if (p.deficit_isolation)
     p.deficit = deficit_params(s, model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m));
   p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
+  const int detection_window = whole_periods(s.fdi.deficit.detection_window_s, s.control_period_s);
   p.detector = fdi::DeficitDetectorParams{
-      .window = whole_periods(s.fdi.deficit.detection_window_s, s.control_period_s),
+      .window = detection_window,
       .threshold = s.fdi.deficit.detection_threshold,
       .min_a = s.fdi.deficit.detection_min_constant,
       .min_b = s.fdi.deficit.detection_min_proportional,
-      .evaluate_every = 2,  // the gains every 0.2 s: half the cost, alarm at most 0.1 s later
+      // The gains every second period (half the cost, the alarm at most one period later) when the
+      // window is a whole number of such blocks, else every period.
+      .evaluate_every = detection_window % 2 == 0 ? 2 : 1,
   };
   return p;
 }
@@ -161,7 +164,7 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     const fdi::DeficitDecision& d =
         fdi::step_deficit_decision(p.deficit, state.deficit_bank, state.detector_deficit,
                                    state.detector.alarm ? state.detector.alarm_sample : -1);
-    out.detector.glr = state.detector.statistic;
+    out.detector.glr = fdi::GlrStatistic::of_value(state.detector.statistic);
     out.detector.alarm = state.detector.alarm;
     out.detector.candidate = state.detector.suspect;
     out.detector.confirmed = d.thruster;

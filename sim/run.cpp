@@ -131,9 +131,9 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     result.infeasible_allocations += !out.allocation_feasible;
     if (options.record_glr_per_second) {
       std::array<float, 3>& second = result.glr_max_per_s[static_cast<std::size_t>(t_s)];
-      second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr));
-      second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr));
-      second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr));
+      second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr.value()));
+      second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
+      second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
     if (telemetry && telemetry->ok())
       record_period(*telemetry, t_s, truth, plant.state, out, branch,

@@ -21,7 +21,7 @@ void add(TelemetryWriter& w, const Vec3& v) {
 // Thruster indices 1..8 of branch A in telemetry, 0 for none.
 void add(TelemetryWriter& w, const flight::fdi::FdiSchemeOutput& s) {
   add(w, s.residual);
-  w.add(s.glr);
+  w.add(s.glr.value());
   w.add(s.alarm);
   w.add(s.candidate + 1);
   w.add(s.confirmed + 1);
@@ -82,7 +82,7 @@ void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, c
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(f.ton_active[i]);
   for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(plant.last_profile.ton_realised[model::branch_first(active_branch) + i]);
   add(w, f.fdir.position), add(w, f.fdir.attitude);
-  w.add(f.fdir.detector.glr), w.add(f.fdir.detector.alarm);
+  w.add(f.fdir.detector.glr.value()), w.add(f.fdir.detector.alarm);
   w.add(f.fdir.detector.candidate + 1), w.add(f.fdir.detector.confirmed + 1);
   w.add(f.fdir.over_consumption);
   w.add(active_branch);

@@ -8,7 +8,8 @@ std::vector<std::string> validate(const DeficitDetectorParams& p) {
     problems.push_back("window: must be in [2, " + std::to_string(kMaxDeficitDetectorWindow) + "] periods");
   if (!(p.threshold > 0.0)) problems.push_back("threshold: must be > 0");
   if (!(p.min_a >= 0.0) || !(p.min_b >= 0.0)) problems.push_back("min_a, min_b: must be >= 0");
-  if (p.evaluate_every < 1) problems.push_back("evaluate_every: must be >= 1");
+  if (p.evaluate_every < 1 || (p.window >= 2 && p.window % p.evaluate_every != 0))
+    problems.push_back("evaluate_every: must be >= 1 and divide window");
   return problems;
 }
 
@@ -24,20 +25,24 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   const DeficitVec8 cc = bp.torque_body_Nm.cwiseAbs2().transpose() * w;
   const DeficitVec8 cy = bp.torque_body_Nm.transpose() * wy;
   const DeficitVec8& u = now.ton;
-  // The slot of the oldest row takes the new one (written in place: no temporary to copy).
-  DeficitSums& row = state.ring[static_cast<std::size_t>(state.slot)];
-  if (state.rows >= p.window) state.sums -= row;  // the oldest row leaves the window
-  row.col(0) = cc;
-  row.col(1) = u.cwiseProduct(cc);
-  row.col(2) = u.cwiseProduct(u).cwiseProduct(cc);
-  row.col(3) = cy;
-  row.col(4) = u.cwiseProduct(cy);
-  state.sums += row;
+  DeficitSums& block = state.block;
+  block.col(0) += cc;
+  block.col(1) += u.cwiseProduct(cc);
+  block.col(2) += u.cwiseProduct(u).cwiseProduct(cc);
+  block.col(3) += cy;
+  block.col(4) += u.cwiseProduct(cy);
   ++state.rows;
-  state.slot = state.slot + 1 < p.window ? state.slot + 1 : 0;
-  state.phase = state.phase + 1 < p.evaluate_every ? state.phase + 1 : 0;
+  if (++state.phase < p.evaluate_every) return;
+  // The block is complete: its slot, the oldest block's, takes it.
+  state.phase = 0;
+  DeficitSums& oldest = state.ring[static_cast<std::size_t>(state.slot)];
+  if (state.rows > p.window) state.sums -= oldest;  // the oldest block leaves the window
+  oldest = block;
+  state.sums += block;
+  block.setZero();
+  state.slot = (state.slot + 1) * p.evaluate_every < p.window ? state.slot + 1 : 0;
 
-  if (state.alarm || state.rows < p.window || state.phase != 0) return;
+  if (state.alarm || state.rows < p.window) return;
   // statistic: the largest gain; suspect: its thruster, among the material fits when there are any
   // (then it is the one that raises the alarm).
   const DeficitFits fits = fit_deficits(state.sums);

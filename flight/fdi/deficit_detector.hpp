@@ -10,7 +10,11 @@
 // fitted per thruster; its gain (the drop of the weighted RSS, a GLR statistic) is
 //   S_i = max over a >= 0, b <= 0 of  2 g'x - x'Hx,   H = sum_k [1 u; u u^2] c' W(k) c,
 //   g = sum_k [1; u] c' W(k) y(k),  u = T_on,i(k), c = M_C,i,
-// from five sliding sums per thruster (per period: add the new row, drop the oldest).
+// from five sliding sums per thruster. The rows are summed in blocks of `evaluate_every` periods,
+// the gains' cadence: per period the row is added to the open block; when the block is complete it
+// enters the window and the oldest block leaves it. The window's sums at every evaluation are those
+// of its last N rows, as with a ring of single rows, for half (every = 2) the per-period memory traffic
+// and ring size.
 // The alarm is raised when some thruster's S_i exceeds the threshold AND its fitted deficit is
 // material (a >= min_a or b <= -min_b). The second test keeps the small systematic errors of a
 // healthy thruster set (1 % thrust dispersion, misalignment, a pulse cut by the minimum on-time)
@@ -36,7 +40,7 @@ struct DeficitDetectorParams {
   double threshold = 100.0;  // [-] on S_i
   double min_a = 0.05;       // [-] smallest constant deficit that counts as a fault
   double min_b = 0.3;        // [-] smallest command-proportional deficit that counts (a 20 % inertia error reads as 0.2)
-  int evaluate_every = 1;    // [periods] between evaluations of the gains
+  int evaluate_every = 1;    // [periods] between evaluations of the gains, a divisor of window
 };
 
 std::vector<std::string> validate(const DeficitDetectorParams& params);
@@ -46,11 +50,13 @@ std::vector<std::string> validate(const DeficitDetectorParams& params);
 using DeficitSums = DeficitNormals8;
 
 struct DeficitDetectorState {
-  std::array<DeficitSums, kMaxDeficitDetectorWindow> ring{};  // each row's contribution
-  DeficitSums sums = DeficitSums::Zero();
+  std::array<DeficitSums, kMaxDeficitDetectorWindow> ring{};  // each block's contribution (window / every used)
+  DeficitSums sums = DeficitSums::Zero();   // over the complete blocks in the window
+  DeficitSums block = DeficitSums::Zero();  // the rows of the open block
   std::int64_t rows = 0;          // torque rows added
-  int slot = 0;                   // rows % window: the ring slot of the next row
-  int phase = 0;                  // rows % evaluate_every (counters: no integer division per period)
+  int slot = 0;                   // ring slot of the next block: (rows / every) % (window / every)
+  int phase = 0;                  // rows % evaluate_every, the rows in `block` (counters: no integer
+                                  // division per period)
   bool alarm = false;             // latched
   std::int64_t alarm_sample = -1; // sample index of the first alarm
   double statistic = 0;           // [-] max_i S_i (material or not), last evaluation

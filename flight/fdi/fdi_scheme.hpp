@@ -38,7 +38,7 @@ struct FdiSchemeState {
 
 struct FdiSchemeOutput {
   Vec3 residual = Vec3::Zero();  // r(k) [m or rad], entries >= n_r zero
-  double glr = 0.0;              // S^{N_d}(k) [-]
+  GlrStatistic glr;              // S^{N_d}(k) [-]: glr.value()
   bool alarm = false;            // latched H_1 decision (eq. 40)
   int candidate = -1;            // sigma^N(k) (eq. 42), -1 before the alarm or with no candidate
   int confirmed = -1;            // latched confirmed thruster (eq. 45), -1 if none

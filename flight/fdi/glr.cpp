@@ -61,12 +61,50 @@ std::vector<std::string> validate(const GlrParams& params) {
   return problems;
 }
 
-double glr_scalar_statistic(double sum_r2, int window, double sigma0) {
+namespace {
+
+// rho = sigma1^2 / sigma0^2 with the floor.
+double variance_ratio(double sum_r2, int window, double sigma0) {
+  return std::max(sum_r2 / (window * sigma0 * sigma0), kGlrVarianceFloor);
+}
+
+}  // namespace
+
+double glr_scalar_statistic(double rho, int window) {
   // Eq. 41, N_d ln(sigma0) - N_d/2 (1 + ln(sigma1^2) - sigma1^2/sigma0^2), as N_d/2 (rho - ln rho - 1):
   // one logarithm instead of two, and no cancellation between two large logarithms.
-  const double n = window;
-  const double rho = std::max(sum_r2 / (n * sigma0 * sigma0), kGlrVarianceFloor);
-  return 0.5 * n * (rho - std::log(rho) - 1.0);
+  rho = std::max(rho, kGlrVarianceFloor);
+  return 0.5 * window * (rho - std::log(rho) - 1.0);
+}
+
+double GlrStatistic::value() const {
+  if (window_ == 0) return x_;
+  const double rho = variance_ratio(x_, window_, sigma0_);
+  if (increase_only_ && rho <= 1.0) return 0.0;  // the MLE under Sigma1 >= Sigma0 is rho = 1
+  return glr_scalar_statistic(rho, window_);
+}
+
+GlrRatioBounds glr_ratio_bounds(int window, double threshold) {
+  // h(rho) = rho - ln rho - 1 - c, c = 2 J_th / N_d, is convex with its minimum -c at rho = 1, so
+  // Newton's method converges monotonically to either root from the side where h > 0: from
+  // 2 (1 + c) for the upper root (h = 1 + c - ln(2 (1 + c)) > 0) and from exp(-1 - c) for the
+  // lower one (h = exp(-1 - c) > 0). It stops when an iterate no longer moves towards the root.
+  const double c = 2.0 * threshold / window;
+  const auto h = [c](double rho) { return rho - std::log(rho) - 1.0 - c; };
+  GlrRatioBounds b;
+  b.hi = 2.0 * (1.0 + c);
+  for (int i = 0; i < 200; ++i) {
+    const double next = b.hi - h(b.hi) / (1.0 - 1.0 / b.hi);
+    if (!(next < b.hi)) break;
+    b.hi = next;
+  }
+  b.lo = std::exp(-1.0 - c);
+  for (int i = 0; i < 200 && b.lo > 0.0; ++i) {
+    const double next = b.lo - h(b.lo) / (1.0 - 1.0 / b.lo);
+    if (!(next > b.lo)) break;
+    b.lo = next;
+  }
+  return b;
 }
 
 double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int window,
@@ -95,36 +133,48 @@ double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int
 
 GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
   const int window = clamped_window(params.window);
+  GlrOutput out;
   const int slot = state.next < window ? state.next : 0;  // the oldest sample's slot takes r(k)
   state.next = slot + 1 < window ? slot + 1 : 0;          // no integer division in the loop
   state.count = std::min(state.count + 1, window);
   const bool full = state.count == window;                // else S = 0 and no decision
-  GlrOutput out;
   if (params.variant == GlrVariant::kScalar) {
     const double r1_squared = r(0) * r(0);
     if (full) {
-      // The other N_d - 1 samples are summed before the slot is overwritten (a value just stored,
-      // read back by a wider load, would stall the loop), in two chains (the sum is latency-bound).
-      const std::array<double, kMaxGlrWindow>& ring = state.r1_squared;
+      // The other N_d - 1 samples, oldest first, are summed before the slot is overwritten (a value
+      // just stored, read back by a wider load, would stall the loop), in two chains (the sum is
+      // latency-bound).
+      const double* others = state.r1_squared.data() + slot + 1;
+      const int n_others = window - 1;
       double even = 0.0, odd = 0.0;
       int j = 0;
-      for (; j + 1 < window; j += 2) even += j == slot ? 0.0 : ring[j], odd += j + 1 == slot ? 0.0 : ring[j + 1];
-      if (j < window && j != slot) even += ring[j];
+      for (; j + 1 < n_others; j += 2) even += others[j], odd += others[j + 1];
+      if (j < n_others) even += others[j];
       const double sum_r2 = even + odd + r1_squared;
-      out.statistic = glr_scalar_statistic(sum_r2, window, params.sigma0);
-      if (params.sides == GlrSides::kIncreaseOnly && sum_r2 <= window * params.sigma0 * params.sigma0)
-        out.statistic = 0.0;
+      out.statistic = GlrStatistic::of_scalar_sum(sum_r2, params.sigma0, window, params.sides);
+      if (state.bounds_window != window || state.bounds_threshold != params.threshold ||
+          state.bounds_sigma0 != params.sigma0) {
+        const GlrRatioBounds b = glr_ratio_bounds(window, params.threshold);
+        const double sum_per_rho = window * params.sigma0 * params.sigma0;
+        state.sum_inside_lo = params.sides == GlrSides::kIncreaseOnly ? 0.0 : b.lo * (1.0 + 1e-6) * sum_per_rho;
+        state.sum_inside_hi = b.hi * (1.0 - 1e-6) * sum_per_rho;
+        state.bounds_window = window, state.bounds_threshold = params.threshold, state.bounds_sigma0 = params.sigma0;
+      }
+      // Eq. 40, S > J_th, evaluated only near or beyond the bounds (see glr.hpp).
+      if (sum_r2 < state.sum_inside_lo || sum_r2 > state.sum_inside_hi)
+        out.alarm = out.statistic.value() > params.threshold;
     }
-    state.r1_squared[slot] = r1_squared;
+    state.r1_squared[slot] = state.r1_squared[slot + window] = r1_squared;
   } else {
     state.samples[slot] = whiten(params, state, r);
     if (full) {
       Mat3 moment = Mat3::Zero();
       for (int j = 0; j < window; ++j) moment.noalias() += state.samples[j] * state.samples[j].transpose();
-      out.statistic = glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides);
+      out.statistic =
+          GlrStatistic::of_value(glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides));
+      out.alarm = out.statistic.value() > params.threshold;  // eq. 40
     }
   }
-  out.alarm = out.statistic > params.threshold;  // eq. 40
   return out;
 }
 

@@ -29,7 +29,16 @@
 //   - Window not yet full (fewer than N_d samples since the start): S = 0 and no alarm.
 //   - No drift: the window sums are recomputed from the ring buffer every period (N_d <= 128
 //     samples, at most 6 products each), not updated by add-and-subtract. The scalar test keeps
-//     r_1^2 itself in the ring and sums it with two accumulators (half the dependency chain).
+//     r_1^2 itself in the ring and sums it from the oldest to the newest sample with two
+//     accumulators (half the dependency chain).
+//
+// No logarithm and no division in the scalar test's decision: S is a function of rho alone,
+// decreasing below 1 and increasing above, so S > J_th <=> rho < rho_lo or rho > rho_hi, the two
+// roots of N_d/2 (rho - ln rho - 1) = J_th, found once (Newton) per window, threshold and sigma0
+// and compared as window sums of r^2 (rho N_d sigma0^2). Within a margin of 1e-6 of the roots the
+// decision is eq. 40 itself, S > J_th, so it is the same decision bit for bit. S is then only a
+// report: GlrStatistic keeps the window sum and evaluates eq. 41 where S is read (telemetry, the
+// campaign's envelopes, plots), which on board is not every period.
 #include <array>
 #include <string>
 #include <vector>
@@ -61,25 +70,59 @@ struct GlrParams {
   int residual_dim = 1;                 // n_r, 1..3 (kWhitened; kScalar uses r_1 only)
 };
 
+// S^{N_d}(k) as the test produced it: the value itself (whitened test), or the scalar test's window
+// sum of r_1^2, from which value() evaluates eq. 41 when asked.
+class GlrStatistic {
+ public:
+  GlrStatistic() = default;
+  static GlrStatistic of_value(double s) { return GlrStatistic(s, 0.0, 0, false); }
+  // The sum of r_1^2 over a window of N_d >= 1 samples, sigma0 > 0.
+  static GlrStatistic of_scalar_sum(double sum_r2, double sigma0, int window, GlrSides sides) {
+    return GlrStatistic(sum_r2, sigma0, window, sides == GlrSides::kIncreaseOnly);
+  }
+  double value() const;  // [-] S
+ private:
+  GlrStatistic(double x, double sigma0, int window, bool increase_only)
+      : x_(x), sigma0_(sigma0), window_(window), increase_only_(increase_only) {}
+  double x_ = 0.0;              // S (window_ == 0) or the window sum of r_1^2
+  double sigma0_ = 0.0;         // scalar test: sigma0
+  int window_ = 0;              // N_d of the scalar test, 0: x_ is S
+  bool increase_only_ = false;  // scalar test, kIncreaseOnly: S = 0 for rho <= 1
+};
+
 struct GlrState {
   std::array<Vec3, kMaxGlrWindow> samples{};  // ring buffer of L0^-1 r (kWhitened)
-  std::array<double, kMaxGlrWindow> r1_squared{};  // ring buffer of r_1^2 (kScalar), same slots
+  // r_1^2 (kScalar), each stored twice, at slot and slot + N_d: the window's other samples are then
+  // the contiguous span after the slot (no test per sample, which the branch predictor can miss).
+  std::array<double, 2 * kMaxGlrWindow> r1_squared{};
   int next = 0;                               // slot of the next sample
   int count = 0;                              // samples stored, up to the window
   Mat3 whitening = Mat3::Identity();          // L0^-1 of the embedded Sigma0, factorised at the first step
   bool whitening_ready = false;
+  // The scalar test's decision bounds on the window sum of r_1^2 (see above), for the window,
+  // threshold and sigma0 they were found for; a sum strictly between them cannot give S > J_th.
+  int bounds_window = 0;
+  double bounds_threshold = 0.0, bounds_sigma0 = 0.0;
+  double sum_inside_lo = 0.0, sum_inside_hi = 0.0;
 };
 
 struct GlrOutput {
-  double statistic = 0.0;  // S^{N_d}(k) [-]
+  GlrStatistic statistic;  // S^{N_d}(k) [-], 0 until the window is full
   bool alarm = false;      // S > J_th, eq. 40
 };
 
 // Problems with the parameters (empty when valid), each naming the field.
 std::vector<std::string> validate(const GlrParams& params);
 
-// Eq. 41 from the window sum of r^2 (two-sided, with the floor), N_d = window >= 1.
-double glr_scalar_statistic(double sum_r2, int window, double sigma0);
+// Eq. 41 from rho = sigma1^2 / sigma0^2 (two-sided, rho floored at kGlrVarianceFloor), N_d = window >= 1.
+double glr_scalar_statistic(double rho, int window);
+
+// The roots rho_lo < 1 < rho_hi of N_d/2 (rho - ln rho - 1) = threshold (rho_lo = 0 when it is
+// below the smallest double), threshold > 0.
+struct GlrRatioBounds {
+  double lo = 0.0, hi = 0.0;
+};
+GlrRatioBounds glr_ratio_bounds(int window, double threshold);
 
 // N_d/2 sum_j (mu_j - ln mu_j - 1) over the eigenvalues of the whitened second moment M (n_r x n_r
 // top-left block of a 3 x 3), with the floor; kIncreaseOnly drops the terms with mu_j <= 1.

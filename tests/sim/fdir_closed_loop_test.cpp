@@ -2,6 +2,9 @@
 // its own): detection of a stuck-open thruster, the fault the paper detects fastest.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
+#include "flight/flight_software.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
 
@@ -15,6 +18,19 @@ model::Scenario msr_without_recovery() {
   s.fdi.recovery = false;
   s.duration_s = 1020.0;  // 20 s after the onset is enough to judge detection
   return s;
+}
+
+// The deficit detector's gains are evaluated every second period when its window is an even number
+// of periods (the shipped 10 s: 100), else every period; both are valid parameters.
+TEST(FdirClosedLoop, DetectorCadenceFollowsTheWindowsParity) {
+  model::Scenario s = msr_without_recovery();
+  for (const auto& [window_s, periods, every] : {std::tuple{10.0, 100, 2}, std::tuple{10.1, 101, 1}}) {
+    s.fdi.deficit.detection_window_s = window_s;
+    const flight::FdirParams p = flight::make_flight_params(s).fdir;
+    EXPECT_EQ(p.detector.window, periods);
+    EXPECT_EQ(p.detector.evaluate_every, every);
+    EXPECT_TRUE(flight::fdi::validate(p.detector).empty()) << window_s;
+  }
 }
 
 // Every thruster stuck open at 1000 s is detected by both schemes within a few seconds (measured

@@ -139,6 +139,49 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
   EXPECT_FALSE(r.det.alarm);
 }
 
+// The same with the rows summed in blocks of evaluate_every (2 and 3, window 36): checked at every
+// evaluation, the periods that complete a block.
+class DeficitDetectorBlocks : public ::testing::TestWithParam<int> {};
+TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
+  const int every = GetParam();
+  const DeficitIsolationParams bp = msr_params();
+  DeficitDetectorParams dp;
+  dp.window = 36, dp.threshold = 1e30, dp.evaluate_every = every;
+  Truth t;
+  t.samples = 1501, t.fault = {3, 700, 0.0, -0.6};  // a fault half-way: sums of both kinds of data
+  const std::vector<DeficitSample> s = generate(bp, t);
+  std::vector<DeficitSums> rows;  // row k: samples k, k + 1
+  int checked = 0;
+  Loop r;
+  run(bp, dp, s, r, [&](int k, const Loop& st) {
+    if (k == 0) {
+      EXPECT_EQ(st.det.rows, 0);
+      return;
+    }
+    rows.push_back(row_sums(bp, deficit_torque_row(bp, s[k - 1], s[k]), deficit_torque_weights(bp, st.bank, s[k - 1].ton),
+                            s[k - 1].ton));
+    ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
+    if (static_cast<int>(rows.size()) < dp.window || rows.size() % every != 0) return;
+    DeficitSums direct = DeficitSums::Zero(), scale = DeficitSums::Zero();
+    for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
+    const double err = ((st.det.sums - direct).cwiseAbs().array() / scale.array()).maxCoeff();
+    EXPECT_LT(err, 1e-9) << "row " << rows.size();
+    double best = 0.0;
+    int suspect = -1;
+    for (int i = 0; i < kN; ++i) {
+      const auto c = direct.row(i);
+      const DeficitFit f = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
+      if (f.gain > best) best = f.gain, suspect = i;
+    }
+    EXPECT_NEAR(st.det.statistic, best, 1e-7 * std::max(1.0, best)) << "row " << rows.size();
+    EXPECT_EQ(st.det.suspect, suspect) << "row " << rows.size();
+    ++checked;
+  });
+  EXPECT_EQ(checked, (1500 - 36) / every + 1);
+  EXPECT_FALSE(r.det.alarm);
+}
+INSTANTIATE_TEST_SUITE_P(Every, DeficitDetectorBlocks, ::testing::Values(2, 3));
+
 // Runs the onset cases of test 2: a 60 % loss of thruster i (commanded in 35 % of the periods, mean
 // on-time 0.5) or a stuck-open thruster i the controller never commands, onset at sample 250. With
 // freeze, the bank's sigma_0 stops adapting at the onset, as flight/fdir.cpp freezes it once any scheme
@@ -317,6 +360,7 @@ TEST(DeficitDetector, ValidateNamesEachBadField) {
       {"min_b", [](auto& p) { p.min_b = -0.01; }},
       {"min_b", [](auto& p) { p.min_b = std::nan(""); }},
       {"evaluate_every", [](auto& p) { p.evaluate_every = 0; }},
+      {"evaluate_every", [](auto& p) { p.evaluate_every = 3; }},  // does not divide the window, 100
   };
   for (const Case& c : cases) {
     DeficitDetectorParams p;

@@ -185,7 +185,7 @@ RunResult run_scheme(const FdiSchemeParams& p, const PositionSetup& setup, const
     const bool over = step_event_resolution(ep, es, tr.propellant_kg[k], expected, state.alarm);
     if (over && res.over_consumption_period < 0) res.over_consumption_period = static_cast<int>(k);
     const FdiSchemeOutput out = step_fdi_scheme(p, state, tr.y[k], tr.u_c[k], tr.ton[k], over);
-    if (static_cast<int>(k) < fault_period) res.max_glr_before = std::max(res.max_glr_before, out.glr);
+    if (static_cast<int>(k) < fault_period) res.max_glr_before = std::max(res.max_glr_before, out.glr.value());
     if (out.alarm && res.alarm_period < 0) {
       res.alarm_period = static_cast<int>(k);
       EXPECT_NEAR(out.alarm_time_s, k * p.period_s, 1e-9);

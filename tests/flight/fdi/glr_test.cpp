@@ -88,14 +88,14 @@ TEST(Glr, ScalarIsEq41AndTheWhitenedTestReducesToIt) {
     const GlrOutput a = step_glr(scalar, s1, r);
     const GlrOutput b = step_glr(whitened, s2, r);
     if (k < 9) {
-      EXPECT_EQ(a.statistic, 0.0);
+      EXPECT_EQ(a.statistic.value(), 0.0);
       EXPECT_FALSE(a.alarm);
-      EXPECT_EQ(b.statistic, 0.0);
+      EXPECT_EQ(b.statistic.value(), 0.0);
       continue;
     }
     const double direct = eq41_direct(window, 0.3);
-    EXPECT_NEAR(a.statistic, direct, 1e-11 * std::max(1.0, std::abs(direct))) << k;
-    EXPECT_NEAR(b.statistic, direct, 1e-11 * std::max(1.0, std::abs(direct))) << k;
+    EXPECT_NEAR(a.statistic.value(), direct, 1e-11 * std::max(1.0, std::abs(direct))) << k;
+    EXPECT_NEAR(b.statistic.value(), direct, 1e-11 * std::max(1.0, std::abs(direct))) << k;
     EXPECT_EQ(a.alarm, direct > 20.0);
   }
 }
@@ -116,7 +116,7 @@ TEST(Glr, WhitenedMatchesTraceLogDetForm) {
       const Vec3 r = gaussian(rng) * (k < 50 ? 1.0 : 2.0);
       window.push_back(r);
       if (window.size() > 12) window.pop_front();
-      const double s = step_glr(p, state, r).statistic;
+      const double s = step_glr(p, state, r).statistic.value();
       if (k < 11) continue;
       Eigen::MatrixXd sigma1 = Eigen::MatrixXd::Zero(n, n);
       for (const Vec3& v : window) sigma1 += v.head(n) * v.head(n).transpose();
@@ -175,7 +175,7 @@ TEST(Glr, MeanUnderH0MatchesTheory) {
     for (int k = 0; k < 200000; ++k) {
       const Vec3 r = n == 1 ? Vec3(rng.normal(0, 2.0), 0, 0) : Vec3(chol * gaussian(rng));
       const GlrOutput out = step_glr(p, state, r);
-      if (k >= 9) s.push_back(out.statistic);
+      if (k >= 9) s.push_back(out.statistic.value());
     }
     const MeanAndError m = batch_mean(s);
     const double theory = expected_statistic_h0(10, n);
@@ -209,7 +209,7 @@ TEST(Glr, VarianceStepRaisesSAboveThreshold) {
         EXPECT_FALSE(out.alarm) << "run " << run << " k " << k;
       }
       if (k >= 100 && delay < 0 && out.alarm) delay = k - 100 + 1;
-      if (k >= 110) after.push_back(out.statistic);
+      if (k >= 110) after.push_back(out.statistic.value());
     }
     ASSERT_GT(delay, 0) << "run " << run;
     delays.push_back(delay);
@@ -237,9 +237,9 @@ TEST(Glr, FloorAndIncreaseOnly) {
   white_one.variant = GlrVariant::kWhitened;
   GlrState s2, s1, sw;
   for (int k = 0; k < 10; ++k) {
-    const double a = step_glr(two, s2, Vec3::Zero()).statistic;
-    const double b = step_glr(one, s1, Vec3::Zero()).statistic;
-    const double c = step_glr(white_one, sw, Vec3::Zero()).statistic;
+    const double a = step_glr(two, s2, Vec3::Zero()).statistic.value();
+    const double b = step_glr(one, s1, Vec3::Zero()).statistic.value();
+    const double c = step_glr(white_one, sw, Vec3::Zero()).statistic.value();
     if (k == 9) {
       EXPECT_NEAR(a, 5.0 * (1e-12 - std::log(1e-12) - 1.0), 1e-9);
       EXPECT_EQ(b, 0.0);
@@ -247,9 +247,9 @@ TEST(Glr, FloorAndIncreaseOnly) {
     }
   }
   for (int k = 0; k < 10; ++k) {
-    const double a = step_glr(two, s2, Vec3(3.0, 0, 0)).statistic;
-    const double b = step_glr(one, s1, Vec3(3.0, 0, 0)).statistic;
-    const double c = step_glr(white_one, sw, Vec3(3.0, 0, 0)).statistic;
+    const double a = step_glr(two, s2, Vec3(3.0, 0, 0)).statistic.value();
+    const double b = step_glr(one, s1, Vec3(3.0, 0, 0)).statistic.value();
+    const double c = step_glr(white_one, sw, Vec3(3.0, 0, 0)).statistic.value();
     if (k == 9) {
       EXPECT_NEAR(a, 5.0 * (9.0 - std::log(9.0) - 1.0), 1e-12);
       EXPECT_EQ(a, b);
@@ -266,10 +266,49 @@ TEST(Glr, WindowSumDoesNotDrift) {
   GlrState state;
   for (int k = 0; k < 1000; ++k) step_glr(p, state, Vec3(1e8 * (1 + k % 7), 0, 0));
   double s = 0.0;
-  for (int k = 0; k < 10; ++k) s = step_glr(p, state, Vec3(1e-3 * (k + 1), 0, 0)).statistic;
+  for (int k = 0; k < 10; ++k) s = step_glr(p, state, Vec3(1e-3 * (k + 1), 0, 0)).statistic.value();
   std::deque<double> w;
   for (int k = 0; k < 10; ++k) w.push_back(1e-3 * (k + 1));
   EXPECT_NEAR(s, eq41_direct(w, 1.0), 1e-12 * eq41_direct(w, 1.0));
+}
+
+// The scalar test decides on rho against the roots of eq. 41 = J_th (no logarithm per period).
+// The roots solve it (to 1e-12 of J_th: a few ulp of rho - ln rho - 1 near them), and the decision
+// is eq. 40 on the reported S for every rho, including those within an ulp of either root, for
+// windows and thresholds where the lower root is ordinary, tiny, or below the floor.
+TEST(Glr, DecisionByRatioBoundsIsEq40) {
+  for (const int window : {2, 10, 128}) {
+    for (const double threshold : {0.5, 20.0, 500.0}) {
+      const GlrRatioBounds b = glr_ratio_bounds(window, threshold);
+      ASSERT_LT(b.lo, 1.0);
+      ASSERT_GT(b.hi, 1.0);
+      EXPECT_NEAR(glr_scalar_statistic(b.hi, window), threshold, 1e-12 * threshold) << window << " " << threshold;
+      if (b.lo > kGlrVarianceFloor) {
+        EXPECT_NEAR(glr_scalar_statistic(b.lo, window), threshold, 1e-12 * threshold) << window << " " << threshold;
+      }
+      std::vector<double> rhos = {1e-300, 1e-12, 0.3, 1.0, 1.7, 1e3};
+      for (const double root : {b.lo, b.hi}) {
+        for (const double rel : {-1e-3, -1e-6, -1e-9, -1e-14, -4e-16, 0.0, 4e-16, 1e-14, 1e-9, 1e-6, 1e-3})
+          rhos.push_back(root * (1.0 + rel));
+      }
+      for (const GlrSides sides : {GlrSides::kTwoSided, GlrSides::kIncreaseOnly}) {
+        GlrParams p;
+        p.window = window;
+        p.threshold = threshold;
+        p.sigma0 = 0.5;
+        p.sides = sides;
+        int alarms = 0;
+        for (const double rho : rhos) {
+          GlrState state;
+          GlrOutput out;
+          for (int k = 0; k < window; ++k) out = step_glr(p, state, Vec3(0.5 * std::sqrt(rho), 0.0, 0.0));
+          EXPECT_EQ(out.alarm, out.statistic.value() > threshold) << window << " " << threshold << " rho " << rho;
+          alarms += out.alarm;
+        }
+        EXPECT_GT(alarms, 0);  // the grid does reach beyond the upper root
+      }
+    }
+  }
 }
 
 TEST(Glr, ValidateNamesTheProblems) {
