@@ -13,6 +13,13 @@ std::vector<std::string> validate(const DeficitDetectorParams& p) {
   return problems;
 }
 
+DeficitNormals8 window_normals(const DeficitDetectorBlock& sums) {
+  DeficitNormals8 n = sums.sums;
+  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+    if (sums.commanded(i) == 0) n(i, 1) = n(i, 2) = n(i, 4) = 0.0;
+  return n;
+}
+
 void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolationParams& bp,
                            const DeficitBankState& bank, DeficitDetectorState& state) {
   if (bank.count < 2) return;
@@ -25,7 +32,8 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   const DeficitVec8 cc = bp.torque_body_Nm.cwiseAbs2().transpose() * w;
   const DeficitVec8 cy = bp.torque_body_Nm.transpose() * wy;
   const DeficitVec8& u = now.ton;
-  DeficitSums& block = state.block;
+  state.block.commanded += (u.array() > 0.0).cast<std::int32_t>().matrix();
+  DeficitSums& block = state.block.sums;
   block.col(0) += cc;
   block.col(1) += u.cwiseProduct(cc);
   block.col(2) += u.cwiseProduct(u).cwiseProduct(cc);
@@ -35,17 +43,21 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   if (++state.phase < p.evaluate_every) return;
   // The block is complete: its slot, the oldest block's, takes it.
   state.phase = 0;
-  DeficitSums& oldest = state.ring[static_cast<std::size_t>(state.slot)];
-  if (state.rows > p.window) state.sums -= oldest;  // the oldest block leaves the window
-  oldest = block;
-  state.sums += block;
-  block.setZero();
+  DeficitDetectorBlock& oldest = state.ring[static_cast<std::size_t>(state.slot)];
+  if (state.rows > p.window) {  // the oldest block leaves the window
+    state.sums.sums -= oldest.sums;
+    state.sums.commanded -= oldest.commanded;
+  }
+  oldest = state.block;
+  state.sums.sums += state.block.sums;
+  state.sums.commanded += state.block.commanded;
+  state.block = DeficitDetectorBlock{};
   state.slot = (state.slot + 1) * p.evaluate_every < p.window ? state.slot + 1 : 0;
 
   if (state.alarm || state.rows < p.window) return;
   // statistic: the largest gain; suspect: its thruster, among the material fits when there are any
   // (then it is the one that raises the alarm).
-  const DeficitFits fits = fit_deficits(state.sums);
+  const DeficitFits fits = fit_deficits(window_normals(state.sums));
   state.statistic = 0.0;
   state.suspect = -1;
   double material_gain = -1.0;

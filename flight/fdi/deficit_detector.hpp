@@ -48,11 +48,21 @@ std::vector<std::string> validate(const DeficitDetectorParams& params);
 // The window's five sums, row i for thruster i: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy], which are
 // the normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits).
 using DeficitSums = DeficitNormals8;
+// Per thruster, the rows in which it was commanded (T_on > 0). Kept exactly (integers) because the
+// running sums are not: once a thruster's last pulse has left the window, its u-columns (u c'Wc,
+// u^2 c'Wc, u c'Wy) are the rounding residue of adding and removing that pulse, ~1e-16 of it, not
+// zero, and its b fitted from them is arbitrary (it made a "material" b and an alarm in a Table 2 run).
+using DeficitCommandedRows = Eigen::Matrix<std::int32_t, model::kThrustersPerBranch, 1>;
+
+struct DeficitDetectorBlock {
+  DeficitSums sums = DeficitSums::Zero();
+  DeficitCommandedRows commanded = DeficitCommandedRows::Zero();
+};
 
 struct DeficitDetectorState {
-  std::array<DeficitSums, kMaxDeficitDetectorWindow> ring{};  // each block's contribution (window / every used)
-  DeficitSums sums = DeficitSums::Zero();   // over the complete blocks in the window
-  DeficitSums block = DeficitSums::Zero();  // the rows of the open block
+  std::array<DeficitDetectorBlock, kMaxDeficitDetectorWindow> ring{};  // each block's contribution (window / every used)
+  DeficitDetectorBlock sums;   // over the complete blocks in the window
+  DeficitDetectorBlock block;  // the rows of the open block
   std::int64_t rows = 0;          // torque rows added
   int slot = 0;                   // ring slot of the next block: (rows / every) % (window / every)
   int phase = 0;                  // rows % evaluate_every, the rows in `block` (counters: no integer
@@ -63,6 +73,10 @@ struct DeficitDetectorState {
   int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
                                   // a partner's twin (same torque) is as likely
 };
+
+// The normal equations of the window: the sums, with the u-columns of a thruster not commanded in
+// the window set to their exact value, zero (so its hypothesis is a constant deficit alone, b = 0).
+DeficitNormals8 window_normals(const DeficitDetectorBlock& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,
