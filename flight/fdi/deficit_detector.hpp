@@ -61,7 +61,8 @@ struct DeficitDetectorBlock {
 
 struct DeficitDetectorState {
   std::array<DeficitDetectorBlock, kMaxDeficitDetectorWindow> ring{};  // each block's contribution (window / every used)
-  DeficitDetectorBlock sums;   // over the complete blocks in the window
+  DeficitDetectorBlock sums;   // over the complete blocks in the window; the u-columns of a thruster
+                               // not commanded in it are exactly zero (its hypothesis: a alone, b = 0)
   DeficitDetectorBlock block;  // the rows of the open block
   std::int64_t rows = 0;          // torque rows added
   int slot = 0;                   // ring slot of the next block: (rows / every) % (window / every)
@@ -73,10 +74,6 @@ struct DeficitDetectorState {
   int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
                                   // a partner's twin (same torque) is as likely
 };
-
-// The normal equations of the window: the sums, with the u-columns of a thruster not commanded in
-// the window set to their exact value, zero (so its hypothesis is a constant deficit alone, b = 0).
-DeficitNormals8 window_normals(const DeficitDetectorBlock& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,

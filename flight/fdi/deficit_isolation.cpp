@@ -179,7 +179,7 @@ DeficitFits fit_deficits(const DeficitNormals8& normals) {
   const double* hbb = normals.col(2).data();
   const double* ga = normals.col(3).data();
   const double* gb = normals.col(4).data();
-  DeficitFits f;
+  DeficitFits f{DeficitVec8(), DeficitVec8(), DeficitVec8()};  // every entry is written below: no zeroing
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     const DeficitFit fit = fit_lane(haa[i], hab[i], hbb[i], ga[i], gb[i]);
     f.a(i) = fit.a, f.b(i) = fit.b, f.gain(i) = fit.gain;

@@ -95,10 +95,10 @@ DeficitSums row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3&
   return r;
 }
 
-// A thruster whose last pulse has left the window: its u-columns in the running sums are the
-// rounding residue of that pulse (whatever it is), but the window's normal equations carry them as
-// exactly zero, the commanded-row count is exact, and its fitted b is exactly 0 (b is not
-// identifiable without a command). Thruster 3 fires in the first 60 rows only, window 40.
+// A thruster whose last pulse has left the window: its u-columns in the running sums would be the
+// rounding residue of that pulse (~2e-11 here without the reset), but they are exactly zero, the
+// commanded-row count is exact, and its fitted b is exactly 0 (b is not identifiable without a
+// command). Thruster 3 fires in the first 60 rows only, window 40.
 TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPart) {
   const DeficitIsolationParams bp = msr_params();
   DeficitDetectorParams dp;
@@ -116,7 +116,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
     commanded_in_window = 0;  // row j is the period of sample j: the window holds rows k - window .. k - 1
     for (int j = k - dp.window; j < k; ++j) commanded_in_window += s[j].ton(3) > 0.0;
     EXPECT_EQ(st.det.sums.commanded(3), commanded_in_window) << k;
-    const DeficitNormals8 n = window_normals(st.det.sums);
+    const DeficitNormals8& n = st.det.sums.sums;
     if (commanded_in_window == 0) {
       EXPECT_EQ(n(3, 1), 0.0) << k;
       EXPECT_EQ(n(3, 2), 0.0) << k;
@@ -124,7 +124,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
       EXPECT_EQ(fit_deficits(n).b(3), 0.0) << k;
       EXPECT_GT(n(3, 0), 0.0) << k;  // the constant part is still fitted
     } else {
-      EXPECT_EQ(n.row(3), st.det.sums.sums.row(3)) << k;
+      EXPECT_GT(n(3, 2), 0.0) << k;
     }
   });
   EXPECT_EQ(commanded_in_window, 0);  // the last evaluation is long after thruster 3's last pulse
