@@ -13,62 +13,74 @@ std::vector<std::string> validate(const DeficitDetectorParams& p) {
   return problems;
 }
 
+DeficitNormals8 deficit_normals(const DeficitIsolationParams& bp, const DeficitDetectorBlock& sums) {
+  DeficitNormals8 n;
+  n.col(0).noalias() = bp.torque_body_Nm.cwiseAbs2().transpose() * sums.weight_sum;
+  n.col(1) = sums.command.col(0);
+  n.col(2) = sums.command.col(1);
+  n.col(3).noalias() = bp.torque_body_Nm.transpose() * sums.weighted_row_sum;
+  n.col(4) = sums.command.col(2);
+  return n;
+}
+
+namespace {
+
+// Adds the row of a period with on-times u and weights w to `block`; `first`: the block is empty
+// (assigned, not added to zeros: zeroing it compiles to `rep stos`, whose start-up costs more than
+// the additions).
+void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const model::Ton8& u,
+             DeficitDetectorBlock& block, bool first) {
+  const Vec3 wy = w.cwiseProduct(y);
+  if (first) {
+    block.weight_sum = w, block.weighted_row_sum = wy;
+    block.command.setZero(), block.commanded.setZero();
+  } else {
+    block.weight_sum += w, block.weighted_row_sum += wy;
+  }
+  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+    if (!(u(i) > 0.0)) continue;  // the row adds nothing to thruster i's command sums
+    const auto c = bp.torque_body_Nm.col(i);
+    const double cwc = c.cwiseAbs2().dot(w), cwy = c.dot(wy);
+    block.command(i, 0) += u(i) * cwc;
+    block.command(i, 1) += u(i) * u(i) * cwc;
+    block.command(i, 2) += u(i) * cwy;
+    ++block.commanded(i);
+  }
+}
+
+}  // namespace
+
 void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolationParams& bp,
                            const DeficitBankState& bank, DeficitDetectorState& state) {
   if (bank.count < 2) return;
   // The row of the previous sample: its period has ended with this sample's gyro reading.
   const DeficitSample& now = bank.ring[static_cast<std::size_t>((bank.count - 2) % kMaxDeficitWindow)];
-  const Vec3& y = bank.last_torque_row;  // computed once by push_deficit_sample
-  const Vec3 w = deficit_torque_weights(bp, bank, now.ton);
-  // Per thruster i (c = M_C,i): c'Wc and c'Wy, as two 8 x 3 products.
-  const Vec3 wy = w.cwiseProduct(y);
-  const DeficitVec8 cc = bp.torque_body_Nm.cwiseAbs2().transpose() * w;
-  const DeficitVec8 cy = bp.torque_body_Nm.transpose() * wy;
-  const DeficitVec8& u = now.ton;
-  const DeficitCommandedRows commanded = (u.array() > 0.0).cast<std::int32_t>().matrix();
-  DeficitSums& block = state.block.sums;
-  // The first row of a block is assigned (not added to a zeroed block: zeroing 320 bytes compiles
-  // to `rep stos`, whose start-up cost a sixth of the detector's time); 0 + x = x, the same sums.
-  if (state.phase == 0) {
-    state.block.commanded = commanded;
-    block.col(0) = cc;
-    block.col(1) = u.cwiseProduct(cc);
-    block.col(2) = u.cwiseProduct(u).cwiseProduct(cc);
-    block.col(3) = cy;
-    block.col(4) = u.cwiseProduct(cy);
-  } else {
-    state.block.commanded += commanded;
-    block.col(0) += cc;
-    block.col(1) += u.cwiseProduct(cc);
-    block.col(2) += u.cwiseProduct(u).cwiseProduct(cc);
-    block.col(3) += cy;
-    block.col(4) += u.cwiseProduct(cy);
-  }
+  add_row(bp, bank.last_torque_row, deficit_torque_weights(bp, bank, now.ton), now.ton, state.block,
+          state.phase == 0);
   ++state.rows;
   if (++state.phase < p.evaluate_every) return;
   // The block is complete: its slot, the oldest block's, takes it.
   state.phase = 0;
   DeficitDetectorBlock& oldest = state.ring[static_cast<std::size_t>(state.slot)];
+  DeficitDetectorBlock& sums = state.sums;
+  const DeficitDetectorBlock& block = state.block;
   if (state.rows > p.window) {  // the oldest block leaves the window
-    state.sums.sums -= oldest.sums;
-    state.sums.commanded -= oldest.commanded;
+    sums.weight_sum -= oldest.weight_sum, sums.weighted_row_sum -= oldest.weighted_row_sum;
+    sums.command -= oldest.command, sums.commanded -= oldest.commanded;
   }
-  // Member by member: a whole-struct copy compiles to `rep movs`, whose start-up cost more than the
-  // copy (a quarter of the detector's time).
-  oldest.sums = block;
-  oldest.commanded = state.block.commanded;
-  state.sums.sums += block;
-  state.sums.commanded += state.block.commanded;
-  // Every row in the window has u = 0 for such a thruster, so its u-columns are exactly zero: set
+  sums.weight_sum += block.weight_sum, sums.weighted_row_sum += block.weighted_row_sum;
+  sums.command += block.command, sums.commanded += block.commanded;
+  oldest = block;
+  // Every row in the window has u = 0 for such a thruster, so its command sums are exactly zero: set
   // them so (in place, the rows leaving later subtract exact zeros), not the residue of its last pulse.
   for (int i = 0; i < model::kThrustersPerBranch; ++i)
-    if (state.sums.commanded(i) == 0) state.sums.sums(i, 1) = state.sums.sums(i, 2) = state.sums.sums(i, 4) = 0.0;
+    if (sums.commanded(i) == 0) sums.command.row(i).setZero();
   state.slot = (state.slot + 1) * p.evaluate_every < p.window ? state.slot + 1 : 0;
 
   if (state.alarm || state.rows < p.window) return;
   // statistic: the largest gain; suspect: its thruster, among the material fits when there are any
   // (then it is the one that raises the alarm).
-  const DeficitFits fits = fit_deficits(state.sums.sums);
+  const DeficitFits fits = fit_deficits(deficit_normals(bp, state.sums));
   state.statistic = 0.0;
   state.suspect = -1;
   double material_gain = -1.0;

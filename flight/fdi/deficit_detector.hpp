@@ -10,11 +10,15 @@
 // fitted per thruster; its gain (the drop of the weighted RSS, a GLR statistic) is
 //   S_i = max over a >= 0, b <= 0 of  2 g'x - x'Hx,   H = sum_k [1 u; u u^2] c' W(k) c,
 //   g = sum_k [1; u] c' W(k) y(k),  u = T_on,i(k), c = M_C,i,
-// from five sliding sums per thruster. The rows are summed in blocks of `evaluate_every` periods,
-// the gains' cadence: per period the row is added to the open block; when the block is complete it
-// enters the window and the oldest block leaves it. The window's sums at every evaluation are those
-// of its last N rows, as with a ring of single rows, for half (every = 2) the per-period memory traffic
-// and ring size.
+// a fit of five sums per thruster. W(k) is diagonal, so the two sums without u are linear in
+// sum_k W(k) and sum_k W(k) y(k) (c'Wc = sum over axes c_a^2 w_a): the window keeps those two
+// 3-vectors for all eight thrusters, and per thruster only the three sums with u, to which a row
+// adds nothing unless the thruster was commanded. Most periods command none (81 % of the MSR
+// approach, 0.26 thrusters a period on average), so a period's row costs its weights and six
+// additions. The rows are summed in blocks of `evaluate_every` periods, the gains' cadence: per
+// period the row is added to the open block; when the block is complete it enters the window and
+// the oldest block leaves it. The window's sums at every evaluation are those of its last N rows,
+// as with a ring of single rows, for a fraction of the memory traffic and ring size.
 // The alarm is raised when some thruster's S_i exceeds the threshold AND its fitted deficit is
 // material (a >= min_a or b <= -min_b). The second test keeps the small systematic errors of a
 // healthy thruster set (1 % thrust dispersion, misalignment, a pulse cut by the minimum on-time)
@@ -22,8 +26,8 @@
 // of Fonod 2015's ranges are 10-100 % of a thruster. Partners (same torque) are alike here; the
 // deficit bank's position rows tell them apart after the alarm.
 //
-// Cost: about 150 flops per period to keep the sums and the 8 gains every `evaluate_every` periods
-// (bench: BM_FdirPeriod/fdi_on less BM_FdirPeriod/fdi_published).
+// Cost: the weights and six additions per period, ten flops more per commanded thruster, and the 8
+// gains every `evaluate_every` periods (bench: BM_FdirPeriod/fdi_on less BM_FdirPeriod/fdi_published).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -45,24 +49,27 @@ struct DeficitDetectorParams {
 
 std::vector<std::string> validate(const DeficitDetectorParams& params);
 
-// The window's five sums, row i for thruster i: [c'Wc, u c'Wc, u^2 c'Wc, c'Wy, u c'Wy], which are
-// the normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits).
-using DeficitSums = DeficitNormals8;
+// Per thruster, the three sums with u, row i for thruster i: [u c'Wc, u^2 c'Wc, u c'Wy] (the
+// normal equations' hab, hbb, gb).
+using DeficitCommandSums = Eigen::Matrix<double, model::kThrustersPerBranch, 3>;
 // Per thruster, the rows in which it was commanded (T_on > 0). Kept exactly (integers) because the
-// running sums are not: once a thruster's last pulse has left the window, its u-columns (u c'Wc,
-// u^2 c'Wc, u c'Wy) are the rounding residue of adding and removing that pulse, ~1e-16 of it, not
-// zero, and its b fitted from them is arbitrary (it made a "material" b and an alarm in a Table 2 run).
+// running sums are not: once a thruster's last pulse has left the window, its command sums are the
+// rounding residue of adding and removing that pulse, ~1e-16 of it, not zero, and its b fitted
+// from them is arbitrary (it made a "material" b and an alarm in a Table 2 run).
 using DeficitCommandedRows = Eigen::Matrix<std::int32_t, model::kThrustersPerBranch, 1>;
 
+// The sums of a run of rows.
 struct DeficitDetectorBlock {
-  DeficitSums sums = DeficitSums::Zero();
+  Vec3 weight_sum = Vec3::Zero();          // [1/(N m)^2] sum_k diag W(k)
+  Vec3 weighted_row_sum = Vec3::Zero();    // [1/(N m)] sum_k W(k) y(k)
+  DeficitCommandSums command = DeficitCommandSums::Zero();  // [-] per thruster, the sums with u
   DeficitCommandedRows commanded = DeficitCommandedRows::Zero();
 };
 
 struct DeficitDetectorState {
   std::array<DeficitDetectorBlock, kMaxDeficitDetectorWindow> ring{};  // each block's contribution (window / every used)
-  DeficitDetectorBlock sums;   // over the complete blocks in the window; the u-columns of a thruster
-                               // not commanded in it are exactly zero (its hypothesis: a alone, b = 0)
+  DeficitDetectorBlock sums;   // over the complete blocks in the window; the command sums of a
+                               // thruster not commanded in it are exactly zero (its hypothesis: a alone, b = 0)
   DeficitDetectorBlock block;  // the rows of the open block
   std::int64_t rows = 0;          // torque rows added
   int slot = 0;                   // ring slot of the next block: (rows / every) % (window / every)
@@ -74,6 +81,10 @@ struct DeficitDetectorState {
   int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
                                   // a partner's twin (same torque) is as likely
 };
+
+// The normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits) on the rows
+// summed in `sums`: haa = (M_C o M_C)' sum W, ga = M_C' sum W y, the rest the command sums.
+DeficitNormals8 deficit_normals(const DeficitIsolationParams& bank_params, const DeficitDetectorBlock& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,

@@ -85,8 +85,8 @@ void run(const DeficitIsolationParams& bp, const DeficitDetectorParams& dp, cons
 }
 
 // The row's five contributions written out from the header's formulas.
-DeficitSums row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3& w, const model::Ton8& ton) {
-  DeficitSums r;
+DeficitNormals8 row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3& w, const model::Ton8& ton) {
+  DeficitNormals8 r;
   for (int i = 0; i < kN; ++i) {
     const Vec3 c = p.torque_body_Nm.col(i);
     const double cwc = (c.cwiseProduct(w)).dot(c), cwy = (c.cwiseProduct(w)).dot(y), u = ton(i);
@@ -95,7 +95,7 @@ DeficitSums row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3&
   return r;
 }
 
-// A thruster whose last pulse has left the window: its u-columns in the running sums would be the
+// A thruster whose last pulse has left the window: its command sums in the running sums would be the
 // rounding residue of that pulse (~2e-11 here without the reset), but they are exactly zero, the
 // commanded-row count is exact, and its fitted b is exactly 0 (b is not identifiable without a
 // command). Thruster 3 fires in the first 60 rows only, window 40.
@@ -116,7 +116,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
     commanded_in_window = 0;  // row j is the period of sample j: the window holds rows k - window .. k - 1
     for (int j = k - dp.window; j < k; ++j) commanded_in_window += s[j].ton(3) > 0.0;
     EXPECT_EQ(st.det.sums.commanded(3), commanded_in_window) << k;
-    const DeficitNormals8& n = st.det.sums.sums;
+    const DeficitNormals8 n = deficit_normals(bp, st.det.sums);
     if (commanded_in_window == 0) {
       EXPECT_EQ(n(3, 1), 0.0) << k;
       EXPECT_EQ(n(3, 2), 0.0) << k;
@@ -143,7 +143,7 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
   Truth t;
   t.samples = 1501, t.fault = {3, 700, 0.0, -0.6};  // a fault half-way: sums of both kinds of data
   const std::vector<DeficitSample> s = generate(bp, t);
-  std::vector<DeficitSums> rows;  // row k: samples k, k + 1
+  std::vector<DeficitNormals8> rows;  // row k: samples k, k + 1
   int checked = 0;
   Loop r;
   run(bp, dp, s, r, [&](int k, const Loop& st) {
@@ -155,9 +155,9 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
                             s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window) return;
-    DeficitSums direct = DeficitSums::Zero(), scale = DeficitSums::Zero();
+    DeficitNormals8 direct = DeficitNormals8::Zero(), scale = DeficitNormals8::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
-    const double err = ((st.det.sums.sums - direct).cwiseAbs().array() / scale.array()).maxCoeff();
+    const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
     double best = 0.0;
     int suspect = -1;
@@ -185,7 +185,7 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
   Truth t;
   t.samples = 1501, t.fault = {3, 700, 0.0, -0.6};  // a fault half-way: sums of both kinds of data
   const std::vector<DeficitSample> s = generate(bp, t);
-  std::vector<DeficitSums> rows;  // row k: samples k, k + 1
+  std::vector<DeficitNormals8> rows;  // row k: samples k, k + 1
   int checked = 0;
   Loop r;
   run(bp, dp, s, r, [&](int k, const Loop& st) {
@@ -197,9 +197,9 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
                             s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window || rows.size() % every != 0) return;
-    DeficitSums direct = DeficitSums::Zero(), scale = DeficitSums::Zero();
+    DeficitNormals8 direct = DeficitNormals8::Zero(), scale = DeficitNormals8::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
-    const double err = ((st.det.sums.sums - direct).cwiseAbs().array() / scale.array()).maxCoeff();
+    const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
     double best = 0.0;
     int suspect = -1;
@@ -300,7 +300,8 @@ TEST(DeficitDetector, SmallDeficitIsSignificantButNotMaterial) {
   EXPECT_FALSE(lax.det.alarm);
   EXPECT_GT(lax.det.statistic, dp.threshold);
   EXPECT_TRUE(lax.det.suspect == f || lax.det.suspect == f + 4) << lax.det.suspect;
-  const auto c = lax.det.sums.sums.row(f);
+  const DeficitNormals8 n = deficit_normals(bp, lax.det.sums);
+  const auto c = n.row(f);
   const DeficitFit fit = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
   EXPECT_NEAR(fit.b, -0.03, 0.01);
   EXPECT_LT(fit.a, dp.min_a);
