@@ -41,6 +41,11 @@ Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_iner
   return rotation_vector_from_quat(q_inertial_from_desired.conjugate() * q_inertial_from_body);
 }
 
+Vec3 small_angle_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body) {
+  const Quat q = q_inertial_from_desired.conjugate() * q_inertial_from_body;
+  return (q.w() < 0.0 ? -2.0 : 2.0) * q.vec();
+}
+
 Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s) {
   const double half = 0.5 * mean_motion_radps * t_s;
   return Quat(std::cos(half), 0.0, 0.0, std::sin(half));

@@ -28,6 +28,13 @@ Vec3 rotation_vector_from_quat(const Quat& q);
 // frame to the actual one, q_desired_from_body = q_inertial_from_desired^-1 * q_inertial_from_body.
 Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body);
 
+// The same error in small-angle coordinates: 2 vec(q_desired_from_body), of the shorter of q and -q.
+// Its direction is the rotation vector's and its length 2 sin(angle / 2), the angle less angle^3 / 24
+// (3e-7 rad at 1 deg): the rotation vector, Euler angles or any other small-angle coordinates to
+// first order, where a linearised attitude model (Fonod 2015, eq. 15) makes no difference between
+// them. No division, no series: it runs in the attitude FDI scheme every control period.
+Vec3 small_angle_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body);
+
 // Orientation of the MSR LVLH frame in the run's inertial frame at time t for mean motion n.
 Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s);
 

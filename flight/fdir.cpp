@@ -152,13 +152,15 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
       fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s), alarm_before);
 
   const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
-  if (p.deficit_isolation)
-    fdi::push_deficit_sample(p.deficit, state.deficit_bank,
-                             {.omega_body_radps = meas.omega_body_radps,
-                              .r_lvlh_m = meas.r_lvlh_m,
-                              .q_lvlh_from_body = q_lvlh_from_body,
-                              .ton = in.ton,
-                              .mass_kg = p.deficit.mass_kg - meas.propellant_used_kg});
+  if (p.deficit_isolation) {
+    fdi::DeficitSample& sample = fdi::next_deficit_sample(state.deficit_bank);
+    sample.omega_body_radps = meas.omega_body_radps;
+    sample.r_lvlh_m = meas.r_lvlh_m;
+    sample.q_lvlh_from_body = q_lvlh_from_body;
+    sample.ton = in.ton;
+    sample.mass_kg = p.deficit.mass_kg - meas.propellant_used_kg;
+    fdi::push_deficit_sample(p.deficit, state.deficit_bank);
+  }
   if (p.deficit_detection) {
     fdi::step_deficit_detector(p.detector, p.deficit, state.deficit_bank, state.detector);
     const fdi::DeficitDecision& d =
@@ -182,8 +184,8 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
   }
   if (p.attitude_enabled) {
     // Eq. 16-17: u_c = M_C T_on; y is the measured attitude about the target-pointing reference,
-    // the small angles of the linearised model (eq. 15).
-    const Vec3 angles = attitude_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
+    // the small angles of the linearised model (eq. 15): 2 vec(q), equal to them to first order.
+    const Vec3 angles = small_angle_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
     fdi::step_fdi_scheme(p.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption,
                          out.attitude);
     if (p.deficit_isolation) deficit_confirmation(p, state, state.attitude_deficit, state.attitude, out.attitude);

@@ -25,15 +25,14 @@ DeficitNormals8 deficit_normals(const DeficitIsolationParams& bp, const DeficitD
 
 namespace {
 
-// Adds the row of a period with on-times u and weights w to `block`; `first`: the block is empty
-// (assigned, not added to zeros: zeroing it compiles to `rep stos`, whose start-up costs more than
-// the additions).
+// Adds the row of a period with on-times u and weights w to `block`; `first`: the block is empty,
+// its weight sums are assigned (its command sums are zero: step_deficit_detector zeroes the rows it
+// used, not all of them, which compiles to `rep stos`, whose start-up costs more than the rest).
 void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const model::Ton8& u,
              DeficitDetectorBlock& block, bool first) {
   const Vec3 wy = w.cwiseProduct(y);
   if (first) {
     block.weight_sum = w, block.weighted_row_sum = wy;
-    block.command.setZero(), block.commanded.setZero();
   } else {
     block.weight_sum += w, block.weighted_row_sum += wy;
   }
@@ -63,7 +62,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   state.phase = 0;
   DeficitDetectorBlock& oldest = state.ring[static_cast<std::size_t>(state.slot)];
   DeficitDetectorBlock& sums = state.sums;
-  const DeficitDetectorBlock& block = state.block;
+  DeficitDetectorBlock& block = state.block;
   if (state.rows > p.window) {  // the oldest block leaves the window
     sums.weight_sum -= oldest.weight_sum, sums.weighted_row_sum -= oldest.weighted_row_sum;
     sums.command -= oldest.command, sums.commanded -= oldest.commanded;
@@ -71,6 +70,9 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   sums.weight_sum += block.weight_sum, sums.weighted_row_sum += block.weighted_row_sum;
   sums.command += block.command, sums.commanded += block.commanded;
   oldest = block;
+  for (int i = 0; i < model::kThrustersPerBranch; ++i)  // the open block starts empty
+    if (block.commanded(i) != 0) block.command.row(i).setZero();
+  block.commanded.setZero();
   // Every row in the window has u = 0 for such a thruster, so its command sums are exactly zero: set
   // them so (in place, the rows leaving later subtract exact zeros), not the residue of its last pulse.
   for (int i = 0; i < model::kThrustersPerBranch; ++i)

@@ -215,7 +215,8 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
   return problems;
 }
 
-void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank, const DeficitSample& sample) {
+void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank) {
+  const DeficitSample& sample = next_deficit_sample(bank);
   if (bank.count == 0) bank.torque_mean_square = bank.noise_floor_sq = torque_noise_floor_sq(p);
   if (bank.count > 0) bank.last_torque_row = deficit_torque_row(p, sample_at(bank, bank.count - 1), sample);
   if (bank.count > 0 && !bank.frozen) {
@@ -227,7 +228,6 @@ void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank
       bank.torque_mean_square_snapshot = bank.torque_mean_square;
     }
   }
-  bank.ring[static_cast<std::size_t>(bank.count % kMaxDeficitWindow)] = sample;
   ++bank.count;
   bank.snapshot_phase = bank.snapshot_phase + 1 < p.noise_snapshot_periods ? bank.snapshot_phase + 1 : 0;
 }

@@ -109,9 +109,19 @@ struct DeficitBankState {
   Vec3 last_torque_row = Vec3::Zero();  // [N m] torque row of sample count - 2 (valid from count >= 2)
 };
 
-// Stores this period's sample and, until frozen, updates the sigma_0 estimate with the torque row
-// of the previous period.
-void push_deficit_sample(const DeficitIsolationParams& params, DeficitBankState& bank, const DeficitSample& sample);
+// This period's sample is written in place, into the slot next_deficit_sample gives, then
+// push_deficit_sample stores it and, until frozen, updates the sigma_0 estimate with the torque row
+// of the previous period. (In place: a sample built on the stack by field copies and read back by
+// wider loads stalled on store forwarding.)
+inline DeficitSample& next_deficit_sample(DeficitBankState& bank) {
+  return bank.ring[static_cast<std::size_t>(bank.count % kMaxDeficitWindow)];
+}
+void push_deficit_sample(const DeficitIsolationParams& params, DeficitBankState& bank);
+inline void push_deficit_sample(const DeficitIsolationParams& params, DeficitBankState& bank,
+                                const DeficitSample& sample) {
+  next_deficit_sample(bank) = sample;
+  push_deficit_sample(params, bank);
+}
 
 // Every hypothesis fitted on samples [first, bank.count), onsets scanned over [first, last_onset].
 struct DeficitHypotheses {

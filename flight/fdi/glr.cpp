@@ -131,9 +131,10 @@ double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int
   return 0.5 * window * sum;
 }
 
-GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
+bool step_glr(const GlrParams& params, GlrState& state, const Vec3& r, GlrStatistic& statistic) {
   const int window = clamped_window(params.window);
-  GlrOutput out;
+  statistic = GlrStatistic();
+  bool alarm = false;
   const int slot = state.next < window ? state.next : 0;  // the oldest sample's slot takes r(k)
   state.next = slot + 1 < window ? slot + 1 : 0;          // no integer division in the loop
   state.count = std::min(state.count + 1, window);
@@ -151,7 +152,7 @@ GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
       for (; j + 1 < n_others; j += 2) even += others[j], odd += others[j + 1];
       if (j < n_others) even += others[j];
       const double sum_r2 = even + odd + r1_squared;
-      out.statistic = GlrStatistic::of_scalar_sum(sum_r2, params.sigma0, window, params.sides);
+      statistic = GlrStatistic::of_scalar_sum(sum_r2, params.sigma0, window, params.sides);
       if (state.bounds_window != window || state.bounds_threshold != params.threshold ||
           state.bounds_sigma0 != params.sigma0) {
         const GlrRatioBounds b = glr_ratio_bounds(window, params.threshold);
@@ -162,7 +163,7 @@ GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
       }
       // Eq. 40, S > J_th, evaluated only near or beyond the bounds (see glr.hpp).
       if (sum_r2 < state.sum_inside_lo || sum_r2 > state.sum_inside_hi)
-        out.alarm = out.statistic.value() > params.threshold;
+        alarm = statistic.value() > params.threshold;
     }
     state.r1_squared[slot] = state.r1_squared[slot + window] = r1_squared;
   } else {
@@ -170,12 +171,12 @@ GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
     if (full) {
       Mat3 moment = Mat3::Zero();
       for (int j = 0; j < window; ++j) moment.noalias() += state.samples[j] * state.samples[j].transpose();
-      out.statistic =
+      statistic =
           GlrStatistic::of_value(glr_whitened_statistic(moment / window, params.residual_dim, window, params.sides));
-      out.alarm = out.statistic.value() > params.threshold;  // eq. 40
+      alarm = statistic.value() > params.threshold;  // eq. 40
     }
   }
-  return out;
+  return alarm;
 }
 
 }  // namespace chaser::flight::fdi

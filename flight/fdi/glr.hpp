@@ -129,7 +129,14 @@ GlrRatioBounds glr_ratio_bounds(int window, double threshold);
 double glr_whitened_statistic(const Mat3& whitened_moment, int residual_dim, int window,
                               GlrSides sides);
 
-// Pushes r(k) into the window and evaluates eqs. 40-41 (or the whitened test).
-GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r);
+// Pushes r(k) into the window and evaluates eqs. 40-41 (or the whitened test): writes S^{N_d}(k)
+// and returns the alarm. (Written in place, not returned in a GlrOutput: the caller's read of the
+// returned struct, wider than its fields' stores, stalled on store forwarding.)
+bool step_glr(const GlrParams& params, GlrState& state, const Vec3& r, GlrStatistic& statistic);
+inline GlrOutput step_glr(const GlrParams& params, GlrState& state, const Vec3& r) {
+  GlrOutput out;
+  out.alarm = step_glr(params, state, r, out.statistic);
+  return out;
+}
 
 }  // namespace chaser::flight::fdi

@@ -55,6 +55,23 @@ TEST(Rotation, AttitudeErrorIsBodyFramePerturbation) {
   EXPECT_LT((attitude_error_body(q_des, q) - delta).norm(), 1e-15);
 }
 
+// The small-angle error has the rotation vector's direction and length 2 sin(angle / 2), for either
+// sign of the quaternion, from 1e-9 rad to 3 rad: 2 sin(a/2) times the axis within 1e-15 (the two
+// quaternion products round the unit quaternions' components, a few 1e-16 each, whatever the angle).
+// Its departure from the rotation vector itself stays below a^3 / 24, 3e-7 rad at 1 deg.
+TEST(Rotation, SmallAngleErrorIsTwiceTheVectorPartOfTheShorterRotation) {
+  const Quat q_des = quat_from_rotation_vector(Vec3(0.4, -0.1, 0.2));
+  const Vec3 axis = Vec3(-0.6, 0.3, 0.74).normalized();
+  for (double a = 1e-9; a < 3.0; a *= 1.3) {
+    const Quat q = q_des * quat_from_rotation_vector(a * axis);
+    for (const double sign : {1.0, -1.0}) {
+      const Vec3 e = small_angle_error_body(q_des, Quat(sign * q.coeffs()));
+      EXPECT_LT((e - (2.0 * std::sin(0.5 * a)) * axis).norm(), 1e-15) << a;
+      EXPECT_LE((e - attitude_error_body(q_des, q)).norm(), a * a * a / 24.0 + 1e-15) << a;
+    }
+  }
+}
+
 // After a quarter orbit the LVLH x axis (radial) points along the initial y axis (along-track).
 TEST(Rotation, LvlhTurnsAboutOrbitNormal) {
   const double n = 1e-3;
