@@ -147,9 +147,11 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
 
   // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.
   const bool alarm_before = state.position.alarm || state.attitude.alarm;
-  out.over_consumption = fdi::step_event_resolution(
-      p.event, state.event, meas.propellant_used_kg,
-      fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s), alarm_before);
+  // The expected increment is read only once the resolution is active (after an alarm).
+  const double expected_kg =
+      state.event.active ? fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s) : 0.0;
+  out.over_consumption =
+      fdi::step_event_resolution(p.event, state.event, meas.propellant_used_kg, expected_kg, alarm_before);
 
   const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
   if (p.deficit_isolation) {

@@ -125,7 +125,10 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   const Mat3& I = p.inertia_kgm2;
   const Vec3& w = now.omega_body_radps;
   const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
-  return I * d_omega_dt + w.cross(I * w) - p.torque_body_Nm * now.ton;
+  Vec3 row = I * d_omega_dt + w.cross(I * w);
+  for (int i = 0; i < model::kThrustersPerBranch; ++i)  // M_C T_on over the commanded thrusters: most periods none
+    if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
+  return row;
 }
 
 Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
