@@ -83,16 +83,21 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   // statistic: the largest gain; suspect: its thruster, among the material fits when there are any
   // (then it is the one that raises the alarm).
   const DeficitFits fits = fit_deficits(deficit_normals(bp, state.sums));
-  state.statistic = 0.0;
-  state.suspect = -1;
-  double material_gain = -1.0;
-  int material_suspect = -1;
+  // Selects, not branches: which gain leads changes from one evaluation to the next, and a
+  // mispredicted branch per thruster cost more than the fits.
+  double statistic = 0.0, material_gain = -1.0;
+  int suspect = -1, material_suspect = -1;
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     const double gain = fits.gain(i);
-    if (gain > state.statistic) state.statistic = gain, state.suspect = i;
-    if ((fits.a(i) >= p.min_a || fits.b(i) <= -p.min_b) && gain > material_gain) material_gain = gain, material_suspect = i;
+    const bool leads = gain > statistic;
+    statistic = leads ? gain : statistic;
+    suspect = leads ? i : suspect;
+    const bool material_leads = ((fits.a(i) >= p.min_a) | (fits.b(i) <= -p.min_b)) & (gain > material_gain);
+    material_gain = material_leads ? gain : material_gain;
+    material_suspect = material_leads ? i : material_suspect;
   }
-  if (material_suspect >= 0) state.suspect = material_suspect;
+  state.statistic = statistic;
+  state.suspect = material_suspect >= 0 ? material_suspect : suspect;
   if (material_gain > p.threshold) {
     state.alarm = true;
     state.alarm_sample = bank.count - 1;
