@@ -147,7 +147,7 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
 
   // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.
   const bool alarm_before = state.position.alarm || state.attitude.alarm;
-  // The expected increment is read only once the resolution is active (after an alarm).
+  // The expected increment is read only while the resolution is active (step_event_resolution).
   const double expected_kg =
       state.event.active ? fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s) : 0.0;
   out.over_consumption =

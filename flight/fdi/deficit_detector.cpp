@@ -25,17 +25,11 @@ DeficitNormals8 deficit_normals(const DeficitIsolationParams& bp, const DeficitD
 
 namespace {
 
-// Adds the row of a period with on-times u and weights w to `block`; `first`: the block is empty,
-// its weight sums are assigned (its command sums are zero: step_deficit_detector zeroes the rows it
-// used, not all of them, which compiles to `rep stos`, whose start-up costs more than the rest).
+// Adds the row of a period with on-times u and weights w to `block`.
 void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const model::Ton8& u,
-             DeficitDetectorBlock& block, bool first) {
+             DeficitDetectorBlock& block) {
   const Vec3 wy = w.cwiseProduct(y);
-  if (first) {
-    block.weight_sum = w, block.weighted_row_sum = wy;
-  } else {
-    block.weight_sum += w, block.weighted_row_sum += wy;
-  }
+  block.weight_sum += w, block.weighted_row_sum += wy;
   for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     if (!(u(i) > 0.0)) continue;  // the row adds nothing to thruster i's command sums
     const auto c = bp.torque_body_Nm.col(i);
@@ -54,8 +48,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   if (bank.count < 2) return;
   // The row of the previous sample: its period has ended with this sample's gyro reading.
   const DeficitSample& now = bank.ring[static_cast<std::size_t>((bank.count - 2) % kMaxDeficitWindow)];
-  add_row(bp, bank.last_torque_row, deficit_torque_weights(bp, bank, now.ton), now.ton, state.block,
-          state.phase == 0);
+  add_row(bp, bank.last_torque_row, deficit_torque_weights(bp, bank, now.ton), now.ton, state.block);
   ++state.rows;
   if (++state.phase < p.evaluate_every) return;
   // The block is complete: its slot, the oldest block's, takes it.
@@ -70,13 +63,17 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   sums.weight_sum += block.weight_sum, sums.weighted_row_sum += block.weighted_row_sum;
   sums.command += block.command, sums.commanded += block.commanded;
   oldest = block;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)  // the open block starts empty
+  // The next block starts empty. Only the command rows it used are zeroed: zeroing the whole block
+  // compiles to `rep stos`, whose start-up costs more than the detector's additions.
+  block.weight_sum.setZero(), block.weighted_row_sum.setZero();
+  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
     if (block.commanded(i) != 0) block.command.row(i).setZero();
-  block.commanded.setZero();
-  // Every row in the window has u = 0 for such a thruster, so its command sums are exactly zero: set
-  // them so (in place, the rows leaving later subtract exact zeros), not the residue of its last pulse.
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+    // A thruster not commanded in the window: every row has u = 0, so its command sums are exactly
+    // zero. Set them so (in place: the rows leaving later subtract exact zeros), not the residue of
+    // its last pulse.
     if (sums.commanded(i) == 0) sums.command.row(i).setZero();
+  }
+  block.commanded.setZero();
   state.slot = (state.slot + 1) * p.evaluate_every < p.window ? state.slot + 1 : 0;
 
   if (state.alarm || state.rows < p.window) return;

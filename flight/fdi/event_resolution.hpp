@@ -50,7 +50,9 @@ double expected_propellant_increment_kg(const model::Ton8& ton,
                                         double period_s);
 
 // One period. measured_used_kg: the sensor reading (cumulative) at this period; expected_increment_kg:
-// the predicted consumption between the previous reading and this one. Returns over_consumption.
+// the predicted consumption between the previous reading and this one, read only while the
+// resolution is active (state.active: from the period after the first alarm), so a caller may skip
+// computing it before. Returns over_consumption.
 bool step_event_resolution(const EventResolutionParams& params, EventResolutionState& state,
                            double measured_used_kg, double expected_increment_kg, bool alarm);
 
