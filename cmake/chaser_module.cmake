@@ -1,5 +1,5 @@
 # chaser_module(NAME DEPS...): a static library from every .cpp of the current folder.
-# One library per folder keeps the dependency rules of DESIGN.md visible in the build.
+# One library per folder keeps the dependency rules of docs/architecture.md visible in the build.
 function(chaser_module name)
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   if(sources)

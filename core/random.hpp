@@ -1,5 +1,5 @@
 #pragma once
-// Deterministic random streams (DESIGN.md: "Deterministic randomness").
+// Deterministic random streams (docs/architecture.md: "Deterministic randomness").
 //
 // A run's seed comes from (campaign seed, run index); inside the run every noise source draws from
 // its own stream, seeded by hashing the stream's name with the run seed, so adding a block never

@@ -1,6 +1,6 @@
 #pragma once
 // Simulation time is an integer count of nanoseconds, so every rate divides exactly and no block
-// infers its step from when it was called (DESIGN.md, "Rules that keep it simple").
+// infers its step from when it was called (docs/architecture.md, "Rules that keep it simple").
 #include <cmath>
 #include <cstdint>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The on-board software of one control period, in order (DESIGN.md, "One control period"):
+// The on-board software of one control period, in order (docs/architecture.md, "One control period"):
 // navigation -> guidance -> position and attitude control -> TMU -> TMF. It sees only sensor
 // measurements and its own commands, never the truth.
 #include <array>

@@ -2,7 +2,7 @@
 // Scenario files: parse, apply command-line overrides, validate completely, hash.
 //
 // Every problem in a file is reported at once, each with the key path where it was found and the
-// allowed range or type (DESIGN.md: "A scenario is validated completely before a run starts").
+// allowed range or type (docs/architecture.md: "A scenario is validated completely before a run starts").
 // Nothing is defaulted: a missing key is an error. The key layout and every rule are documented in
 // docs/scenario.md.
 #include <optional>

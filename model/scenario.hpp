@@ -1,6 +1,6 @@
 #pragma once
 // A complete, validated scenario: every parameter of one run. Loaded by io/, never mutated during a
-// run (DESIGN.md: parameters, state and algorithm are three things).
+// run (docs/architecture.md: parameters, state and algorithm are three things).
 #include <cstdint>
 #include <string>
 #include <vector>

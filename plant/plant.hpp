@@ -24,7 +24,7 @@ struct PlantParams {
   TimeNs delay_max_ns = 0;
 };
 
-// Every noise source draws from its own named stream (DESIGN.md, deterministic randomness).
+// Every noise source draws from its own named stream (docs/architecture.md, deterministic randomness).
 struct PlantStreams {
   RandomStream delay, force_noise, torque_noise, propellant_gauge;
   SensorNoise sensors;

@@ -1,5 +1,5 @@
 #pragma once
-// Piecewise-exact propagation of the chaser's coupled 6-DOF truth motion (DESIGN.md, "One control
+// Piecewise-exact propagation of the chaser's coupled 6-DOF truth motion (docs/architecture.md, "One control
 // period"): the thruster model cuts each control period into pieces with constant inputs, and
 // propagate_piece integrates one piece from edge to edge, so no pulse edge ever falls inside a step.
 //
