@@ -30,7 +30,7 @@ nlohmann::ordered_json campaign_json(const CampaignPlan& plan, const Shard& shar
   j["run_duration_s"] = run_duration_s(plan.nominal);
   j["threshold_margin"] = c.threshold_margin;
   j["glr_threshold"] = plan.nominal.fdi.glr_threshold;
-  j["fdi_recovery"] = plan.nominal.fdi.recovery;
+  j["fdi_recovery"] = plan.nominal.fdi.recovery != model::RecoveryPolicy::kNone;
   return j;
 }
 

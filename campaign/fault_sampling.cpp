@@ -21,13 +21,14 @@ model::FaultKind kind_of(FaultCase c) {
 }  // namespace
 
 std::optional<model::FaultParams> sample_fault(FaultCase fault_case, const model::CampaignParams& params,
-                                               std::uint64_t run_seed) {
+                                               model::ThrusterMask candidates, std::uint64_t run_seed) {
   if (fault_case == FaultCase::kNone) return std::nullopt;
   RandomStream rng(run_seed, "campaign/fault");
   model::FaultParams f;
   f.kind = kind_of(fault_case);
-  const int drawn = static_cast<int>(rng.uniform() * model::kThrustersPerBranch);
-  f.thruster = model::branch_first(0) + std::min(drawn, model::kThrustersPerBranch - 1);
+  const model::ThrusterList list = model::thruster_list(candidates);
+  const int drawn = static_cast<int>(rng.uniform() * list.count);
+  f.thruster = list.index[static_cast<std::size_t>(std::clamp(drawn, 0, std::max(list.count - 1, 0)))];
   f.onset_s = params.onset_s;
   f.leak_slope_per_s = params.leak_slope_per_s;
   if (fault_case == FaultCase::kLeak) f.leak_size = rng.uniform(params.leak_size_min, params.leak_size_max);

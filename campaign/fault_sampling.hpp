@@ -7,13 +7,15 @@
 #include "campaign/cases.hpp"
 #include "model/campaign.hpp"
 #include "model/faults.hpp"
+#include "model/thrusters.hpp"
 
 namespace chaser::campaign {
 
-// Draws from the stream "campaign/fault" of the run seed: the thruster, then the size (leak and
-// loss only). Case none has no fault.
+// Draws from the stream "campaign/fault" of the run seed: the thruster, uniformly among
+// `candidates` (the starting active set: the thrusters that fly when the fault strikes), then the
+// size (leak and loss only). Case none has no fault.
 std::optional<model::FaultParams> sample_fault(FaultCase fault_case, const model::CampaignParams& params,
-                                               std::uint64_t run_seed);
+                                               model::ThrusterMask candidates, std::uint64_t run_seed);
 
 // The size the runs.csv row reports: 1 for stuck cases, the leak or loss size, 0 without a fault.
 double fault_size(const std::optional<model::FaultParams>& fault);

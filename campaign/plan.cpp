@@ -16,7 +16,7 @@ RunSetup make_run_setup(const CampaignPlan& plan, std::int64_t run) {
   setup.run = run;
   setup.seed = run_seed(params.seed, static_cast<std::uint64_t>(run));
   setup.fault_case = plan.layout.case_of(run);
-  setup.fault = sample_fault(setup.fault_case, params, setup.seed);
+  setup.fault = sample_fault(setup.fault_case, params, model::initial_active_set(plan.nominal.thrusters), setup.seed);
   setup.truth = plan.nominal;
   setup.truth.seed = setup.seed;  // the plant draws its own noises (thrust dispersion included) from it
   setup.truth.duration_s = run_duration_s(plan.nominal);

@@ -58,7 +58,7 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
                                kPresetTable2);
       return std::nullopt;
     }
-    overrides.push_back("fdi.recovery=false");  // the paper evaluates each scheme alone
+    overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
     if (runs_text.empty() && args.cases.empty()) runs_text = kTable2Runs;
   }
   if (args.seed) overrides.push_back(fmt::format("campaign.seed={}", *args.seed));

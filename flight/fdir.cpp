@@ -8,16 +8,28 @@
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_generator.hpp"
 #include "flight/guidance.hpp"
+#include "model/recovery.hpp"
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
 
 namespace {
 
-// thruster_inputs: each thruster's input direction in the model (3 x 8: M_F or M_C).
+fdi::WatchedConfig watched_config(const model::Scenario& s, model::ThrusterMask mask) {
+  return model::configuration_matrix(s.thrusters, mask, s.chaser.com_body_m).leftCols<fdi::kWatchedThrusters>();
+}
+
+// The fault directions of a scheme in its model's input space (3 x lanes: M_F in LVLH or M_C).
+fdi::Mat3W thruster_inputs(const model::Scenario& s, FdiModel model, const fdi::WatchedConfig& config) {
+  if (model == FdiModel::kAttitude) return config.bottomRows<3>();
+  // The position model's input is the force in LVLH (eq. 20): the fault directions are those of
+  // the attitude the chaser flies, target pointing, not of body axes aligned with LVLH.
+  const Mat3 R_lvlh_from_body = target_pointing_q_lvlh_from_body(s.guidance.approach_axis_lvlh).toRotationMatrix();
+  return R_lvlh_from_body * config.topRows<3>();
+}
+
 fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSchemeParams& scheme,
-                                   const fdi::DesignInputs& inputs, const fdi::Mat38& thruster_inputs) {
-  const fdi::ResidualDesign design = fdi::design_residual_generator(inputs);
+                                   const fdi::ResidualDesign& design) {
   fdi::FdiSchemeParams p;
   p.residual = fdi::make_residual_generator(design);
   p.glr.window = s.fdi.glr_window;
@@ -32,18 +44,23 @@ fdi::FdiSchemeParams scheme_params(const model::Scenario& s, const model::FdiSch
   p.isolation.window = s.fdi.isolation_window;
   p.isolation.confirmation = s.fdi.confirmation_window;
   p.isolation.settle = s.fdi.isolation_settle;
-  if (s.fdi.isolation_method == model::IsolationMethod::kSignature) {
-    p.isolation.criterion = fdi::IsolationCriterion::kSignature;
-    p.isolation.signature = fdi::make_signature_filter(p.residual, thruster_inputs);
-  }
   p.isolate = s.fdi.isolation_method != model::IsolationMethod::kDeficit;
   p.period_s = s.control_period_s;
   return p;
 }
 
+// The scheme of the starting set, re-pointed at another set's thrusters (signature isolation).
+fdi::FdiSchemeParams for_set(const model::Scenario& s, fdi::FdiSchemeParams p, const fdi::Mat3W& inputs) {
+  if (s.fdi.isolation_method == model::IsolationMethod::kSignature) {
+    p.isolation.criterion = fdi::IsolationCriterion::kSignature;
+    p.isolation.signature = fdi::make_signature_filter(p.residual, inputs);
+  }
+  return p;
+}
+
 int whole_periods(double seconds, double period_s) { return static_cast<int>(std::lround(seconds / period_s)); }
 
-fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const model::ConfigMatrix& config) {
+fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const fdi::WatchedConfig& config) {
   const double T = s.control_period_s;
   fdi::DeficitIsolationParams p;
   p.inertia_kgm2 = s.chaser.inertia_kgm2;
@@ -66,30 +83,109 @@ fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const model
   return p;
 }
 
+// The active sets the FDI may watch: the starting one, then every set the recovery policy can
+// switch to from there (breadth first), those of the FDI's size only.
+std::vector<model::ThrusterMask> watchable_sets(const model::Scenario& s) {
+  std::vector<model::ThrusterConfiguration> queue{model::initial_configuration(s.thrusters)};
+  std::vector<model::ThrusterMask> sets;
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const model::ThrusterConfiguration c = queue[q];
+    if (std::find(sets.begin(), sets.end(), c.active) != sets.end()) continue;
+    if (model::thruster_count(c.active) == fdi::kWatchedThrusters) sets.push_back(c.active);
+    const model::ThrusterList list = model::thruster_list(c.active);
+    for (int k = 0; k < list.count; ++k)
+      if (const auto next = model::recover(s.thrusters, s.fdi.recovery, c, list.index[k])) queue.push_back(*next);
+  }
+  return sets;
+}
+
 // A scheme's isolation by the deficit bank: once the scheme has alarmed, the bank's decision (made
 // a few seconds later) becomes the scheme's confirmed thruster.
-void deficit_confirmation(const FdirParams& p, FdirState& state, fdi::DeficitDecisionState& decision,
+void deficit_confirmation(const FdiWatchedParams& w, FdirState& state, fdi::DeficitDecisionState& decision,
                           fdi::FdiSchemeState& scheme, fdi::FdiSchemeOutput& out) {
-  const fdi::DeficitDecision& d =
-      fdi::step_deficit_decision(p.deficit, state.deficit_bank, decision, scheme.alarm ? scheme.alarm_period : -1);
+  const std::int64_t alarm_sample = scheme.alarm ? scheme.alarm_period - state.bank_first_period : -1;
+  const fdi::DeficitDecision& d = fdi::step_deficit_decision(w.deficit, state.deficit_bank, decision, alarm_sample);
   if (d.decided && d.thruster >= 0 && scheme.confirmed < 0) scheme.confirmed = d.thruster;
   out.confirmed = scheme.confirmed;
+}
+
+// While disarmed (settling after a recovery) a scheme's latches are cleared every period: its
+// residual generator and GLR keep running, its decisions do not count.
+void clear_latches(fdi::FdiSchemeState& scheme, fdi::FdiSchemeOutput& out) {
+  scheme.alarm = false;
+  scheme.alarm_period = -1;
+  scheme.confirmed = -1;
+  scheme.isolation = fdi::IsolationState{};
+  out.alarm = false;
+  out.candidate = out.confirmed = -1;
+  out.alarm_time_s = -1.0;
+}
+
+void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model::SensorMeasurements& meas,
+                       const FdirInput& in, const Quat& q_lvlh_from_body) {
+  fdi::DeficitSample& sample = fdi::next_deficit_sample(state.deficit_bank);
+  sample.omega_body_radps = meas.omega_body_radps;
+  sample.r_lvlh_m = meas.r_lvlh_m;
+  sample.q_lvlh_from_body = q_lvlh_from_body;
+  sample.ton = in.ton;
+  sample.mass_kg = w.deficit.mass_kg - meas.propellant_used_kg;
+  fdi::push_deficit_sample(w.deficit, state.deficit_bank);
+}
+
+void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& state, const FdirInput& in,
+                   FdirOutput& out) {
+  fdi::step_deficit_detector(p.detector, w.deficit, state.deficit_bank, state.detector);
+  const fdi::DeficitDecision& d = fdi::step_deficit_decision(w.deficit, state.deficit_bank, state.detector_deficit,
+                                                             state.detector.alarm ? state.detector.alarm_sample : -1);
+  out.detector.glr = fdi::GlrStatistic::of_value(state.detector.statistic);
+  out.detector.alarm = state.detector.alarm;
+  out.detector.candidate = state.detector.suspect;
+  out.detector.confirmed = d.thruster;
+  out.detector.alarm_time_s =
+      state.detector.alarm ? static_cast<double>(state.detector.alarm_sample + state.bank_first_period) * p.period_s
+                           : -1.0;
+  if (d.thruster >= 0 && state.detector_isolated_s < 0) state.detector_isolated_s = in.t_s;
+}
+
+// The watch starts (again) at control period `period`: fresh decisions, bank and detector.
+void start_watch(FdirState& state, std::int64_t period, double t_s) {
+  state.armed = true;
+  state.armed_s = t_s;
+  state.bank_first_period = period;
+  state.event = {};
+  state.deficit_bank = {};
+  state.detector = {};
+  state.position_deficit = state.attitude_deficit = state.detector_deficit = {};
+  state.position_isolated_s = state.attitude_isolated_s = state.detector_isolated_s = -1;
+  state.confirmed_thruster = model::kNoThruster;
+  state.confirmed_s = -1;
+  fdi::FdiSchemeOutput ignored;
+  clear_latches(state.position, ignored);
+  clear_latches(state.attitude, ignored);
+}
+
+SchemeSummary summary_of(const FdiWatchedParams& w, bool alarm, double alarm_s, int confirmed_lane, double isolated_s,
+                         const fdi::DeficitDecision& diagnosis, std::int64_t bank_first_period, double period_s) {
+  SchemeSummary r;
+  r.alarm = alarm;
+  r.alarm_s = alarm ? alarm_s : -1.0;
+  r.confirmed = confirmed_lane >= 0 ? w.set.index[static_cast<std::size_t>(confirmed_lane)] : model::kNoThruster;
+  r.isolated_s = isolated_s;
+  r.diagnosis = diagnosis;
+  if (diagnosis.decided && diagnosis.thruster >= 0)
+    r.estimated_onset_s = static_cast<double>(diagnosis.onset_sample + bank_first_period) * period_s;
+  return r;
 }
 
 }  // namespace
 
 fdi::DesignInputs scheme_design_inputs(const model::Scenario& s, FdiModel model) {
-  const model::ConfigMatrix config = model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
-  fdi::DesignInputs inputs;
+  const fdi::WatchedConfig config = watched_config(s, model::initial_active_set(s.thrusters));
+  fdi::DesignInputs inputs =
+      model == FdiModel::kPosition ? fdi::position_design_inputs(s, config) : fdi::attitude_design_inputs(s, config);
   if (model == FdiModel::kPosition) {
-    // The position model's input is the force in LVLH (eq. 20): the fault directions are those of
-    // the attitude the chaser flies, target pointing, not of body axes aligned with LVLH.
-    const Mat3 R_lvlh_from_body = target_pointing_q_lvlh_from_body(s.guidance.approach_axis_lvlh).toRotationMatrix();
-    inputs = fdi::position_design_inputs(s, config);
-    inputs.fault_inputs = R_lvlh_from_body * config.topRows<3>();
+    inputs.fault_inputs = thruster_inputs(s, model, config);
     inputs.E_f = inputs.B * inputs.fault_inputs;
-  } else {
-    inputs = fdi::attitude_design_inputs(s, config);
   }
   const model::FdiSchemeParams& scheme = model == FdiModel::kPosition ? s.fdi.position : s.fdi.attitude;
   inputs.eigenvalues.assign(s.fdi.eigenvalues.begin(), s.fdi.eigenvalues.end());
@@ -103,23 +199,30 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   FdirParams p;
   p.period_s = s.control_period_s;
   p.recovery = s.fdi.recovery;
+  p.rearm_after_recovery_s = s.fdi.rearm_after_recovery_s;
   p.position_enabled = s.fdi.position.enabled;
   p.attitude_enabled = s.fdi.attitude.enabled;
-  if (p.position_enabled) {
-    const fdi::DesignInputs inputs = scheme_design_inputs(s, FdiModel::kPosition);
-    p.position = scheme_params(s, s.fdi.position, inputs, inputs.fault_inputs);
-  }
-  if (p.attitude_enabled) {
-    const fdi::DesignInputs inputs = scheme_design_inputs(s, FdiModel::kAttitude);
-    p.attitude = scheme_params(s, s.fdi.attitude, inputs, inputs.fault_inputs);
+  p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
+  p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
+  if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection) return p;
+  fdi::FdiSchemeParams position, attitude;  // designed once, for the starting set
+  if (p.position_enabled)
+    position = scheme_params(s, s.fdi.position,
+                             fdi::design_residual_generator(scheme_design_inputs(s, FdiModel::kPosition)));
+  if (p.attitude_enabled)
+    attitude = scheme_params(s, s.fdi.attitude,
+                             fdi::design_residual_generator(scheme_design_inputs(s, FdiModel::kAttitude)));
+  for (const model::ThrusterMask mask : watchable_sets(s)) {
+    const fdi::WatchedConfig config = watched_config(s, mask);
+    FdiWatchedParams& w = p.watched.emplace_back();
+    w.set = fdi::watched_set(mask);
+    if (p.position_enabled) w.position = for_set(s, position, thruster_inputs(s, FdiModel::kPosition, config));
+    if (p.attitude_enabled) w.attitude = for_set(s, attitude, thruster_inputs(s, FdiModel::kAttitude, config));
+    w.mass_flow_kgps = fdi::nominal_mass_flow_kgps(s.thrusters, w.set, s.chaser.isp_s);
+    if (p.deficit_isolation) w.deficit = deficit_params(s, config);
   }
   p.event.sensor_sigma_kg = s.sensors.propellant.noise_sigma_kg;
   p.event.absolute_margin_kg = s.fdi.over_consumption_threshold_kg;
-  p.mass_flow_kgps = fdi::nominal_mass_flow_kgps(s.thrusters, 0, s.chaser.isp_s);
-  p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
-  if (p.deficit_isolation)
-    p.deficit = deficit_params(s, model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m));
-  p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
   const int detection_window = whole_periods(s.fdi.deficit.detection_window_s, s.control_period_s);
   p.detector = fdi::DeficitDetectorParams{
       .window = detection_window,
@@ -133,81 +236,99 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   return p;
 }
 
+const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& state) {
+  return params.watched[static_cast<std::size_t>(state.watched)].set;
+}
+
 FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
                      const FdirInput& in) {
   FdirOutput out;
-  if (state.recovered) {  // the schemes watch branch A only: report their latched decisions
-    out.position.alarm = state.position.alarm, out.position.confirmed = state.position.confirmed;
-    out.attitude.alarm = state.attitude.alarm, out.attitude.confirmed = state.attitude.confirmed;
-    out.detector.alarm = state.detector.alarm, out.detector.confirmed = state.detector_deficit.decision.thruster;
-    out.over_consumption = state.event.over_consumption;
-    return out;
-  }
+  if (p.watched.empty() || state.watched < 0) return out;  // no FDI, or no parameters for this set
+  const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
+  if (!state.armed && in.t_s >= state.rearm_s) start_watch(state, in.period, in.t_s);
   const Vec6& wrench = in.commanded_wrench;
-
-  // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.
-  const bool alarm_before = state.position.alarm || state.attitude.alarm;
-  // The expected increment is read only while the resolution is active (step_event_resolution).
-  const double expected_kg =
-      state.event.active ? fdi::expected_propellant_increment_kg(in.ton, p.mass_flow_kgps, p.period_s) : 0.0;
-  out.over_consumption =
-      fdi::step_event_resolution(p.event, state.event, meas.propellant_used_kg, expected_kg, alarm_before);
-
   const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
-  if (p.deficit_isolation) {
-    fdi::DeficitSample& sample = fdi::next_deficit_sample(state.deficit_bank);
-    sample.omega_body_radps = meas.omega_body_radps;
-    sample.r_lvlh_m = meas.r_lvlh_m;
-    sample.q_lvlh_from_body = q_lvlh_from_body;
-    sample.ton = in.ton;
-    sample.mass_kg = p.deficit.mass_kg - meas.propellant_used_kg;
-    fdi::push_deficit_sample(p.deficit, state.deficit_bank);
-  }
-  if (p.deficit_detection) {
-    fdi::step_deficit_detector(p.detector, p.deficit, state.deficit_bank, state.detector);
-    const fdi::DeficitDecision& d =
-        fdi::step_deficit_decision(p.deficit, state.deficit_bank, state.detector_deficit,
-                                   state.detector.alarm ? state.detector.alarm_sample : -1);
-    out.detector.glr = fdi::GlrStatistic::of_value(state.detector.statistic);
-    out.detector.alarm = state.detector.alarm;
-    out.detector.candidate = state.detector.suspect;
-    out.detector.confirmed = d.thruster;
-    out.detector.alarm_time_s = state.detector.alarm ? state.detector.alarm_sample * p.period_s : -1.0;
-    if (d.thruster >= 0 && state.detector_isolated_s < 0) state.detector_isolated_s = in.t_s;
+
+  if (state.armed) {
+    // Remark 2: over-consumption separates cases 1/3 from 2/4; it runs once either scheme alarms.
+    const bool alarm_before = state.position.alarm || state.attitude.alarm;
+    // The expected increment is read only while the resolution is active (step_event_resolution).
+    const double expected_kg =
+        state.event.active ? fdi::expected_propellant_increment_kg(in.ton, w.mass_flow_kgps, p.period_s) : 0.0;
+    out.over_consumption =
+        fdi::step_event_resolution(p.event, state.event, meas.propellant_used_kg, expected_kg, alarm_before);
+    if (p.deficit_isolation) step_deficit_bank(w, state, meas, in, q_lvlh_from_body);
+    if (p.deficit_detection) step_detector(p, w, state, in, out);
   }
 
   if (p.position_enabled) {
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
-    fdi::step_fdi_scheme(p.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption, out.position);
-    if (p.deficit_isolation) deficit_confirmation(p, state, state.position_deficit, state.position, out.position);
+    fdi::step_fdi_scheme(w.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption, out.position);
+    if (!state.armed) clear_latches(state.position, out.position);
+    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.position_deficit, state.position, out.position);
     if (out.position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
   }
   if (p.attitude_enabled) {
     // Eq. 16-17: u_c = M_C T_on; y is the measured attitude about the target-pointing reference,
     // the small angles of the linearised model (eq. 15): 2 vec(q), equal to them to first order.
     const Vec3 angles = small_angle_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
-    fdi::step_fdi_scheme(p.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption,
+    fdi::step_fdi_scheme(w.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption,
                          out.attitude);
-    if (p.deficit_isolation) deficit_confirmation(p, state, state.attitude_deficit, state.attitude, out.attitude);
+    if (!state.armed) clear_latches(state.attitude, out.attitude);
+    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, out.attitude);
     if (out.attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }
+  if (!state.armed) return out;
 
   // The fault-free noise estimate of the deficit bank must not learn from the fault.
   if (state.position.alarm || state.attitude.alarm || state.detector.alarm) state.deficit_bank.frozen = true;
 
-  // Recovery on the first confirmation by either scheme.
-  int confirmed = -1;
-  for (const fdi::FdiSchemeOutput* scheme : {&out.position, &out.attitude, &out.detector})
-    if (confirmed < 0) confirmed = scheme->confirmed;
-  if (p.recovery && confirmed >= 0) {
-    state.recovered = true;
-    state.recovery_s = in.t_s;
-    state.isolated_thruster = confirmed;
-    out.recover_now = true;
+  // The first confirmation by any scheme is the watch's confirmed thruster.
+  if (state.confirmed_thruster == model::kNoThruster) {
+    int lane = -1;
+    for (const fdi::FdiSchemeOutput* scheme : {&out.position, &out.attitude, &out.detector})
+      if (lane < 0) lane = scheme->confirmed;
+    if (lane >= 0) {
+      state.confirmed_thruster = w.set.index[static_cast<std::size_t>(lane)];
+      state.confirmed_s = in.t_s;
+      out.confirmed_now = state.confirmed_thruster;
+    }
   }
   return out;
+}
+
+FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {
+  FdirEpisode e;
+  e.armed_s = f.armed_s;
+  if (p.watched.empty() || f.watched < 0) return e;
+  const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(f.watched)];
+  e.watched = w.set.mask;
+  const double T = p.period_s;
+  e.position = summary_of(w, p.position_enabled && f.position.alarm, static_cast<double>(f.position.alarm_period) * T,
+                          f.position.confirmed, f.position_isolated_s, f.position_deficit.decision, f.bank_first_period, T);
+  e.attitude = summary_of(w, p.attitude_enabled && f.attitude.alarm, static_cast<double>(f.attitude.alarm_period) * T,
+                          f.attitude.confirmed, f.attitude_isolated_s, f.attitude_deficit.decision, f.bank_first_period, T);
+  e.detector = summary_of(w, p.deficit_detection && f.detector.alarm,
+                          static_cast<double>(f.detector.alarm_sample + f.bank_first_period) * T,
+                          f.detector_deficit.decision.thruster, f.detector_isolated_s, f.detector_deficit.decision,
+                          f.bank_first_period, T);
+  return e;
+}
+
+void rearm_fdir(const FdirParams& p, FdirState& state, model::ThrusterMask active, double t_s, int recovered_thruster) {
+  if (state.episode_count < kMaxFdirEpisodes) {
+    FdirEpisode& e = state.episodes[static_cast<std::size_t>(state.episode_count++)];
+    e = current_episode(p, state);
+    e.recovery_s = t_s;
+    e.recovered_thruster = recovered_thruster;
+  }
+  state.watched = -1;
+  for (std::size_t i = 0; i < p.watched.size(); ++i)
+    if (p.watched[i].set.mask == active) state.watched = static_cast<int>(i);
+  state.armed = false;
+  state.rearm_s = t_s + p.rearm_after_recovery_s;
 }
 
 }  // namespace chaser::flight

@@ -1,8 +1,10 @@
 #pragma once
 // The on-board FDIR supervisor (Fonod 2015, Fig. 4-5 and section IV): the position-model and the
 // attitude-model FDI schemes side by side, the propellant-based event resolution (Remark 2), and
-// the recovery: once a scheme confirms a faulty thruster, close branch A's latch valve (which also
-// stops a stuck-open thruster) and fly on with the redundant branch B.
+// the confirmation that triggers the recovery. The schemes watch the active thrusters (the watched
+// set, flight/fdi/watched_set.hpp); when a recovery changes the active set (model/recovery.hpp,
+// applied by step_flight), rearm_fdir points them at the new set and, after a settling time, they
+// watch it as they watched the first: a second fault is diagnosed like the first.
 //
 // Isolation is either each scheme's own (eqs. 42-45, or the signature variant) or, with
 // isolation_method deficit, the impulse-deficit bank (flight/fdi/deficit_isolation.hpp): the
@@ -11,6 +13,8 @@
 //
 // The residual generators are designed in memory from the scenario when a run starts
 // (make_fdir_params), so dispersed campaigns never fly a stale design.
+#include <vector>
+
 #include "core/types.hpp"
 #include "flight/fdi/deficit_detector.hpp"
 #include "flight/fdi/deficit_isolation.hpp"
@@ -22,32 +26,72 @@
 
 namespace chaser::flight {
 
+// What depends on which thrusters the FDI watches: isolation signatures, the deficit bank's
+// columns, the mass flows of event resolution. The residual generators themselves do not (their
+// delay decoupling lives in input space, eqs. 19-23), so every set shares the design made for the
+// starting set (make_fdir_params).
+struct FdiWatchedParams {
+  fdi::WatchedSet set;
+  fdi::FdiSchemeParams position;
+  fdi::FdiSchemeParams attitude;
+  fdi::DeficitIsolationParams deficit;
+  std::array<double, fdi::kWatchedThrusters> mass_flow_kgps{};  // [kg/s] nominal, per lane
+};
+
 struct FdirParams {
   bool position_enabled = false;
   bool attitude_enabled = false;
-  bool recovery = false;
-  fdi::FdiSchemeParams position;
-  fdi::FdiSchemeParams attitude;
+  model::RecoveryPolicy recovery = model::RecoveryPolicy::kNone;
   fdi::EventResolutionParams event;
   bool deficit_isolation = false;   // the deficit bank names the thruster for both schemes
-  fdi::DeficitIsolationParams deficit;
   bool deficit_detection = false;   // the deficit detector runs as a third scheme
   fdi::DeficitDetectorParams detector;
-  std::array<double, model::kThrustersPerBranch> mass_flow_kgps{};  // [kg/s] branch A, nominal
-  double period_s = 0.1;                                            // [s] T
+  // [0]: the starting active set; then every set a recovery can switch to (with the FDI's size).
+  std::vector<FdiWatchedParams> watched;
+  double period_s = 0.1;                 // [s] T
+  double rearm_after_recovery_s = 10.0;  // [s] from a recovery to watching the new set
 };
 
 enum class FdiModel { kPosition, kAttitude };
 
 // What the residual generator of one scheme is designed from: the scenario's model (eq. 12 or 15)
-// for branch A, the fault directions at the attitude flown (target pointing), and the fdi keys.
-// `chaser fdi design` and make_fdir_params both use it, so the printed design is the flown one.
+// for the starting active set, the fault directions at the attitude flown (target pointing), and
+// the fdi keys. `chaser fdi design` and make_fdir_params both use it, so the printed design is the
+// flown one.
 fdi::DesignInputs scheme_design_inputs(const model::Scenario& scenario, FdiModel model);
 
-// Designs both residual generators (flight/fdi/residual_design) for the scenario's branch A.
+// Designs both residual generators for the scenario's starting active set and prepares every set
+// a recovery can lead to.
 FdirParams make_fdir_params(const model::Scenario& scenario);
 
+// One scheme's figures at the end of a diagnosis (for results; thrusters by index).
+struct SchemeSummary {
+  bool alarm = false;
+  double alarm_s = -1;                    // [s] -1: none
+  int confirmed = model::kNoThruster;     // thruster index
+  double isolated_s = -1;                 // [s] time it was confirmed, -1: not
+  fdi::DeficitDecision diagnosis;         // the deficit bank's reading (thruster: a lane)
+  double estimated_onset_s = -1;          // [s] the diagnosis' onset, -1: none
+};
+
+// One fault's diagnosis, from the time the FDI was (re)armed on a watched set to the recovery it
+// triggered (or the end of the run).
+struct FdirEpisode {
+  double armed_s = 0;            // [s]
+  model::ThrusterMask watched = 0;
+  SchemeSummary position, attitude, detector;
+  double recovery_s = -1;        // [s] -1: none
+  int recovered_thruster = model::kNoThruster;  // index
+};
+
+inline constexpr int kMaxFdirEpisodes = 8;
+
 struct FdirState {
+  int watched = 0;                  // index into FdirParams::watched
+  bool armed = true;                // false from a recovery until rearm_s
+  double armed_s = 0;               // [s] when the current watch started
+  double rearm_s = -1;              // [s]
+  std::int64_t bank_first_period = 0;  // control period of the deficit bank's sample 0
   fdi::FdiSchemeState position;
   fdi::FdiSchemeState attitude;
   fdi::EventResolutionState event;
@@ -59,31 +103,45 @@ struct FdirState {
   double detector_isolated_s = -1;
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
-  bool recovered = false;           // branch A closed, flying on branch B
-  double recovery_s = -1;           // [s]
-  int isolated_thruster = -1;       // 0..7 of branch A: the thruster recovery acted on
+  int confirmed_thruster = model::kNoThruster;  // index: the first confirmation of this watch
+  double confirmed_s = -1;          // [s]
+  std::array<FdirEpisode, kMaxFdirEpisodes> episodes{};  // finished diagnoses (a recovery ended them)
+  int episode_count = 0;
 };
 
 struct FdirOutput {
-  fdi::FdiSchemeOutput position;
+  fdi::FdiSchemeOutput position;  // candidate and confirmed: lanes of the watched set
   fdi::FdiSchemeOutput attitude;
   fdi::FdiSchemeOutput detector;  // the deficit detector: glr = its statistic, candidate = its suspect
   bool over_consumption = false;  // event resolution: cases 1/3 (true) or 2/4
-  bool recover_now = false;       // this period's confirmation triggers the switch to branch B
+  int confirmed_now = model::kNoThruster;  // index of a thruster first confirmed this period
 };
 
 // Quantities of one period the FDI schemes read besides the measurements (flight-side only:
 // estimates, the reference attitude and the command of this period).
 struct FdirInput {
   double t_s = 0;                           // [s]
+  std::int64_t period = 0;                  // control period k
   Quat q_est_inertial_from_body;           // navigation estimate
   Quat q_ref_inertial_from_body;           // target-pointing reference
   Quat q_inertial_from_lvlh;               // LVLH orientation now
-  model::Ton8 ton = model::Ton8::Zero();   // commanded on-times of branch A this period
+  fdi::WatchedTon ton = fdi::WatchedTon::Zero();  // commanded on-times of the watched lanes
   Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
 };
 
 FdirOutput step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
                      const FdirInput& in);
+
+// The figures of the current watch (not yet ended by a recovery).
+FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
+
+// After a recovery at t_s that made `active` the active set: ends the current episode (recording
+// the recovery) and points the schemes at the new set; they watch it from t_s +
+// rearm_after_recovery_s. If the FDI has no parameters for that set, it stays disarmed.
+void rearm_fdir(const FdirParams& params, FdirState& state, model::ThrusterMask active, double t_s,
+                int recovered_thruster);
+
+// The lanes the FDI watches now (kWatchedThrusters on-times out of the active set's compact ones).
+const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& state);
 
 }  // namespace chaser::flight

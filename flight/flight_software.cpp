@@ -7,6 +7,7 @@ namespace chaser::flight {
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
       .mean_motion_radps = scenario.orbit.mean_motion_radps(),
+      .period_ns = from_seconds(scenario.control_period_s),
       .guidance = scenario.guidance,
       .navigation = make_nav_params(scenario),
       .position = make_position_control(scenario),
@@ -14,13 +15,33 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
+      .recovery = scenario.fdi.recovery,
   };
 }
+
+namespace {
+
+// The FDI's lanes out of the active set's compact on-times.
+fdi::WatchedTon watched_on_times(const FdirParams& fdir, const FdirState& state, const ThrusterManagementState& tmf,
+                                 const AllocationTon& ton_active) {
+  fdi::WatchedTon ton = fdi::WatchedTon::Zero();
+  if (fdir.watched.empty() || state.watched < 0) return ton;
+  if (watched_set(fdir, state).mask == tmf.active) return ton_active.head<fdi::kWatchedThrusters>();
+  const fdi::WatchedSet& w = watched_set(fdir, state);
+  for (int k = 0; k < tmf.active_list.count; ++k)
+    for (int lane = 0; lane < fdi::kWatchedThrusters; ++lane)
+      if (w.index[static_cast<std::size_t>(lane)] == tmf.active_list.index[static_cast<std::size_t>(k)]) ton[lane] = ton_active[k];
+  return ton;
+}
+
+}  // namespace
 
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas) {
   FlightOutput out;
   if (!state.initialised) {
     state.navigation = init_nav(params.navigation, meas);
+    state.thrusters = model::initial_configuration(params.management.thrusters);
+    set_active_thrusters(params.management, state.management, state.thrusters.active);
     state.initialised = true;
   }
   const double t_s = to_seconds(meas.t);
@@ -36,26 +57,31 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
-  ThrusterManagementOutput managed = manage_thrusters(params.management, state.active_branch, out.released_wrench,
-                                                      state.allocation_warm[static_cast<std::size_t>(state.active_branch)]);
+  ThrusterManagementOutput managed = manage_thrusters(params.management, state.management, out.released_wrench);
 
-  // FDIR watches branch A's command; a confirmed fault switches to branch B from this period on.
+  // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
   const FdirInput fdir_in{.t_s = t_s,
+                          .period = meas.t / params.period_ns,
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
-                          .ton = managed.ton_active,
+                          .ton = watched_on_times(params.fdir, state.fdir, state.management, managed.ton_active),
                           .commanded_wrench = managed.commanded_wrench};
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
-  if (out.fdir.recover_now) {
-    state.active_branch = 1;
-    managed = manage_thrusters(params.management, state.active_branch, out.released_wrench,
-                               state.allocation_warm[static_cast<std::size_t>(state.active_branch)]);
+  if (out.fdir.confirmed_now != model::kNoThruster) {
+    if (const auto next = model::recover(params.management.thrusters, params.recovery, state.thrusters,
+                                         out.fdir.confirmed_now)) {
+      state.thrusters = *next;
+      set_active_thrusters(params.management, state.management, state.thrusters.active);
+      rearm_fdir(params.fdir, state.fdir, state.thrusters.active, t_s, out.fdir.confirmed_now);
+      managed = manage_thrusters(params.management, state.management, out.released_wrench);
+      out.recovered_now = true;
+    }
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
 
   out.command = managed.command;
-  out.command.latch_open = {!state.fdir.recovered, true};
+  out.command.latch_closed_groups = state.thrusters.closed_groups;
   out.ton_active = managed.ton_active;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;

@@ -13,12 +13,14 @@
 #include "flight/position_control.hpp"
 #include "flight/thruster_management.hpp"
 #include "model/messages.hpp"
+#include "model/recovery.hpp"
 #include "model/scenario.hpp"
 
 namespace chaser::flight {
 
 struct FlightParams {
   double mean_motion_radps = 0;  // [rad/s] n of the target orbit
+  TimeNs period_ns = 0;          // [ns] control period T
   model::GuidanceParams guidance;
   NavParams navigation;
   PositionControlParams position;
@@ -26,17 +28,20 @@ struct FlightParams {
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
+  model::RecoveryPolicy recovery = model::RecoveryPolicy::kNone;
 };
 
 FlightParams make_flight_params(const model::Scenario& scenario);
+
 
 struct FlightState {
   NavState navigation;
   TmuState tmu;
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
   FdirState fdir;
-  int active_branch = 0;                      // 0 = A, 1 = B
-  std::array<AllocationWarmStart, 2> allocation_warm;  // per branch: optimal bases kept by the TMF
+  model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting
+                                             // set, every latch open, until a recovery changes them
+  ThrusterManagementState management;        // the active set's allocation problem
   bool initialised = false;
 };
 
@@ -49,9 +54,10 @@ struct FlightOutput {
   Vec3 torque_demand_body_Nm = Vec3::Zero(); // [N m] attitude controller output
   Vec6 released_wrench = Vec6::Zero();       // [N; N m] TMU output, body axes
   Vec6 commanded_wrench = Vec6::Zero();      // [N; N m] M ton, body axes
-  model::Ton8 ton_active = model::Ton8::Zero();
+  AllocationTon ton_active = AllocationTon::Zero();  // on-times of the active set, compact order
   bool allocation_feasible = true;
-  FdirOutput fdir;                           // both FDI schemes, event resolution, recovery
+  FdirOutput fdir;                           // both FDI schemes, event resolution
+  bool recovered_now = false;                // a recovery changed the active set this period
 };
 
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas);

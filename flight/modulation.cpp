@@ -5,10 +5,22 @@
 namespace chaser::flight {
 namespace {
 
-// Largest wrench per axis one branch can produce in either direction: the larger of the sums of
-// the positive and of the negative entries of each row of M (all helpful thrusters fully open).
-Vec6 branch_authority(const model::ConfigMatrix& m) {
+// Largest wrench per axis a set of thrusters can produce in either direction: the larger of the
+// sums of the positive and of the negative entries of each row of M (all helpful thrusters fully
+// open). Zero columns (the capacity's unused ones) add nothing.
+Vec6 set_authority(const model::ConfigMatrix& m) {
   return m.cwiseMax(0.0).rowwise().sum().cwiseMax((-m).cwiseMax(0.0).rowwise().sum());
+}
+
+// The largest authority of the sets the vehicle may fly: the starting active set and each
+// redundancy group on its own (what a recovery switches to).
+Vec6 largest_authority(const model::Scenario& s) {
+  Vec6 authority = set_authority(
+      model::configuration_matrix(s.thrusters, model::initial_active_set(s.thrusters), s.chaser.com_body_m));
+  for (int g = 0; g < static_cast<int>(s.thrusters.groups.size()); ++g)
+    authority = authority.cwiseMax(set_authority(
+        model::configuration_matrix(s.thrusters, model::group_thrusters(s.thrusters, g), s.chaser.com_body_m)));
+  return authority;
 }
 
 }  // namespace
@@ -18,9 +30,7 @@ TmuParams make_tmu_params(const model::Scenario& s) {
   params.period_s = s.control_period_s;
   params.threshold << Vec3::Constant(s.control.tmu_force_threshold_Ns),
       Vec3::Constant(s.control.tmu_torque_threshold_Nms);
-  const Vec6 authority_a = branch_authority(model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m));
-  const Vec6 authority_b = branch_authority(model::configuration_matrix(s.thrusters, 1, s.chaser.com_body_m));
-  const Vec6 windup = s.control.tmu_windup_periods * s.control_period_s * authority_a.cwiseMax(authority_b);
+  const Vec6 windup = s.control.tmu_windup_periods * s.control_period_s * largest_authority(s);
   params.limit = windup.cwiseMax(2.0 * params.threshold);
   return params;
 }

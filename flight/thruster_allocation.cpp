@@ -21,7 +21,7 @@
 //     by complementary slackness a point is optimal for (E) iff every nonbasic variable whose
 //     phase-1 reduced cost is nonzero stays at its bound, so those are fixed there; the others
 //     stay free. This is the lexicographic optimum (error first, then propellant), no blend.
-// Why a hand-written simplex: the problem is tiny (6 rows, 20 columns), so a dense explicit basis
+// Why a hand-written simplex: the problem is tiny (6 rows, N + 12 columns), so a dense explicit basis
 // inverse B^-1 (6x6) updated by one Gauss-Jordan step per pivot costs ~100 flops and a handful of
 // pivots suffice; everything is fixed-size on the stack, deterministic (no threads, no randomness,
 // fixed evaluation order) and bounded in time, which a general solver does not promise.
@@ -44,9 +44,15 @@
 namespace chaser::flight {
 namespace {
 
+// The solver is a template on its width N (on-time columns): 8 for a set of up to eight thrusters,
+// the capacity model::kMaxThrusters above. Columns past the set's own are zero with both bounds 0,
+// so they never enter the basis and stay at 0: the same optimum as a solver of the exact width.
 constexpr int kRows = 6;                          // wrench components [F; C]
-constexpr int kTon = model::kThrustersPerBranch;  // variables 0..7: on-times
-constexpr int kCols = kTon + 2 * kRows;           // 8..13: e_plus, 14..19: e_minus
+constexpr int kNarrowWidth = 8;                   // solver width for sets of up to eight thrusters
+template <int N>
+using TonN = Eigen::Matrix<double, N, 1>;
+template <int N>
+using ConfigN = Eigen::Matrix<double, kRows, N>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Tolerances, all in the scaled problem (|M_ij| <= 1, w_j <= 1, ton in [0, 1]). The primal ones
@@ -66,12 +72,15 @@ constexpr int kReinvertPeriod = 16;        // pivots between LU recomputations o
 
 enum class At : std::uint8_t { kBasic, kLower, kUpper };
 
+template <int N>
 struct Lp {
+  static constexpr int kCols = N + 2 * kRows;  // 0..N-1: on-times, then e_plus, then e_minus
+  int thrusters = N;                       // on-time columns of the set; the rest are padding
   Eigen::Matrix<double, kRows, kCols> a;  // [M, I, -I], scaled
   Vec6 b;                                 // scaled demand
   Eigen::Matrix<double, kCols, 1> cost;  // objective of the current phase
   std::array<double, kCols> lower{}, upper{}, x{};
-  std::array<At, kCols> at{};
+  std::array<At, Lp<N>::kCols> at{};
   std::array<int, kRows> basis{};  // variable basic in each row
   Mat6 binv;                       // B^-1
   double primal_tol = kPrimalTol;
@@ -88,21 +97,22 @@ double power_of_two_above(double value) {
   return std::ldexp(1.0, exponent);
 }
 
-void init_phase1(Lp& lp, const model::ConfigMatrix& m_scaled, const Vec6& w_scaled, const Vec6& b) {
+template <int N>
+void init_phase1(Lp<N>& lp, const ConfigN<N>& m_scaled, const Vec6& w_scaled, const Vec6& b) {
   lp.a << m_scaled, Mat6::Identity(), -Mat6::Identity();
   lp.b = b;
   lp.primal_tol = kPrimalTol * b.cwiseAbs().maxCoeff();
   lp.binv.setZero();
-  for (int j = 0; j < kCols; ++j) {
+  for (int j = 0; j < Lp<N>::kCols; ++j) {
     lp.lower[j] = 0.0;
-    lp.upper[j] = j < kTon ? 1.0 : kInf;
-    lp.cost[j] = j < kTon ? 0.0 : w_scaled[(j - kTon) % kRows];
+    lp.upper[j] = j < lp.thrusters ? 1.0 : j < N ? 0.0 : kInf;  // padding columns are fixed at 0
+    lp.cost[j] = j < N ? 0.0 : w_scaled[(j - N) % kRows];
     lp.x[j] = 0.0;
     lp.at[j] = At::kLower;
   }
   for (int r = 0; r < kRows; ++r) {  // ton = 0, e = |b|: feasible start basis, B = diag(+-1)
     const bool plus = b[r] >= 0.0;
-    const int j = kTon + r + (plus ? 0 : kRows);
+    const int j = N + r + (plus ? 0 : kRows);
     lp.basis[r] = j;
     lp.at[j] = At::kBasic;
     lp.x[j] = std::abs(b[r]);
@@ -121,9 +131,10 @@ Vec6 refined_basics(const Mat6& binv, const Columns& a, const std::array<int, kR
   return x_basic + binv * residual;
 }
 
-void recompute_basics(Lp& lp) {
+template <int N>
+void recompute_basics(Lp<N>& lp) {
   Vec6 rhs = lp.b;
-  for (int j = 0; j < kCols; ++j)
+  for (int j = 0; j < Lp<N>::kCols; ++j)
     if (lp.at[j] != At::kBasic && lp.x[j] != 0.0) rhs -= lp.a.col(j) * lp.x[j];
   const Vec6 x_basic = refined_basics(lp.binv, lp.a, lp.basis, rhs);
   for (int r = 0; r < kRows; ++r) lp.x[lp.basis[r]] = x_basic[r];
@@ -131,7 +142,8 @@ void recompute_basics(Lp& lp) {
 }
 
 // B^-1 from a new LU factorisation of the basis matrix.
-void reinvert(Lp& lp) {
+template <int N>
+void reinvert(Lp<N>& lp) {
   Mat6 basis_matrix;
   for (int r = 0; r < kRows; ++r) basis_matrix.col(r) = lp.a.col(lp.basis[r]);
   lp.binv = Eigen::PartialPivLU<Mat6>(basis_matrix).inverse();
@@ -140,7 +152,8 @@ void reinvert(Lp& lp) {
 }
 
 // Simplex multipliers y = B^-T c_B; refined like the basic values when they decide optimality.
-Vec6 duals(const Lp& lp, bool refine) {
+template <int N>
+Vec6 duals(const Lp<N>& lp, bool refine) {
   Vec6 cost_basic;
   for (int r = 0; r < kRows; ++r) cost_basic[r] = lp.cost[lp.basis[r]];
   Vec6 y = lp.binv.transpose() * cost_basic;
@@ -150,18 +163,20 @@ Vec6 duals(const Lp& lp, bool refine) {
   return y + lp.binv.transpose() * residual;
 }
 
-double reduced_cost(const Lp& lp, const Vec6& y, int j) { return lp.cost[j] - y.dot(lp.a.col(j)); }
+template <int N>
+double reduced_cost(const Lp<N>& lp, const Vec6& y, int j) { return lp.cost[j] - y.dot(lp.a.col(j)); }
 
 // Entering variable: the largest improving reduced cost (Dantzig), or the first one (Bland);
 // -1 when none improves by more than kDualTol, i.e. the basis is optimal.
-int price(const Lp& lp, const Vec6& y, bool bland) {
-  Eigen::Matrix<double, kCols, 1> d;  // reduced costs c_j - y' a_j; error columns are +-I
-  d.head<kTon>() = lp.cost.head<kTon>() - lp.a.leftCols<kTon>().transpose() * y;
-  d.segment<kRows>(kTon) = lp.cost.segment<kRows>(kTon) - y;
-  d.tail<kRows>() = lp.cost.tail<kRows>() + y;
+template <int N>
+int price(const Lp<N>& lp, const Vec6& y, bool bland) {
+  Eigen::Matrix<double, Lp<N>::kCols, 1> d;  // reduced costs c_j - y' a_j; error columns are +-I
+  d.template head<N>() = lp.cost.template head<N>() - lp.a.template leftCols<N>().transpose() * y;
+  d.template segment<kRows>(N) = lp.cost.template segment<kRows>(N) - y;
+  d.template tail<kRows>() = lp.cost.template tail<kRows>() + y;
   int best = -1;
   double best_gain = kDualTol;
-  for (int j = 0; j < kCols; ++j) {
+  for (int j = 0; j < Lp<N>::kCols; ++j) {
     if (lp.at[j] == At::kBasic || lp.lower[j] == lp.upper[j]) continue;
     const double gain = lp.at[j] == At::kLower ? -d[j] : d[j];
     if (gain <= best_gain) continue;
@@ -179,7 +194,8 @@ struct Step {
 };
 
 // Distance of basic row r to the bound it moves towards when it changes at `rate` (never < 0).
-double room(const Lp& lp, int r, double rate) {
+template <int N>
+double room(const Lp<N>& lp, int r, double rate) {
   const int j = lp.basis[r];
   return std::max(0.0, rate < 0.0 ? lp.x[j] - lp.lower[j] : lp.upper[j] - lp.x[j]);
 }
@@ -188,7 +204,8 @@ double room(const Lp& lp, int r, double rate) {
 // -dir * alpha_r. Pass 1 finds the longest step keeping all basics within bound + tolerance; pass 2
 // takes, among the rows blocking before it, the largest pivot (or, under Bland, the lowest index
 // with the exact least ratio, which needs a zero tolerance).
-Step ratio_test(const Lp& lp, int q, double dir, const Vec6& alpha, bool bland) {
+template <int N>
+Step ratio_test(const Lp<N>& lp, int q, double dir, const Vec6& alpha, bool bland) {
   const double tol = bland ? 0.0 : lp.primal_tol;
   double t_max = kInf;
   for (int r = 0; r < kRows; ++r) {
@@ -222,7 +239,8 @@ Step ratio_test(const Lp& lp, int q, double dir, const Vec6& alpha, bool bland) 
   return step;
 }
 
-void apply_step(Lp& lp, int q, double dir, const Vec6& alpha, const Step& step) {
+template <int N>
+void apply_step(Lp<N>& lp, int q, double dir, const Vec6& alpha, const Step& step) {
   for (int r = 0; r < kRows; ++r) lp.x[lp.basis[r]] -= dir * step.length * alpha[r];
   if (step.row < 0) {  // bound flip: no basis change
     lp.at[q] = lp.at[q] == At::kLower ? At::kUpper : At::kLower;
@@ -244,7 +262,8 @@ void apply_step(Lp& lp, int q, double dir, const Vec6& alpha, const Step& step) 
 
 // Primal simplex from the current (primal feasible) basis. True when optimal, false when the
 // iteration cap is hit (or, impossibly since all costs are >= 0, the objective is unbounded).
-bool run_simplex(Lp& lp) {
+template <int N>
+bool run_simplex(Lp<N>& lp) {
   int degenerate_run = 0;
   while (lp.iterations < kMaxIterations) {
     const bool bland = degenerate_run >= kDegenerateRunForBland;
@@ -268,51 +287,59 @@ bool run_simplex(Lp& lp) {
 }
 
 // Restricts the LP to the optimal face of phase 1 and sets the propellant cost (see the top).
-void start_phase2(Lp& lp, bool feasible) {
+template <int N>
+void start_phase2(Lp<N>& lp, bool feasible) {
   if (feasible) {
-    for (int j = kTon; j < kCols; ++j) lp.upper[j] = 0.0;
+    for (int j = N; j < Lp<N>::kCols; ++j) lp.upper[j] = 0.0;
   } else {
     const Vec6 y = duals(lp, true);
-    for (int j = 0; j < kCols; ++j) {
+    for (int j = 0; j < Lp<N>::kCols; ++j) {
       if (lp.at[j] == At::kBasic || std::abs(reduced_cost(lp, y, j)) <= kDualTol) continue;
       lp.lower[j] = lp.upper[j] = lp.x[j];
     }
   }
-  for (int j = 0; j < kCols; ++j) lp.cost[j] = j < kTon ? 1.0 : 0.0;
+  for (int j = 0; j < Lp<N>::kCols; ++j) lp.cost[j] = j < N ? 1.0 : 0.0;
 }
 
-model::Ton8 ton_of(const Lp& lp) {
-  model::Ton8 ton;
-  for (int i = 0; i < kTon; ++i) ton[i] = std::clamp(lp.x[i], 0.0, 1.0);  // clears Harris overruns
+template <int N>
+TonN<N> ton_of(const Lp<N>& lp) {
+  TonN<N> ton;
+  for (int i = 0; i < N; ++i) ton[i] = std::clamp(lp.x[i], 0.0, 1.0);  // clears Harris overruns
   return ton;
 }
 
-void fill_result(const AllocationParams& params, const Vec6& demand, const model::Ton8& ton,
+template <int N>
+void fill_result(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand, const TonN<N>& ton,
                  AllocationResult& result) {
-  result.ton = ton;
+  result.ton.setZero();
+  result.ton.template head<N>() = ton;
   result.propellant = ton.sum();
-  result.residual = params.config * ton - demand;
+  result.residual = config * ton - demand;
   result.weighted_error = params.error_weights.cwiseProduct(result.residual.cwiseAbs()).sum();
 }
 
 // Phase-1 verdict: M ton = b up to rounding of the terms that form it (M, b scaled).
-template <class Config>
-bool attains(const Config& m, const Vec6& b, const model::Ton8& ton) {
+template <class Config, class Ton>
+bool attains(const Config& m, const Vec6& b, const Ton& ton) {
   const double residual = (m * ton - b).cwiseAbs().maxCoeff();
   const double terms = b.cwiseAbs().maxCoeff() + (m.cwiseAbs() * ton).maxCoeff();
   return residual <= kFeasibilityTol * terms;
 }
-bool attainable(const Lp& lp, const model::Ton8& ton) { return attains(lp.a.leftCols<kTon>(), lp.b, ton); }
+template <int N>
+bool attainable(const Lp<N>& lp, const TonN<N>& ton) { return attains(lp.a.template leftCols<N>(), lp.b, ton); }
 
 bool valid_input(const AllocationParams& params, const Vec6& demand) {
-  return demand.allFinite() && params.config.allFinite() && params.error_weights.allFinite() &&
-         (params.error_weights.array() > 0.0).all();
+  return params.thrusters >= 1 && params.thrusters <= model::kMaxThrusters && demand.allFinite() &&
+         params.config.allFinite() && params.error_weights.allFinite() && (params.error_weights.array() > 0.0).all();
 }
 
 // The answers that need no LP: invalid input (ton = 0, converged = false) and a zero demand (ton = 0
 // is the unique zero-cost solution). True when `result` is final.
 bool answered_without_lp(const AllocationParams& params, const Vec6& demand, AllocationResult& result) {
-  fill_result(params, demand, model::Ton8::Zero(), result);
+  result.ton.setZero();
+  result.propellant = 0.0;
+  result.residual = -demand;
+  result.weighted_error = params.error_weights.cwiseProduct(demand.cwiseAbs()).sum();
   if (!valid_input(params, demand)) return true;
   if ((demand.array() == 0.0).all()) {
     result.feasible = result.converged = true;
@@ -327,16 +354,28 @@ struct Scaling {
 };
 
 Scaling scaling_of(const AllocationParams& params) {
-  return {power_of_two_above(params.config.cwiseAbs().maxCoeff()),
+  return {power_of_two_above(params.config.leftCols(params.thrusters).cwiseAbs().maxCoeff()),
           power_of_two_above(params.error_weights.maxCoeff())};
 }
 
+// The set's configuration at the solver's width: its own columns, then zero padding.
+template <int N>
+ConfigN<N> config_of(const AllocationParams& params) {
+  if constexpr (N == model::kMaxThrusters) {
+    return params.config;
+  } else {
+    return params.config.template leftCols<N>();
+  }
+}
+
 // The two-phase solve; `lp` keeps the final basis.
-void solve(const AllocationParams& params, const Vec6& demand, const Scaling& scale, Lp& lp,
-           AllocationResult& result) {
-  init_phase1(lp, params.config / scale.wrench, params.error_weights / scale.weight, demand / scale.wrench);
+template <int N>
+void solve(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand, const Scaling& scale,
+           Lp<N>& lp, AllocationResult& result) {
+  lp.thrusters = params.thrusters;
+  init_phase1<N>(lp, config / scale.wrench, params.error_weights / scale.weight, demand / scale.wrench);
   const bool phase1_done = run_simplex(lp);
-  model::Ton8 ton = ton_of(lp);
+  TonN<N> ton = ton_of(lp);
   result.feasible = attainable(lp, ton);
   result.converged = phase1_done;
   if (phase1_done) {
@@ -344,36 +383,37 @@ void solve(const AllocationParams& params, const Vec6& demand, const Scaling& sc
     result.converged = run_simplex(lp);
     ton = ton_of(lp);
   }
-  fill_result(params, demand, ton, result);
+  fill_result<N>(params, config, demand, ton, result);
   result.iterations = lp.iterations;
 }
 
 // The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
 // solver's own Harris tolerance) and attain b, as a solved answer must.
-bool try_slot(const AllocationWarmStart::Slot& slot, const model::ConfigMatrix& m_scaled, const Vec6& b,
-              model::Ton8& ton) {
+template <int N>
+bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigN<N>& m_scaled, const Vec6& b, TonN<N>& ton) {
   Vec6 rhs = b;
-  for (int i = 0; i < kTon; ++i)
+  for (int i = 0; i < N; ++i)
     if ((slot.upper >> i) & 1U) rhs -= m_scaled.col(i);
   const Vec6 x = refined_basics(slot.binv, m_scaled, slot.basis, rhs);
   const double tol = kPrimalTol * b.cwiseAbs().maxCoeff();
   if ((x.array() < -tol).any() || (x.array() > 1.0 + tol).any()) return false;
-  for (int i = 0; i < kTon; ++i) ton[i] = ((slot.upper >> i) & 1U) ? 1.0 : 0.0;
+  for (int i = 0; i < N; ++i) ton[i] = ((slot.upper >> i) & 1U) ? 1.0 : 0.0;
   for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
   return attains(m_scaled, b, ton);
 }
 
 // Keeps the optimal basis of a solved attainable demand when its basic variables are on-times.
-void remember(const Lp& lp, AllocationWarmStart& warm) {
+template <int N>
+void remember(const Lp<N>& lp, AllocationWarmStart& warm) {
   AllocationWarmStart::Slot slot;
   Mat6 basis_matrix;
   for (int r = 0; r < kRows; ++r) {
-    if (lp.basis[r] >= kTon) return;
+    if (lp.basis[r] >= N) return;
     slot.basis[r] = lp.basis[r];
     basis_matrix.col(r) = lp.a.col(lp.basis[r]);
   }
-  for (int i = 0; i < kTon; ++i)
-    if (lp.at[i] == At::kUpper) slot.upper |= static_cast<std::uint8_t>(1U << i);
+  for (int i = 0; i < N; ++i)
+    if (lp.at[i] == At::kUpper) slot.upper |= model::thruster_bit(i);
   const Eigen::PartialPivLU<Mat6> lu(basis_matrix);  // fresh, not the updated B^-1 of the pivots
   slot.binv = lu.inverse();
   slot.valid = true;
@@ -382,44 +422,64 @@ void remember(const Lp& lp, AllocationWarmStart& warm) {
   warm.next_free = (warm.next_free + 1) % AllocationWarmStart::kSlots;
 }
 
-}  // namespace
-
-AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
+template <int N>
+AllocationResult allocate_cold(const AllocationParams& params, const Vec6& demand_wrench) {
   AllocationResult result;
   if (answered_without_lp(params, demand_wrench, result)) return result;
-  Lp lp;
-  solve(params, demand_wrench, scaling_of(params), lp, result);
+  Lp<N> lp;
+  const ConfigN<N> config = config_of<N>(params);
+  solve<N>(params, config, demand_wrench, scaling_of(params), lp, result);
   return result;
 }
 
-AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
-                                    AllocationWarmStart& warm) {
+bool same_problem(const AllocationParams& params, const AllocationWarmStart& warm) {
+  const int n = params.thrusters;
+  return warm.thrusters == n && warm.config.leftCols(n) == params.config.leftCols(n);
+}
+
+template <int N>
+AllocationResult allocate_warm(const AllocationParams& params, const Vec6& demand_wrench, AllocationWarmStart& warm) {
   AllocationResult result;
   if (answered_without_lp(params, demand_wrench, result)) return result;
-  if (warm.config != params.config) {  // another problem: the kept bases do not belong to it
+  if (!same_problem(params, warm)) {  // another problem: the kept bases do not belong to it
     warm.slots = {};
     warm.last_hit = warm.next_free = 0;
     warm.config = params.config;
+    warm.thrusters = params.thrusters;
   }
   const Scaling scale = scaling_of(params);
-  const model::ConfigMatrix m_scaled = params.config / scale.wrench;
+  const ConfigN<N> config = config_of<N>(params);
+  const ConfigN<N> m_scaled = config / scale.wrench;
   const Vec6 b = demand_wrench / scale.wrench;
   for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {
     const int s = (warm.last_hit + k) % AllocationWarmStart::kSlots;
     const AllocationWarmStart::Slot& slot = warm.slots[static_cast<std::size_t>(s)];
-    model::Ton8 ton;
-    if (!slot.valid || !try_slot(slot, m_scaled, b, ton)) continue;
+    TonN<N> ton;
+    if (!slot.valid || !try_slot<N>(slot, m_scaled, b, ton)) continue;
     warm.last_hit = s;
     ++warm.hits;
     result.feasible = result.converged = true;
-    fill_result(params, demand_wrench, ton, result);
+    fill_result<N>(params, config, demand_wrench, ton, result);
     return result;
   }
-  Lp lp;
-  solve(params, demand_wrench, scale, lp, result);
+  Lp<N> lp;
+  solve<N>(params, config, demand_wrench, scale, lp, result);
   ++warm.solves;
   if (result.feasible && result.converged) remember(lp, warm);
   return result;
+}
+
+}  // namespace
+
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
+  return params.thrusters <= kNarrowWidth ? allocate_cold<kNarrowWidth>(params, demand_wrench)
+                                          : allocate_cold<model::kMaxThrusters>(params, demand_wrench);
+}
+
+AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
+                                    AllocationWarmStart& warm) {
+  return params.thrusters <= kNarrowWidth ? allocate_warm<kNarrowWidth>(params, demand_wrench, warm)
+                                          : allocate_warm<model::kMaxThrusters>(params, demand_wrench, warm);
 }
 
 }  // namespace chaser::flight

@@ -1,7 +1,7 @@
 #pragma once
 // Thruster allocation of the thruster management function (TMF, Fonod 2015 sec. II.C).
 //
-// Given the wrench w_d = [F_d; C_d] that the controller and modulator ask the active branch to
+// Given the wrench w_d = [F_d; C_d] that the controller and modulator ask the active thrusters to
 // realise on average over one control period, find the scaled on-times ton (0 <= ton_i <= 1,
 // eq. 2: [F; C] = M ton) that realise it with the least propellant:
 //
@@ -19,18 +19,23 @@
 #include <cstdint>
 
 #include "core/types.hpp"
-#include "model/thrusters.hpp"
+#include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
 
+using AllocationTon = Eigen::Matrix<double, model::kMaxThrusters, 1>;
+
 struct AllocationParams {
-  // M [N; N m]: column i is the force and torque of thruster i open for a whole period (eq. 2).
+  // M [N; N m]: column i is the force and torque of the set's thruster i open for a whole period
+  // (eq. 2); columns [0, thrusters) used. Sets of up to eight are solved at width 8, larger ones at
+  // the capacity (thruster_allocation.cpp): the optimum is the same, the narrow solve faster.
   model::ConfigMatrix config = model::ConfigMatrix::Zero();
+  int thrusters = 0;                  // 1..model::kMaxThrusters
   Vec6 error_weights = Vec6::Ones();  // [1/N; 1/(N m)] w_j of the best-effort problem (E), all > 0
 };
 
 struct AllocationResult {
-  model::Ton8 ton = model::Ton8::Zero();  // [-] scaled on-times, 0 <= ton_i <= 1
+  AllocationTon ton = AllocationTon::Zero();  // [-] scaled on-times, 0 <= ton_i <= 1, [0, thrusters) used
   bool feasible = false;                  // demand attainable: |M ton - demand| within tolerance
   double propellant = 0.0;                // [-] sum of ton, the cost of (P), in full-period firings
   Vec6 residual = Vec6::Zero();           // [N; N m] M ton - demand
@@ -42,7 +47,7 @@ struct AllocationResult {
 
 // Solves (P), or (E) then least propellant when (P) is infeasible. Allocation-free, never throws,
 // bounded in time (iteration cap). Preconditions: finite config, error_weights > 0; otherwise the
-// result is ton = 0 with converged = false.
+// result is ton = 0 with converged = false (also for thrusters outside 1..kMaxThrusters).
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench);
 
 // Optimal bases of earlier attainable demands of one configuration matrix, tried before a solve
@@ -53,13 +58,14 @@ struct AllocationWarmStart {
   struct Slot {
     bool valid = false;
     std::array<int, 6> basis{};  // on-time index basic in each row (all six basic are on-times)
-    std::uint8_t upper = 0;      // bit i: nonbasic on-time i is at its upper bound 1
+    model::ThrusterMask upper = 0;  // bit i: nonbasic on-time i is at its upper bound 1
     Mat6 binv = Mat6::Zero();    // inverse of the scaled basis matrix
   };
   std::array<Slot, kSlots> slots{};
   int last_hit = 0;                                  // slot tried first
   int next_free = 0;                                 // slot replaced next (round robin)
   model::ConfigMatrix config = model::ConfigMatrix::Zero();  // the problem the slots belong to
+  int thrusters = 0;
   std::int64_t hits = 0;                             // answers from a slot (statistics)
   std::int64_t solves = 0;                           // answers from the simplex
 };

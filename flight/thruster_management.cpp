@@ -5,27 +5,37 @@
 namespace chaser::flight {
 
 ThrusterManagementParams make_thruster_management(const model::Scenario& scenario) {
-  ThrusterManagementParams params;
-  for (int branch = 0; branch < 2; ++branch)
-    params.allocation[branch].config =
-        model::configuration_matrix(scenario.thrusters, branch, scenario.chaser.com_body_m);
-  params.min_on_fraction = scenario.thrusters.min_on_time_s / scenario.control_period_s;
-  return params;
+  return ThrusterManagementParams{
+      .thrusters = scenario.thrusters,
+      .com_body_m = scenario.chaser.com_body_m,
+      .min_on_fraction = scenario.thrusters.min_on_time_s / scenario.control_period_s,
+  };
 }
 
-ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, int active_branch,
-                                          const Vec6& demand_wrench, AllocationWarmStart& warm) {
+void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
+                          model::ThrusterMask active) {
+  state.active = active;
+  state.active_list = model::thruster_list(active);
+  state.allocation.config = model::configuration_matrix(params.thrusters, active, params.com_body_m);
+  state.allocation.thrusters = state.active_list.count;
+  state.warm = AllocationWarmStart{};
+}
+
+ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
+                                          const Vec6& demand_wrench) {
   ThrusterManagementOutput out;
-  const AllocationParams& allocation = params.allocation[active_branch];
-  const AllocationResult result = allocate_thrusters(allocation, demand_wrench, warm);
+  const AllocationResult result = allocate_thrusters(state.allocation, demand_wrench, state.warm);
+  const int n = state.active_list.count;
   out.ton_active = result.ton;
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)
-    if (out.ton_active[i] < params.min_on_fraction) out.ton_active[i] = 0.0;
+  for (int k = 0; k < n; ++k)
+    if (out.ton_active[k] < params.min_on_fraction) out.ton_active[k] = 0.0;
   out.feasible = result.feasible;
-  out.commanded_wrench = allocation.config * out.ton_active;
-  const int first = model::branch_first(active_branch);
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) out.command.ton[first + i] = out.ton_active[i];
+  out.commanded_wrench = n == 8  // fixed-size product for eight (MSR's branch): same sums, no dynamic loop
+                             ? Vec6(state.allocation.config.leftCols<8>() * out.ton_active.head<8>())
+                             : Vec6(state.allocation.config.leftCols(n) * out.ton_active.head(n));
+  for (int k = 0; k < n; ++k)
+    out.command.ton[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = out.ton_active[k];
   return out;
 }
 

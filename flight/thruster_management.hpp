@@ -1,9 +1,8 @@
 #pragma once
 // Thruster management function (TMF, Fonod 2015 sec. II.C): turns the wrench released by the TMU
-// into on-times of the active branch's eight thrusters with the least propellant, then respects
-// the valves' minimum on-time, which the allocation itself does not know about.
-#include <array>
-
+// into on-times of the active thrusters with the least propellant, then respects the valves'
+// minimum on-time, which the allocation itself does not know about. The active set is a mask that
+// recovery may change (model/recovery.hpp); the allocation problem is rebuilt when it does.
 #include "core/types.hpp"
 #include "flight/thruster_allocation.hpp"
 #include "model/messages.hpp"
@@ -12,21 +11,33 @@
 namespace chaser::flight {
 
 struct ThrusterManagementParams {
-  std::array<AllocationParams, 2> allocation;  // per branch (A, B), nominal geometry and CoM
-  double min_on_fraction = 0;                  // [-] min_on_time / T: shorter on-times are dropped
+  model::ThrusterSetParams thrusters;  // nominal geometry
+  Vec3 com_body_m = Vec3::Zero();      // [m] nominal centre of mass
+  double min_on_fraction = 0;          // [-] min_on_time / T: shorter on-times are dropped
 };
 
 ThrusterManagementParams make_thruster_management(const model::Scenario& scenario);
 
+// The allocation problem of the current active set (derived when the set changes) and its warm start.
+struct ThrusterManagementState {
+  model::ThrusterMask active = 0;
+  model::ThrusterList active_list;  // compact index k -> thruster index
+  AllocationParams allocation;      // M of the active set, compact columns
+  AllocationWarmStart warm;         // optimal bases of this set's earlier demands
+};
+
+// Points the TMF at a new active set (outside the per-period path: at start and on recovery).
+void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
+                          model::ThrusterMask active);
+
 struct ThrusterManagementOutput {
-  model::ThrusterCommand command;  // all 16 thrusters; the inactive branch is zero
-  model::Ton8 ton_active;          // on-times of the active branch
-  Vec6 commanded_wrench;           // [N; N m] M ton: what the command realises if the thrusters are healthy
+  model::ThrusterCommand command;  // every thruster by index; inactive ones zero
+  AllocationTon ton_active = AllocationTon::Zero();  // on-times of the active set, compact order
+  Vec6 commanded_wrench = Vec6::Zero();  // [N; N m] M ton: what the command realises if healthy
   bool feasible = true;            // the allocator reached the demand exactly
 };
 
-// `warm`: the active branch's warm start (flight state; one per branch, see AllocationWarmStart).
-ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, int active_branch,
-                                          const Vec6& demand_wrench, AllocationWarmStart& warm);
+ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
+                                          const Vec6& demand_wrench);
 
 }  // namespace chaser::flight

@@ -14,9 +14,10 @@ using model::FaultKind;
 constexpr std::array<FaultKind, 4> kKinds = {FaultKind::kStuckOpen, FaultKind::kStuckClosed,
                                              FaultKind::kLeak, FaultKind::kLoss};
 
+// T1..T32: whether the scenario has that many thrusters is checked in validate_scenario.
 std::optional<int> thruster_index(const std::string& name) {
-  for (int i = 0; i < model::kThrustersTotal; ++i)
-    if (name == fmt::format("T{}", i + 1)) return i;
+  for (int i = 0; i < model::kMaxThrusters; ++i)
+    if (name == model::thruster_name(i)) return i;
   return std::nullopt;
 }
 
@@ -41,7 +42,7 @@ std::optional<int> read_fault(const YAML::Node& node, const std::string& path, m
   std::string name, kind_text;
   std::optional<int> index;
   if (m.text("thruster", name) && !(index = thruster_index(name)))
-    diag.add(m.path_of("thruster"), fmt::format("must be a thruster name T1..T16 (got '{}')", name));
+    diag.add(m.path_of("thruster"), fmt::format("must be a thruster name T1..TN, N the number of thrusters.list entries (got '{}')", name));
   std::optional<FaultKind> kind;
   if (m.text("kind", kind_text) && !(kind = fault_kind(kind_text)))
     diag.add(m.path_of("kind"),
@@ -79,7 +80,7 @@ void read_faults(MapReader& root, std::vector<model::FaultParams>& out) {
                                    describe_node(*list)));
     return;
   }
-  std::array<int, model::kThrustersTotal> first_fault;
+  std::array<int, model::kMaxThrusters> first_fault;
   first_fault.fill(-1);
   out.assign(list->size(), model::FaultParams{});
   for (std::size_t i = 0; i < list->size(); ++i) {

@@ -56,6 +56,15 @@ void read_isolation_method(MapReader& r, model::IsolationMethod& out) {
                         fmt::format("must be one of paper, signature, deficit (got '{}')", text));
 }
 
+void read_recovery(MapReader& r, model::RecoveryPolicy& out) {
+  std::string text;
+  if (!r.text("recovery", text)) return;
+  if (text == "none") out = model::RecoveryPolicy::kNone;
+  else if (text == "switch_group") out = model::RecoveryPolicy::kSwitchGroup;
+  else
+    r.diagnostics().add(r.path_of("recovery"), fmt::format("must be one of none, switch_group (got '{}')", text));
+}
+
 // Window lengths are checked against each other and the control period in validate_scenario.
 void read_deficit(MapReader& r, model::DeficitParams& out) {
   r.number("window_before_s", Range::positive(), out.window_before_s);
@@ -93,7 +102,8 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   r.boolean("glr_increase_only", out.glr_increase_only);
   read_section(r, "deficit", [&](MapReader& m) { read_deficit(m, out.deficit); });
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
-  r.boolean("recovery", out.recovery);
+  read_recovery(r, out.recovery);
+  r.number("rearm_after_recovery_s", Range::non_negative(), out.rearm_after_recovery_s);
   read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });
   read_section(r, "attitude", [&](MapReader& m) { read_scheme(m, out.attitude); });
 }

@@ -35,6 +35,9 @@ void read_campaign(MapReader& r, model::CampaignParams& out);
 
 // Checks between keys; each runs only if the keys it uses were read without problems.
 void validate_scenario(const model::Scenario& s, Diagnostics& diag);
+// What the thruster set can do: spanning sets before and after recovery, the FDI's set size,
+// single-loss tolerance, fault thrusters that exist (called by validate_scenario).
+void validate_thruster_set(const model::Scenario& s, Diagnostics& diag);
 // The campaign run length against the control period (called by validate_scenario).
 void validate_campaign(const model::Scenario& s, Diagnostics& diag);
 

@@ -1,5 +1,5 @@
-// Checks between keys: timing against the control period, inertia as a whole, controllability of
-// each thruster branch, fault onsets, guidance geometry. Each check runs only if the keys it uses
+// Checks between keys: timing against the control period, inertia as a whole, the thruster set
+// (io/thruster_set_validation.cpp), fault onsets, guidance geometry. Each check runs only if the keys it uses
 // were read cleanly, so one bad value gives one error rather than a cascade.
 #include <cmath>
 #include <optional>
@@ -8,8 +8,6 @@
 #include <fmt/format.h>
 
 #include "io/scenario_sections.hpp"
-#include "model/positive_span.hpp"
-#include "model/thruster_geometry.hpp"
 
 namespace chaser::io {
 namespace {
@@ -130,25 +128,6 @@ void check_inertia(const Mat3& inertia, Diagnostics& d) {
                             "be <= the sum of the other two", listed));
 }
 
-// Each branch alone must be able to produce any force and torque (Fonod 2015, section II.B: the
-// branches are redundant), i.e. the columns of its configuration matrix positively span R^6.
-void check_branches(const model::Scenario& s, Diagnostics& d) {
-  if (!d.clean("thrusters.list") || !d.clean("chaser.com_body_m")) return;
-  for (int branch = 0; branch < 2; ++branch) {
-    const model::ConfigMatrix m = model::configuration_matrix(s.thrusters, branch, s.chaser.com_body_m);
-    const model::PositiveSpanResult span = model::positive_span(m);
-    if (span.spans) continue;
-    const int first = model::branch_first(branch) + 1;
-    d.add("thrusters.list",
-          fmt::format("branch {} (T{}..T{}) cannot produce force and torque in every direction: no "
-                      "on-times >= 0 give a wrench along [{:.3f}] (force; torque about the centre of "
-                      "mass; M has rank {} of 6; positive-span tolerance {})",
-                      branch == 0 ? 'A' : 'B', first, first + model::kThrustersPerBranch - 1,
-                      fmt::join(span.blocked_direction, ", "), span.rank,
-                      format_number(model::kPositiveSpanTolerance)));
-  }
-}
-
 void check_faults(const model::Scenario& s, Diagnostics& d) {
   if (!d.clean("duration_s")) return;
   for (std::size_t i = 0; i < s.faults.size(); ++i) {
@@ -181,7 +160,7 @@ void check_guidance(const model::GuidanceParams& g, Diagnostics& d) {
 void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   check_timing(s, diag);
   check_inertia(s.chaser.inertia_kgm2, diag);
-  check_branches(s, diag);
+  validate_thruster_set(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);
   validate_campaign(s, diag);

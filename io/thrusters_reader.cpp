@@ -1,5 +1,8 @@
-// The thrusters section: timing and dispersion parameters, and the 16 thrusters T1..T16, branch A
-// (T1..T8, indices 0..7) then branch B (T9..T16, indices 8..15), listed in that order.
+// The thrusters section: timing and dispersion parameters, then the list of 1..32 thrusters, named
+// T1..TN in list order, each optionally in a redundancy group (a latch valve), and the standby
+// groups that fly only after a recovery switches to them.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "io/scenario_sections.hpp"
@@ -13,20 +16,23 @@ namespace {
 constexpr double kMaxThrustSigma = 0.25;
 constexpr double kMaxMisalignmentSigmaDeg = 10.0;
 
-std::string expected_name(int index) { return fmt::format("T{}", index + 1); }
-char expected_branch(int index) { return index < model::kThrustersPerBranch ? 'A' : 'B'; }
+// The group's index, added in order of first appearance.
+int group_index(const std::string& name, std::vector<model::ThrusterGroup>& groups) {
+  const auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.name == name; });
+  if (it != groups.end()) return static_cast<int>(it - groups.begin());
+  groups.push_back(model::ThrusterGroup{.name = name});
+  return static_cast<int>(groups.size()) - 1;
+}
 
-void read_thruster(const YAML::Node& node, const std::string& path, int index,
-                   model::ThrusterParams& out, Diagnostics& diag) {
+void read_thruster(const YAML::Node& node, const std::string& path, int index, model::ThrusterSetParams& set,
+                   Diagnostics& diag) {
   MapReader m(node, path, diag);
-  std::string name, branch;
-  if (m.text("name", name) && name != expected_name(index))
-    diag.add(m.path_of("name"), fmt::format("must be {} (entries are listed in order T1..T16; got '{}')",
-                                            expected_name(index), name));
-  if (m.text("branch", branch) && index < model::kThrustersTotal &&
-      branch != std::string(1, expected_branch(index)))
-    diag.add(m.path_of("branch"), fmt::format("must be {} (branch A is T1..T8, B is T9..T16; got '{}')",
-                                              expected_branch(index), branch));
+  model::ThrusterParams& out = set.thrusters[static_cast<std::size_t>(index)];
+  std::string name, group;
+  if (m.text("name", name) && name != model::thruster_name(index))
+    diag.add(m.path_of("name"), fmt::format("must be {} (thrusters are named T1..TN in list order; got '{}')",
+                                            model::thruster_name(index), name));
+  if (m.has("group") && m.text("group", group)) out.group = group_index(group, set.groups);
   m.vec3("position_body_m", out.position_body_m);
   m.direction("direction_body", out.direction_body);
   m.number("max_thrust_N", Range::positive(), out.max_thrust_N);
@@ -34,17 +40,51 @@ void read_thruster(const YAML::Node& node, const std::string& path, int index,
 }
 
 void read_thruster_list(MapReader& r, model::ThrusterSetParams& out) {
-  constexpr std::string_view expected = "a list of the 16 thrusters T1..T16";
+  const std::string expected = fmt::format("a list of 1..{} thrusters T1..TN", model::kMaxThrusters);
   const auto list = r.child("list", expected);
   const std::string path = r.path_of("list");
-  if (!list || !check_list(*list, path, model::kThrustersTotal, expected, r.diagnostics())) return;
-  for (int i = 0; i < model::kThrustersTotal; ++i)
-    read_thruster((*list)[i], join_path(path, std::to_string(i)), i, out.thrusters[i], r.diagnostics());
+  if (!list) return;
+  if (!list->IsSequence() || list->size() < 1 || list->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    r.diagnostics().add(path, fmt::format("must be {} (got {})", expected, describe_node(*list)));
+    return;
+  }
+  out.count = static_cast<int>(list->size());
+  for (int i = 0; i < out.count; ++i)
+    read_thruster((*list)[static_cast<std::size_t>(i)], join_path(path, std::to_string(i)), i, out, r.diagnostics());
+}
+
+// standby_groups: names of groups listed under `group` in thrusters.list.
+void read_standby_groups(MapReader& r, model::ThrusterSetParams& out) {
+  if (!r.has("standby_groups")) return;
+  const auto node = r.child("standby_groups", "a list of group names");
+  const std::string path = r.path_of("standby_groups");
+  if (!node) return;
+  if (!node->IsSequence()) {
+    r.diagnostics().add(path, fmt::format("must be a list of group names, e.g. [B] (got {})", describe_node(*node)));
+    return;
+  }
+  for (std::size_t i = 0; i < node->size(); ++i) {
+    const YAML::Node& item = (*node)[i];
+    const auto it = std::find_if(out.groups.begin(), out.groups.end(), [&](const model::ThrusterGroup& g) {
+      return item.IsScalar() && g.name == item.Scalar();
+    });
+    if (it == out.groups.end()) {
+      std::vector<std::string> names;
+      for (const model::ThrusterGroup& g : out.groups) names.push_back(g.name);
+      r.diagnostics().add(join_path(path, std::to_string(i)),
+                          fmt::format("must name a group of thrusters.list ({}) (got {})",
+                                      names.empty() ? std::string("none has a group") : fmt::format("{}", fmt::join(names, ", ")),
+                                      describe_node(item)));
+      continue;
+    }
+    it->standby = true;
+  }
 }
 
 }  // namespace
 
-// Timing limits that depend on the control period are checked in validate_scenario.
+// Timing limits that depend on the control period, and what the layout can do, are checked in
+// validate_scenario.
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out) {
   r.number("delay_max_s", Range::non_negative(), out.delay_max_s);
   r.number("rise_time_s", Range::non_negative(), out.rise_time_s);
@@ -53,7 +93,9 @@ void read_thrusters(MapReader& r, model::ThrusterSetParams& out) {
   r.number("thrust_sigma", Range::closed(0.0, kMaxThrustSigma), out.thrust_sigma);
   r.angle_deg("misalignment_sigma_deg", Range::closed(0.0, kMaxMisalignmentSigmaDeg),
               out.misalignment_sigma_rad);
+  if (r.has("tolerates_single_loss")) r.boolean("tolerates_single_loss", out.tolerates_single_loss);
   read_thruster_list(r, out);
+  read_standby_groups(r, out);
 }
 
 }  // namespace chaser::io

@@ -11,7 +11,7 @@ enum class FaultKind { kStuckOpen, kStuckClosed, kLeak, kLoss };
 // (1 - size) of the commanded impulse.
 struct FaultParams {
   FaultKind kind = FaultKind::kStuckOpen;
-  int thruster = 0;            // 0-based index into the 16 thrusters (T1 is 0)
+  int thruster = 0;            // index 0..N-1 into the scenario's thrusters (T1 is 0)
   double onset_s = 1000.0;     // [s] t_f
   double leak_size = 0.2;      // [-] \hat m_leak, case 3
   double leak_slope_per_s = 0.1;  // [1/s] m_s, case 3

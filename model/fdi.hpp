@@ -41,6 +41,17 @@ struct DeficitParams {
 // Longest detector window the on-board sums hold, in periods.
 inline constexpr int kMaxDeficitDetectorWindowPeriods = 256;
 
+// The Fonod 2015 schemes (position, attitude) and Chaser's deficit bank and detector watch the
+// thrusters of the active set, exactly this many of them (MSR's branch of eight): their per-thruster
+// kernels are fixed-size (flight/fdi/watched_set.hpp). validate_scenario refuses a scenario that
+// enables them on an active set of another size.
+inline constexpr int kFdiWatchedThrusters = 8;
+
+enum class RecoveryPolicy {
+  kNone,         // diagnose only
+  kSwitchGroup,  // close the faulty thruster's group latch, fly on with the next standby group
+};
+
 struct FdiParams {
   // Design (eqs. 19-39): assigned observer eigenvalues, Taylor order h of Prop. 2, and the upper
   // bound of the unknown part of the delay that the design decouples (the paper: T).
@@ -58,8 +69,11 @@ struct FdiParams {
   DeficitParams deficit;            // used when isolation_method is kDeficit
   // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
   double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
-  // Recovery: on a confirmed fault, close branch A's latch valve and fly on with branch B.
-  bool recovery = true;
+  // Recovery (flight/recovery.hpp): what a confirmed fault changes in the active set, and how long
+  // the diagnosis then waits before it watches the new set (the fault's trace leaves the residual
+  // generators' state at the rate of their eigenvalues).
+  RecoveryPolicy recovery = RecoveryPolicy::kSwitchGroup;
+  double rearm_after_recovery_s = 10.0;  // [s]
   FdiSchemeParams position;
   FdiSchemeParams attitude;
 };

@@ -1,5 +1,7 @@
 #pragma once
 // The plain structs that cross between plant (truth) and flight software. Nothing else crosses.
+#include <cstdint>
+
 #include "core/time.hpp"
 #include "core/types.hpp"
 #include "model/thrusters.hpp"
@@ -15,10 +17,11 @@ struct SensorMeasurements {
   double propellant_used_kg = 0;                   // [kg] tank gauging: propellant used so far
 };
 
-// Flight -> plant: commanded on-times for the coming period, all 16 thrusters (0 for the idle ones).
+// Flight -> plant: commanded on-times for the coming period, by thruster index (0 for the idle
+// ones), and the latch valves of the redundancy groups.
 struct ThrusterCommand {
-  Ton16 ton{};  // [-] on-time as a fraction of the control period, 0..1
-  std::array<bool, 2> latch_open{true, true};  // latch valve of branch A, B: closed cuts the branch
+  ThrusterOnTimes ton{};  // [-] on-time as a fraction of the control period, 0..1
+  std::uint32_t latch_closed_groups = 0;  // bit g set: group g's latch valve is closed, cutting its flow
 };
 
 }  // namespace chaser::model

@@ -9,11 +9,18 @@ Vec6 thruster_wrench(const ThrusterParams& thruster, const Vec3& com_body_m) {
   return wrench;
 }
 
-ConfigMatrix configuration_matrix(const ThrusterSetParams& set, int branch, const Vec3& com_body_m) {
-  ConfigMatrix m;
-  for (int i = 0; i < kThrustersPerBranch; ++i)
-    m.col(i) = thruster_wrench(set.thrusters[branch_first(branch) + i], com_body_m);
+ConfigMatrix configuration_matrix(const ThrusterSetParams& set, ThrusterMask mask, const Vec3& com_body_m) {
+  ConfigMatrix m = ConfigMatrix::Zero();
+  const ThrusterList list = thruster_list(mask & all_thrusters(set));
+  for (int k = 0; k < list.count; ++k)
+    m.col(k) = thruster_wrench(set.thrusters[static_cast<std::size_t>(list.index[k])], com_body_m);
   return m;
+}
+
+Eigen::Matrix<double, 6, Eigen::Dynamic> configuration_columns(const ThrusterSetParams& set, ThrusterMask mask,
+                                                              const Vec3& com_body_m) {
+  const ThrusterMask used = mask & all_thrusters(set);
+  return configuration_matrix(set, used, com_body_m).leftCols(thruster_count(used));
 }
 
 }  // namespace chaser::model

@@ -52,10 +52,8 @@ Vec3 draw_vector(RandomStream& stream, double sigma) {
 }  // namespace
 
 void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
+  state.thrusters.latch_closed_groups = command.latch_closed_groups;  // the latches act from this period
   // tau(k): one delay for all thrusters, redrawn each period (Fonod 2015, eq. 1 and below).
-  for (int branch = 0; branch < 2; ++branch)
-    if (state.thrusters.latch_open[branch] != command.latch_open[branch])
-      set_latch(state.thrusters, branch, command.latch_open[branch]);
   state.last_delay_ns = static_cast<TimeNs>(state.streams.delay.uniform() * static_cast<double>(params.delay_max_ns));
   schedule_period(params.thrusters, params.faults, state.thrusters, command, t_k, state.last_delay_ns,
                   state.last_profile);

@@ -15,7 +15,7 @@ double leak_size(const model::FaultParams& fault, TimeNs t_k) {
 FaultEffects evaluate_faults(std::span<const model::FaultParams> faults, TimeNs t_k) {
   FaultEffects effects{};
   for (const model::FaultParams& fault : faults) {
-    if (fault.thruster < 0 || fault.thruster >= model::kThrustersTotal || !fault_active(fault, t_k)) continue;
+    if (fault.thruster < 0 || fault.thruster >= model::kMaxThrusters || !fault_active(fault, t_k)) continue;
     ThrusterFaultEffect& e = effects[static_cast<std::size_t>(fault.thruster)];
     switch (fault.kind) {
       case model::FaultKind::kStuckOpen: e.stuck_open = true; break;

@@ -25,7 +25,7 @@ struct ThrusterFaultEffect {
   double ton_floor = 0.0;     // [-] case 3: m_leak(t_k), lower saturation of the on-time
   double thrust_scale = 1.0;  // [-] case 4: 1 - m_loss, thrust (and mass flow) level while open
 };
-using FaultEffects = std::array<ThrusterFaultEffect, model::kThrustersTotal>;
+using FaultEffects = std::array<ThrusterFaultEffect, model::kMaxThrusters>;
 
 // True when the fault acts in the period starting at t_k (t_k >= t_f).
 bool fault_active(const model::FaultParams& fault, TimeNs t_k);
@@ -33,8 +33,8 @@ bool fault_active(const model::FaultParams& fault, TimeNs t_k);
 // m_leak(t_k) = min(m_s (t_k - t_f), \hat m_leak) for an active leak, 0 otherwise (case 3).
 double leak_size(const model::FaultParams& fault, TimeNs t_k);
 
-// Effects on all 16 thrusters during the period starting at t_k. Faults naming a thruster outside
-// 0..15 are ignored (the scenario validator rejects them). At most one fault per thruster is
+// Effects on every thruster during the period starting at t_k. Faults naming a thruster outside
+// 0..kMaxThrusters-1 are ignored (the scenario validator rejects them). At most one fault per thruster is
 // expected; if several are given they are applied in order and combine.
 FaultEffects evaluate_faults(std::span<const model::FaultParams> faults, TimeNs t_k);
 

@@ -13,8 +13,8 @@ namespace chaser::plant {
 namespace {
 
 constexpr double kTruncationSigmas = 3.0;
-constexpr std::int64_t kThrusterKeyBase = 16;  // event key = (t - t_k) * 16 + thruster
-static_assert(model::kThrustersTotal <= kThrusterKeyBase);
+constexpr std::int64_t kThrusterKeyBase = 32;  // event key = (t - t_k) * 32 + thruster
+static_assert(model::kMaxThrusters <= kThrusterKeyBase);
 
 using Mask = std::uint32_t;  // bit i set: thruster i produces thrust
 
@@ -28,8 +28,9 @@ Vec3 misaligned_direction(const Vec3& direction, double sigma_rad, RandomStream&
   return quat_from_rotation_vector(a * e1 + b * e2) * direction;
 }
 
-bool latch_open_for(const ThrusterState& state, int thruster) {
-  return state.latch_open[static_cast<std::size_t>(thruster / model::kThrustersPerBranch)];
+bool latch_open_for(const ThrusterHardware& hw, const ThrusterState& state, int thruster) {
+  const int group = hw.group[static_cast<std::size_t>(thruster)];
+  return group == model::kNoGroup || ((state.latch_closed_groups >> group) & 1U) == 0;
 }
 
 // Removes the intervals that closed at or before t_k (their whole effect lies in earlier periods).
@@ -71,7 +72,7 @@ TimeNs add_pulse(ValveSchedule& valve, TimeNs open_ns, TimeNs length_ns, TimeNs 
   return length_ns;
 }
 
-void append_piece(const ThrusterHardware& hw, const std::array<double, model::kThrustersTotal>& scale, Mask mask,
+void append_piece(const ThrusterHardware& hw, const std::array<double, model::kMaxThrusters>& scale, Mask mask,
                   TimeNs t_begin, TimeNs t_end, ThrustProfile& out) {
   ThrustPiece& piece = out.pieces[static_cast<std::size_t>(out.count++)];
   piece.t_begin_ns = t_begin;
@@ -90,12 +91,12 @@ void append_piece(const ThrusterHardware& hw, const std::array<double, model::kT
 
 // Valve openings and closings strictly inside the period, as sorted keys; thrusters already open at
 // t_k go into *open_at_start.
-int collect_events(const ThrusterState& state, const FaultEffects& effects, TimeNs t_k, TimeNs t_end,
-                   std::array<std::int64_t, kMaxThrustEvents>& keys, Mask* open_at_start) {
+int collect_events(const ThrusterHardware& hw, const ThrusterState& state, const FaultEffects& effects, TimeNs t_k,
+                   TimeNs t_end, std::array<std::int64_t, kMaxThrustEvents>& keys, Mask* open_at_start) {
   int n = 0;
   *open_at_start = 0;
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
-    if (!latch_open_for(state, i)) continue;
+  for (int i = 0; i < hw.count; ++i) {
+    if (!latch_open_for(hw, state, i)) continue;
     const Mask bit = Mask{1} << i;
     if (effects[i].stuck_open) {
       *open_at_start |= bit;
@@ -122,11 +123,11 @@ int collect_events(const ThrusterState& state, const FaultEffects& effects, Time
 void build_pieces(const ThrusterHardware& hw, const FaultEffects& effects, const ThrusterState& state, TimeNs t_k,
                   ThrustProfile& out) {
   const TimeNs t_end = t_k + hw.period_ns;
-  std::array<double, model::kThrustersTotal> scale{};
-  for (int i = 0; i < model::kThrustersTotal; ++i) scale[i] = effects[i].thrust_scale;
+  std::array<double, model::kMaxThrusters> scale{};
+  for (int i = 0; i < hw.count; ++i) scale[i] = effects[i].thrust_scale;
   std::array<std::int64_t, kMaxThrustEvents> keys;
   Mask mask = 0;
-  const int n = collect_events(state, effects, t_k, t_end, keys, &mask);
+  const int n = collect_events(hw, state, effects, t_k, t_end, keys, &mask);
   out.count = 0;
   out.propellant_kg = 0.0;
   TimeNs piece_begin = t_k;
@@ -147,8 +148,11 @@ void build_pieces(const ThrusterHardware& hw, const FaultEffects& effects, const
 ThrusterHardware make_thruster_hardware(const model::ThrusterSetParams& set, const Vec3& com_body_m, double isp_s,
                                         TimeNs period_ns, RandomStream& dispersion) {
   ThrusterHardware hw;
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
+  hw.count = set.count;
+  hw.group.fill(model::kNoGroup);
+  for (int i = 0; i < set.count; ++i) {
     model::ThrusterParams actual = set.thrusters[i];
+    hw.group[i] = actual.group;
     actual.max_thrust_N *= 1.0 + dispersion.truncated_normal(set.thrust_sigma, kTruncationSigmas);
     actual.direction_body = misaligned_direction(actual.direction_body, set.misalignment_sigma_rad, dispersion);
     const Vec6 wrench = model::thruster_wrench(actual, com_body_m);
@@ -163,10 +167,6 @@ ThrusterHardware make_thruster_hardware(const model::ThrusterSetParams& set, con
   return hw;
 }
 
-void set_latch(ThrusterState& state, int branch, bool open) {
-  if (branch == 0 || branch == 1) state.latch_open[static_cast<std::size_t>(branch)] = open;
-}
-
 void schedule_period(const ThrusterHardware& hardware, std::span<const model::FaultParams> faults,
                      ThrusterState& state, const model::ThrusterCommand& command, TimeNs t_k, TimeNs delay_ns,
                      ThrustProfile& out) {
@@ -174,7 +174,7 @@ void schedule_period(const ThrusterHardware& hardware, std::span<const model::Fa
   const FaultEffects effects = evaluate_faults(faults, t_k);
   const TimeNs open_ns = t_k + delay_ns + hardware.rise_delay_ns;  // eq. 1: same delay for all thrusters
   const double period = static_cast<double>(hardware.period_ns);
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
+  for (int i = 0; i < hardware.count; ++i) {
     ValveSchedule& valve = state.valves[i];
     const ThrusterFaultEffect& effect = effects[i];
     drop_finished(valve, t_k);
@@ -187,7 +187,7 @@ void schedule_period(const ThrusterHardware& hardware, std::span<const model::Fa
       const TimeNs added_ns = length_ns > 0 ? add_pulse(valve, open_ns, length_ns, hardware.min_off_ns) : 0;
       realised = effect.thrust_scale * static_cast<double>(added_ns) / period;  // eq. 5, case 4 as thrust level
     }
-    out.ton_realised[i] = latch_open_for(state, i) ? realised : 0.0;
+    out.ton_realised[i] = latch_open_for(hardware, state, i) ? realised : 0.0;
   }
   build_pieces(hardware, effects, state, t_k, out);
 }

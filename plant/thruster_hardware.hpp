@@ -23,8 +23,9 @@
 //    open through the gap. When that previous closing already happened before t_k (it lies in a
 //    period whose profile is gone) the valve cannot have stayed open; it cannot reopen before
 //    closing + min_off_time either, so the opening is postponed to then, keeping its length;
-//  - a closed latch valve (one per branch: A = 0..7, B = 8..15) cuts the flow of its whole branch,
-//    including a stuck-open thruster. Latches act from the next schedule_period call (its t_k on).
+//  - a closed latch valve (one per redundancy group) cuts the flow of its whole group, including a
+//    stuck-open thruster; a thruster in no group has no latch. Latches act from the next
+//    schedule_period call (its t_k on).
 // Faults: see plant/thruster_faults.hpp (evaluated at t_k).
 //
 // Preconditions (validated by the scenario, not here): 0 <= delay < T; period, rise, min on/off
@@ -44,14 +45,16 @@
 namespace chaser::plant {
 
 inline constexpr int kMaxPulsesPerThruster = 4;  // pending open intervals; delay < T needs at most 3
-inline constexpr int kMaxThrustEvents = 2 * kMaxPulsesPerThruster * model::kThrustersTotal;
+inline constexpr int kMaxThrustEvents = 2 * kMaxPulsesPerThruster * model::kMaxThrusters;
 inline constexpr int kMaxPieces = kMaxThrustEvents + 1;
 
 // Constant for a run: the actual (dispersed) thrusters and the valve timing.
 struct ThrusterHardware {
-  std::array<Vec3, model::kThrustersTotal> force_body_N{};    // [N] full-thrust force, dispersed
-  std::array<Vec3, model::kThrustersTotal> torque_body_Nm{};  // [N m] about the true centre of mass
-  std::array<double, model::kThrustersTotal> mass_flow_kgps{};  // [kg/s] at full thrust: F / (isp g0)
+  int count = 0;                                             // N thrusters, entries [0, N) used
+  std::array<Vec3, model::kMaxThrusters> force_body_N{};    // [N] full-thrust force, dispersed
+  std::array<Vec3, model::kMaxThrusters> torque_body_Nm{};  // [N m] about the true centre of mass
+  std::array<double, model::kMaxThrusters> mass_flow_kgps{};  // [kg/s] at full thrust: F / (isp g0)
+  std::array<int, model::kMaxThrusters> group{};            // latch group, model::kNoGroup: none
   TimeNs period_ns = 0;      // [ns] control period T
   TimeNs rise_delay_ns = 0;  // [ns] rise_time / 2, the ramp's equivalent delay
   TimeNs min_on_ns = 0;      // [ns]
@@ -80,12 +83,9 @@ struct ValveSchedule {
 };
 
 struct ThrusterState {
-  std::array<ValveSchedule, model::kThrustersTotal> valves{};
-  std::array<bool, 2> latch_open{true, true};  // branch A, branch B
+  std::array<ValveSchedule, model::kMaxThrusters> valves{};
+  std::uint32_t latch_closed_groups = 0;  // bit g set: group g's latch valve is closed
 };
-
-// Opens (true) or closes (false) the latch valve of branch 0 (A) or 1 (B).
-void set_latch(ThrusterState& state, int branch, bool open);
 
 // One constant piece of the thrust profile.
 struct ThrustPiece {
@@ -103,7 +103,7 @@ struct ThrustProfile {
   // minimum on-time, the leak floor and the thrust loss): open time it adds to the valve's union of
   // intervals (including a min-off gap it fills, excluding overlap with earlier pulses), times the
   // thrust scale, over T. 1 for a stuck-open thruster, 0 for a blocked one or a closed latch.
-  model::Ton16 ton_realised{};
+  model::ThrusterOnTimes ton_realised{};
   double propellant_kg = 0.0;  // [kg] consumed over [t_k, t_k + T]
 };
 

@@ -134,9 +134,9 @@ def main():
     for case, keys in CASES.items():
         for t in THRUSTERS:
             fault = f"faults=[{{thruster: {t}, {keys}, onset_s: {args.onset}}}]"
-            jobs.append((f"{case}_{t}", t, case, None, [fault, "fdi.recovery=false"] + args.sets))
+            jobs.append((f"{case}_{t}", t, case, None, [fault, "fdi.recovery=none"] + args.sets))
     for seed in range(1, args.seeds + 1):
-        jobs.append((f"fault_free_seed{seed}", None, "fault_free", seed, ["faults=[]", "fdi.recovery=false"] + args.sets))
+        jobs.append((f"fault_free_seed{seed}", None, "fault_free", seed, ["faults=[]", "fdi.recovery=none"] + args.sets))
 
     def work(job):
         name, thruster, case, seed, sets = job

@@ -50,40 +50,46 @@ MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, c
   };
 }
 
-// alarm_period: -1 for none; confirmed: 0-based, -1 for none.
-SchemeResult scheme_result(bool enabled, std::int64_t alarm_period, int confirmed, double isolated_s,
-                           const flight::fdi::DeficitDecision& diagnosis, double period_s) {
+// Thruster numbers 1..N in results, -1 for none.
+SchemeResult scheme_result(bool enabled, const flight::SchemeSummary& s) {
   SchemeResult r;
   r.enabled = enabled;
-  r.alarm_s = alarm_period >= 0 ? static_cast<double>(alarm_period) * period_s : -1.0;
-  r.isolated_s = isolated_s;
-  r.isolated_thruster = confirmed >= 0 ? confirmed + 1 : -1;
-  if (diagnosis.decided && diagnosis.thruster >= 0) {
-    r.diagnosed_kind = diagnosis.kind;
-    r.diagnosed_size = diagnosis.size;
-    r.estimated_onset_s = static_cast<double>(diagnosis.onset_sample) * period_s;
+  r.alarm_s = s.alarm_s;
+  r.isolated_s = s.isolated_s;
+  r.isolated_thruster = s.confirmed >= 0 ? s.confirmed + 1 : -1;
+  if (s.diagnosis.decided && s.diagnosis.thruster >= 0) {
+    r.diagnosed_kind = s.diagnosis.kind;
+    r.diagnosed_size = s.diagnosis.size;
+    r.estimated_onset_s = s.estimated_onset_s;
   }
   return r;
 }
 
-FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState& s, double period_s) {
-  const flight::FdirState& f = s.fdir;
+FdirResult episode_result(const flight::FlightParams& p, const flight::FdirEpisode& e) {
   FdirResult r{
-      .position = scheme_result(p.fdir.position_enabled, f.position.alarm ? f.position.alarm_period : -1,
-                                f.position.confirmed, f.position_isolated_s, f.position_deficit.decision, period_s),
-      .attitude = scheme_result(p.fdir.attitude_enabled, f.attitude.alarm ? f.attitude.alarm_period : -1,
-                                f.attitude.confirmed, f.attitude_isolated_s, f.attitude_deficit.decision, period_s),
-      .deficit = scheme_result(p.fdir.deficit_detection, f.detector.alarm ? f.detector.alarm_sample : -1,
-                               f.detector_deficit.decision.thruster, f.detector_isolated_s, f.detector_deficit.decision,
-                               period_s),
-      .recovery_s = f.recovery_s,
-      .recovered_thruster = f.recovered ? f.isolated_thruster + 1 : -1,
+      .position = scheme_result(p.fdir.position_enabled, e.position),
+      .attitude = scheme_result(p.fdir.attitude_enabled, e.attitude),
+      .deficit = scheme_result(p.fdir.deficit_detection, e.detector),
+      .recovery_s = e.recovery_s,
+      .recovered_thruster = e.recovered_thruster >= 0 ? e.recovered_thruster + 1 : -1,
   };
   for (const SchemeResult* scheme : {&r.position, &r.attitude, &r.deficit}) {
     if (scheme->alarm_s >= 0 && (r.detection_s < 0 || scheme->alarm_s < r.detection_s)) r.detection_s = scheme->alarm_s;
     if (scheme->isolated_s >= 0 && (r.isolation_s < 0 || scheme->isolated_s < r.isolation_s))
       r.isolation_s = scheme->isolated_s, r.isolated_thruster = scheme->isolated_thruster;
   }
+  return r;
+}
+
+// The first diagnosis (ended by a recovery, or still running) as the run's FDIR result, and every
+// diagnosis in order as its episodes.
+FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState& s) {
+  const flight::FdirState& f = s.fdir;
+  std::vector<FdirResult> episodes;
+  for (int i = 0; i < f.episode_count; ++i) episodes.push_back(episode_result(p, f.episodes[static_cast<std::size_t>(i)]));
+  if (f.armed) episodes.push_back(episode_result(p, flight::current_episode(p.fdir, f)));
+  FdirResult r = episodes.empty() ? episode_result(p, flight::current_episode(p.fdir, f)) : episodes.front();
+  r.episodes = std::move(episodes);
   return r;
 }
 
@@ -109,7 +115,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   std::unique_ptr<TelemetryWriter> telemetry;
   if (!options.telemetry_path.empty()) {
     telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path);
-    if (telemetry->ok()) telemetry->header(telemetry_channels());
+    if (telemetry->ok()) telemetry->header(telemetry_channels(scenario.thrusters.count));
   }
 
   RunResult result;
@@ -122,8 +128,11 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     const plant::RigidState truth = plant.state.rigid;
 
     const model::SensorMeasurements meas = plant::sense_plant(plant.params, plant.state, t_k);
+    // The FDI's lanes of this period (before a recovery in it changes them), for telemetry.
+    const flight::fdi::WatchedSet watched =
+        flight_params.fdir.watched.empty() || flight_state.fdir.watched < 0 ? flight::fdi::WatchedSet{}
+                                                                            : flight::watched_set(flight_params.fdir, flight_state.fdir);
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
-    const int branch = flight_state.active_branch;  // the branch this period's command flies
     const MonitorSample sample = monitor_sample(t_s, n, truth, out.reference);
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);
@@ -136,7 +145,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
       second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
     if (telemetry && telemetry->ok())
-      record_period(*telemetry, t_s, truth, plant.state, out, branch,
+      record_period(*telemetry, t_s, truth, plant.state, out, flight_state, scenario.thrusters.count, watched,
                     attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
                     plant::target_attitude(scenario.target, t_s));
   }
@@ -145,7 +154,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   const flight::GuidanceRef final_ref = flight::guidance_reference(scenario.guidance, n, t_end_s);
   monitor_final(scenario, monitor_sample(t_end_s, n, plant.state.rigid, final_ref), result.figures);
 
-  result.fdir = fdir_result(flight_params, flight_state, scenario.control_period_s);
+  result.fdir = fdir_result(flight_params, flight_state);
   result.propellant_used_kg = plant.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k;

@@ -48,6 +48,23 @@ double first_onset_s(const model::Scenario& scenario) {
   return scenario.faults.empty() ? 0.0 : scenario.faults.front().onset_s;
 }
 
+// Every diagnosis in order (the FDI watches again after a recovery), absolute times.
+nlohmann::json diagnoses_json(const FdirResult& f) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const FdirResult& e : f.episodes)
+    list.push_back(nlohmann::json{
+        {"position_scheme", scheme_json(e.position, 0.0)},
+        {"attitude_scheme", scheme_json(e.attitude, 0.0)},
+        {"deficit_scheme", scheme_json(e.deficit, 0.0)},
+        {"detection_s", e.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.detection_s)},
+        {"isolation_s", e.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.isolation_s)},
+        {"isolated_thruster",
+         e.isolated_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", e.isolated_thruster))},
+        {"recovery_s", e.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.recovery_s)},
+    });
+  return list;
+}
+
 nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   const double onset = first_onset_s(scenario);
   return nlohmann::json{
@@ -63,6 +80,7 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
       {"recovery_s", f.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.recovery_s)},
       {"recovered_thruster",
        f.recovered_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", f.recovered_thruster))},
+      {"diagnoses", diagnoses_json(f)},
   };
 }
 
@@ -149,9 +167,16 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   out += scheme_text("position", r.fdir.position, onset, faulty);
   out += scheme_text("attitude", r.fdir.attitude, onset, faulty);
   out += scheme_text("deficit", r.fdir.deficit, onset, faulty);
-  if (r.fdir.recovery_s >= 0)
-    out += fmt::format("  recovery: branch A closed at {:.1f} s (T{} isolated), flying on branch B\n", r.fdir.recovery_s,
-                       r.fdir.recovered_thruster);
+  for (std::size_t i = 0; i < r.fdir.episodes.size(); ++i) {
+    const FdirResult& e = r.fdir.episodes[i];
+    if (i > 0 && e.detection_s >= 0)
+      out += fmt::format("  diagnosis {} (after recovery): alarm at {:.1f} s{}\n", i + 1, e.detection_s,
+                         e.isolated_thruster > 0 ? fmt::format(", T{} isolated at {:.1f} s", e.isolated_thruster, e.isolation_s)
+                                                 : std::string());
+    if (e.recovery_s >= 0)
+      out += fmt::format("  recovery: T{}'s group latch closed at {:.1f} s, flying on the standby group\n",
+                         e.recovered_thruster, e.recovery_s);
+  }
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
   return out;
 }

@@ -18,13 +18,17 @@ void add(TelemetryWriter& w, const Vec3& v) {
   for (int i = 0; i < 3; ++i) w.add(v[i]);
 }
 
-// Thruster indices 1..8 of branch A in telemetry, 0 for none.
-void add(TelemetryWriter& w, const flight::fdi::FdiSchemeOutput& s) {
+// A lane of the watched set as a thruster number 1..N in telemetry, 0 for none.
+int thruster_number(const flight::fdi::WatchedSet& watched, int lane) {
+  return lane >= 0 ? watched.index[static_cast<std::size_t>(lane)] + 1 : 0;
+}
+
+void add(TelemetryWriter& w, const flight::fdi::FdiSchemeOutput& s, const flight::fdi::WatchedSet& watched) {
   add(w, s.residual);
   w.add(s.glr.value());
   w.add(s.alarm);
-  w.add(s.candidate + 1);
-  w.add(s.confirmed + 1);
+  w.add(thruster_number(watched, s.candidate));
+  w.add(thruster_number(watched, s.confirmed));
 }
 
 void add(TelemetryWriter& w, const Quat& q) {
@@ -33,7 +37,7 @@ void add(TelemetryWriter& w, const Quat& q) {
 
 }  // namespace
 
-std::vector<std::string> telemetry_channels() {
+std::vector<std::string> telemetry_channels(int thrusters) {
   std::vector<std::string> n{"t_s"};
   add_vector_names(n, "r_lvlh", "m");
   add_vector_names(n, "v_lvlh", "mps");
@@ -50,8 +54,8 @@ std::vector<std::string> telemetry_channels() {
   add_vector_names(n, "torque_demand_body", "Nm");
   add_vector_names(n, "force_cmd_body", "N");
   add_vector_names(n, "torque_cmd_body", "Nm");
-  for (int i = 1; i <= model::kThrustersPerBranch; ++i) n.push_back(fmt::format("ton_cmd_{}", i));
-  for (int i = 1; i <= model::kThrustersPerBranch; ++i) n.push_back(fmt::format("ton_real_{}", i));
+  for (int i = 1; i <= thrusters; ++i) n.push_back(fmt::format("ton_cmd_{}", i));
+  for (int i = 1; i <= thrusters; ++i) n.push_back(fmt::format("ton_real_{}", i));
   for (const char* scheme : {"position", "attitude"}) {
     for (int i = 1; i <= 3; ++i) n.push_back(fmt::format("residual_{}_{}", scheme, i));
     n.push_back(fmt::format("glr_{}", scheme));
@@ -61,7 +65,7 @@ std::vector<std::string> telemetry_channels() {
   }
   for (const char* name : {"glr_deficit", "alarm_deficit", "candidate_deficit", "confirmed_deficit"}) n.push_back(name);
   n.push_back("over_consumption");
-  n.push_back("active_branch");
+  n.push_back("active_thrusters");
   n.push_back("delay_s");
   n.push_back("mass_kg");
   n.push_back("propellant_used_kg");
@@ -69,7 +73,8 @@ std::vector<std::string> telemetry_channels() {
 }
 
 void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, const plant::PlantState& plant,
-                   const flight::FlightOutput& f, int active_branch, const Vec3& attitude_error_body_rad,
+                   const flight::FlightOutput& f, const flight::FlightState& flight_state, int thrusters,
+                   const flight::fdi::WatchedSet& watched, const Vec3& attitude_error_body_rad,
                    const Quat& q_inertial_from_target) {
   w.add(t_s);
   add(w, x.r_lvlh_m), add(w, x.v_lvlh_mps), add(w, x.q_inertial_from_body), add(w, x.omega_body_radps);
@@ -79,13 +84,13 @@ void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, c
   add(w, f.reference.r_lvlh_m), add(w, attitude_error_body_rad);
   add(w, f.force_demand_lvlh_N), add(w, f.torque_demand_body_Nm);
   add(w, Vec3(f.commanded_wrench.head<3>())), add(w, Vec3(f.commanded_wrench.tail<3>()));
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(f.ton_active[i]);
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) w.add(plant.last_profile.ton_realised[model::branch_first(active_branch) + i]);
-  add(w, f.fdir.position), add(w, f.fdir.attitude);
+  for (int i = 0; i < thrusters; ++i) w.add(f.command.ton[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < thrusters; ++i) w.add(plant.last_profile.ton_realised[static_cast<std::size_t>(i)]);
+  add(w, f.fdir.position, watched), add(w, f.fdir.attitude, watched);
   w.add(f.fdir.detector.glr.value()), w.add(f.fdir.detector.alarm);
-  w.add(f.fdir.detector.candidate + 1), w.add(f.fdir.detector.confirmed + 1);
+  w.add(thruster_number(watched, f.fdir.detector.candidate)), w.add(thruster_number(watched, f.fdir.detector.confirmed));
   w.add(f.fdir.over_consumption);
-  w.add(active_branch);
+  w.add(static_cast<double>(flight_state.thrusters.active));  // exact: a 32-bit mask has at most 10 digits
   w.add(to_seconds(plant.last_delay_ns));
   w.add(x.mass_kg);
   w.add(plant.propellant_used_kg);

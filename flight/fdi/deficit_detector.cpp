@@ -13,8 +13,8 @@ std::vector<std::string> validate(const DeficitDetectorParams& p) {
   return problems;
 }
 
-DeficitNormals8 deficit_normals(const DeficitIsolationParams& bp, const DeficitDetectorBlock& sums) {
-  DeficitNormals8 n;
+DeficitNormalsW deficit_normals(const DeficitIsolationParams& bp, const DeficitDetectorBlock& sums) {
+  DeficitNormalsW n;
   n.col(0).noalias() = bp.torque_body_Nm.cwiseAbs2().transpose() * sums.weight_sum;
   n.col(1) = sums.command.col(0);
   n.col(2) = sums.command.col(1);
@@ -26,11 +26,11 @@ DeficitNormals8 deficit_normals(const DeficitIsolationParams& bp, const DeficitD
 namespace {
 
 // Adds the row of a period with on-times u and weights w to `block`.
-void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const model::Ton8& u,
+void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const WatchedTon& u,
              DeficitDetectorBlock& block) {
   const Vec3 wy = w.cwiseProduct(y);
   block.weight_sum += w, block.weighted_row_sum += wy;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+  for (int i = 0; i < kWatchedThrusters; ++i) {
     if (!(u(i) > 0.0)) continue;  // the row adds nothing to thruster i's command sums
     const auto c = bp.torque_body_Nm.col(i);
     const double cwc = c.cwiseAbs2().dot(w), cwy = c.dot(wy);
@@ -66,7 +66,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   // The next block starts empty. Only the command rows it used are zeroed: zeroing the whole block
   // compiles to `rep stos`, whose start-up costs more than the detector's additions.
   block.weight_sum.setZero(), block.weighted_row_sum.setZero();
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+  for (int i = 0; i < kWatchedThrusters; ++i) {
     if (block.commanded(i) != 0) block.command.row(i).setZero();
     // A thruster not commanded in the window: every row has u = 0, so its command sums are exactly
     // zero. Set them so (in place: the rows leaving later subtract exact zeros), not the residue of
@@ -84,7 +84,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   // mispredicted branch per thruster cost more than the fits.
   double statistic = 0.0, material_gain = -1.0;
   int suspect = -1, material_suspect = -1;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+  for (int i = 0; i < kWatchedThrusters; ++i) {
     const double gain = fits.gain(i);
     const bool leads = gain > statistic;
     statistic = leads ? gain : statistic;

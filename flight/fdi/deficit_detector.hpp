@@ -51,12 +51,12 @@ std::vector<std::string> validate(const DeficitDetectorParams& params);
 
 // Per thruster, the three sums with u, row i for thruster i: [u c'Wc, u^2 c'Wc, u c'Wy] (the
 // normal equations' hab, hbb, gb).
-using DeficitCommandSums = Eigen::Matrix<double, model::kThrustersPerBranch, 3>;
+using DeficitCommandSums = Eigen::Matrix<double, kWatchedThrusters, 3>;
 // Per thruster, the rows in which it was commanded (T_on > 0). Kept exactly (integers) because the
 // running sums are not: once a thruster's last pulse has left the window, its command sums are the
 // rounding residue of adding and removing that pulse, ~1e-16 of it, not zero, and its b fitted
 // from them is arbitrary (it made a "material" b and an alarm in a Table 2 run).
-using DeficitCommandedRows = Eigen::Matrix<std::int32_t, model::kThrustersPerBranch, 1>;
+using DeficitCommandedRows = Eigen::Matrix<std::int32_t, kWatchedThrusters, 1>;
 
 // The sums of a run of rows.
 struct DeficitDetectorBlock {
@@ -84,7 +84,7 @@ struct DeficitDetectorState {
 
 // The normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits) on the rows
 // summed in `sums`: haa = (M_C o M_C)' sum W, ga = M_C' sum W y, the rest the command sums.
-DeficitNormals8 deficit_normals(const DeficitIsolationParams& bank_params, const DeficitDetectorBlock& sums);
+DeficitNormalsW deficit_normals(const DeficitIsolationParams& bank_params, const DeficitDetectorBlock& sums);
 
 // Call after push_deficit_sample: adds the torque row of the previous sample, then evaluates.
 void step_deficit_detector(const DeficitDetectorParams& params, const DeficitIsolationParams& bank_params,

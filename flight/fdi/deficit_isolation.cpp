@@ -20,11 +20,11 @@ Vec3 torque_noise_floor_sq(const DeficitIsolationParams& p) {
 // Scratch arrays of one evaluation, sized for the longest window (on the stack: no allocation).
 struct Window {
   int n = 0;
-  std::array<DeficitMat38, kMaxDeficitWindow> force_lvlh{};  // [m/s^2 per unit on-time] R M_F / m
+  std::array<DeficitMat3W, kMaxDeficitWindow> force_lvlh{};  // [m/s^2 per unit on-time] R M_F / m
   std::array<Vec3, kMaxDeficitWindow> y_pos{};    // [m] position rows, detrended
   std::array<Vec3, kMaxDeficitWindow> y_tau{};    // [N m] torque rows
   std::array<Vec3, kMaxDeficitWindow> w_tau{};    // [1/(N m)^2] torque row weights
-  std::array<model::Ton8, kMaxDeficitWindow> ton{};
+  std::array<WatchedTon, kMaxDeficitWindow> ton{};
   double g00 = 0, g01 = 0, g11 = 0;               // Gram matrix of [1, k] over the position rows
   double rss_position = 0, rss_torque = 0;        // [-] weighted RSS of the no-fault fit, by block
 };
@@ -126,7 +126,7 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   const Vec3& w = now.omega_body_radps;
   const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
   Vec3 row = I * d_omega_dt + w.cross(I * w);
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)  // M_C T_on over the commanded thrusters: most periods none
+  for (int i = 0; i < kWatchedThrusters; ++i)  // M_C T_on over the commanded thrusters: most periods none
     if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
   return row;
 }
@@ -135,10 +135,10 @@ Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
   return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(bank.noise_floor_sq);
 }
 
-Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const model::Ton8& ton) {
+Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
   // epsilon |M_C| T_on over the commanded thrusters only: most periods command none.
   Vec3 pulse = Vec3::Zero();
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+  for (int i = 0; i < kWatchedThrusters; ++i)
     if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
   pulse *= p.pulse_uncertainty;
   return (deficit_sigma0_sq(bank) + pulse.cwiseProduct(pulse)).cwiseInverse();
@@ -185,14 +185,14 @@ DeficitFit fit_deficit(const DeficitNormal& n) { return fit_lane(n.haa, n.hab, n
 // and/andnot/or selects), the one the CPU runs chosen at load time. The lanes' arithmetic is
 // element by element, without reductions, so both give the same bits (tested against fit_deficit).
 __attribute__((target_clones("avx2", "default")))
-DeficitFits fit_deficits(const DeficitNormals8& normals) {
+DeficitFits fit_deficits(const DeficitNormalsW& normals) {
   const double* haa = normals.col(0).data();
   const double* hab = normals.col(1).data();
   const double* hbb = normals.col(2).data();
   const double* ga = normals.col(3).data();
   const double* gb = normals.col(4).data();
-  DeficitFits f{DeficitVec8(), DeficitVec8(), DeficitVec8()};  // every entry is written below: no zeroing
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+  DeficitFits f{DeficitVecW(), DeficitVecW(), DeficitVecW()};  // every entry is written below: no zeroing
+  for (int i = 0; i < kWatchedThrusters; ++i) {
     const DeficitFit fit = fit_lane(haa[i], hab[i], hbb[i], ga[i], gb[i]);
     f.a(i) = fit.a, f.b(i) = fit.b, f.gain(i) = fit.gain;
   }
@@ -246,7 +246,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   h.rows = 3 * w.n + 3 * (w.n - 1);
   const int last_kf = static_cast<int>(std::clamp<std::int64_t>(last_onset - first, 0, w.n - 2));
   auto fit_all = [&](double torque_scale) {
-    for (int i = 0; i < model::kThrustersPerBranch; ++i) {
+    for (int i = 0; i < kWatchedThrusters; ++i) {
       h.gain(i) = -1.0;
       for (int kf = 0; kf <= last_kf; ++kf) {
         const DeficitFit fit = fit_deficit(with_prior(p, normal_equations(p, w, i, kf, 1.0, torque_scale)));
@@ -261,7 +261,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   // would be told apart by chance. Their weights are then divided by the misfit (the Birge ratio),
   // so the position rows carry the choice between partners, and the fit is redone.
   int best = 0;
-  for (int i = 1; i < model::kThrustersPerBranch; ++i)
+  for (int i = 1; i < kWatchedThrusters; ++i)
     if (h.gain(i) > h.gain(best)) best = i;
   const double chi2 = torque_chi2_per_row(p, w, best, static_cast<int>(h.onset[best] - first), h.a(best), h.b(best));
   if (chi2 > p.misfit_rescale_above) {
@@ -295,10 +295,10 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& p, co
   const std::int64_t first = std::max<std::int64_t>(state.alarm_sample - p.before, 0);
   const DeficitHypotheses h = evaluate_deficit_hypotheses(p, bank, first, state.alarm_sample);
   int best = 0;
-  for (int i = 1; i < model::kThrustersPerBranch; ++i)
+  for (int i = 1; i < kWatchedThrusters; ++i)
     if (h.gain(i) > h.gain(best)) best = i;
   double second = -1.0;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)
+  for (int i = 0; i < kWatchedThrusters; ++i)
     if (i != best) second = std::max(second, h.gain(i));
   const bool material = h.a(best) >= p.min_a || h.b(best) <= -p.min_b;
   const bool named = h.gain(best) >= p.min_gain && material;

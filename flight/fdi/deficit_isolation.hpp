@@ -44,20 +44,20 @@
 #include "core/types.hpp"
 #include "model/faults.hpp"
 #include "model/fdi.hpp"
-#include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
 inline constexpr int kMaxDeficitWindow = model::kMaxDeficitWindowPeriods;  // periods the sample ring holds
 
-using DeficitMat38 = Eigen::Matrix<double, 3, model::kThrustersPerBranch>;
-using DeficitVec8 = Eigen::Matrix<double, model::kThrustersPerBranch, 1>;
+using DeficitMat3W = Eigen::Matrix<double, 3, kWatchedThrusters>;
+using DeficitVecW = Eigen::Matrix<double, kWatchedThrusters, 1>;
 
 struct DeficitIsolationParams {
   Mat3 inertia_kgm2 = Mat3::Identity();        // [kg m^2] nominal, about the CoM, body axes
   double mass_kg = 1.0;                        // [kg] nominal wet mass at the start
-  DeficitMat38 force_body_N = DeficitMat38::Zero();    // [N] M_F, force per unit on-time, branch A
-  DeficitMat38 torque_body_Nm = DeficitMat38::Zero();  // [N m] M_C
+  DeficitMat3W force_body_N = DeficitMat3W::Zero();    // [N] M_F, force per unit on-time, watched lanes
+  DeficitMat3W torque_body_Nm = DeficitMat3W::Zero();  // [N m] M_C
   double period_s = 0.1;                       // [s] T
   int before = 20;        // [periods] the window starts this long before the alarm; onsets scanned there
   int after = 30;         // [periods] first decision this long after the alarm
@@ -90,7 +90,7 @@ struct DeficitSample {
   Vec3 omega_body_radps = Vec3::Zero();  // gyro
   Vec3 r_lvlh_m = Vec3::Zero();          // LIDAR
   Quat q_lvlh_from_body = Quat::Identity();  // estimated attitude
-  model::Ton8 ton = model::Ton8::Zero(); // commanded on-times of branch A, applied over this period
+  WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period
   double mass_kg = 1.0;                  // [kg] nominal mass less the measured propellant used
 };
 
@@ -125,10 +125,10 @@ inline void push_deficit_sample(const DeficitIsolationParams& params, DeficitBan
 
 // Every hypothesis fitted on samples [first, bank.count), onsets scanned over [first, last_onset].
 struct DeficitHypotheses {
-  DeficitVec8 gain = DeficitVec8::Zero();   // [-] drop of the weighted RSS from the no-fault fit
-  DeficitVec8 a = DeficitVec8::Zero();      // [-] constant deficit at the best onset
-  DeficitVec8 b = DeficitVec8::Zero();      // [-] command-proportional deficit
-  std::array<std::int64_t, model::kThrustersPerBranch> onset{};  // sample index of the best onset
+  DeficitVecW gain = DeficitVecW::Zero();   // [-] drop of the weighted RSS from the no-fault fit
+  DeficitVecW a = DeficitVecW::Zero();      // [-] constant deficit at the best onset
+  DeficitVecW b = DeficitVecW::Zero();      // [-] command-proportional deficit
+  std::array<std::int64_t, kWatchedThrusters> onset{};  // sample index of the best onset
   double rss_no_fault = 0;                  // [-] weighted RSS of the no-fault fit
   int rows = 0;                             // scalar rows in the fit
   double torque_scale = 1.0;                // [-] 1, or 1 / the torque rows' misfit when it was rescaled
@@ -138,7 +138,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& para
 
 struct DeficitDecision {
   bool decided = false;
-  int thruster = -1;                       // 0..7 of branch A, -1: no hypothesis explains the alarm
+  int thruster = -1;                       // lane of the watched set, -1: no hypothesis explains the alarm
   model::FaultKind kind = model::FaultKind::kStuckOpen;  // read from (a, b), valid with thruster >= 0
   double size = 0;                         // [-] leak a, loss -b (1 for stuck open / closed)
   double a = 0, b = 0;                     // [-]
@@ -165,7 +165,7 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSampl
 Vec3 deficit_sigma0_sq(const DeficitBankState& bank);
 // Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2).
 Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
-                            const model::Ton8& ton);
+                            const WatchedTon& ton);
 
 // The normal equations of (a, b) for one hypothesis, and their solution with a >= 0, b <= 0.
 struct DeficitNormal {
@@ -178,13 +178,13 @@ DeficitFit fit_deficit(const DeficitNormal& normal);
 
 // The normal equations of the eight hypotheses, row i for thruster i: [haa, hab, hbb, ga, gb].
 // Column-major: each quantity of the eight is contiguous, so they are fitted as whole columns.
-using DeficitNormals8 = Eigen::Matrix<double, model::kThrustersPerBranch, 5>;
+using DeficitNormalsW = Eigen::Matrix<double, kWatchedThrusters, 5>;
 struct DeficitFits {
-  DeficitVec8 a = DeficitVec8::Zero(), b = DeficitVec8::Zero(), gain = DeficitVec8::Zero();
+  DeficitVecW a = DeficitVecW::Zero(), b = DeficitVecW::Zero(), gain = DeficitVecW::Zero();
 };
 // fit_deficit of every row, in a loop the compiler vectorises (the same lane arithmetic, so the
 // same answer bit for bit; tested).
-DeficitFits fit_deficits(const DeficitNormals8& normals);
+DeficitFits fit_deficits(const DeficitNormalsW& normals);
 
 // The fault case and size (a, b) describe.
 void classify_deficit(const DeficitIsolationParams& params, DeficitDecision& decision);

@@ -9,7 +9,7 @@
 #include "flight/fdi/unknown_input.hpp"
 #include "flight/fdi/weighting.hpp"
 #include "model/scenario.hpp"
-#include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -46,11 +46,11 @@ struct DesignInputs {
 // Position model (eq. 12) from the scenario: n from the orbit, mass, T; fault directions
 // E_f = B M_F with the chaser-to-LVLH rotation R taken as the identity for design.
 // delta_max defaults to T (the paper's [0, T)).
-DesignInputs position_design_inputs(const model::Scenario& scenario, const model::ConfigMatrix& M);
+DesignInputs position_design_inputs(const model::Scenario& scenario, const WatchedConfig& M);
 
 // Attitude model (eq. 15) from the scenario's inertia, linearised about omega_ref (the paper: 0);
 // fault directions E_f = B M_C.
-DesignInputs attitude_design_inputs(const model::Scenario& scenario, const model::ConfigMatrix& M,
+DesignInputs attitude_design_inputs(const model::Scenario& scenario, const WatchedConfig& M,
                                     const Vec3& omega_ref_body_radps = Vec3::Zero());
 
 }  // namespace chaser::flight::fdi

@@ -18,20 +18,19 @@ std::vector<std::string> validate(const EventResolutionParams& params) {
   return problems;
 }
 
-std::array<double, model::kThrustersPerBranch> nominal_mass_flow_kgps(
-    const model::ThrusterSetParams& thrusters, int branch, double isp_s) {
-  std::array<double, model::kThrustersPerBranch> flow{};
-  for (int i = 0; i < model::kThrustersPerBranch; ++i)
-    flow[i] = thrusters.thrusters[model::branch_first(branch) + i].max_thrust_N /
-              (isp_s * kStandardGravity);
+std::array<double, kWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
+                                                             const WatchedSet& watched, double isp_s) {
+  std::array<double, kWatchedThrusters> flow{};
+  for (int k = 0; k < kWatchedThrusters; ++k)
+    flow[k] = thrusters.thrusters[static_cast<std::size_t>(watched.index[k])].max_thrust_N / (isp_s * kStandardGravity);
   return flow;
 }
 
-double expected_propellant_increment_kg(const model::Ton8& ton,
-                                        const std::array<double, model::kThrustersPerBranch>& mass_flow_kgps,
+double expected_propellant_increment_kg(const WatchedTon& ton,
+                                        const std::array<double, kWatchedThrusters>& mass_flow_kgps,
                                         double period_s) {
   double sum = 0.0;
-  for (int i = 0; i < model::kThrustersPerBranch; ++i) sum += ton(i) * mass_flow_kgps[i];
+  for (int i = 0; i < kWatchedThrusters; ++i) sum += ton(i) * mass_flow_kgps[i];
   return sum * period_s;
 }
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -40,13 +40,13 @@ struct EventResolutionState {
 // Problems with the parameters (empty when valid), each naming the field.
 std::vector<std::string> validate(const EventResolutionParams& params);
 
-// Nominal mass flow of each thruster of a branch, F_i / (Isp g0) [kg/s].
-std::array<double, model::kThrustersPerBranch> nominal_mass_flow_kgps(
-    const model::ThrusterSetParams& thrusters, int branch, double isp_s);
+// Nominal mass flow of each watched thruster, F_i / (Isp g0) [kg/s].
+std::array<double, kWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
+                                                             const WatchedSet& watched, double isp_s);
 
 // Predicted propellant used over one period: sum_i T_on,i T mdot_i [kg].
-double expected_propellant_increment_kg(const model::Ton8& ton,
-                                        const std::array<double, model::kThrustersPerBranch>& mass_flow_kgps,
+double expected_propellant_increment_kg(const WatchedTon& ton,
+                                        const std::array<double, kWatchedThrusters>& mass_flow_kgps,
                                         double period_s);
 
 // One period. measured_used_kg: the sensor reading (cumulative) at this period; expected_increment_kg:

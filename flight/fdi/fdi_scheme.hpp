@@ -1,7 +1,7 @@
 #pragma once
 // One on-board FDI scheme of Fonod 2015 (IV, Fig. 5): residual generator (eq. 30), GLR decision
 // (eqs. 40-41) and isolation (eqs. 42-45), run once per control period for one model (position
-// or attitude) and the active thruster branch.
+// or attitude) and the watched thrusters (flight/fdi/watched_set.hpp).
 //
 // Latching: the alarm latches at the first period with S > J_th (the fault is persistent,
 // II.D); from that period on the isolation criterion is evaluated every period and its candidate
@@ -14,7 +14,7 @@
 #include "flight/fdi/glr.hpp"
 #include "flight/fdi/isolation.hpp"
 #include "flight/fdi/residual_generator.hpp"
-#include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -33,7 +33,7 @@ struct FdiSchemeState {
   std::int64_t period = 0;         // periods since the scheme started (the next one's index)
   bool alarm = false;              // latched
   std::int64_t alarm_period = -1;  // period of the first alarm, -1 before
-  int confirmed = -1;              // latched confirmed thruster, 0..7 of the active branch
+  int confirmed = -1;              // latched confirmed thruster: its lane in the watched set
 };
 
 struct FdiSchemeOutput {
@@ -49,14 +49,14 @@ struct FdiSchemeOutput {
 std::vector<std::string> validate(const FdiSchemeParams& params);
 
 // One period. y: measurement [m or rad]; u_c: model input [N in LVLH or N m] (residual_generator.hpp);
-// ton: commanded scaled on-times of the active branch this period; over_consumption: the event
+// ton: commanded scaled on-times of the watched lanes this period; over_consumption: the event
 // resolution's flag (event_resolution.hpp), read by the paper's isolation criterion.
 // The result is written into `out` (every field): the FDIR supervisor passes its own output, which
 // saves copying a returned struct through the stack every period (a store-forwarding stall).
 void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
-                     const model::Ton8& ton, bool over_consumption, FdiSchemeOutput& out);
+                     const WatchedTon& ton, bool over_consumption, FdiSchemeOutput& out);
 inline FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
-                                       const Vec3& u_c, const model::Ton8& ton, bool over_consumption) {
+                                       const Vec3& u_c, const WatchedTon& ton, bool over_consumption) {
   FdiSchemeOutput out;
   step_fdi_scheme(params, state, y, u_c, ton, over_consumption, out);
   return out;

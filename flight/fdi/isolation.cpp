@@ -7,22 +7,22 @@ namespace chaser::flight::fdi {
 
 namespace {
 
-constexpr int kThrusters = model::kThrustersPerBranch;
+constexpr int kThrusters = kWatchedThrusters;
 
 struct Selection {
-  Vec8 score = Vec8::Zero();
+  VecW score = VecW::Zero();
   int candidate = -1;
 };
 
 void store_sample(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                  const model::Ton8& ton) {
+                  const WatchedTon& ton) {
   const int window = std::clamp(params.window, 1, kMaxIsolationWindow);
   state.residual[state.next] = r;
   state.ton[state.next] = ton;
   if (params.criterion == IsolationCriterion::kSignature) {
     const SignatureFilterParams& f = params.signature;
     state.signature[state.next].noalias() = f.QC * state.signature_state;  // s_i(k)
-    const Mat68 driven = f.B_thr * ton.asDiagonal();
+    const Mat6W driven = f.B_thr * ton.asDiagonal();
     state.signature_state = f.A_c * state.signature_state + driven;  // z_i(k + 1)
   }
   state.next = state.next + 1 < window ? state.next + 1 : 0;
@@ -30,8 +30,8 @@ void store_sample(const IsolationParams& params, IsolationState& state, const Ve
 }
 
 // The sums below run over the ring's stored samples in slot order: their order does not matter.
-Vec8 commanded_samples(const IsolationState& state) {
-  Vec8 n = Vec8::Zero();
+VecW commanded_samples(const IsolationState& state) {
+  VecW n = VecW::Zero();
   for (int j = 0; j < state.count; ++j)
     for (int i = 0; i < kThrusters; ++i)
       if (state.ton[j](i) != 0.0) n(i) += 1.0;
@@ -41,10 +41,10 @@ Vec8 commanded_samples(const IsolationState& state) {
 // Eqs. 43-44; argmax or argmin with ties to the lowest index (strict comparisons).
 Selection paper_selection(const IsolationParams& params, const IsolationState& state,
                           bool over_consumption) {
-  Mat38 correlation = Mat38::Zero();
+  Mat3W correlation = Mat3W::Zero();
   for (int j = 0; j < state.count; ++j)
     correlation.noalias() += state.residual[j] * state.ton[j].transpose();
-  const Vec8 n_on = commanded_samples(state);
+  const VecW n_on = commanded_samples(state);
   const double n = params.window;
   Selection sel;
   if (!over_consumption) {  // eq. 43, cases 2 and 4
@@ -69,21 +69,21 @@ Selection paper_selection(const IsolationParams& params, const IsolationState& s
 
 Selection signature_selection(const IsolationState& state) {
   Vec3 r_mean = Vec3::Zero();
-  Mat38 s_mean = Mat38::Zero();
+  Mat3W s_mean = Mat3W::Zero();
   for (int j = 0; j < state.count; ++j) {
     r_mean += state.residual[j];
     s_mean += state.signature[j];
   }
   r_mean /= state.count;
   s_mean /= state.count;
-  Vec8 cross = Vec8::Zero();
-  Vec8 energy = Vec8::Zero();
+  VecW cross = VecW::Zero();
+  VecW energy = VecW::Zero();
   for (int j = 0; j < state.count; ++j) {
-    const Mat38 ds = state.signature[j] - s_mean;
+    const Mat3W ds = state.signature[j] - s_mean;
     cross.noalias() += ds.transpose() * (state.residual[j] - r_mean);
     energy += ds.colwise().squaredNorm().transpose();
   }
-  const Vec8 n_on = commanded_samples(state);
+  const VecW n_on = commanded_samples(state);
   Selection sel;
   for (int i = 0; i < kThrusters; ++i) {
     const bool qualifies = n_on(i) > 0.0 && energy(i) > 0.0 && cross(i) < 0.0;
@@ -113,7 +113,7 @@ std::vector<std::string> validate(const IsolationParams& params) {
 }
 
 SignatureFilterParams make_signature_filter(const ResidualGeneratorParams& residual,
-                                            const Mat38& thruster_inputs) {
+                                            const Mat3W& thruster_inputs) {
   SignatureFilterParams f;
   f.A_c = residual.A_c;
   f.QC = residual.Q * residual.C;
@@ -122,7 +122,7 @@ SignatureFilterParams make_signature_filter(const ResidualGeneratorParams& resid
 }
 
 IsolationOutput step_isolation(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                               const model::Ton8& ton, bool evaluate, bool over_consumption) {
+                               const WatchedTon& ton, bool evaluate, bool over_consumption) {
   store_sample(params, state, r, ton);
   IsolationOutput out;
   state.evaluated = evaluate ? std::min(state.evaluated + 1, params.settle + 1) : 0;

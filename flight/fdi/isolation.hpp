@@ -2,7 +2,7 @@
 // Thruster fault isolation by cross-correlation of the residual with the commanded on-times
 // (Fonod 2015, eqs. 42-45), and a signature-correlation variant.
 //
-// Paper criterion (IsolationCriterion::kPaper), on the last N samples, i = 1..8 of the active branch:
+// Paper criterion (IsolationCriterion::kPaper), on the last N samples, i = the lanes of the watched set:
 //   case 2 or 4 (no over-consumption), eq. 43:  argmax_i |1/(N+1) sum_j r(j) T_on,i(j)|
 //   case 1 or 3 (over-consumption),    eq. 44:  argmin_i |1/(N + Omega_i) sum_j r(j) T_on,i(j)|,
 //   Omega_i = 1 - sum_j phi_i(j), phi_i(j) = 1 when T_on,i(j) = 0;   eq. 42 picks by the flag of
@@ -46,15 +46,13 @@
 
 #include "core/types.hpp"
 #include "flight/fdi/residual_generator.hpp"
-#include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
 inline constexpr int kMaxIsolationWindow = 128;  // largest N the fixed ring buffers hold
 
-using Mat38 = Eigen::Matrix<double, 3, model::kThrustersPerBranch>;
-using Mat68 = Eigen::Matrix<double, kFdiStateDim, model::kThrustersPerBranch>;
-using Vec8 = Eigen::Matrix<double, model::kThrustersPerBranch, 1>;
+using Mat6W = Eigen::Matrix<double, kFdiStateDim, kWatchedThrusters>;
 
 enum class IsolationCriterion {
   kPaper,      // eqs. 42-44 with the exclusion of unused thrusters from eq. 44
@@ -65,7 +63,7 @@ enum class IsolationCriterion {
 struct SignatureFilterParams {
   Mat6 A_c = Mat6::Zero();        // [-] A_bar - L C
   Mat36 QC = Mat36::Zero();       // [-] Q C, rows >= n_r zero
-  Mat68 B_thr = Mat68::Zero();    // [state unit per unit on-time] B_bar d_i, one column per thruster
+  Mat6W B_thr = Mat6W::Zero();    // [state unit per unit on-time] B_bar d_i, one column per thruster
 };
 
 struct IsolationParams {
@@ -78,21 +76,21 @@ struct IsolationParams {
 
 struct IsolationState {
   std::array<Vec3, kMaxIsolationWindow> residual{};  // r(j)
-  std::array<Vec8, kMaxIsolationWindow> ton{};       // T_on,i(j) [-]
-  std::array<Mat38, kMaxIsolationWindow> signature{};  // s_i(j), kSignature only
+  std::array<VecW, kMaxIsolationWindow> ton{};       // T_on,i(j) [-]
+  std::array<Mat3W, kMaxIsolationWindow> signature{};  // s_i(j), kSignature only
   int next = 0;                     // ring slot of the next sample
   int count = 0;                    // samples stored, up to the window
-  Mat68 signature_state = Mat68::Zero();  // z_i(k), one column per thruster
+  Mat6W signature_state = Mat6W::Zero();  // z_i(k), one column per thruster
   int evaluated = 0;                // consecutive periods with `evaluate`, counted up to settle + 1
   int last_candidate = -1;          // sigma^N(k - 1)
   int run_length = 0;               // consecutive periods with the same candidate
 };
 
 struct IsolationOutput {
-  int candidate = -1;   // sigma^N(k), 0..7 of the active branch, -1 for none
+  int candidate = -1;   // sigma^N(k), a lane of the watched set, -1 for none
   int run_length = 0;   // periods the candidate has held, eq. 45
   int confirmed = -1;   // the candidate once run_length >= N_c, else -1
-  Vec8 score = Vec8::Zero();  // the criterion per thruster (eq. 43, 44 or the signature score)
+  VecW score = VecW::Zero();  // the criterion per thruster (eq. 43, 44 or the signature score)
 };
 
 // Problems with the parameters (empty when valid), each naming the field.
@@ -101,11 +99,11 @@ std::vector<std::string> validate(const IsolationParams& params);
 // Signature filter from the runtime observer and the thrusters' input directions (3 x 8: M_F, the
 // LVLH force per unit on-time with the attitude taken as in the design, or M_C).
 SignatureFilterParams make_signature_filter(const ResidualGeneratorParams& residual,
-                                            const Mat38& thruster_inputs);
+                                            const Mat3W& thruster_inputs);
 
 // One period: stores r(k), T_on(k) (and s(k)), and when `evaluate` computes eq. 42 (43 or 44 by
 // `over_consumption`) or the signature criterion, then eq. 45.
 IsolationOutput step_isolation(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                               const model::Ton8& ton, bool evaluate, bool over_consumption);
+                               const WatchedTon& ton, bool evaluate, bool over_consumption);
 
 }  // namespace chaser::flight::fdi

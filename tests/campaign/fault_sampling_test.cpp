@@ -19,7 +19,7 @@ TEST(FaultSampling, ThrusterUniformOverBranchASizesInRange) {
   double leak_sum = 0;
   constexpr int kDraws = 8000;
   for (int i = 0; i < kDraws; ++i) {
-    const auto leak = sample_fault(FaultCase::kLeak, params, run_seed(2, static_cast<std::uint64_t>(i)));
+    const auto leak = sample_fault(FaultCase::kLeak, params, model::first_thrusters(8), run_seed(2, static_cast<std::uint64_t>(i)));
     ASSERT_TRUE(leak);
     ASSERT_GE(leak->thruster, 0);
     ASSERT_LT(leak->thruster, 8);
@@ -29,7 +29,7 @@ TEST(FaultSampling, ThrusterUniformOverBranchASizesInRange) {
     EXPECT_EQ(leak->leak_slope_per_s, params.leak_slope_per_s);
     EXPECT_EQ(leak->onset_s, params.onset_s);
     leak_sum += leak->leak_size;
-    const auto loss = sample_fault(FaultCase::kLoss, params, run_seed(2, static_cast<std::uint64_t>(i)));
+    const auto loss = sample_fault(FaultCase::kLoss, params, model::first_thrusters(8), run_seed(2, static_cast<std::uint64_t>(i)));
     EXPECT_GE(loss->loss_size, params.loss_size_min);
     EXPECT_LE(loss->loss_size, params.loss_size_max);
   }
@@ -39,13 +39,13 @@ TEST(FaultSampling, ThrusterUniformOverBranchASizesInRange) {
 
 TEST(FaultSampling, KindsAndReportedSizes) {
   const model::CampaignParams params;
-  EXPECT_FALSE(sample_fault(FaultCase::kNone, params, 1));
+  EXPECT_FALSE(sample_fault(FaultCase::kNone, params, model::first_thrusters(8), 1));
   EXPECT_EQ(fault_size(std::nullopt), 0.0);
-  const auto open = sample_fault(FaultCase::kStuckOpen, params, 1);
+  const auto open = sample_fault(FaultCase::kStuckOpen, params, model::first_thrusters(8), 1);
   EXPECT_EQ(open->kind, model::FaultKind::kStuckOpen);
   EXPECT_EQ(fault_size(open), 1.0);
-  EXPECT_EQ(sample_fault(FaultCase::kStuckClosed, params, 1)->kind, model::FaultKind::kStuckClosed);
-  const auto loss = sample_fault(FaultCase::kLoss, params, 1);
+  EXPECT_EQ(sample_fault(FaultCase::kStuckClosed, params, model::first_thrusters(8), 1)->kind, model::FaultKind::kStuckClosed);
+  const auto loss = sample_fault(FaultCase::kLoss, params, model::first_thrusters(8), 1);
   EXPECT_EQ(fault_size(loss), loss->loss_size);
 }
 

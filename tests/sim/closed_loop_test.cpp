@@ -45,7 +45,8 @@ TEST(ClosedLoop, NominalApproachCapturesForTwentySeeds) {
 // designed for fractions of a newton, so the run must show it (corridor, capture, propellant).
 TEST(ClosedLoop, StuckOpenWithoutDiagnosisIsVisibleInTheSummary) {
   model::Scenario scenario = msr_scenario();
-  scenario.fdi.position.enabled = scenario.fdi.attitude.enabled = scenario.fdi.recovery = false;
+  scenario.fdi.position.enabled = scenario.fdi.attitude.enabled = false;
+  scenario.fdi.recovery = model::RecoveryPolicy::kNone;
   const RunResult nominal = run_scenario(scenario);
   scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7, .onset_s = 1000.0}};
   const RunResult faulty = run_scenario(scenario);

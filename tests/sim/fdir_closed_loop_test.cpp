@@ -15,7 +15,7 @@ model::Scenario msr_without_recovery() {
   const io::LoadResult loaded = io::load_scenario_file("scenarios/msr_terminal.yaml");
   EXPECT_TRUE(loaded.errors.empty()) << io::format_errors(loaded.errors);
   model::Scenario s = *loaded.scenario;
-  s.fdi.recovery = false;
+  s.fdi.recovery = model::RecoveryPolicy::kNone;
   s.duration_s = 1020.0;  // 20 s after the onset is enough to judge detection
   return s;
 }

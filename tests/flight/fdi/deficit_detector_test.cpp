@@ -21,7 +21,7 @@
 namespace chaser::flight::fdi {
 namespace {
 
-constexpr int kN = model::kThrustersPerBranch;
+constexpr int kN = kWatchedThrusters;
 
 // The MSR chaser's bank parameters (tests/support/deficit_msr.hpp).
 DeficitIsolationParams msr_params() { return chaser::testing::msr_deficit_params(); }
@@ -38,7 +38,7 @@ struct Truth {
   int samples = 300;
   Fault fault;
   double command_probability = 0.35;
-  std::function<void(int, model::Ton8&, RandomStream&)> shape;  // edits the commands of sample k
+  std::function<void(int, WatchedTon&, RandomStream&)> shape;  // edits the commands of sample k
   double gyro_sigma_radps = 1e-6, pulse_sigma = 0.01;             // noise at the parameters' defaults
   std::uint64_t seed = 1;
 };
@@ -52,7 +52,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
   Vec3 omega(4e-4, -7e-4, 2e-4);
   std::vector<DeficitSample> out;
   for (int k = 0; k < t.samples; ++k) {
-    model::Ton8 ton = model::Ton8::Zero();
+    WatchedTon ton = WatchedTon::Zero();
     for (int i = 0; i < kN; ++i)
       if (cmd.uniform() < t.command_probability) ton(i) = cmd.uniform(0.05, 0.95);
     if (t.shape) t.shape(k, ton, cmd);
@@ -60,7 +60,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
     s.ton = ton;
     s.omega_body_radps = omega + t.gyro_sigma_radps * Vec3(noise.normal(), noise.normal(), noise.normal());
     out.push_back(s);
-    model::Ton8 real = ton;
+    WatchedTon real = ton;
     const int f = t.fault.thruster;
     if (f >= 0 && k >= t.fault.onset) real(f) = std::clamp(t.fault.a + (1.0 + t.fault.b) * ton(f), 0.0, 1.0);
     for (int i = 0; i < kN; ++i)
@@ -85,8 +85,8 @@ void run(const DeficitIsolationParams& bp, const DeficitDetectorParams& dp, cons
 }
 
 // The row's five contributions written out from the header's formulas.
-DeficitNormals8 row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3& w, const model::Ton8& ton) {
-  DeficitNormals8 r;
+DeficitNormalsW row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3& w, const WatchedTon& ton) {
+  DeficitNormalsW r;
   for (int i = 0; i < kN; ++i) {
     const Vec3 c = p.torque_body_Nm.col(i);
     const double cwc = (c.cwiseProduct(w)).dot(c), cwy = (c.cwiseProduct(w)).dot(y), u = ton(i);
@@ -105,7 +105,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
   dp.window = 40, dp.threshold = 1e30, dp.evaluate_every = 2;
   Truth t;
   t.samples = 200;
-  t.shape = [](int k, model::Ton8& ton, RandomStream&) {
+  t.shape = [](int k, WatchedTon& ton, RandomStream&) {
     if (k >= 60) ton(3) = 0.0;
   };
   const std::vector<DeficitSample> s = generate(bp, t);
@@ -116,7 +116,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
     commanded_in_window = 0;  // row j is the period of sample j: the window holds rows k - window .. k - 1
     for (int j = k - dp.window; j < k; ++j) commanded_in_window += s[j].ton(3) > 0.0;
     EXPECT_EQ(st.det.sums.commanded(3), commanded_in_window) << k;
-    const DeficitNormals8 n = deficit_normals(bp, st.det.sums);
+    const DeficitNormalsW n = deficit_normals(bp, st.det.sums);
     if (commanded_in_window == 0) {
       EXPECT_EQ(n(3, 1), 0.0) << k;
       EXPECT_EQ(n(3, 2), 0.0) << k;
@@ -143,7 +143,7 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
   Truth t;
   t.samples = 1501, t.fault = {3, 700, 0.0, -0.6};  // a fault half-way: sums of both kinds of data
   const std::vector<DeficitSample> s = generate(bp, t);
-  std::vector<DeficitNormals8> rows;  // row k: samples k, k + 1
+  std::vector<DeficitNormalsW> rows;  // row k: samples k, k + 1
   int checked = 0;
   Loop r;
   run(bp, dp, s, r, [&](int k, const Loop& st) {
@@ -155,7 +155,7 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
                             s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window) return;
-    DeficitNormals8 direct = DeficitNormals8::Zero(), scale = DeficitNormals8::Zero();
+    DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
     const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
@@ -185,7 +185,7 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
   Truth t;
   t.samples = 1501, t.fault = {3, 700, 0.0, -0.6};  // a fault half-way: sums of both kinds of data
   const std::vector<DeficitSample> s = generate(bp, t);
-  std::vector<DeficitNormals8> rows;  // row k: samples k, k + 1
+  std::vector<DeficitNormalsW> rows;  // row k: samples k, k + 1
   int checked = 0;
   Loop r;
   run(bp, dp, s, r, [&](int k, const Loop& st) {
@@ -197,7 +197,7 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
                             s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window || rows.size() % every != 0) return;
-    DeficitNormals8 direct = DeficitNormals8::Zero(), scale = DeficitNormals8::Zero();
+    DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
     const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
@@ -232,7 +232,7 @@ Onset onset_case(int i, bool open, bool freeze) {
   Truth t;
   t.samples = onset + 150, t.seed = 10 + i;
   t.fault = open ? Fault{i, onset, 1.0, -1.0} : Fault{i, onset, 0.0, -0.6};
-  if (open) t.shape = [i](int, model::Ton8& ton, RandomStream&) { ton(i) = 0.0; };
+  if (open) t.shape = [i](int, WatchedTon& ton, RandomStream&) { ton(i) = 0.0; };
   const std::vector<DeficitSample> s = generate(bp, t);
   Loop r;
   for (int k = 0; k < static_cast<int>(s.size()); ++k) {
@@ -293,14 +293,14 @@ TEST(DeficitDetector, SmallDeficitIsSignificantButNotMaterial) {
   constexpr int f = 2;
   Truth t;
   t.samples = 600, t.fault = {f, 0, 0.0, -0.03}, t.seed = 5;
-  t.shape = [](int, model::Ton8& ton, RandomStream& cmd) { ton(f) = cmd.uniform(0.3, 0.95); };
+  t.shape = [](int, WatchedTon& ton, RandomStream& cmd) { ton(f) = cmd.uniform(0.3, 0.95); };
   const std::vector<DeficitSample> s = generate(bp, t);
   Loop lax;
   run(bp, dp, s, lax);
   EXPECT_FALSE(lax.det.alarm);
   EXPECT_GT(lax.det.statistic, dp.threshold);
   EXPECT_TRUE(lax.det.suspect == f || lax.det.suspect == f + 4) << lax.det.suspect;
-  const DeficitNormals8 n = deficit_normals(bp, lax.det.sums);
+  const DeficitNormalsW n = deficit_normals(bp, lax.det.sums);
   const auto c = n.row(f);
   const DeficitFit fit = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
   EXPECT_NEAR(fit.b, -0.03, 0.01);
@@ -346,7 +346,7 @@ TEST(DeficitDetector, LatchesAndWaitsForAFullWindow) {
   dp.window = 40;
   Truth t;
   t.samples = 260, t.fault = {5, 0, 1.0, -1.0};
-  t.shape = [](int k, model::Ton8& ton, RandomStream&) {
+  t.shape = [](int k, WatchedTon& ton, RandomStream&) {
     ton(5) = 0.0;
     if (k >= 60) ton.setZero();  // later rows look different: they must not matter
   };

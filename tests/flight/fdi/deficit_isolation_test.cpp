@@ -27,7 +27,7 @@ namespace chaser::flight::fdi {
 namespace {
 
 using model::FaultKind;
-constexpr int kN = model::kThrustersPerBranch;
+constexpr int kN = kWatchedThrusters;
 
 // The MSR chaser's bank parameters (tests/support/deficit_msr.hpp).
 DeficitIsolationParams msr_params() { return chaser::testing::msr_deficit_params(); }
@@ -54,7 +54,7 @@ struct Truth {
   int samples = 100;
   Fault fault;
   double command_probability = 0.35;
-  std::function<void(int, model::Ton8&)> shape;  // edits the commands of sample k (closed-loop reactions)
+  std::function<void(int, WatchedTon&)> shape;  // edits the commands of sample k (closed-loop reactions)
   double gyro_sigma_radps = 0.0, lidar_sigma_m = 0.0, pulse_sigma = 0.0;  // truth noise (0: noise-free)
   std::uint64_t seed = 1;
 };
@@ -72,7 +72,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
   double mass = p.mass_kg;
   std::vector<DeficitSample> out;
   for (int k = 0; k < t.samples; ++k) {
-    model::Ton8 ton = model::Ton8::Zero();
+    WatchedTon ton = WatchedTon::Zero();
     for (int i = 0; i < kN; ++i)
       if (cmd.uniform() < t.command_probability) ton(i) = cmd.uniform(0.05, 0.95);
     if (t.shape) t.shape(k, ton);
@@ -83,7 +83,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
     s.omega_body_radps = omega + t.gyro_sigma_radps * Vec3(noise.normal(), noise.normal(), noise.normal());
     s.r_lvlh_m = r + t.lidar_sigma_m * Vec3(noise.normal(), noise.normal(), noise.normal());
     out.push_back(s);
-    model::Ton8 real;
+    WatchedTon real;
     for (int i = 0; i < kN; ++i) {
       real(i) = realised_ton(t.fault, k, i, ton(i));
       if (real(i) > 0.0) real(i) *= 1.0 + t.pulse_sigma * noise.normal();
@@ -148,7 +148,7 @@ DenseResult dense_fit(const DeficitIsolationParams& p, const std::vector<Deficit
     Vec3 known = Vec3::Zero(), col_a = Vec3::Zero(), col_b = Vec3::Zero();
     for (int j = 0; j < k; ++j) {
       const DeficitSample& sj = s[first + j];
-      const DeficitMat38 f = sj.q_lvlh_from_body.toRotationMatrix() * p.force_body_N / sj.mass_kg;
+      const DeficitMat3W f = sj.q_lvlh_from_body.toRotationMatrix() * p.force_body_N / sj.mass_kg;
       const double c = T * T * (k - j - 0.5);
       known += c * f * sj.ton;
       if (j >= kf) col_a += c * f.col(i), col_b += c * f.col(i) * sj.ton(i);
@@ -201,14 +201,14 @@ std::string sci(double x) {
   return buf;
 }
 
-int best_of(const DeficitVec8& gain) {
+int best_of(const DeficitVecW& gain) {
   int best = 0;
   for (int i = 1; i < kN; ++i)
     if (gain(i) > gain(best)) best = i;
   return best;
 }
 
-double second_of(const DeficitVec8& gain) {
+double second_of(const DeficitVecW& gain) {
   const int best = best_of(gain);
   double second = -1.0;
   for (int i = 0; i < kN; ++i)
@@ -304,7 +304,7 @@ TEST(DeficitIsolation, GainEqualsDenseConstrainedMaxOverOnsets) {
   for (const Fault fault : {Fault{FaultKind::kStuckOpen, 5, 60, 0.0}, Fault{FaultKind::kLoss, 1, 60, 0.5}}) {
     Truth t = noisy_truth(p, 12);
     t.samples = 95, t.fault = fault;
-    t.shape = [&](int k, model::Ton8& ton) {
+    t.shape = [&](int k, WatchedTon& ton) {
       if (k == 59 || k == 60) ton(fault.thruster) = 0.8;  // commanded about the onset: identifiable
     };
     const std::vector<DeficitSample> s = generate(p, t);
@@ -392,11 +392,11 @@ TEST(DeficitIsolation, FitSatisfiesKktConditions) {
 // vectorised loop must not change the lane arithmetic (as reassociation or contraction would).
 // Every case must be reached.
 TEST(DeficitIsolation, EightFitsSatisfyKktAndEqualTheScalarFit) {
-  constexpr int kN = model::kThrustersPerBranch;
+  constexpr int kN = kWatchedThrusters;
   RandomStream rng(7, "fit_deficits");
   std::array<int, 5> reached{};  // free, a face, b face, origin, singular
   for (int trial = 0; trial < 500; ++trial) {
-    DeficitNormals8 normals;
+    DeficitNormalsW normals;
     for (int i = 0; i < kN; ++i) {
       const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 1.0), w = rng.uniform(0.1, 10.0);
       const bool never_commanded = (trial + i) % 11 == 0;
@@ -450,7 +450,7 @@ TEST(DeficitIsolation, ExactRecoveryNoiseFree) {
     for (const Case& c : cases) {
       Truth t;
       t.samples = 80, t.fault = c.fault, t.seed = 100 + thruster;
-      t.shape = [&](int k, model::Ton8& ton) {
+      t.shape = [&](int k, WatchedTon& ton) {
         if (c.silence && k >= onset - 3) ton(thruster) = 0.0;
         if (!c.silence && (k == onset - 1 || k == onset)) ton(thruster) = 0.6;
       };
@@ -491,7 +491,7 @@ TEST(DeficitIsolation, DecisionNamesCaseAndSizeNoiseFree) {
                             Expect{{FaultKind::kLeak, thruster, onset, 0.25}, true, FaultKind::kLeak, 0.25}}) {
       Truth t;
       t.samples = 200, t.fault = e.fault, t.seed = 200 + thruster;
-      t.shape = [&](int k, model::Ton8& ton) {
+      t.shape = [&](int k, WatchedTon& ton) {
         if (e.silence && k >= onset - 3) ton(thruster) = 0.0;
         if (!e.silence && (k == onset - 1 || k == onset)) ton(thruster) = 0.6;
       };
@@ -523,7 +523,7 @@ TEST(DeficitIsolation, PartnersToldApartWithNoise) {
       ASSERT_TRUE(p.force_body_N.col(thruster).isApprox(-p.force_body_N.col(partner), 1e-12));
       Truth t = noisy_truth(p, seed);
       t.samples = 200, t.fault = {FaultKind::kStuckOpen, thruster, onset, 0.0};
-      t.shape = [&](int k, model::Ton8& ton) {
+      t.shape = [&](int k, WatchedTon& ton) {
         if (k >= alarm) ton(thruster) = ton(partner) = 0.0;
       };
       const Flow f = run_flow(p, generate(p, t), alarm);

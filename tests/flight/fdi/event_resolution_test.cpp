@@ -18,8 +18,8 @@ std::array<double, 8> flow() {
   return nominal_mass_flow_kgps(set, 0, 220.0);
 }
 
-model::Ton8 sparse_ton(RandomStream& rng) {
-  model::Ton8 ton = model::Ton8::Zero();
+WatchedTon sparse_ton(RandomStream& rng) {
+  WatchedTon ton = WatchedTon::Zero();
   for (int i = 0; i < 8; ++i)
     if (rng.uniform() < 0.06) ton(i) = rng.uniform(0.1, 1.0);
   return ton;
@@ -38,8 +38,8 @@ int run(Case fault_case, const EventResolutionParams& p, std::uint64_t seed, int
   EventResolutionState state;
   double used_kg = 0.0;
   for (int k = 0; k < periods; ++k) {
-    const model::Ton8 commanded = sparse_ton(rng);
-    model::Ton8 realised = commanded;
+    const WatchedTon commanded = sparse_ton(rng);
+    WatchedTon realised = commanded;
     if (k >= onset && fault_case == Case::kStuckOpen) realised(kFaulty) = 1.0;
     if (k >= onset && fault_case == Case::kBlocked) realised(kFaulty) = 0.0;
     used_kg += expected_propellant_increment_kg(realised, mdot, kT);
@@ -59,7 +59,7 @@ int run(Case fault_case, const EventResolutionParams& p, std::uint64_t seed, int
 TEST(EventResolution, NominalFlowAndExpectedIncrement) {
   const auto mdot = flow();
   EXPECT_NEAR(mdot[0], 22.0 / (220.0 * kStandardGravity), 1e-15);
-  model::Ton8 ton = model::Ton8::Zero();
+  WatchedTon ton = WatchedTon::Zero();
   ton(1) = 0.5;
   ton(6) = 0.25;
   EXPECT_NEAR(expected_propellant_increment_kg(ton, mdot, kT), 0.75 * kT * mdot[0], 1e-16);

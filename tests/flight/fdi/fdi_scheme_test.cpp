@@ -36,12 +36,12 @@ namespace {
 
 using Eigen::MatrixXd;
 
-constexpr int kThrusters = model::kThrustersPerBranch;
+constexpr int kThrusters = kWatchedThrusters;
 
 struct PositionSetup {
   ResidualDesign design;
   ResidualGeneratorParams residual;
-  Mat38 thruster_inputs;  // M_F [N per unit on-time]; LVLH = body (R = I), as in the design
+  Mat3W thruster_inputs;  // M_F [N per unit on-time]; LVLH = body (R = I), as in the design
   std::array<double, kThrusters> mass_flow_kgps;
 };
 
@@ -49,7 +49,7 @@ struct PositionSetup {
 // (scenario delay_max_s = 0.02 s) or the paper's [0, T).
 PositionSetup msr_position_setup(double delta_max_s, int residual_dim = 1) {
   const model::Scenario s = testing::msr_test_scenario();
-  const model::ConfigMatrix M = testing::msr_test_configuration(s);
+  const WatchedConfig M = testing::msr_test_configuration(s);
   DesignInputs in = position_design_inputs(s, M);
   in.delta_max_s = delta_max_s;
   in.residual_dim = residual_dim;
@@ -71,7 +71,7 @@ struct RunCase {
 struct Trace {
   std::vector<Vec3> y;             // [m] measured position
   std::vector<Vec3> u_c;           // [N] commanded force, LVLH
-  std::vector<model::Ton8> ton;    // commanded on-times
+  std::vector<WatchedTon> ton;    // commanded on-times
   std::vector<double> propellant_kg;  // [kg] measured propellant used (1 g noise)
 };
 
@@ -91,10 +91,10 @@ Trace simulate(const PositionSetup& setup, const RunCase& rc) {
   Vec3 u_prev = Vec3::Zero();
   double used_kg = 0.0;
   for (int k = 0; k < rc.periods; ++k) {
-    model::Ton8 ton = model::Ton8::Zero();
+    WatchedTon ton = WatchedTon::Zero();
     for (int i = 0; i < kThrusters; ++i)
       if (commands.uniform() < rc.duty_probability) ton(i) = commands.uniform(0.1, 1.0);
-    model::Ton8 realised = ton;
+    WatchedTon realised = ton;
     if (rc.fault_period >= 0 && k >= rc.fault_period) realised(rc.faulty) = 1.0;
     tr.y.push_back(setup.residual.C * x +
                    Vec3(noise.normal(), noise.normal(), noise.normal()) * rc.noise_m);

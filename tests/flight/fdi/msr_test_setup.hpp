@@ -36,7 +36,7 @@ inline model::Scenario msr_test_scenario() {
   return s;
 }
 
-inline model::ConfigMatrix msr_test_configuration(const model::Scenario& s) {
+inline WatchedConfig msr_test_configuration(const model::Scenario& s) {
   return model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
 }
 

@@ -1,0 +1,114 @@
+// What the thruster set can do, checked before a run: the set that flies at the start, and every
+// set a recovery can lead to, must push and turn in every direction (its configuration matrix's
+// columns positively span R^6); the FDI's fixed-size kernels must fit the active set; a scenario
+// may require that every single-thruster loss leaves a spanning set; faults must name thrusters
+// that exist.
+#include <fmt/format.h>
+
+#include "io/scenario_sections.hpp"
+#include "model/positive_span.hpp"
+#include "model/recovery.hpp"
+#include "model/thruster_geometry.hpp"
+
+namespace chaser::io {
+namespace {
+
+// "T1..T8" for a contiguous run, else "T1, T3, T9".
+std::string describe_set(model::ThrusterMask mask) {
+  const model::ThrusterList list = model::thruster_list(mask);
+  if (list.count == 0) return "no thruster";
+  const bool contiguous = list.index[list.count - 1] - list.index[0] == list.count - 1;
+  if (contiguous && list.count > 2)
+    return fmt::format("{}..{}", model::thruster_name(list.index[0]), model::thruster_name(list.index[list.count - 1]));
+  std::string out;
+  for (int k = 0; k < list.count; ++k) out += (k ? ", " : "") + model::thruster_name(list.index[k]);
+  return out;
+}
+
+// An empty string when the set spans, else why not.
+std::string span_problem(const model::Scenario& s, model::ThrusterMask mask) {
+  if (model::thruster_count(mask) == 0) return "is empty";
+  const model::PositiveSpanResult span =
+      model::positive_span(model::configuration_columns(s.thrusters, mask, s.chaser.com_body_m));
+  if (span.spans) return {};
+  return fmt::format("cannot produce force and torque in every direction: no on-times >= 0 give a wrench "
+                     "along [{:.3f}] (force; torque about the centre of mass; M has rank {} of 6; "
+                     "positive-span tolerance {})",
+                     fmt::join(span.blocked_direction, ", "), span.rank, format_number(model::kPositiveSpanTolerance));
+}
+
+bool fdi_watches(const model::FdiParams& f) {
+  return f.position.enabled || f.attitude.enabled ||
+         (f.isolation_method == model::IsolationMethod::kDeficit && f.deficit.detection);
+}
+
+// The active set at the start, then each set the recovery policy can switch to (one fault in each
+// group of the starting set), checked for span and, with the FDI on, for the FDI's set size.
+void check_configurations(const model::Scenario& s, Diagnostics& d) {
+  const model::ThrusterConfiguration start = model::initial_configuration(s.thrusters);
+  const bool fdi = fdi_watches(s.fdi);
+  auto check = [&](const model::ThrusterConfiguration& c, const std::string& when) {
+    if (const std::string problem = span_problem(s, c.active); !problem.empty())
+      d.add("thrusters.list", fmt::format("the active set {} ({}) {}", when, describe_set(c.active), problem));
+    if (fdi && model::thruster_count(c.active) != model::kFdiWatchedThrusters)
+      d.add("fdi", fmt::format("the FDI schemes (Fonod 2015) and the deficit bank watch exactly {} active thrusters; "
+                               "the active set {} has {} ({}): disable fdi.position, fdi.attitude and "
+                               "fdi.deficit.detection, or fly {} at a time (thrusters.standby_groups)",
+                               model::kFdiWatchedThrusters, when, model::thruster_count(c.active),
+                               describe_set(c.active), model::kFdiWatchedThrusters));
+  };
+  check(start, "at the start");
+  if (s.fdi.recovery == model::RecoveryPolicy::kNone) return;
+  bool any = false;
+  for (const model::ThrusterGroup& g : s.thrusters.groups) any |= g.standby;
+  if (!any) {
+    d.add("fdi.recovery", "switch_group needs a standby group to switch to (thrusters.standby_groups), "
+                          "or set fdi.recovery: none");
+    return;
+  }
+  model::ThrusterMask faulty_groups_seen = 0;
+  const model::ThrusterList list = model::thruster_list(start.active);
+  for (int k = 0; k < list.count; ++k) {
+    const int group = s.thrusters.thrusters[static_cast<std::size_t>(list.index[k])].group;
+    if (group == model::kNoGroup || ((faulty_groups_seen >> group) & 1U)) continue;
+    faulty_groups_seen |= std::uint32_t{1} << group;
+    if (const auto after = model::recover(s.thrusters, s.fdi.recovery, start, list.index[k]))
+      check(*after, fmt::format("after recovery from a fault in group {}",
+                                s.thrusters.groups[static_cast<std::size_t>(group)].name));
+  }
+}
+
+// tolerates_single_loss: every thruster of the starting set may be lost alone.
+void check_single_losses(const model::Scenario& s, Diagnostics& d) {
+  if (!s.thrusters.tolerates_single_loss) return;
+  const model::ThrusterMask start = model::initial_active_set(s.thrusters);
+  const model::ThrusterList list = model::thruster_list(start);
+  for (int k = 0; k < list.count; ++k) {
+    const model::ThrusterMask without = start & ~model::thruster_bit(list.index[k]);
+    if (const std::string problem = span_problem(s, without); !problem.empty())
+      d.add("thrusters.tolerates_single_loss",
+            fmt::format("is true, but without {} the active set {}", model::thruster_name(list.index[k]), problem));
+  }
+}
+
+void check_fault_thrusters(const model::Scenario& s, Diagnostics& d) {
+  for (std::size_t i = 0; i < s.faults.size(); ++i) {
+    const std::string path = fmt::format("faults.{}.thruster", i);
+    if (d.clean(path) && s.faults[i].thruster >= s.thrusters.count)
+      d.add(path, fmt::format("must name one of T1..{} (thrusters.list has {}) (got {})",
+                              model::thruster_name(s.thrusters.count - 1), s.thrusters.count,
+                              model::thruster_name(s.faults[i].thruster)));
+  }
+}
+
+}  // namespace
+
+void validate_thruster_set(const model::Scenario& s, Diagnostics& d) {
+  if (!d.clean("thrusters.list")) return;
+  check_fault_thrusters(s, d);
+  if (!d.clean("chaser.com_body_m")) return;
+  check_configurations(s, d);
+  check_single_losses(s, d);
+}
+
+}  // namespace chaser::io
