@@ -2,7 +2,8 @@
 // sets of 1000 pre-generated demands: typical control demands (|F_j| <= 1 N, |C_j| <= 1 N m, all
 // attainable), large unattainable ones (best effort), and a 90/10 mix of the two; and the warm start
 // (AllocationWarmStart) against the cold solve on a controller-like sequence: a slowly varying
-// attainable demand M t(k), t a random walk of 0.01 per step in [0, 1]^8.
+// attainable demand M t(k), t a random walk of 0.01 per step in [0, 1]^8; and the small and large
+// demands on a 24-thruster set, which the width-32 simplex solves.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -23,7 +24,27 @@ constexpr int kDemandCount = 1000;
 AllocationParams msr_allocation() {
   const model::ThrusterSetParams set = testing::msr_branch_a_thrusters();
   AllocationParams params;
-  params.config = model::configuration_matrix(set, 0, Vec3::Zero());
+  params.config = model::configuration_matrix(set, model::all_thrusters(set), Vec3::Zero());
+  params.thrusters = set.count;
+  return params;
+}
+
+// 24 thrusters (COMRADE's count, solved by the width-32 simplex) at fixed pseudo-random positions
+// in a 2 m box with random directions: three copies of MSR branch A, each copy's directions
+// turned, so the set spans with margin.
+AllocationParams wide_allocation() {
+  const model::ThrusterSetParams branch = testing::msr_branch_a_thrusters();
+  RandomStream rng(24, "bench/allocation_wide");
+  model::ThrusterSetParams set;
+  set.count = 24;
+  for (int i = 0; i < set.count; ++i) {
+    set.thrusters[i] = branch.thrusters[i % 8];
+    const Vec3 tilt(rng.normal(), rng.normal(), rng.normal());
+    set.thrusters[i].direction_body = (set.thrusters[i].direction_body + 0.3 * tilt.normalized()).normalized();
+  }
+  AllocationParams params;
+  params.config = model::configuration_matrix(set, model::all_thrusters(set), Vec3::Zero());
+  params.thrusters = set.count;
   return params;
 }
 
@@ -52,8 +73,8 @@ std::vector<Vec6> demands(int kind) {
   return out;
 }
 
-void run(benchmark::State& state, int kind) {
-  const AllocationParams params = msr_allocation();
+void run(benchmark::State& state, int kind, bool wide = false) {
+  const AllocationParams params = wide ? wide_allocation() : msr_allocation();
   const std::vector<Vec6> set = demands(kind);
   std::size_t k = 0;
   long feasible = 0, pivots = 0;
@@ -73,15 +94,18 @@ void run(benchmark::State& state, int kind) {
 void BM_AllocateSmallFeasible(benchmark::State& state) { run(state, 0); }
 void BM_AllocateLargeInfeasible(benchmark::State& state) { run(state, 1); }
 void BM_AllocateMixed(benchmark::State& state) { run(state, 2); }
+void BM_AllocateSmallFeasible24(benchmark::State& state) { run(state, 0, true); }
+void BM_AllocateLargeInfeasible24(benchmark::State& state) { run(state, 1, true); }
 
 // The slowly varying sequence, solved cold (state.range(0) == 0) or with the warm start (1).
 void BM_AllocateWarmSequence(benchmark::State& state) {
   const AllocationParams params = msr_allocation();
   RandomStream rng(1, "bench/allocation_walk");
-  model::Ton8 t = model::Ton8::Constant(0.3);
+  AllocationTon t = AllocationTon::Zero();
+  t.head(params.thrusters).setConstant(0.3);
   std::vector<Vec6> set;
   for (int k = 0; k < kDemandCount; ++k) {
-    for (int i = 0; i < model::kThrustersPerBranch; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
+    for (int i = 0; i < params.thrusters; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
     set.push_back(params.config * t);
   }
   const bool use_warm = state.range(0) == 1;
@@ -101,6 +125,8 @@ BENCHMARK(BM_AllocateSmallFeasible);
 BENCHMARK(BM_AllocateWarmSequence)->Arg(0)->Arg(1);
 BENCHMARK(BM_AllocateLargeInfeasible);
 BENCHMARK(BM_AllocateMixed);
+BENCHMARK(BM_AllocateSmallFeasible24);
+BENCHMARK(BM_AllocateLargeInfeasible24);
 
 }  // namespace
 }  // namespace chaser::flight

@@ -201,7 +201,7 @@ void BM_FdirPeriod(benchmark::State& state, Fdi fdi) {
                                          .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                                          .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                                          .q_inertial_from_lvlh = q_inertial_from_lvlh(f.scenario.orbit.mean_motion_radps(), t_s),
-                                         .ton = out.ton_active,
+                                         .ton = out.ton_active.head<flight::fdi::kWatchedThrusters>(),  // fault-free: watched = active
                                          .commanded_wrench = out.commanded_wrench});
     plant::step_plant(f.plant.params, f.plant.state, out.command, f.t_ns);
     f.t_ns += f.period_ns;

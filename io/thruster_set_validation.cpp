@@ -4,6 +4,10 @@
 // may require that every single-thruster loss leaves a spanning set; faults must name thrusters
 // that exist.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <string>
+#include <vector>
 
 #include "io/scenario_sections.hpp"
 #include "model/positive_span.hpp"
@@ -14,7 +18,7 @@ namespace chaser::io {
 namespace {
 
 // "T1..T8" for a contiguous run, else "T1, T3, T9".
-std::string describe_set(model::ThrusterMask mask) {
+std::string list_thrusters(model::ThrusterMask mask) {
   const model::ThrusterList list = model::thruster_list(mask);
   if (list.count == 0) return "no thruster";
   const bool contiguous = list.index[list.count - 1] - list.index[0] == list.count - 1;
@@ -23,6 +27,21 @@ std::string describe_set(model::ThrusterMask mask) {
   std::string out;
   for (int k = 0; k < list.count; ++k) out += (k ? ", " : "") + model::thruster_name(list.index[k]);
   return out;
+}
+
+// "group B (T9..T16)" when the set is exactly some groups, else its thrusters.
+std::string describe_set(const model::ThrusterSetParams& set, model::ThrusterMask mask) {
+  std::vector<std::string> names;
+  model::ThrusterMask covered = 0;
+  for (int g = 0; g < static_cast<int>(set.groups.size()); ++g) {
+    const model::ThrusterMask members = model::group_thrusters(set, g);
+    if (members != 0 && (members & ~mask) == 0) {
+      names.push_back(set.groups[static_cast<std::size_t>(g)].name);
+      covered |= members;
+    }
+  }
+  if (covered != mask || names.empty()) return list_thrusters(mask);
+  return fmt::format("{} {} ({})", names.size() == 1 ? "group" : "groups", fmt::join(names, ", "), list_thrusters(mask));
 }
 
 // An empty string when the set spans, else why not.
@@ -47,17 +66,19 @@ bool fdi_watches(const model::FdiParams& f) {
 void check_configurations(const model::Scenario& s, Diagnostics& d) {
   const model::ThrusterConfiguration start = model::initial_configuration(s.thrusters);
   const bool fdi = fdi_watches(s.fdi);
-  auto check = [&](const model::ThrusterConfiguration& c, const std::string& when) {
+  // `flies`: how the message names the set, e.g. "the set that flies at the start".
+  auto check = [&](const model::ThrusterConfiguration& c, const std::string& flies) {
+    const std::string set = describe_set(s.thrusters, c.active);
     if (const std::string problem = span_problem(s, c.active); !problem.empty())
-      d.add("thrusters.list", fmt::format("the active set {} ({}) {}", when, describe_set(c.active), problem));
+      d.add("thrusters.list", fmt::format("{}, {}, {}", flies, set, problem));
     if (fdi && model::thruster_count(c.active) != model::kFdiWatchedThrusters)
       d.add("fdi", fmt::format("the FDI schemes (Fonod 2015) and the deficit bank watch exactly {} active thrusters; "
-                               "the active set {} has {} ({}): disable fdi.position, fdi.attitude and "
-                               "fdi.deficit.detection, or fly {} at a time (thrusters.standby_groups)",
-                               model::kFdiWatchedThrusters, when, model::thruster_count(c.active),
-                               describe_set(c.active), model::kFdiWatchedThrusters));
+                               "{}, {}, has {}: disable fdi.position, fdi.attitude and fdi.deficit.detection, "
+                               "or fly {} at a time (thrusters.standby_groups)",
+                               model::kFdiWatchedThrusters, flies, set, model::thruster_count(c.active),
+                               model::kFdiWatchedThrusters));
   };
-  check(start, "at the start");
+  check(start, "the set that flies at the start");
   if (s.fdi.recovery == model::RecoveryPolicy::kNone) return;
   bool any = false;
   for (const model::ThrusterGroup& g : s.thrusters.groups) any |= g.standby;
@@ -73,7 +94,7 @@ void check_configurations(const model::Scenario& s, Diagnostics& d) {
     if (group == model::kNoGroup || ((faulty_groups_seen >> group) & 1U)) continue;
     faulty_groups_seen |= std::uint32_t{1} << group;
     if (const auto after = model::recover(s.thrusters, s.fdi.recovery, start, list.index[k]))
-      check(*after, fmt::format("after recovery from a fault in group {}",
+      check(*after, fmt::format("the set that flies after a fault in group {} (fdi.recovery: switch_group)",
                                 s.thrusters.groups[static_cast<std::size_t>(group)].name));
   }
 }
@@ -87,7 +108,8 @@ void check_single_losses(const model::Scenario& s, Diagnostics& d) {
     const model::ThrusterMask without = start & ~model::thruster_bit(list.index[k]);
     if (const std::string problem = span_problem(s, without); !problem.empty())
       d.add("thrusters.tolerates_single_loss",
-            fmt::format("is true, but without {} the active set {}", model::thruster_name(list.index[k]), problem));
+            fmt::format("is true, but without {} the set that flies at the start {}", model::thruster_name(list.index[k]),
+                        problem));
   }
 }
 
@@ -104,9 +126,9 @@ void check_fault_thrusters(const model::Scenario& s, Diagnostics& d) {
 }  // namespace
 
 void validate_thruster_set(const model::Scenario& s, Diagnostics& d) {
+  if (s.thrusters.count > 0) check_fault_thrusters(s, d);  // the list's length is known even if an entry is wrong
   if (!d.clean("thrusters.list")) return;
-  check_fault_thrusters(s, d);
-  if (!d.clean("chaser.com_body_m")) return;
+  if (!d.clean("chaser.com_body_m") || !d.clean("thrusters.standby_groups")) return;
   check_configurations(s, d);
   check_single_losses(s, d);
 }

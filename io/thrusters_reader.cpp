@@ -58,7 +58,7 @@ void read_standby_groups(MapReader& r, model::ThrusterSetParams& out) {
   if (!r.has("standby_groups")) return;
   const auto node = r.child("standby_groups", "a list of group names");
   const std::string path = r.path_of("standby_groups");
-  if (!node) return;
+  if (!node || out.count == 0) return;  // no thruster list: its error is already reported
   if (!node->IsSequence()) {
     r.diagnostics().add(path, fmt::format("must be a list of group names, e.g. [B] (got {})", describe_node(*node)));
     return;

@@ -77,10 +77,14 @@ TEST(Tmu, AccumulatorIsClampedWhenNothingIsRealised) {
 }
 
 // make_tmu_params: thresholds from the scenario, clamp = windup_periods * T * the larger one-sided
-// per-axis authority of the branches, floored at twice the threshold. The default thruster set
-// (eight 22 N thrusters per branch at the origin along +x) has 176 N on +x and nothing else.
+// per-axis authority of the sets the vehicle may fly (the starting set and each group), floored at
+// twice the threshold. Sixteen 22 N thrusters at the origin along +x in two groups of eight (the
+// second on standby): 176 N on +x and nothing else, except where one group-B thruster is turned.
 TEST(Tmu, MakeFromScenario) {
   model::Scenario s;
+  s.thrusters.count = 16;
+  s.thrusters.groups = {{"A", false}, {"B", true}};
+  for (int i = 0; i < 16; ++i) s.thrusters.thrusters[i].group = i / 8;
   s.control.tmu_force_threshold_Ns = 0.1;
   s.control.tmu_torque_threshold_Nms = 0.07;
   s.control.tmu_windup_periods = 3.0;

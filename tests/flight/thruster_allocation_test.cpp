@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/constants.hpp"
@@ -22,7 +23,7 @@
 namespace chaser::flight {
 namespace {
 
-constexpr int kN = model::kThrustersPerBranch;
+constexpr int kMsr = 8;  // MSR's active branch
 
 // Agreement with CLP. Both codes return a basic optimal solution and the optimal values are unique,
 // so they differ only by rounding (about 1e-15 relative for well-conditioned bases): 1e-9 relative
@@ -38,36 +39,46 @@ constexpr double kErrorFloorRel = 1e-12;
 
 // MSR branch A (layout of Fonod 2015 Fig. 3, values from the project brief), centre of mass at the
 // origin; column i = [22 d_i; p_i x 22 d_i] (eq. 2).
-model::ConfigMatrix msr_config() {
-  return model::configuration_matrix(testing::msr_branch_a_thrusters(), 0, Vec3::Zero());
+AllocationParams msr_params() {
+  AllocationParams p;
+  p.config = model::configuration_matrix(testing::msr_branch_a_thrusters(), model::first_thrusters(kMsr),
+                                         Vec3::Zero());
+  p.thrusters = kMsr;
+  return p;
 }
 
-// Eight thrusters at random positions in a 2 m box with random unit directions, redrawn until
-// M has rank 6 with a margin (smallest singular value above 1% of the largest).
-model::ConfigMatrix random_config(RandomStream& rng) {
+// n thrusters at random positions in a 2 m box with random unit directions, redrawn until M has
+// rank 6 with a margin (smallest singular value above 1% of the largest).
+AllocationParams random_params(RandomStream& rng, int n) {
   for (;;) {
     model::ThrusterSetParams set;
-    for (int i = 0; i < kN; ++i) {
+    set.count = n;
+    for (int i = 0; i < n; ++i) {
       const Vec3 pos(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
       const Vec3 dir = Vec3(rng.normal(), rng.normal(), rng.normal()).normalized();
       set.thrusters[i] = {pos, dir, 22.0};
     }
-    const model::ConfigMatrix m = model::configuration_matrix(set, 0, Vec3::Zero());
-    const Eigen::JacobiSVD<model::ConfigMatrix> svd(m);
-    if (svd.singularValues()[5] > 0.01 * svd.singularValues()[0]) return m;
+    AllocationParams p;
+    p.config = model::configuration_matrix(set, model::all_thrusters(set), Vec3::Zero());
+    p.thrusters = n;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(p.config.leftCols(n));
+    if (svd.singularValues()[5] > 0.01 * svd.singularValues()[0]) return p;
   }
+}
+
+// n random on-times in [0, 1], the rest zero.
+AllocationTon random_on_times(RandomStream& rng, int n) {
+  AllocationTon t = AllocationTon::Zero();
+  for (int i = 0; i < n; ++i) t[i] = rng.uniform();
+  return t;
 }
 
 // Demands of three kinds so that both verdicts occur in numbers: kind 0, M t with t inside the unit
 // cube (attainable); kind 1, small control demands (|F_j| <= 1 N, |C_j| <= 1 N m); kinds 2 and 3,
 // random directions with a log-uniform magnitude from 1 to 3000 (mostly unattainable).
-Vec6 random_demand(RandomStream& rng, const model::ConfigMatrix& m, int kind) {
+Vec6 random_demand(RandomStream& rng, const AllocationParams& p, int kind) {
   Vec6 d;
-  if (kind == 0) {
-    model::Ton8 t;
-    for (int i = 0; i < kN; ++i) t[i] = rng.uniform();
-    return m * t;
-  }
+  if (kind == 0) return p.config * random_on_times(rng, p.thrusters);
   for (int j = 0; j < 6; ++j) d[j] = kind == 1 ? rng.uniform(-1, 1) : rng.normal();
   if (kind >= 2) d *= std::exp(rng.uniform(0.0, std::log(3000.0))) / d.norm();
   return d;
@@ -126,11 +137,14 @@ struct Reference {
   bool ok = false;            // CLP reached a proven verdict in every stage
 };
 
-Reference clp_reference(const model::ConfigMatrix& m, const Vec6& w, const Vec6& d) {
+Reference clp_reference(const AllocationParams& p, const Vec6& d) {
+  const int n = p.thrusters;
+  const Eigen::MatrixXd m = p.config.leftCols(n);
+  const Vec6& w = p.error_weights;
   Reference ref;
   const std::vector<double> rhs(d.data(), d.data() + 6);
-  const ClpOutcome eq = solve_clp(m, std::vector<double>(kN, 0.0), std::vector<double>(kN, 1.0),
-                                  std::vector<double>(kN, 1.0), rhs, rhs, false);
+  const ClpOutcome eq = solve_clp(m, std::vector<double>(n, 0.0), std::vector<double>(n, 1.0),
+                                  std::vector<double>(n, 1.0), rhs, rhs, false);
   if (eq.optimal) {
     ref.feasible = ref.ok = true;
     ref.propellant = eq.objective;
@@ -138,23 +152,23 @@ Reference clp_reference(const model::ConfigMatrix& m, const Vec6& w, const Vec6&
   }
   if (!eq.infeasible) return ref;
   // Stage 2: M ton + e+ - e- = d, min w (e+ + e-).
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(7, kN + 12);
-  a.block(0, 0, 6, kN) = m;
-  a.block(0, kN, 6, 6) = Eigen::MatrixXd::Identity(6, 6);
-  a.block(0, kN + 6, 6, 6) = -Eigen::MatrixXd::Identity(6, 6);
-  std::vector<double> lb(kN + 12, 0.0), ub(kN + 12, COIN_DBL_MAX), obj(kN + 12, 0.0);
-  for (int i = 0; i < kN; ++i) ub[i] = 1.0;
-  for (int j = 0; j < 6; ++j) obj[kN + j] = obj[kN + 6 + j] = w[j];
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(7, n + 12);
+  a.block(0, 0, 6, n) = m;
+  a.block(0, n, 6, 6) = Eigen::MatrixXd::Identity(6, 6);
+  a.block(0, n + 6, 6, 6) = -Eigen::MatrixXd::Identity(6, 6);
+  std::vector<double> lb(n + 12, 0.0), ub(n + 12, COIN_DBL_MAX), obj(n + 12, 0.0);
+  for (int i = 0; i < n; ++i) ub[i] = 1.0;
+  for (int j = 0; j < 6; ++j) obj[n + j] = obj[n + 6 + j] = w[j];
   const ClpOutcome err = solve_clp(a.topRows(6), lb, ub, obj, rhs, rhs, true);
   if (!err.optimal) return ref;
   ref.weighted_error = err.objective;
   // Stage 3: the same rows plus w (e+ + e-) <= E*, min sum ton.
-  for (int j = 0; j < 6; ++j) a(6, kN + j) = a(6, kN + 6 + j) = w[j];
+  for (int j = 0; j < 6; ++j) a(6, n + j) = a(6, n + 6 + j) = w[j];
   std::vector<double> row_lb = rhs, row_ub = rhs;
   row_lb.push_back(-COIN_DBL_MAX);
   row_ub.push_back(err.objective);
   std::fill(obj.begin(), obj.end(), 0.0);
-  std::fill(obj.begin(), obj.begin() + kN, 1.0);
+  std::fill(obj.begin(), obj.begin() + n, 1.0);
   const ClpOutcome prop = solve_clp(a, lb, ub, obj, row_lb, row_ub, true);
   ref.ok = prop.optimal;
   ref.propellant = prop.objective;
@@ -170,14 +184,15 @@ struct Tally {
 // One demand: our result against CLP's, every property the brief lists.
 void check_against_clp(const AllocationParams& params, const Vec6& d, Tally& tally) {
   const AllocationResult res = allocate_thrusters(params, d);
-  const Reference ref = clp_reference(params.config, params.error_weights, d);
+  const Reference ref = clp_reference(params, d);
   ASSERT_TRUE(ref.ok) << "CLP gave no proven verdict for d = " << d.transpose();
   ASSERT_TRUE(res.converged);
   tally.max_iterations = std::max(tally.max_iterations, res.iterations);
-  for (int i = 0; i < kN; ++i) {
+  for (int i = 0; i < params.thrusters; ++i) {
     EXPECT_GE(res.ton[i], -1e-12);
     EXPECT_LE(res.ton[i], 1.0 + 1e-12);
   }
+  for (int i = params.thrusters; i < model::kMaxThrusters; ++i) EXPECT_EQ(res.ton[i], 0.0);  // padding
   const double m_max = params.config.cwiseAbs().maxCoeff();
   ASSERT_EQ(res.feasible, ref.feasible) << "d = " << d.transpose() << ", our weighted error "
                                         << res.weighted_error;
@@ -208,11 +223,10 @@ void report(const char* name, const Tally& t) {
 // 1200 demands on the MSR branch-A geometry, unit weights: same verdict and optimal values as CLP.
 TEST(ThrusterAllocation, MsrRandomDemandsMatchClp) {
   RandomStream rng(2015, "test/allocation/msr");
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   Tally tally;
   for (int k = 0; k < 1200; ++k) {
-    check_against_clp(params, random_demand(rng, params.config, k % 4), tally);
+    check_against_clp(params, random_demand(rng, params, k % 4), tally);
     if (HasFatalFailure()) return;
   }
   report("msr", tally);
@@ -220,24 +234,51 @@ TEST(ThrusterAllocation, MsrRandomDemandsMatchClp) {
   EXPECT_GE(tally.infeasible, 240);
 }
 
-// 60 random geometries x 20 demands, random weights in [0.2, 5]: the allocator is not tuned to
-// one layout or to unit weights.
-TEST(ThrusterAllocation, RandomGeometriesMatchClp) {
-  RandomStream rng(2015, "test/allocation/random");
+// Random geometries x 20 demands, random weights in [0.2, 5]: the allocator is not tuned to one
+// layout, one width or to unit weights. Sets of up to eight are solved at width 8, larger ones at
+// the capacity of 32 (thruster_allocation.cpp), so both solvers are checked: 6 thrusters (the
+// fewest that can span), 8, 12, COMRADE's 24, and the full 32.
+class RandomGeometries : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomGeometries, MatchClp) {
+  const int n = GetParam();
+  RandomStream rng(2015, "test/allocation/random/" + std::to_string(n));
   Tally tally;
-  for (int g = 0; g < 60; ++g) {
-    AllocationParams params;
-    params.config = random_config(rng);
+  const int geometries = n == 8 ? 60 : 20;
+  for (int g = 0; g < geometries; ++g) {
+    AllocationParams params = random_params(rng, n);
     for (int j = 0; j < 6; ++j)
       params.error_weights[j] = std::exp(rng.uniform(std::log(0.2), std::log(5.0)));
     for (int k = 0; k < 20; ++k) {
-      check_against_clp(params, random_demand(rng, params.config, k % 4), tally);
+      check_against_clp(params, random_demand(rng, params, k % 4), tally);
       if (HasFatalFailure()) return;
     }
   }
-  report("random geometries", tally);
-  EXPECT_GE(tally.feasible, 240);
-  EXPECT_GE(tally.infeasible, 240);
+  report(("random geometries, " + std::to_string(n) + " thrusters").c_str(), tally);
+  EXPECT_GE(tally.feasible, geometries * 3);  // both verdicts are exercised in numbers (15% or more;
+  EXPECT_GE(tally.infeasible, geometries * 3);  // 32 thrusters reach more of the random demands)
+}
+
+INSTANTIATE_TEST_SUITE_P(ThrusterAllocation, RandomGeometries, ::testing::Values(6, 8, 12, 24, 32));
+
+// The width-8 and the width-32 solvers give the same optimum: MSR branch A solved as eight
+// thrusters, and as nine whose ninth produces nothing (a zero column costs propellant and realises
+// nothing, so no optimum fires it), on attainable and unattainable demands.
+TEST(ThrusterAllocation, WideSolverAgreesWithNarrowOne) {
+  RandomStream rng(17, "test/allocation/widths");
+  const AllocationParams narrow = msr_params();
+  AllocationParams wide = narrow;
+  wide.thrusters = kMsr + 1;  // column 8 is zero already
+  for (int k = 0; k < 400; ++k) {
+    const Vec6 d = random_demand(rng, narrow, k % 4);
+    const AllocationResult a = allocate_thrusters(narrow, d);
+    const AllocationResult b = allocate_thrusters(wide, d);
+    ASSERT_TRUE(a.converged && b.converged) << k;
+    ASSERT_EQ(a.feasible, b.feasible) << k;
+    EXPECT_NEAR(a.propellant, b.propellant, kRelTol * a.propellant + kPropellantFloor) << k;
+    EXPECT_NEAR(a.weighted_error, b.weighted_error, kRelTol * a.weighted_error + 1e-12) << k;
+    EXPECT_EQ(b.ton[kMsr], 0.0) << k;
+  }
 }
 
 // Lexicographic best effort where the error minimisers are many: a planar layout (positions and
@@ -251,21 +292,23 @@ TEST(ThrusterAllocation, PlanarLayoutBestEffortIsLeastPropellantOnReachableAxes)
   Tally tally;
   int many_minimisers = 0;
   for (int g = 0; g < 20; ++g) {
+    constexpr int kN = kMsr;
     model::ThrusterSetParams set;
+    set.count = kN;
     for (int i = 0; i < kN; ++i) {
       const double angle = rng.uniform(0.0, 2.0 * kPi);
       set.thrusters[i] = {Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0),
                           Vec3(std::cos(angle), std::sin(angle), 0.0), 22.0};
     }
     AllocationParams params;
-    params.config = model::configuration_matrix(set, 0, Vec3::Zero());
+    params.config = model::configuration_matrix(set, model::all_thrusters(set), Vec3::Zero());
+    params.thrusters = kN;
     for (int j = 0; j < 6; ++j) params.error_weights[j] = rng.uniform(0.5, 2.0);
     const int reachable[3] = {0, 1, 5};  // F_x, F_y, C_z
     Eigen::Matrix<double, 3, kN> m3;
-    for (int r = 0; r < 3; ++r) m3.row(r) = params.config.row(reachable[r]);
+    for (int r = 0; r < 3; ++r) m3.row(r) = params.config.row(reachable[r]).head<kN>();
     for (int k = 0; k < 10; ++k) {
-      model::Ton8 t;
-      for (int i = 0; i < kN; ++i) t[i] = rng.uniform();
+      const AllocationTon t = random_on_times(rng, kN);
       Vec6 d = params.config * t;  // reachable axes attainable...
       for (const int j : {2, 3, 4}) d[j] = rng.uniform(-5, 5);  // ...the others not
       const AllocationResult res = allocate_thrusters(params, d);
@@ -291,8 +334,7 @@ TEST(ThrusterAllocation, PlanarLayoutBestEffortIsLeastPropellantOnReachableAxes)
 
 // Zero demand: ton = 0 is the only zero-propellant point and it is exact.
 TEST(ThrusterAllocation, ZeroDemandNeedsNoFiring) {
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   const AllocationResult res = allocate_thrusters(params, Vec6::Zero());
   EXPECT_TRUE(res.feasible);
   EXPECT_TRUE(res.converged);
@@ -307,14 +349,13 @@ TEST(ThrusterAllocation, ZeroDemandNeedsNoFiring) {
 // by 1e-6 relative makes it unattainable, and the best effort then misses by about 1e-6 |d|.
 TEST(ThrusterAllocation, BoundaryDemandNeedsFullOnTimes) {
   RandomStream rng(7, "test/allocation/boundary");
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   Tally tally;
   for (int k = 0; k < 50; ++k) {
     Vec6 c;
     for (int j = 0; j < 6; ++j) c[j] = rng.normal();
-    model::Ton8 t_star;
-    for (int i = 0; i < kN; ++i) t_star[i] = c.dot(params.config.col(i)) > 0.0 ? 1.0 : 0.0;
+    AllocationTon t_star = AllocationTon::Zero();
+    for (int i = 0; i < kMsr; ++i) t_star[i] = c.dot(params.config.col(i)) > 0.0 ? 1.0 : 0.0;
     const Vec6 d = params.config * t_star;
     const AllocationResult res = allocate_thrusters(params, d);
     EXPECT_TRUE(res.feasible);
@@ -331,10 +372,9 @@ TEST(ThrusterAllocation, BoundaryDemandNeedsFullOnTimes) {
 // Degenerate demands along one column: s M_i is attainable with ton = s e_i, so the optimum costs
 // at most s, and it matches CLP whichever (possibly cheaper) combination is optimal.
 TEST(ThrusterAllocation, SingleColumnDemands) {
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   Tally tally;
-  for (int i = 0; i < kN; ++i) {
+  for (int i = 0; i < kMsr; ++i) {
     for (const double s : {1e-6, 0.3, 1.0}) {
       const Vec6 d = s * params.config.col(i);
       const AllocationResult res = allocate_thrusters(params, d);
@@ -349,13 +389,12 @@ TEST(ThrusterAllocation, SingleColumnDemands) {
 // Same input twice gives bit-identical output: no hidden state, no uninitialised memory.
 TEST(ThrusterAllocation, Deterministic) {
   RandomStream rng(11, "test/allocation/determinism");
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   for (int k = 0; k < 300; ++k) {
-    const Vec6 d = random_demand(rng, params.config, k % 4);
+    const Vec6 d = random_demand(rng, params, k % 4);
     const AllocationResult a = allocate_thrusters(params, d);
     const AllocationResult b = allocate_thrusters(params, d);
-    EXPECT_EQ(std::memcmp(a.ton.data(), b.ton.data(), sizeof(double) * kN), 0);
+    EXPECT_EQ(std::memcmp(a.ton.data(), b.ton.data(), sizeof(double) * model::kMaxThrusters), 0);
     EXPECT_EQ(std::memcmp(a.residual.data(), b.residual.data(), sizeof(double) * 6), 0);
     EXPECT_EQ(std::memcmp(&a.propellant, &b.propellant, sizeof(double)), 0);
     EXPECT_EQ(std::memcmp(&a.weighted_error, &b.weighted_error, sizeof(double)), 0);
@@ -372,20 +411,19 @@ TEST(ThrusterAllocation, Deterministic) {
 // it had to solve (unattainable demands). The fast path must actually serve most slow steps.
 TEST(ThrusterAllocation, WarmStartGivesTheColdOptimum) {
   RandomStream rng(2024, "warm_start");
-  AllocationParams params;
-  params.config = msr_config();
-  AllocationParams other;
-  other.config = random_config(rng);
+  AllocationParams params = msr_params();
+  const AllocationParams other = random_params(rng, kMsr);
   AllocationWarmStart warm;
-  model::Ton8 t = model::Ton8::Constant(0.3);
+  AllocationTon t = AllocationTon::Zero();
+  t.head<kMsr>().setConstant(0.3);
   int slow_steps = 0;
   for (int k = 0; k < 4000; ++k) {
     const bool switched = k >= 3000;  // the last quarter on another configuration
     const AllocationParams& p = switched ? other : params;
-    for (int i = 0; i < kN; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
+    for (int i = 0; i < kMsr; ++i) t[i] = std::clamp(t[i] + 0.01 * rng.normal(), 0.0, 1.0);
     Vec6 d = p.config * t;
-    if (k % 97 == 0) d = random_demand(rng, p.config, 1);            // a jump
-    else if (k % 53 == 0) d = random_demand(rng, p.config, 3);       // unattainable
+    if (k % 97 == 0) d = random_demand(rng, p, 1);            // a jump
+    else if (k % 53 == 0) d = random_demand(rng, p, 3);       // unattainable
     else ++slow_steps;
     const AllocationResult cold = allocate_thrusters(p, d);
     const std::int64_t solves_before = warm.solves;
@@ -399,7 +437,7 @@ TEST(ThrusterAllocation, WarmStartGivesTheColdOptimum) {
       EXPECT_TRUE((hot.ton.array() >= 0.0).all() && (hot.ton.array() <= 1.0).all()) << k;
     }
     if (warm.solves > solves_before) {
-      EXPECT_EQ(std::memcmp(hot.ton.data(), cold.ton.data(), sizeof(double) * kN), 0) << k;
+      EXPECT_EQ(std::memcmp(hot.ton.data(), cold.ton.data(), sizeof(double) * model::kMaxThrusters), 0) << k;
     }
   }
   EXPECT_EQ(warm.config, other.config);  // the slots were dropped at the switch
@@ -409,8 +447,7 @@ TEST(ThrusterAllocation, WarmStartGivesTheColdOptimum) {
 
 // Invalid input never hangs or throws: it returns ton = 0 and says it did not converge.
 TEST(ThrusterAllocation, InvalidInputIsFlagged) {
-  AllocationParams params;
-  params.config = msr_config();
+  AllocationParams params = msr_params();
   Vec6 d = Vec6::Constant(0.1);
   d[2] = std::numeric_limits<double>::quiet_NaN();
   const AllocationResult nan_demand = allocate_thrusters(params, d);

@@ -56,7 +56,8 @@ TEST(ScenarioLoader, MsrThrusterGeometry) {
   const model::ThrusterSetParams& set = r.scenario->thrusters;
   const Vec3 t1_dir = Vec3(0.36, 0.36, -1.0).normalized();
   EXPECT_LT((set.thrusters[0].direction_body - t1_dir).norm(), 1e-15);
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
+  ASSERT_EQ(set.count, 16);
+  for (int i = 0; i < set.count; ++i) {
     EXPECT_NEAR(set.thrusters[i].direction_body.norm(), 1.0, 1e-15);
     EXPECT_EQ(set.thrusters[i].max_thrust_N, 22.0);
   }
@@ -68,8 +69,16 @@ TEST(ScenarioLoader, MsrThrusterGeometry) {
     EXPECT_LT((set.thrusters[i + 8].position_body_m - 0.95 * set.thrusters[i].position_body_m).norm(), 1e-15);
     EXPECT_EQ(set.thrusters[i + 8].direction_body, set.thrusters[i].direction_body);
   }
-  for (int branch = 0; branch < 2; ++branch)
-    EXPECT_TRUE(model::positive_span(model::configuration_matrix(set, branch, Vec3::Zero())).spans);
+  ASSERT_EQ(set.groups.size(), 2u);
+  EXPECT_EQ(set.groups[0].name, "A");
+  EXPECT_FALSE(set.groups[0].standby);
+  EXPECT_EQ(set.groups[1].name, "B");
+  EXPECT_TRUE(set.groups[1].standby);
+  EXPECT_EQ(model::group_thrusters(set, 0), 0x00FFu);
+  EXPECT_EQ(model::group_thrusters(set, 1), 0xFF00u);
+  EXPECT_EQ(model::initial_active_set(set), 0x00FFu);
+  for (int group = 0; group < 2; ++group)
+    EXPECT_TRUE(model::positive_span(model::configuration_columns(set, model::group_thrusters(set, group), Vec3::Zero())).spans);
 }
 
 // The brief: navigation, guidance and control in the file are model/gnc.hpp's defaults. This

@@ -84,12 +84,15 @@ const BadCase kBadCases[] = {
   {"thruster_zero_direction", {"thrusters.list.3.direction_body=[0,0,0]"}, "thrusters.list.3.direction_body", "must be a nonzero direction"},
   {"thruster_zero_thrust", {"thrusters.list.3.max_thrust_N=0"}, "thrusters.list.3.max_thrust_N", "must be > 0"},
   {"thruster_out_of_order", {"thrusters.list.3.name=T5"}, "thrusters.list.3.name", "must be T4"},
-  {"thruster_wrong_branch", {"thrusters.list.9.branch=A"}, "thrusters.list.9.branch", "must be B"},
-  {"thruster_list_short", {"thrusters.list=[]"}, "thrusters.list", "must be a list of the 16 thrusters T1..T16 (got a list of 0)"},
-  {"branch_a_not_spanning", {"thrusters.list.2.direction_body=[1,0.36,-0.36]"}, "thrusters.list", "branch A (T1..T8) cannot produce force and torque in every direction"},
-  {"fault_thruster_17", {"faults=[{thruster: T17, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "must be a thruster name T1..T16 (got 'T17')"},
-  {"fault_thruster_0", {"faults=[{thruster: T0, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "T1..T16 (got 'T0')"},
-  {"fault_thruster_x", {"faults=[{thruster: X, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "T1..T16 (got 'X')"},
+  {"thruster_old_branch_key", {"thrusters.list.9.branch=A"}, "thrusters.list.9.branch", "unknown key (allowed here: name, group,"},
+  {"standby_group_unknown", {"thrusters.standby_groups=[C]"}, "thrusters.standby_groups.0", "must name a group of thrusters.list (A, B) (got 'C')"},
+  {"thruster_list_empty", {"thrusters.list=[]"}, "thrusters.list", "must be a list of 1..32 thrusters T1..TN (got a list of 0)"},
+  {"branch_a_not_spanning", {"thrusters.list.2.direction_body=[1,0.36,-0.36]"}, "thrusters.list", "the set that flies at the start, group A (T1..T8), cannot produce force and torque in every direction"},
+  {"fault_thruster_17", {"faults=[{thruster: T17, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "must name one of T1..T16 (thrusters.list has 16) (got T17)"},
+  {"fault_thruster_0", {"faults=[{thruster: T0, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "must be a thruster name T1..TN, N the number of thrusters.list entries (got 'T0')"},
+  {"fault_thruster_x", {"faults=[{thruster: X, kind: stuck_open, onset_s: 10}]"}, "faults.0.thruster", "must be a thruster name T1..TN, N the number of thrusters.list entries (got 'X')"},
+  {"recovery_unknown", {"fdi.recovery=branch"}, "fdi.recovery", "must be one of none, switch_group (got 'branch')"},
+  {"fdi_on_sixteen_active", {"thrusters.standby_groups=[]", "fdi.recovery=none"}, "fdi", "watch exactly 8 active thrusters; the set that flies at the start, groups A, B (T1..T16), has 16"},
   {"fault_kind_unknown", {"faults=[{thruster: T8, kind: melted, onset_s: 10}]"}, "faults.0.kind", "must be one of stuck_open, stuck_closed, leak, loss (got 'melted')"},
   {"fault_duplicate", {"faults=[{thruster: T8, kind: stuck_open, onset_s: 10}, {thruster: T8, kind: loss, onset_s: 20, loss_size: 0.5}]"}, "faults.1.thruster", "duplicate fault on T8 (also faults.0)"},
   {"fault_onset_late", {"faults=[{thruster: T8, kind: stuck_open, onset_s: 1300}]"}, "faults.0.onset_s", "must be in [0, duration_s] = [0, 1200] (got 1300)"},
@@ -137,13 +140,16 @@ TEST(ScenarioValidation, ReportsEveryProblemAtOnce) {
   EXPECT_EQ(r.errors.size(), 8u) << format_errors(r.errors);
 }
 
-// Branch B with every nozzle at the centre of mass produces no torque: M has rank 3.
+// Branch B with every nozzle at the centre of mass produces no torque: M has rank 3. The set that
+// flies at the start is fine; the one a recovery would switch to is not, and the scenario says so
+// before the run.
 TEST(ScenarioValidation, BranchWithoutTorqueIsRejected) {
   std::vector<std::string> overrides;
   for (int i = 8; i < 16; ++i)
     overrides.push_back("thrusters.list." + std::to_string(i) + ".position_body_m=[0,0,0]");
   const LoadResult r = load_msr(overrides);
-  EXPECT_TRUE(has_error(r, "thrusters.list", "branch B (T9..T16)"));
+  EXPECT_TRUE(has_error(r, "thrusters.list", "after a fault in group A (fdi.recovery: switch_group), group B (T9..T16), "
+                                             "cannot produce force and torque"));
   EXPECT_TRUE(has_error(r, "thrusters.list", "M has rank 3 of 6"));
   EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
 }
@@ -192,16 +198,47 @@ std::string without_key(const std::string& path) {
   return out.c_str();
 }
 
-// Every key of the shipped file is required: removing any one is reported as missing, at its path,
-// with the expected type, and as the only problem.
+// The keys a scenario may leave out (docs/scenario.md): a thruster's redundancy group, the standby
+// groups, and the single-loss requirement.
+bool optional_key(const std::string& key) {
+  const auto ends_with = [&](const std::string& tail) {
+    return key.size() >= tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  return key == "thrusters.standby_groups" || key == "thrusters.tolerates_single_loss" ||
+         (key.rfind("thrusters.list.", 0) == 0 && ends_with(".group"));
+}
+
+// Every other key of the shipped file is required: removing any one is reported as missing, at its
+// path, with the expected type, and as the only problem.
 TEST(ScenarioValidation, EveryKeyIsRequired) {
   const SchemaPaths p = msr_paths();
   ASSERT_GT(p.keys.size(), 150u);  // 16 thrusters x 5 keys plus the rest
+  int optional = 0;
   for (const std::string& key : p.keys) {
+    if (optional_key(key)) {
+      ++optional;
+      continue;
+    }
     const LoadResult r = load_scenario_text(without_key(key));
     EXPECT_TRUE(has_error(r, key, "missing key (expected "));
     EXPECT_EQ(r.errors.size(), 1u) << key << ":\n" << format_errors(r.errors);
   }
+  EXPECT_EQ(optional, 18);  // 16 groups, standby_groups, tolerates_single_loss
+}
+
+// The optional keys' defaults: without tolerates_single_loss nothing is required of single losses;
+// without groups and standby groups every thruster flies from the start (a set of 16, which the
+// eight-lane FDI cannot watch, so it is switched off here, with recovery).
+TEST(ScenarioValidation, OptionalThrusterKeysHaveDefaults) {
+  const LoadResult no_requirement = load_scenario_text(without_key("thrusters.tolerates_single_loss"));
+  ASSERT_TRUE(no_requirement.scenario.has_value()) << format_errors(no_requirement.errors);
+  EXPECT_FALSE(no_requirement.scenario->thrusters.tolerates_single_loss);
+
+  std::string text = without_key("thrusters.standby_groups");
+  const LoadResult one_set = load_scenario_text(text, {"fdi.recovery=none", "fdi.position.enabled=false",
+                                                       "fdi.attitude.enabled=false", "fdi.deficit.detection=false"});
+  ASSERT_TRUE(one_set.scenario.has_value()) << format_errors(one_set.errors);
+  EXPECT_EQ(model::initial_active_set(one_set.scenario->thrusters), model::first_thrusters(16));
 }
 
 // An unknown key is caught in every mapping of the schema, the top level and list entries included.

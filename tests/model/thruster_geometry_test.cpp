@@ -16,8 +16,8 @@ ThrusterSetParams msr_branch_a() { return testing::msr_branch_a_thrusters(); }
 TEST(ThrusterGeometry, ColumnsAreForceAndMomentAboutTheCentreOfMass) {
   const ThrusterSetParams set = msr_branch_a();
   const Vec3 com(0.03, -0.02, 0.01);
-  const ConfigMatrix m = configuration_matrix(set, 0, com);
-  for (int i = 0; i < kThrustersPerBranch; ++i) {
+  const ConfigMatrix m = configuration_matrix(set, all_thrusters(set), com);
+  for (int i = 0; i < set.count; ++i) {
     const Vec3 force = 22.0 * set.thrusters[i].direction_body;
     EXPECT_LT((m.col(i).head<3>() - force).norm(), 1e-14);
     EXPECT_LT((m.col(i).tail<3>() - (set.thrusters[i].position_body_m - com).cross(force)).norm(), 1e-13);
@@ -29,9 +29,9 @@ TEST(ThrusterGeometry, ColumnsAreForceAndMomentAboutTheCentreOfMass) {
 // exactly 2 c x F_i: tau_partner - tau_i = (p + c) x F - (p - c) x F.
 TEST(ThrusterGeometry, PartnersGiveSameTorqueAndOppositeForce) {
   const ThrusterSetParams set = msr_branch_a();
-  const ConfigMatrix m = configuration_matrix(set, 0, Vec3::Zero());
+  const ConfigMatrix m = configuration_matrix(set, all_thrusters(set), Vec3::Zero());
   const Vec3 com(0.03, -0.02, 0.01);
-  const ConfigMatrix m_offset = configuration_matrix(set, 0, com);
+  const ConfigMatrix m_offset = configuration_matrix(set, all_thrusters(set), com);
   for (int i = 0; i < 4; ++i) {
     EXPECT_LT((m.col(i).head<3>() + m.col(i + 4).head<3>()).norm(), 1e-14);
     EXPECT_LT((m.col(i).tail<3>() - m.col(i + 4).tail<3>()).norm(), 1e-13);
@@ -42,7 +42,7 @@ TEST(ThrusterGeometry, PartnersGiveSameTorqueAndOppositeForce) {
 
 // M has full rank 6: four independent forces and four torques spanning R^3 (section II.B).
 TEST(ThrusterGeometry, BranchHasFullRank) {
-  const ConfigMatrix m = configuration_matrix(msr_branch_a(), 0, Vec3::Zero());
+  const ConfigMatrix m = configuration_matrix(msr_branch_a(), first_thrusters(8), Vec3::Zero());
   EXPECT_EQ(Eigen::FullPivLU<ConfigMatrix>(m).rank(), 6);
 }
 

@@ -16,14 +16,19 @@ constexpr TimeNs kMs = 1'000'000;
 constexpr double kIsp = 220.0;  // [s]
 
 // 16 thrusters with distinct, non-coplanar directions and positions so that every thruster's force
-// and torque differ from the others'.
+// and torque differ from the others'; two latch groups of eight (T1-T8, T9-T16) as on MSR.
+constexpr int kCount = 16;
+
 model::ThrusterSetParams test_set() {
   model::ThrusterSetParams set;
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
+  set.count = kCount;
+  set.groups = {{"A", false}, {"B", true}};
+  for (int i = 0; i < kCount; ++i) {
     const double a = 0.7 * i + 0.3;
     set.thrusters[i].direction_body = Vec3(std::cos(a), std::sin(a), 0.3 * ((i % 3) - 1.0)).normalized();
     set.thrusters[i].position_body_m = Vec3(0.5 + 0.1 * i, -0.4 + 0.05 * i, ((i % 2) ? 0.8 : -0.8));
     set.thrusters[i].max_thrust_N = 20.0 + 0.25 * i;
+    set.thrusters[i].group = i < 8 ? 0 : 1;
   }
   set.delay_max_s = 0.020;
   set.rise_time_s = 0.005;
@@ -113,7 +118,7 @@ TEST(ThrusterHardware, ImpulseConservedThroughDelayAndSpill) {
   for (int k = 0; k <= periods; ++k) {
     model::ThrusterCommand c;
     const double ton_max = std::min(1.0, double(kPeriodNs + delay[k + 1] - delay[k] - hw.min_off_ns) / kPeriodNs);
-    for (int i = 0; i < model::kThrustersTotal && k < periods; ++i) {
+    for (int i = 0; i < kCount && k < periods; ++i) {
       const double u = rng.uniform();
       c.ton[i] = u < 0.2 ? 0.0 : std::floor(rng.uniform(0.05, ton_max) * 1e6) / 1e6;
       const double impulse_s = c.ton[i] * to_seconds(kPeriodNs);
@@ -123,7 +128,7 @@ TEST(ThrusterHardware, ImpulseConservedThroughDelayAndSpill) {
     }
     schedule_period(hw, {}, state, c, k * kPeriodNs, delay[k], p);
     expect_tiles(p, k * kPeriodNs);
-    for (int i = 0; i < model::kThrustersTotal; ++i) ASSERT_NEAR(p.ton_realised[i], c.ton[i], 1e-15);
+    for (int i = 0; i < kCount; ++i) ASSERT_NEAR(p.ton_realised[i], c.ton[i], 1e-15);
     spills += p.pieces[0].force_body_N != Vec3::Zero();
     accumulate(p, sum);
   }
@@ -208,7 +213,7 @@ TEST(ThrusterHardware, OverlappingPulsesGiveUnion) {
   EXPECT_EQ(p.pieces[0].force_body_N, Vec3::Zero());
 }
 
-// A closed latch cuts its whole branch (even a stuck-open thruster); the other branch is untouched,
+// A closed latch cuts its whole group (even a stuck-open thruster); the other group is untouched,
 // and reopening the latch restores the flow.
 TEST(ThrusterHardware, LatchValveCutsBranchIncludingStuckOpen) {
   const ThrusterHardware hw = test_hardware();
@@ -220,7 +225,7 @@ TEST(ThrusterHardware, LatchValveCutsBranchIncludingStuckOpen) {
   model::ThrusterCommand all;
   all.ton.fill(0.5);
   ThrusterState state;
-  set_latch(state, 0, false);
+  state.latch_closed_groups = 0b01;  // group A closed
   ThrustProfile p;
   schedule_period(hw, faults, state, all, 0, 0, p);
   Impulse sum;
@@ -231,8 +236,7 @@ TEST(ThrusterHardware, LatchValveCutsBranchIncludingStuckOpen) {
   for (int i = 0; i < 8; ++i) EXPECT_EQ(p.ton_realised[i], 0.0);
   for (int i = 8; i < 16; ++i) EXPECT_EQ(p.ton_realised[i], 0.5);
 
-  set_latch(state, 0, true);
-  set_latch(state, 1, false);
+  state.latch_closed_groups = 0b10;  // A open, B closed
   schedule_period(hw, faults, state, model::ThrusterCommand{}, kPeriodNs, 0, p);
   ASSERT_EQ(p.count, 1);  // only the stuck-open thruster flows, the whole period
   EXPECT_EQ(p.pieces[0].force_body_N, hw.force_body_N[3]);
@@ -244,7 +248,7 @@ TEST(ThrusterDispersion, ZeroSigmaIsNominalExactly) {
   const model::ThrusterSetParams set = test_set();
   const Vec3 com(0.1, -0.05, 0.02);
   const ThrusterHardware hw = test_hardware(set);
-  for (int i = 0; i < model::kThrustersTotal; ++i) {
+  for (int i = 0; i < kCount; ++i) {
     const Vec6 w = model::thruster_wrench(set.thrusters[i], com);
     EXPECT_EQ(hw.force_body_N[i], Vec3(w.head<3>()));
     EXPECT_EQ(hw.torque_body_Nm[i], Vec3(w.tail<3>()));
@@ -262,11 +266,11 @@ TEST(ThrusterDispersion, SampleStatisticsMatchSigmaAndTruncation) {
   const Vec3 com(0.1, -0.05, 0.02);
   const double sigma_t = 0.98658;  // std of N(0,1) truncated at +-3
   double sum = 0, sum2 = 0, max_dev = 0, sum_angle2 = 0, max_angle = 0;
-  const int runs = 1000, n = runs * model::kThrustersTotal;
+  const int runs = 1000, n = runs * kCount;
   for (int run = 0; run < runs; ++run) {
     RandomStream dispersion(run_seed(11, run), "thrusters/dispersion");
     const ThrusterHardware hw = make_thruster_hardware(set, com, kIsp, kPeriodNs, dispersion);
-    for (int i = 0; i < model::kThrustersTotal; ++i) {
+    for (int i = 0; i < kCount; ++i) {
       const model::ThrusterParams& t = set.thrusters[i];
       const double scale = hw.force_body_N[i].norm() / t.max_thrust_N;
       sum += scale, sum2 += (scale - 1) * (scale - 1);

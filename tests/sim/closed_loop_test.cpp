@@ -71,6 +71,30 @@ TEST(ClosedLoop, StuckOpenIsDetectedAndRecoveredOnBranchB) {
   EXPECT_EQ(r.figures.corridor_violation_periods, 0);
 }
 
+// Diagnosis keeps running after a recovery: T8 (branch A) sticks open at 1000 s, recovery closes
+// branch A's latch and flies branch B; T12 (branch B) sticks open at 1100 s and is detected and
+// isolated like the first (the FDI re-armed on branch B's eight thrusters, rearm_after_recovery_s
+// after the switch). No standby group is left, so the second diagnosis triggers no recovery.
+TEST(ClosedLoop, SecondFaultAfterRecoveryIsDiagnosedOnBranchB) {
+  model::Scenario scenario = msr_scenario();
+  scenario.duration_s = 1130.0;
+  scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7, .onset_s = 1000.0},
+                     model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 11, .onset_s = 1100.0}};
+  const RunResult r = run_scenario(scenario);
+  ASSERT_EQ(r.fdir.episodes.size(), 2u);
+  const FdirResult& first = r.fdir.episodes[0];
+  const FdirResult& second = r.fdir.episodes[1];
+  EXPECT_EQ(first.isolated_thruster, 8);
+  EXPECT_EQ(first.recovered_thruster, 8);
+  EXPECT_GE(first.detection_s, 1000.0);
+  EXPECT_LT(first.detection_s, 1005.0);
+  EXPECT_EQ(second.isolated_thruster, 12);
+  EXPECT_GE(second.detection_s, 1100.0);
+  EXPECT_LT(second.detection_s, 1105.0);
+  EXPECT_EQ(second.recovery_s, -1.0);  // branch B was the last standby group
+  EXPECT_EQ(r.fdir.isolated_thruster, 8);  // the top-level fields are the first diagnosis's
+}
+
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::stringstream ss;

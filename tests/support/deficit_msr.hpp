@@ -9,12 +9,12 @@
 namespace chaser::testing {
 
 inline flight::fdi::DeficitIsolationParams msr_deficit_params() {
-  const model::ConfigMatrix m = model::configuration_matrix(msr_branch_a_thrusters(), 0, Vec3::Zero());
+  const model::ConfigMatrix m = model::configuration_matrix(msr_branch_a_thrusters(), model::first_thrusters(8), Vec3::Zero());
   flight::fdi::DeficitIsolationParams p;
   p.inertia_kgm2 = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();
   p.mass_kg = 2500.0;
-  p.force_body_N = m.topRows<3>();
-  p.torque_body_Nm = m.bottomRows<3>();
+  p.force_body_N = m.topLeftCorner<3, 8>();
+  p.torque_body_Nm = m.bottomLeftCorner<3, 8>();
   p.period_s = 0.1;
   return p;
 }

@@ -10,6 +10,7 @@ inline model::ThrusterSetParams msr_branch_a_thrusters() {
   const Vec3 positions_m[4] = {{1.0, 0.8, 0.8}, {-1.0, 0.8, -0.8}, {-1.0, 0.8, 0.8}, {-1.0, -0.8, 0.8}};
   const Vec3 directions[4] = {{0.36, 0.36, -1.0}, {0.36, 1.0, 0.36}, {-1.0, 0.36, -0.36}, {0.36, -1.0, -0.36}};
   model::ThrusterSetParams set;
+  set.count = 8;
   for (int i = 0; i < 4; ++i) {
     const Vec3 dir = directions[i].normalized();
     set.thrusters[i] = {positions_m[i], dir, 22.0};

@@ -15,7 +15,8 @@ constexpr int kFaulty = 3;
 
 std::array<double, 8> flow() {
   model::ThrusterSetParams set;
-  return nominal_mass_flow_kgps(set, 0, 220.0);
+  set.count = 8;
+  return nominal_mass_flow_kgps(set, watched_set(model::all_thrusters(set)), 220.0);
 }
 
 WatchedTon sparse_ton(RandomStream& rng) {

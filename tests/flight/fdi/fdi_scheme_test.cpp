@@ -55,7 +55,7 @@ PositionSetup msr_position_setup(double delta_max_s, int residual_dim = 1) {
   in.residual_dim = residual_dim;
   PositionSetup setup{design_residual_generator(in), {}, M.topRows(3), {}};
   setup.residual = make_residual_generator(setup.design);
-  setup.mass_flow_kgps = nominal_mass_flow_kgps(s.thrusters, 0, s.chaser.isp_s);
+  setup.mass_flow_kgps = nominal_mass_flow_kgps(s.thrusters, watched_set(model::initial_active_set(s.thrusters)), s.chaser.isp_s);
   return setup;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "model/scenario.hpp"
+#include "flight/fdi/watched_set.hpp"
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight::fdi::testing {
@@ -24,10 +25,13 @@ inline model::Scenario msr_test_scenario() {
                                           Vec3(0.0, -0.8, 1.0), Vec3(0.0, 0.8, -1.0)};
   const std::array<Vec3, 4> direction = {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1),
                                          Vec3(-1, -1, 1)};
+  s.thrusters.count = 16;
+  s.thrusters.groups = {{"A", false}, {"B", true}};
   for (int branch = 0; branch < 2; ++branch)
     for (int i = 0; i < 4; ++i) {
-      auto& a = s.thrusters.thrusters[model::branch_first(branch) + i];
-      auto& b = s.thrusters.thrusters[model::branch_first(branch) + i + 4];
+      auto& a = s.thrusters.thrusters[static_cast<std::size_t>(8 * branch + i)];
+      auto& b = s.thrusters.thrusters[static_cast<std::size_t>(8 * branch + i + 4)];
+      a.group = b.group = branch;
       a.position_body_m = position_m[i];
       a.direction_body = direction[i].normalized();
       b.position_body_m = -position_m[i];
@@ -37,7 +41,8 @@ inline model::Scenario msr_test_scenario() {
 }
 
 inline WatchedConfig msr_test_configuration(const model::Scenario& s) {
-  return model::configuration_matrix(s.thrusters, 0, s.chaser.com_body_m);
+  return model::configuration_matrix(s.thrusters, model::initial_active_set(s.thrusters), s.chaser.com_body_m)
+      .leftCols<kWatchedThrusters>();
 }
 
 }  // namespace chaser::flight::fdi::testing
