@@ -81,17 +81,26 @@ def plot_attitude(t, summary, run_dir):
 
 
 def plot_thrusters(t, summary, run_dir):
-    fig, axes = plt.subplots(8, 1, figsize=(10, 9), sharex=True, constrained_layout=True)
+    # One panel per thruster T1..TN (N from the telemetry's ton_cmd_<i> columns), eight per column.
+    n = sum(1 for name in t.dtype.names if name.startswith("ton_cmd_"))
+    cols = (n + 7) // 8
+    rows = min(n, 8)
+    fig, axes = plt.subplots(rows, cols, figsize=(10 * max(1, cols / 1.5), 9), sharex=True, squeeze=False,
+                             constrained_layout=True)
     # Nominal on-times are a few per cent of the period: scale to the largest one seen.
-    top = max(0.1, max(max(t[f"ton_cmd_{i}"].max(), t[f"ton_real_{i}"].max()) for i in range(1, 9)))
-    for i, ax in enumerate(axes, start=1):
+    top = max(0.1, max(max(t[f"ton_cmd_{i}"].max(), t[f"ton_real_{i}"].max()) for i in range(1, n + 1)))
+    for i in range(1, n + 1):
+        ax = axes[(i - 1) % 8][(i - 1) // 8]
         ax.plot(t["t_s"], t[f"ton_real_{i}"], lw=0.6, color="tab:orange", label="realised")
         ax.plot(t["t_s"], t[f"ton_cmd_{i}"], lw=0.6, color="tab:blue", label="commanded")
         ax.set_ylim(-0.05 * top, 1.05 * top)
         ax.set_ylabel(f"T{i}", rotation=0, labelpad=12)
         fault_lines(ax, summary)
-    axes[0].legend(loc="upper left", fontsize=7, ncol=2)
-    axes[-1].set_xlabel("time [s]")
+    for j in range(n, rows * cols):
+        axes[j % 8][j // 8].set_visible(False)
+    axes[0][0].legend(loc="upper left", fontsize=7, ncol=2)
+    for c in range(cols):
+        axes[rows - 1][c].set_xlabel("time [s]")
     fig.suptitle(f"{summary['scenario']}: thruster on-times (fraction of the period)")
     fig.savefig(run_dir / "thrusters.png", dpi=110)
     plt.close(fig)

@@ -48,14 +48,26 @@ double first_onset_s(const model::Scenario& scenario) {
   return scenario.faults.empty() ? 0.0 : scenario.faults.front().onset_s;
 }
 
-// Every diagnosis in order (the FDI watches again after a recovery), absolute times.
+// One scheme within one watch, absolute times (a watch after a recovery has no single onset).
+nlohmann::json watch_scheme_json(const SchemeResult& r) {
+  const auto at = [](double t) { return t < 0 ? nlohmann::json(nullptr) : nlohmann::json(t); };
+  return nlohmann::json{{"enabled", r.enabled},
+                        {"alarm_s", at(r.alarm_s)},
+                        {"isolation_s", at(r.isolated_s)},
+                        {"isolated_thruster", r.isolated_thruster < 0 ? nlohmann::json(nullptr)
+                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))},
+                        {"diagnosis", diagnosis_json(r)}};
+}
+
+// Every watch of the FDI in order (it watches again after a recovery), absolute times: the first
+// from the start of the run, each later one from its re-arming after a recovery.
 nlohmann::json diagnoses_json(const FdirResult& f) {
   nlohmann::json list = nlohmann::json::array();
   for (const FdirResult& e : f.episodes)
     list.push_back(nlohmann::json{
-        {"position_scheme", scheme_json(e.position, 0.0)},
-        {"attitude_scheme", scheme_json(e.attitude, 0.0)},
-        {"deficit_scheme", scheme_json(e.deficit, 0.0)},
+        {"position_scheme", watch_scheme_json(e.position)},
+        {"attitude_scheme", watch_scheme_json(e.attitude)},
+        {"deficit_scheme", watch_scheme_json(e.deficit)},
         {"detection_s", e.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.detection_s)},
         {"isolation_s", e.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.isolation_s)},
         {"isolated_thruster",

@@ -1,0 +1,118 @@
+// One core for any thruster set: the MSR scenario flown with a set other than its two branches of
+// eight, through the same loader, validation, allocator and plant.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "io/scenario_loader.hpp"
+#include "model/thrusters.hpp"
+#include "sim/run.hpp"
+
+namespace chaser::sim {
+namespace {
+
+// MSR branch A (scenarios/msr_terminal.yaml, T1..T8).
+struct Nozzle {
+  Vec3 position_m, direction;
+};
+const Nozzle kBranchA[8] = {
+    {{1.0, 0.8, 0.8}, {0.36, 0.36, -1.0}},   {{-1.0, 0.8, -0.8}, {0.36, 1.0, 0.36}},
+    {{-1.0, 0.8, 0.8}, {-1.0, 0.36, -0.36}}, {{-1.0, -0.8, 0.8}, {0.36, -1.0, -0.36}},
+    {{-1.0, -0.8, -0.8}, {-0.36, -0.36, 1.0}}, {{1.0, -0.8, 0.8}, {-0.36, -1.0, -0.36}},
+    {{1.0, -0.8, -0.8}, {1.0, -0.36, 0.36}},  {{1.0, 0.8, -0.8}, {-0.36, 1.0, 0.36}}};
+
+// A flow-style YAML list of `count` thrusters: copy c = i / 8 of branch A, mounted at (1 - 0.05 c)
+// of the radius with its directions turned by 15 c deg about body z, so the copies differ. No
+// groups: every thruster flies from the start.
+std::string thruster_list(int count, double thrust_N = 22.0) {
+  std::string out = "thrusters.list=[";
+  for (int i = 0; i < count; ++i) {
+    const int copy = i / 8;
+    const Nozzle& n = kBranchA[i % 8];
+    const double a = copy * 15.0 * kPi / 180.0;
+    const Vec3 p = (1.0 - 0.05 * copy) * n.position_m;
+    const Vec3 d(std::cos(a) * n.direction.x() - std::sin(a) * n.direction.y(),
+                 std::sin(a) * n.direction.x() + std::cos(a) * n.direction.y(), n.direction.z());
+    out += fmt::format("{}{{name: T{}, position_body_m: [{}, {}, {}], direction_body: [{}, {}, {}], max_thrust_N: {}}}",
+                       i ? ", " : "", i + 1, p.x(), p.y(), p.z(), d.x(), d.y(), d.z(), thrust_N);
+  }
+  return out + "]";
+}
+
+// The overrides that fly a set without standby groups: no recovery, and the eight-lane FDI off.
+std::vector<std::string> one_set_overrides(int count) {
+  return {thruster_list(count),           "thrusters.standby_groups=[]",  "fdi.recovery=none",
+          "fdi.position.enabled=false",   "fdi.attitude.enabled=false",   "fdi.deficit.detection=false"};
+}
+
+// 24 thrusters in one set (COMRADE's count): the scenario validates, the width-32 allocator flies
+// the approach to capture inside the corridor, and the thrusters beyond the first eight fire.
+TEST(ThrusterSets, TwentyFourThrustersFlyToCapture) {
+  const io::LoadResult loaded = io::load_scenario_file("scenarios/msr_terminal.yaml", one_set_overrides(24));
+  ASSERT_TRUE(loaded.scenario.has_value()) << io::format_errors(loaded.errors);
+  const model::Scenario& s = *loaded.scenario;
+  EXPECT_EQ(s.thrusters.count, 24);
+  EXPECT_EQ(model::initial_active_set(s.thrusters), model::first_thrusters(24));
+  const RunResult r = run_scenario(s);
+  EXPECT_TRUE(r.figures.capture_achieved);
+  EXPECT_EQ(r.figures.corridor_violation_periods, 0);
+  EXPECT_FALSE(r.figures.diverged);
+  EXPECT_EQ(r.infeasible_allocations, 0);
+}
+
+// The same approach flown by MSR's branch A alone (the first eight) and by all 24: more thrusters
+// give the allocator cheaper combinations, so the 24-thruster run uses no more propellant (within
+// 1 %: the closed loops differ, so the demands do).
+TEST(ThrusterSets, MoreThrustersNeedNoMorePropellant) {
+  const io::LoadResult eight = io::load_scenario_file("scenarios/msr_terminal.yaml", one_set_overrides(8));
+  const io::LoadResult all = io::load_scenario_file("scenarios/msr_terminal.yaml", one_set_overrides(24));
+  ASSERT_TRUE(eight.scenario && all.scenario);
+  const RunResult a = run_scenario(*eight.scenario);
+  const RunResult b = run_scenario(*all.scenario);
+  EXPECT_TRUE(a.figures.capture_achieved && b.figures.capture_achieved);
+  EXPECT_LT(b.propellant_used_kg, 1.01 * a.propellant_used_kg) << a.propellant_used_kg << " kg with 8";
+}
+
+// Sets that cannot push and turn in every direction are refused before any run, at thrusters.list:
+// one thruster, and six (the fewest that could span R^6 only with a special layout; branch A's
+// first six cannot).
+TEST(ThrusterSets, SetsThatCannotSpanAreRefused) {
+  for (const int count : {1, 6}) {
+    std::vector<std::string> overrides = one_set_overrides(8);
+    overrides[0] = thruster_list(count);
+    const io::LoadResult r = io::load_scenario_file("scenarios/msr_terminal.yaml", overrides);
+    EXPECT_FALSE(r.scenario.has_value()) << count;
+    ASSERT_EQ(r.errors.size(), 1u) << io::format_errors(r.errors);
+    EXPECT_EQ(r.errors[0].key_path, "thrusters.list");
+    EXPECT_NE(r.errors[0].message.find("cannot produce force and torque in every direction"), std::string::npos)
+        << r.errors[0].message;
+  }
+}
+
+// 33 thrusters exceed the capacity: refused with the allowed range.
+TEST(ThrusterSets, MoreThanThirtyTwoAreRefused) {
+  std::vector<std::string> overrides = one_set_overrides(8);
+  overrides[0] = thruster_list(33);
+  const io::LoadResult r = io::load_scenario_file("scenarios/msr_terminal.yaml", overrides);
+  ASSERT_EQ(r.errors.size(), 1u) << io::format_errors(r.errors);
+  EXPECT_EQ(r.errors[0].key_path, "thrusters.list");
+  EXPECT_NE(r.errors[0].message.find("1..32"), std::string::npos) << r.errors[0].message;
+}
+
+// The eight-lane FDI refuses a set of 24 with a message that says what to change.
+TEST(ThrusterSets, EightLaneFdiRefusesTwentyFour) {
+  std::vector<std::string> overrides = one_set_overrides(24);
+  overrides.resize(3);  // FDI left on
+  const io::LoadResult r = io::load_scenario_file("scenarios/msr_terminal.yaml", overrides);
+  ASSERT_EQ(r.errors.size(), 1u) << io::format_errors(r.errors);
+  EXPECT_EQ(r.errors[0].key_path, "fdi");
+  EXPECT_NE(r.errors[0].message.find("watch exactly 8 active thrusters"), std::string::npos) << r.errors[0].message;
+}
+
+}  // namespace
+}  // namespace chaser::sim
