@@ -198,10 +198,11 @@ void BM_FdirPeriod(benchmark::State& state, Fdi fdi) {
     // What step_flight hands step_fdir (flight_software.cpp), rebuilt from its output.
     trace.emplace_back(f.last_meas,
                        flight::FdirInput{.t_s = t_s,
+                                         .period = f.last_meas.t / f.period_ns,
                                          .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                                          .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                                          .q_inertial_from_lvlh = q_inertial_from_lvlh(f.scenario.orbit.mean_motion_radps(), t_s),
-                                         .ton = out.ton_active.head<flight::fdi::kWatchedThrusters>(),  // fault-free: watched = active
+                                         .ton = flight::watched_on_times(f.flight_params.fdir, f.flight_state.fdir, out.command.ton),
                                          .commanded_wrench = out.commanded_wrench});
     plant::step_plant(f.plant.params, f.plant.state, out.command, f.t_ns);
     f.t_ns += f.period_ns;

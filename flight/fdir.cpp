@@ -240,6 +240,14 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
   return params.watched[static_cast<std::size_t>(state.watched)].set;
 }
 
+fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& state, const model::ThrusterOnTimes& ton) {
+  fdi::WatchedTon lanes = fdi::WatchedTon::Zero();
+  if (params.watched.empty() || state.watched < 0) return lanes;
+  const fdi::WatchedSet& w = watched_set(params, state);
+  for (int lane = 0; lane < fdi::kWatchedThrusters; ++lane) lanes[lane] = ton[static_cast<std::size_t>(w.index[static_cast<std::size_t>(lane)])];
+  return lanes;
+}
+
 FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
                      const FdirInput& in) {
   FdirOutput out;

@@ -27,9 +27,11 @@
 namespace chaser::flight {
 
 // What depends on which thrusters the FDI watches: isolation signatures, the deficit bank's
-// columns, the mass flows of event resolution. The residual generators themselves do not (their
-// delay decoupling lives in input space, eqs. 19-23), so every set shares the design made for the
-// starting set (make_fdir_params).
+// columns, the mass flows of event resolution. The residual generators' gains are designed once,
+// for the starting set (make_fdir_params), and kept after a recovery: their delay decoupling
+// (eqs. 19-23) lives in input space, the same for every set; only the choice of the residual
+// weighting (the weakest DC fault gain) looks at the starting set's fault directions. On MSR the
+// choice is the same for branch B (same forces, torques scaled by 0.95).
 struct FdiWatchedParams {
   fdi::WatchedSet set;
   fdi::FdiSchemeParams position;
@@ -141,7 +143,10 @@ FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
 void rearm_fdir(const FdirParams& params, FdirState& state, model::ThrusterMask active, double t_s,
                 int recovered_thruster);
 
-// The lanes the FDI watches now (kWatchedThrusters on-times out of the active set's compact ones).
+// The lanes the FDI watches now.
 const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& state);
+
+// The watched lanes' on-times out of a command to every thruster (zero without an FDI).
+fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& state, const model::ThrusterOnTimes& ton);
 
 }  // namespace chaser::flight

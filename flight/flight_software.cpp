@@ -19,23 +19,6 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
   };
 }
 
-namespace {
-
-// The FDI's lanes out of the active set's compact on-times.
-fdi::WatchedTon watched_on_times(const FdirParams& fdir, const FdirState& state, const ThrusterManagementState& tmf,
-                                 const AllocationTon& ton_active) {
-  fdi::WatchedTon ton = fdi::WatchedTon::Zero();
-  if (fdir.watched.empty() || state.watched < 0) return ton;
-  if (watched_set(fdir, state).mask == tmf.active) return ton_active.head<fdi::kWatchedThrusters>();
-  const fdi::WatchedSet& w = watched_set(fdir, state);
-  for (int k = 0; k < tmf.active_list.count; ++k)
-    for (int lane = 0; lane < fdi::kWatchedThrusters; ++lane)
-      if (w.index[static_cast<std::size_t>(lane)] == tmf.active_list.index[static_cast<std::size_t>(k)]) ton[lane] = ton_active[k];
-  return ton;
-}
-
-}  // namespace
-
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas) {
   FlightOutput out;
   if (!state.initialised) {
@@ -65,7 +48,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
-                          .ton = watched_on_times(params.fdir, state.fdir, state.management, managed.ton_active),
+                          .ton = watched_on_times(params.fdir, state.fdir, managed.command.ton),
                           .commanded_wrench = managed.commanded_wrench};
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
   if (out.fdir.confirmed_now != model::kNoThruster) {
@@ -82,7 +65,6 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
 
   out.command = managed.command;
   out.command.latch_closed_groups = state.thrusters.closed_groups;
-  out.ton_active = managed.ton_active;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;
   state.force_cmd_lvlh_N_prev = q_body_from_lvlh.conjugate() * managed.commanded_wrench.head<3>();

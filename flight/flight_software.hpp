@@ -54,7 +54,6 @@ struct FlightOutput {
   Vec3 torque_demand_body_Nm = Vec3::Zero(); // [N m] attitude controller output
   Vec6 released_wrench = Vec6::Zero();       // [N; N m] TMU output, body axes
   Vec6 commanded_wrench = Vec6::Zero();      // [N; N m] M ton, body axes
-  AllocationTon ton_active = AllocationTon::Zero();  // on-times of the active set, compact order
   bool allocation_feasible = true;
   FdirOutput fdir;                           // both FDI schemes, event resolution
   bool recovered_now = false;                // a recovery changed the active set this period

@@ -328,19 +328,23 @@ bool attains(const Config& m, const Vec6& b, const Ton& ton) {
 template <int N>
 bool attainable(const Lp<N>& lp, const TonN<N>& ton) { return attains(lp.a.template leftCols<N>(), lp.b, ton); }
 
-bool valid_input(const AllocationParams& params, const Vec6& demand) {
-  return params.thrusters >= 1 && params.thrusters <= model::kMaxThrusters && demand.allFinite() &&
-         params.config.allFinite() && params.error_weights.allFinite() && (params.error_weights.array() > 0.0).all();
+// `config`: the set's columns at the solver's width (config_of), the only ones the solver reads.
+template <int N>
+bool valid_input(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand) {
+  return params.thrusters >= 1 && params.thrusters <= N && demand.allFinite() && config.allFinite() &&
+         params.error_weights.allFinite() && (params.error_weights.array() > 0.0).all();
 }
 
 // The answers that need no LP: invalid input (ton = 0, converged = false) and a zero demand (ton = 0
 // is the unique zero-cost solution). True when `result` is final.
-bool answered_without_lp(const AllocationParams& params, const Vec6& demand, AllocationResult& result) {
-  result.ton.setZero();
+template <int N>
+bool answered_without_lp(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand,
+                         AllocationResult& result) {
+  // `result` is fresh: its on-times are already zero.
   result.propellant = 0.0;
   result.residual = -demand;
   result.weighted_error = params.error_weights.cwiseProduct(demand.cwiseAbs()).sum();
-  if (!valid_input(params, demand)) return true;
+  if (!valid_input<N>(params, config, demand)) return true;
   if ((demand.array() == 0.0).all()) {
     result.feasible = result.converged = true;
     return true;
@@ -353,11 +357,6 @@ struct Scaling {
   double weight = 1.0;  // power of two, w_j / weight <= 1
 };
 
-Scaling scaling_of(const AllocationParams& params) {
-  return {power_of_two_above(params.config.leftCols(params.thrusters).cwiseAbs().maxCoeff()),
-          power_of_two_above(params.error_weights.maxCoeff())};
-}
-
 // The set's configuration at the solver's width: its own columns, then zero padding.
 template <int N>
 ConfigN<N> config_of(const AllocationParams& params) {
@@ -366,6 +365,12 @@ ConfigN<N> config_of(const AllocationParams& params) {
   } else {
     return params.config.template leftCols<N>();
   }
+}
+
+// The padding columns are zero, so the largest entry of the solver's columns is the set's.
+template <int N>
+Scaling scaling_of(const AllocationParams& params, const ConfigN<N>& config) {
+  return {power_of_two_above(config.cwiseAbs().maxCoeff()), power_of_two_above(params.error_weights.maxCoeff())};
 }
 
 // The two-phase solve; `lp` keeps the final basis.
@@ -425,30 +430,32 @@ void remember(const Lp<N>& lp, AllocationWarmStart& warm) {
 template <int N>
 AllocationResult allocate_cold(const AllocationParams& params, const Vec6& demand_wrench) {
   AllocationResult result;
-  if (answered_without_lp(params, demand_wrench, result)) return result;
-  Lp<N> lp;
   const ConfigN<N> config = config_of<N>(params);
-  solve<N>(params, config, demand_wrench, scaling_of(params), lp, result);
+  if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
+  Lp<N> lp;
+  solve<N>(params, config, demand_wrench, scaling_of<N>(params, config), lp, result);
   return result;
 }
 
-bool same_problem(const AllocationParams& params, const AllocationWarmStart& warm) {
-  const int n = params.thrusters;
-  return warm.thrusters == n && warm.config.leftCols(n) == params.config.leftCols(n);
+// The slots belong to the same set: the solver's columns compared at its width (the padding is
+// zero in both).
+template <int N>
+bool same_problem(const AllocationParams& params, const ConfigN<N>& config, const AllocationWarmStart& warm) {
+  return warm.thrusters == params.thrusters && warm.config.template leftCols<N>() == config;
 }
 
 template <int N>
 AllocationResult allocate_warm(const AllocationParams& params, const Vec6& demand_wrench, AllocationWarmStart& warm) {
   AllocationResult result;
-  if (answered_without_lp(params, demand_wrench, result)) return result;
-  if (!same_problem(params, warm)) {  // another problem: the kept bases do not belong to it
+  const ConfigN<N> config = config_of<N>(params);
+  if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
+  if (!same_problem<N>(params, config, warm)) {  // another problem: the kept bases do not belong to it
     warm.slots = {};
     warm.last_hit = warm.next_free = 0;
     warm.config = params.config;
     warm.thrusters = params.thrusters;
   }
-  const Scaling scale = scaling_of(params);
-  const ConfigN<N> config = config_of<N>(params);
+  const Scaling scale = scaling_of<N>(params, config);
   const ConfigN<N> m_scaled = config / scale.wrench;
   const Vec6 b = demand_wrench / scale.wrench;
   for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {

@@ -24,18 +24,18 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
                                           const Vec6& demand_wrench) {
   ThrusterManagementOutput out;
-  const AllocationResult result = allocate_thrusters(state.allocation, demand_wrench, state.warm);
+  AllocationResult result = allocate_thrusters(state.allocation, demand_wrench, state.warm);
   const int n = state.active_list.count;
-  out.ton_active = result.ton;
+  AllocationTon& ton = result.ton;  // compact order: the k-th active thruster
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.
   for (int k = 0; k < n; ++k)
-    if (out.ton_active[k] < params.min_on_fraction) out.ton_active[k] = 0.0;
+    if (ton[k] < params.min_on_fraction) ton[k] = 0.0;
   out.feasible = result.feasible;
   out.commanded_wrench = n == 8  // fixed-size product for eight (MSR's branch): same sums, no dynamic loop
-                             ? Vec6(state.allocation.config.leftCols<8>() * out.ton_active.head<8>())
-                             : Vec6(state.allocation.config.leftCols(n) * out.ton_active.head(n));
+                             ? Vec6(state.allocation.config.leftCols<8>() * ton.head<8>())
+                             : Vec6(state.allocation.config.leftCols(n) * ton.head(n));
   for (int k = 0; k < n; ++k)
-    out.command.ton[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = out.ton_active[k];
+    out.command.ton[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = ton[k];
   return out;
 }
 

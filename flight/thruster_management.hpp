@@ -32,7 +32,6 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
 
 struct ThrusterManagementOutput {
   model::ThrusterCommand command;  // every thruster by index; inactive ones zero
-  AllocationTon ton_active = AllocationTon::Zero();  // on-times of the active set, compact order
   Vec6 commanded_wrench = Vec6::Zero();  // [N; N m] M ton: what the command realises if healthy
   bool feasible = true;            // the allocator reached the demand exactly
 };

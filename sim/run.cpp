@@ -113,9 +113,11 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   flight::FlightState flight_state;
 
   std::unique_ptr<TelemetryWriter> telemetry;
+  std::vector<TelemetryChannel> channels;
   if (!options.telemetry_path.empty()) {
     telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path);
-    if (telemetry->ok()) telemetry->header(telemetry_channels(scenario.thrusters.count));
+    channels = telemetry_channels(scenario.thrusters.count);
+    if (telemetry->ok()) telemetry->header(channel_names(channels));
   }
 
   RunResult result;
@@ -145,9 +147,16 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
       second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
     if (telemetry && telemetry->ok())
-      record_period(*telemetry, t_s, truth, plant.state, out, flight_state, scenario.thrusters.count, watched,
-                    attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
-                    plant::target_attitude(scenario.target, t_s));
+      record_period(*telemetry, channels,
+                    PeriodRecord{.t_s = t_s,
+                                 .truth = &truth,
+                                 .plant = &plant.state,
+                                 .flight = &out,
+                                 .flight_state = &flight_state,
+                                 .watched = &watched,
+                                 .attitude_error_body_rad =
+                                     attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
+                                 .q_inertial_from_target = plant::target_attitude(scenario.target, t_s)});
   }
 
   const double t_end_s = to_seconds(k * period_ns);

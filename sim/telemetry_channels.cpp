@@ -6,94 +6,102 @@ namespace chaser::sim {
 
 namespace {
 
-void add_vector_names(std::vector<std::string>& names, const char* base, const char* unit) {
-  for (const char* axis : {"x", "y", "z"}) names.push_back(fmt::format("{}_{}_{}", base, axis, unit));
+using Value = double (*)(const PeriodRecord&, int);
+using Channels = std::vector<TelemetryChannel>;
+
+// "base_unit", or "base" for a dimensionless quantity.
+std::string with_unit(const std::string& base, const char* unit) {
+  return *unit ? fmt::format("{}_{}", base, unit) : base;
 }
 
-void add_quat_names(std::vector<std::string>& names, const char* base) {
-  for (const char* c : {"w", "x", "y", "z"}) names.push_back(fmt::format("{}_{}", base, c));
+void scalar(Channels& t, const char* base, const char* unit, Value v) { t.push_back({with_unit(base, unit), unit, v, 0}); }
+
+void vec3(Channels& t, const char* base, const char* unit, Value v) {
+  for (int i = 0; i < 3; ++i) t.push_back({with_unit(fmt::format("{}_{}", base, "xyz"[i]), unit), unit, v, i});
 }
 
-void add(TelemetryWriter& w, const Vec3& v) {
-  for (int i = 0; i < 3; ++i) w.add(v[i]);
+void quat(Channels& t, const char* base, Value v) {
+  for (int i = 0; i < 4; ++i) t.push_back({fmt::format("{}_{}", base, "wxyz"[i]), "", v, i});
 }
+
+// Quaternion component i of (w, x, y, z).
+double component(const Quat& q, int i) { return i == 0 ? q.w() : q.vec()[i - 1]; }
 
 // A lane of the watched set as a thruster number 1..N in telemetry, 0 for none.
-int thruster_number(const flight::fdi::WatchedSet& watched, int lane) {
-  return lane >= 0 ? watched.index[static_cast<std::size_t>(lane)] + 1 : 0;
+double thruster_number(const PeriodRecord& r, int lane) {
+  return lane >= 0 ? r.watched->index[static_cast<std::size_t>(lane)] + 1 : 0;
 }
 
-void add(TelemetryWriter& w, const flight::fdi::FdiSchemeOutput& s, const flight::fdi::WatchedSet& watched) {
-  add(w, s.residual);
-  w.add(s.glr.value());
-  w.add(s.alarm);
-  w.add(thruster_number(watched, s.candidate));
-  w.add(thruster_number(watched, s.confirmed));
+// The position, attitude and deficit-detector schemes' outputs, by a scheme index.
+const flight::fdi::FdiSchemeOutput& scheme(const PeriodRecord& r, int s) {
+  return s == 0 ? r.flight->fdir.position : (s == 1 ? r.flight->fdir.attitude : r.flight->fdir.detector);
 }
 
-void add(TelemetryWriter& w, const Quat& q) {
-  w.add(q.w()), w.add(q.x()), w.add(q.y()), w.add(q.z());
+// The residual channels of a scheme (three components) pack the scheme in the index: 3 s + i.
+void fdi_scheme(Channels& t, const char* name, int s) {
+  if (s < 2)
+    for (int i = 0; i < 3; ++i)
+      t.push_back({fmt::format("residual_{}_{}", name, i + 1), "",
+                   [](const PeriodRecord& r, int k) { return scheme(r, k / 3).residual[k % 3]; }, 3 * s + i});
+  t.push_back({fmt::format("glr_{}", name), "", [](const PeriodRecord& r, int k) { return scheme(r, k).glr.value(); }, s});
+  t.push_back({fmt::format("alarm_{}", name), "",
+               [](const PeriodRecord& r, int k) { return scheme(r, k).alarm ? 1.0 : 0.0; }, s});
+  t.push_back({fmt::format("candidate_{}", name), "",
+               [](const PeriodRecord& r, int k) { return thruster_number(r, scheme(r, k).candidate); }, s});
+  t.push_back({fmt::format("confirmed_{}", name), "",
+               [](const PeriodRecord& r, int k) { return thruster_number(r, scheme(r, k).confirmed); }, s});
 }
 
 }  // namespace
 
-std::vector<std::string> telemetry_channels(int thrusters) {
-  std::vector<std::string> n{"t_s"};
-  add_vector_names(n, "r_lvlh", "m");
-  add_vector_names(n, "v_lvlh", "mps");
-  add_quat_names(n, "q_inertial_from_body");
-  add_vector_names(n, "omega_body", "radps");
-  add_quat_names(n, "q_inertial_from_target");
-  add_vector_names(n, "r_est_lvlh", "m");
-  add_vector_names(n, "v_est_lvlh", "mps");
-  add_quat_names(n, "q_est_inertial_from_body");
-  add_vector_names(n, "omega_est_body", "radps");
-  add_vector_names(n, "r_ref_lvlh", "m");
-  add_vector_names(n, "att_err_body", "rad");
-  add_vector_names(n, "force_demand_lvlh", "N");
-  add_vector_names(n, "torque_demand_body", "Nm");
-  add_vector_names(n, "force_cmd_body", "N");
-  add_vector_names(n, "torque_cmd_body", "Nm");
-  for (int i = 1; i <= thrusters; ++i) n.push_back(fmt::format("ton_cmd_{}", i));
-  for (int i = 1; i <= thrusters; ++i) n.push_back(fmt::format("ton_real_{}", i));
-  for (const char* scheme : {"position", "attitude"}) {
-    for (int i = 1; i <= 3; ++i) n.push_back(fmt::format("residual_{}_{}", scheme, i));
-    n.push_back(fmt::format("glr_{}", scheme));
-    n.push_back(fmt::format("alarm_{}", scheme));
-    n.push_back(fmt::format("candidate_{}", scheme));
-    n.push_back(fmt::format("confirmed_{}", scheme));
-  }
-  for (const char* name : {"glr_deficit", "alarm_deficit", "candidate_deficit", "confirmed_deficit"}) n.push_back(name);
-  n.push_back("over_consumption");
-  n.push_back("active_thrusters");
-  n.push_back("delay_s");
-  n.push_back("mass_kg");
-  n.push_back("propellant_used_kg");
-  return n;
+std::vector<TelemetryChannel> telemetry_channels(int thrusters) {
+  Channels t;
+  scalar(t, "t", "s", [](const PeriodRecord& r, int) { return r.t_s; });
+  vec3(t, "r_lvlh", "m", [](const PeriodRecord& r, int i) { return r.truth->r_lvlh_m[i]; });
+  vec3(t, "v_lvlh", "mps", [](const PeriodRecord& r, int i) { return r.truth->v_lvlh_mps[i]; });
+  quat(t, "q_inertial_from_body", [](const PeriodRecord& r, int i) { return component(r.truth->q_inertial_from_body, i); });
+  vec3(t, "omega_body", "radps", [](const PeriodRecord& r, int i) { return r.truth->omega_body_radps[i]; });
+  quat(t, "q_inertial_from_target", [](const PeriodRecord& r, int i) { return component(r.q_inertial_from_target, i); });
+  vec3(t, "r_est_lvlh", "m", [](const PeriodRecord& r, int i) { return r.flight->estimate.r_lvlh_m[i]; });
+  vec3(t, "v_est_lvlh", "mps", [](const PeriodRecord& r, int i) { return r.flight->estimate.v_lvlh_mps[i]; });
+  quat(t, "q_est_inertial_from_body",
+       [](const PeriodRecord& r, int i) { return component(r.flight->estimate.q_inertial_from_body, i); });
+  vec3(t, "omega_est_body", "radps", [](const PeriodRecord& r, int i) { return r.flight->estimate.omega_body_radps[i]; });
+  vec3(t, "r_ref_lvlh", "m", [](const PeriodRecord& r, int i) { return r.flight->reference.r_lvlh_m[i]; });
+  vec3(t, "att_err_body", "rad", [](const PeriodRecord& r, int i) { return r.attitude_error_body_rad[i]; });
+  vec3(t, "force_demand_lvlh", "N", [](const PeriodRecord& r, int i) { return r.flight->force_demand_lvlh_N[i]; });
+  vec3(t, "torque_demand_body", "Nm", [](const PeriodRecord& r, int i) { return r.flight->torque_demand_body_Nm[i]; });
+  vec3(t, "force_cmd_body", "N", [](const PeriodRecord& r, int i) { return r.flight->commanded_wrench[i]; });
+  vec3(t, "torque_cmd_body", "Nm", [](const PeriodRecord& r, int i) { return r.flight->commanded_wrench[3 + i]; });
+  for (int i = 0; i < thrusters; ++i)
+    t.push_back({fmt::format("ton_cmd_{}", i + 1), "",
+                 [](const PeriodRecord& r, int k) { return r.flight->command.ton[static_cast<std::size_t>(k)]; }, i});
+  for (int i = 0; i < thrusters; ++i)
+    t.push_back({fmt::format("ton_real_{}", i + 1), "",
+                 [](const PeriodRecord& r, int k) { return r.plant->last_profile.ton_realised[static_cast<std::size_t>(k)]; },
+                 i});
+  fdi_scheme(t, "position", 0);
+  fdi_scheme(t, "attitude", 1);
+  fdi_scheme(t, "deficit", 2);
+  scalar(t, "over_consumption", "", [](const PeriodRecord& r, int) { return r.flight->fdir.over_consumption ? 1.0 : 0.0; });
+  // Exact: a 32-bit mask has at most 10 digits, the writer prints 10.
+  scalar(t, "active_thrusters", "",
+         [](const PeriodRecord& r, int) { return static_cast<double>(r.flight_state->thrusters.active); });
+  scalar(t, "delay", "s", [](const PeriodRecord& r, int) { return to_seconds(r.plant->last_delay_ns); });
+  scalar(t, "mass", "kg", [](const PeriodRecord& r, int) { return r.truth->mass_kg; });
+  scalar(t, "propellant_used", "kg", [](const PeriodRecord& r, int) { return r.plant->propellant_used_kg; });
+  return t;
 }
 
-void record_period(TelemetryWriter& w, double t_s, const plant::RigidState& x, const plant::PlantState& plant,
-                   const flight::FlightOutput& f, const flight::FlightState& flight_state, int thrusters,
-                   const flight::fdi::WatchedSet& watched, const Vec3& attitude_error_body_rad,
-                   const Quat& q_inertial_from_target) {
-  w.add(t_s);
-  add(w, x.r_lvlh_m), add(w, x.v_lvlh_mps), add(w, x.q_inertial_from_body), add(w, x.omega_body_radps);
-  add(w, q_inertial_from_target);
-  add(w, f.estimate.r_lvlh_m), add(w, f.estimate.v_lvlh_mps), add(w, f.estimate.q_inertial_from_body);
-  add(w, f.estimate.omega_body_radps);
-  add(w, f.reference.r_lvlh_m), add(w, attitude_error_body_rad);
-  add(w, f.force_demand_lvlh_N), add(w, f.torque_demand_body_Nm);
-  add(w, Vec3(f.commanded_wrench.head<3>())), add(w, Vec3(f.commanded_wrench.tail<3>()));
-  for (int i = 0; i < thrusters; ++i) w.add(f.command.ton[static_cast<std::size_t>(i)]);
-  for (int i = 0; i < thrusters; ++i) w.add(plant.last_profile.ton_realised[static_cast<std::size_t>(i)]);
-  add(w, f.fdir.position, watched), add(w, f.fdir.attitude, watched);
-  w.add(f.fdir.detector.glr.value()), w.add(f.fdir.detector.alarm);
-  w.add(thruster_number(watched, f.fdir.detector.candidate)), w.add(thruster_number(watched, f.fdir.detector.confirmed));
-  w.add(f.fdir.over_consumption);
-  w.add(static_cast<double>(flight_state.thrusters.active));  // exact: a 32-bit mask has at most 10 digits
-  w.add(to_seconds(plant.last_delay_ns));
-  w.add(x.mass_kg);
-  w.add(plant.propellant_used_kg);
+std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels) {
+  std::vector<std::string> names;
+  names.reserve(channels.size());
+  for (const TelemetryChannel& c : channels) names.push_back(c.name);
+  return names;
+}
+
+void record_period(TelemetryWriter& w, const std::vector<TelemetryChannel>& channels, const PeriodRecord& r) {
+  for (const TelemetryChannel& c : channels) w.add(c.value(r, c.index));
   w.end_row();
 }
 

@@ -1,25 +1,46 @@
 #pragma once
-// The channels of telemetry.csv and how one row is filled from a period's truth and flight output.
+// The channels of telemetry.csv as one table: each channel's name, unit and how its value is read
+// from a period's record, so the header and every row come from the same list and cannot drift
+// apart. The table is built once per run for the scenario's thruster count.
 #include <string>
 #include <vector>
 
+#include "core/types.hpp"
 #include "flight/flight_software.hpp"
 #include "plant/plant.hpp"
 #include "sim/telemetry.hpp"
 
 namespace chaser::sim {
 
-// The channels for a set of `thrusters` thrusters (ton_cmd_i, ton_real_i for T1..TN).
-std::vector<std::string> telemetry_channels(int thrusters);
+// What one row is made from: the truth at the period start, the flight output computed from the
+// measurements at its start, what the plant realised over it (profile, delay, propellant at the
+// period end), and the FDI's watched set of this period (before a recovery in it changes it).
+struct PeriodRecord {
+  double t_s = 0;                                 // [s] period start
+  const plant::RigidState* truth = nullptr;       // at the period start
+  const plant::PlantState* plant = nullptr;       // after the period
+  const flight::FlightOutput* flight = nullptr;
+  const flight::FlightState* flight_state = nullptr;
+  const flight::fdi::WatchedSet* watched = nullptr;
+  Vec3 attitude_error_body_rad = Vec3::Zero();    // [rad] truth against the reference
+  Quat q_inertial_from_target = Quat::Identity();
+};
 
-// One row for period k: the truth at its start (truth_at_start), the flight output computed from
-// the measurements at its start, and what the plant realised over it (plant_after: profile, delay,
-// propellant at the period end). Thruster columns by thruster number; FDI thrusters as numbers
-// 1..N (0: none) through the watched set the FDI had this period; active_thrusters is the active
-// set's mask (bit i: T(i+1)).
-void record_period(TelemetryWriter& writer, double t_s, const plant::RigidState& truth_at_start,
-                   const plant::PlantState& plant_after, const flight::FlightOutput& flight,
-                   const flight::FlightState& flight_state, int thrusters, const flight::fdi::WatchedSet& watched,
-                   const Vec3& attitude_error_body_rad, const Quat& q_inertial_from_target);
+struct TelemetryChannel {
+  std::string name;  // the CSV column: quantity, then axis or thruster number, then unit ("r_lvlh_x_m")
+  std::string unit;  // SI unit as the name's suffix spells it ("m", "mps", "radps"); "" if dimensionless
+  double (*value)(const PeriodRecord&, int index) = nullptr;
+  int index = 0;     // vector component, or thruster index 0..N-1, passed to value
+};
+
+// Every channel for a set of `thrusters` thrusters, in column order. Thruster channels are numbered
+// T1..TN (ton_cmd_1 .. ton_cmd_N); the FDI's candidate and confirmed thrusters are numbers 1..N,
+// 0 for none; active_thrusters is the active set's mask (bit i: T(i+1)).
+std::vector<TelemetryChannel> telemetry_channels(int thrusters);
+
+std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);
+
+// One row: every channel's value, in table order.
+void record_period(TelemetryWriter& writer, const std::vector<TelemetryChannel>& channels, const PeriodRecord& record);
 
 }  // namespace chaser::sim

@@ -2,53 +2,20 @@
 // eight, through the same loader, validation, allocator and plant.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "core/constants.hpp"
 #include "io/scenario_loader.hpp"
 #include "model/thrusters.hpp"
 #include "sim/run.hpp"
+#include "tests/sim/thruster_layouts.hpp"
 
 namespace chaser::sim {
 namespace {
 
-// MSR branch A (scenarios/msr_terminal.yaml, T1..T8).
-struct Nozzle {
-  Vec3 position_m, direction;
-};
-const Nozzle kBranchA[8] = {
-    {{1.0, 0.8, 0.8}, {0.36, 0.36, -1.0}},   {{-1.0, 0.8, -0.8}, {0.36, 1.0, 0.36}},
-    {{-1.0, 0.8, 0.8}, {-1.0, 0.36, -0.36}}, {{-1.0, -0.8, 0.8}, {0.36, -1.0, -0.36}},
-    {{-1.0, -0.8, -0.8}, {-0.36, -0.36, 1.0}}, {{1.0, -0.8, 0.8}, {-0.36, -1.0, -0.36}},
-    {{1.0, -0.8, -0.8}, {1.0, -0.36, 0.36}},  {{1.0, 0.8, -0.8}, {-0.36, 1.0, 0.36}}};
+using testing::one_set_overrides;
+using testing::thruster_list;
 
-// A flow-style YAML list of `count` thrusters: copy c = i / 8 of branch A, mounted at (1 - 0.05 c)
-// of the radius with its directions turned by 15 c deg about body z, so the copies differ. No
-// groups: every thruster flies from the start.
-std::string thruster_list(int count, double thrust_N = 22.0) {
-  std::string out = "thrusters.list=[";
-  for (int i = 0; i < count; ++i) {
-    const int copy = i / 8;
-    const Nozzle& n = kBranchA[i % 8];
-    const double a = copy * 15.0 * kPi / 180.0;
-    const Vec3 p = (1.0 - 0.05 * copy) * n.position_m;
-    const Vec3 d(std::cos(a) * n.direction.x() - std::sin(a) * n.direction.y(),
-                 std::sin(a) * n.direction.x() + std::cos(a) * n.direction.y(), n.direction.z());
-    out += fmt::format("{}{{name: T{}, position_body_m: [{}, {}, {}], direction_body: [{}, {}, {}], max_thrust_N: {}}}",
-                       i ? ", " : "", i + 1, p.x(), p.y(), p.z(), d.x(), d.y(), d.z(), thrust_N);
-  }
-  return out + "]";
-}
-
-// The overrides that fly a set without standby groups: no recovery, and the eight-lane FDI off.
-std::vector<std::string> one_set_overrides(int count) {
-  return {thruster_list(count),           "thrusters.standby_groups=[]",  "fdi.recovery=none",
-          "fdi.position.enabled=false",   "fdi.attitude.enabled=false",   "fdi.deficit.detection=false"};
-}
 
 // 24 thrusters in one set (COMRADE's count): the scenario validates, the width-32 allocator flies
 // the approach to capture inside the corridor, and the thrusters beyond the first eight fire.
