@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "core/hill_frames.hpp"
 #include "invsim/desired_trajectory.hpp"
 #include "invsim/inverse_step.hpp"
 #include "invsim/phase_plane.hpp"
@@ -35,10 +36,13 @@ int dir_index(int direction) { return direction > 0 ? 0 : 1; }
 
 RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
   RunContext c{};
-  c.rvd = make_rvd_constants(p.mu_m3ps2, p.radius_m(), p.mass_kg, p.inertia_kgm2);
+  c.steps = std::lround(p.duration_s / p.step_s);
+  c.sub_steps = std::max(1L, std::lround(p.step_s / p.attitude.period_s));
+  const double period_s = p.step_s / static_cast<double>(c.sub_steps);  // the longest piece
+  c.rvd = make_rvd_constants(p.mu_m3ps2, p.radius_m(), p.mass_kg, p.inertia_kgm2, period_s);
   Vec6 weights;
   for (int i = 0; i < 6; ++i) weights(i) = p.inverse.state_weights[i];
-  c.inverse = make_inverse_model(c.rvd.mean_motion_radps, p.step_s, p.inverse.horizon_steps, weights);
+  c.inverse = make_inverse_model(c.rvd.dynamics.mean_motion_radps, p.step_s, p.inverse.horizon_steps, weights);
   for (int axis = 0; axis < 3; ++axis) {
     for (int d : {1, -1}) {
       c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
@@ -48,8 +52,6 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
     const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
     c.a0_radps2(axis) = nominal.torque_body_Nm(axis) / p.inertia_kgm2(axis, axis);
   }
-  c.steps = std::lround(p.duration_s / p.step_s);
-  c.sub_steps = std::max(1L, std::lround(p.step_s / p.attitude.period_s));
   return c;
 }
 
@@ -155,8 +157,8 @@ RvdState initial_state(const RunContext& c, const model::InvSimParams& p) {
   s.r_hill_m = p.r0_hill_m;
   s.v_hill_mps = p.v0_hill_mps;
   s.q_hill_from_body = Quat(matrix_from_euler321(p.euler0_rad));
-  s.omega_body_radps = p.omega0_rel_body_radps +
-      s.q_hill_from_body.toRotationMatrix().transpose() * Vec3(0.0, -c.rvd.mean_motion_radps, 0.0);
+  s.omega_body_radps = p.omega0_rel_body_radps + s.q_hill_from_body.toRotationMatrix().transpose() *
+                                                   omega_hill_in_hill(c.rvd.dynamics.mean_motion_radps);
   return s;
 }
 

@@ -2,74 +2,54 @@
 
 #include <cmath>
 
+#include "core/hill_frames.hpp"
+#include "core/rotation.hpp"
+#include "plant/relative_orbit.hpp"
+
 namespace chaser::invsim {
-namespace {
 
-// The integrated state as one vector: r, v, q (w x y z), omega.
-using Vec13 = Eigen::Matrix<double, 13, 1>;
-
-Vec13 pack(const RvdState& s) {
-  Vec13 x;
-  x << s.r_hill_m, s.v_hill_mps, s.q_hill_from_body.w(), s.q_hill_from_body.vec(), s.omega_body_radps;
-  return x;
-}
-
-RvdState unpack(const Vec13& x) {
-  RvdState s;
-  s.r_hill_m = x.segment<3>(0);
-  s.v_hill_mps = x.segment<3>(3);
-  s.q_hill_from_body = Quat(x(6), x(7), x(8), x(9)).normalized();
-  s.omega_body_radps = x.segment<3>(10);
-  return s;
-}
-
-Vec13 derivative(const RvdConstants& c, const Vec13& x, const Vec3& force, const Vec3& torque) {
-  const Quat q(x(6), x(7), x(8), x(9));  // renormalised only at the end of the piece
-  const Mat3 r_hill_from_body = q.normalized().toRotationMatrix();
-  const Vec3 omega = x.segment<3>(10);
-  const Vec3 omega_rel =
-      omega - r_hill_from_body.transpose() * Vec3(0.0, -c.mean_motion_radps, 0.0);
-  const Quat q_dot = q * Quat(0.0, omega_rel.x(), omega_rel.y(), omega_rel.z());
-  Vec13 d;
-  d.segment<3>(0) = x.segment<3>(3);
-  d.segment<3>(3) = relative_gravity_accel(c, x.segment<3>(0), x.segment<3>(3)) +
-                    r_hill_from_body * force / c.mass_kg;
-  d(6) = 0.5 * q_dot.w();
-  d.segment<3>(7) = 0.5 * q_dot.vec();
-  d.segment<3>(10) = c.inertia_inv * (torque - omega.cross(c.inertia_kgm2 * omega));
-  return d;
-}
-
-}  // namespace
-
-RvdConstants make_rvd_constants(double mu, double radius, double mass, const Mat3& inertia) {
-  return {mu, radius, std::sqrt(mu / (radius * radius * radius)), mass, inertia, inertia.inverse()};
+RvdConstants make_rvd_constants(double mu, double radius, double mass, const Mat3& inertia,
+                                double max_substep_s) {
+  plant::DynamicsParams d;
+  d.mu_m3ps2 = mu;
+  d.orbit_radius_m = radius;
+  d.mean_motion_radps = std::sqrt(mu / (radius * radius * radius));
+  d.inertia_kgm2 = inertia;
+  d.inertia_inv = inertia.inverse();
+  d.gravity_gradient = false;
+  d.max_substep_s = max_substep_s;
+  return {d, mass};
 }
 
 Vec3 relative_gravity_accel(const RvdConstants& c, const Vec3& r, const Vec3& v) {
-  const double n = c.mean_motion_radps, big_r = c.radius_m;
-  const double rz = big_r - r.z();
-  const double dist = std::sqrt(rz * rz + r.x() * r.x() + r.y() * r.y());
-  const double mu_r3 = c.mu_m3ps2 / (dist * dist * dist);
-  return Vec3(2.0 * n * v.z() + n * n * r.x() - mu_r3 * r.x(),
-              -mu_r3 * r.y(),
-              -2.0 * n * v.x() + n * n * r.z() - c.mu_m3ps2 / (big_r * big_r) + mu_r3 * rz);
+  return hill_from_lvlh(plant::relative_orbit_acceleration_lvlh(
+      c.dynamics.orbit_radius_m, c.dynamics.mean_motion_radps, lvlh_from_hill(r), lvlh_from_hill(v)));
 }
 
 Vec3 relative_rate_body(const RvdConstants& c, const RvdState& s) {
   return s.omega_body_radps -
-         s.q_hill_from_body.toRotationMatrix().transpose() * Vec3(0.0, -c.mean_motion_radps, 0.0);
+         s.q_hill_from_body.toRotationMatrix().transpose() * omega_hill_in_hill(c.dynamics.mean_motion_radps);
 }
 
 void propagate_piece(const RvdConstants& c, const Vec3& force, const Vec3& torque, double dt,
                      RvdState& s) {
-  if (dt <= 0.0) return;
-  const Vec13 x = pack(s);
-  const Vec13 k1 = derivative(c, x, force, torque);
-  const Vec13 k2 = derivative(c, x + 0.5 * dt * k1, force, torque);
-  const Vec13 k3 = derivative(c, x + 0.5 * dt * k2, force, torque);
-  const Vec13 k4 = derivative(c, x + dt * k3, force, torque);
-  s = unpack(x + dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
+  if (!(dt > 0.0)) return;
+  // The piece's inertial frame is LVLH at the piece's start (t0 = 0 below): the equations do not
+  // depend on which inertial frame is chosen, so re-basing it at every piece is exact and spares
+  // invsim a run clock. At the end LVLH has turned by n dt about its z axis in that frame.
+  plant::RigidState x;
+  x.r_lvlh_m = lvlh_from_hill(s.r_hill_m);
+  x.v_lvlh_mps = lvlh_from_hill(s.v_hill_mps);
+  x.q_inertial_from_body = q_lvlh_from_hill() * s.q_hill_from_body;
+  x.omega_body_radps = s.omega_body_radps;
+  x.mass_kg = c.mass_kg;
+  plant::propagate_piece(c.dynamics, x, 0.0, dt,
+                         plant::PieceInput{.force_body_N = force, .torque_body_Nm = torque});
+  s.r_hill_m = hill_from_lvlh(x.r_lvlh_m);
+  s.v_hill_mps = hill_from_lvlh(x.v_lvlh_mps);
+  const Quat q_lvlh_from_inertial = q_inertial_from_lvlh(c.dynamics.mean_motion_radps, dt).conjugate();
+  s.q_hill_from_body = (q_hill_from_lvlh() * q_lvlh_from_inertial * x.q_inertial_from_body).normalized();
+  s.omega_body_radps = x.omega_body_radps;
 }
 
 }  // namespace chaser::invsim
