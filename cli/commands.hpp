@@ -53,6 +53,13 @@ struct FmeaArgs {
   bool three_axis = false;     // add the 64 three-axis modes (x, y and z double faults)
 };
 
+// chaser thrusters (docs/scenario.md, "Thruster-set analysis").
+struct ThrustersArgs {
+  std::string scenario_path;
+  std::string json_path;  // empty: print only
+  std::vector<std::string> overrides;
+};
+
 struct CampaignMergeArgs {
   std::string out_dir;
   std::vector<std::string> shard_dirs;
@@ -63,6 +70,7 @@ int campaign_command(const CampaignArgs& args);
 int campaign_merge_command(const CampaignMergeArgs& args);
 int fdi_design_command(const FdiDesignArgs& args);
 int fmea_command(const FmeaArgs& args);
+int thrusters_command(const ThrustersArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 
 }  // namespace chaser::cli

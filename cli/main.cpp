@@ -47,6 +47,13 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("scenario", validate_path, "Scenario file (YAML)")->required();
   validate_cmd->add_option("--set", validate_overrides, "Override a scenario key: key.path=value (repeatable)");
 
+  ThrustersArgs thrusters;
+  CLI::App* thrusters_cmd = app.add_subcommand(
+      "thrusters", "What the thruster set can do: attainable force and torque per axis, and after any one loss");
+  thrusters_cmd->add_option("scenario", thrusters.scenario_path, "Scenario file (YAML)")->required();
+  thrusters_cmd->add_option("--json", thrusters.json_path, "Also write the analysis as JSON");
+  thrusters_cmd->add_option("--set", thrusters.overrides, "Override a scenario key: key.path=value (repeatable)");
+
   FdiDesignArgs fdi_design;
   CLI::App* fdi_cmd = app.add_subcommand("fdi", "Fault detection and isolation tools");
   fdi_cmd->require_subcommand(1);
@@ -97,6 +104,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
   if (*design_cmd) return fdi_design_command(fdi_design);
+  if (*thrusters_cmd) return thrusters_command(thrusters);
   if (*fmea_cmd) return fmea_command(fmea);
   if (*merge_cmd) return campaign_merge_command(merge);
   if (*campaign_cmd) {

@@ -97,3 +97,40 @@ TEST(Cli, FdiDesignWritesTheDesign) {
 }
 
 }  // namespace
+
+namespace {
+
+// chaser thrusters on MSR: branch A (the set that flies at the start) and branch B (after a fault
+// in group A) are analysed; both push and turn in every direction; neither tolerates every single
+// loss (model/thruster_set_analysis tests: T1, T2, T3, T5, T6, T7 each break branch A's span). The
+// JSON holds the same figures: +Fx of branch A is 31.3 N (tests/model/thruster_set_analysis_test).
+TEST(Cli, ThrustersAnalysesTheStartAndRecoverySets) {
+  const auto json = std::filesystem::temp_directory_path() / "chaser_thrusters_test.json";
+  const CommandResult r = run_chaser("thrusters scenarios/msr_terminal.yaml --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("the set that flies at the start (T1, T2, T3, T4, T5, T6, T7, T8)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("after a fault in group A"), std::string::npos) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["sets"].size(), 2u);
+  EXPECT_EQ(j["thrusters"], 16);
+  for (const auto& set : j["sets"]) {
+    EXPECT_TRUE(set["spans"].get<bool>());
+    EXPECT_FALSE(set["tolerates_single_loss"].get<bool>());
+    EXPECT_EQ(set["configuration_matrix_columns"].size(), 8u);
+  }
+  EXPECT_NEAR(j["sets"][0]["attainable"][0].get<double>(), 31.3, 0.05);
+  EXPECT_EQ(j["sets"][1]["thrusters"][0], "T9");
+  std::filesystem::remove(json);
+}
+
+// A set that cannot span is refused by the loader before any analysis: exit 2, the key named.
+TEST(Cli, ThrustersRefusesABadScenarioWithExitCode2) {
+  const CommandResult r = run_chaser(
+      "thrusters scenarios/msr_terminal.yaml --set 'thrusters.list.2.direction_body=[1,0.36,-0.36]'");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("thrusters.list"), std::string::npos) << r.output;
+}
+
+}  // namespace
