@@ -53,6 +53,8 @@ template <int N>
 using TonN = Eigen::Matrix<double, N, 1>;
 template <int N>
 using ConfigN = Eigen::Matrix<double, kRows, N>;
+template <int N>
+using ConfigMap = Eigen::Map<const ConfigN<N>>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Tolerances, all in the scaled problem (|M_ij| <= 1, w_j <= 1, ton in [0, 1]). The primal ones
@@ -309,10 +311,9 @@ TonN<N> ton_of(const Lp<N>& lp) {
 }
 
 template <int N>
-void fill_result(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand, const TonN<N>& ton,
+void fill_result(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand, const TonN<N>& ton,
                  AllocationResult& result) {
-  result.ton.setZero();
-  result.ton.template head<N>() = ton;
+  result.ton.template head<N>() = ton;  // the rest is zero: `result` is fresh
   result.propellant = ton.sum();
   result.residual = config * ton - demand;
   result.weighted_error = params.error_weights.cwiseProduct(result.residual.cwiseAbs()).sum();
@@ -330,7 +331,7 @@ bool attainable(const Lp<N>& lp, const TonN<N>& ton) { return attains(lp.a.templ
 
 // `config`: the set's columns at the solver's width (config_of), the only ones the solver reads.
 template <int N>
-bool valid_input(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand) {
+bool valid_input(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand) {
   return params.thrusters >= 1 && params.thrusters <= N && demand.allFinite() && config.allFinite() &&
          params.error_weights.allFinite() && (params.error_weights.array() > 0.0).all();
 }
@@ -338,7 +339,7 @@ bool valid_input(const AllocationParams& params, const ConfigN<N>& config, const
 // The answers that need no LP: invalid input (ton = 0, converged = false) and a zero demand (ton = 0
 // is the unique zero-cost solution). True when `result` is final.
 template <int N>
-bool answered_without_lp(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand,
+bool answered_without_lp(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand,
                          AllocationResult& result) {
   // `result` is fresh: its on-times are already zero.
   result.propellant = 0.0;
@@ -357,25 +358,22 @@ struct Scaling {
   double weight = 1.0;  // power of two, w_j / weight <= 1
 };
 
-// The set's configuration at the solver's width: its own columns, then zero padding.
+// The set's configuration at the solver's width: its own columns, then zero padding. A view of the
+// capacity-wide matrix's first N columns (column-major: contiguous), not a copy.
 template <int N>
-ConfigN<N> config_of(const AllocationParams& params) {
-  if constexpr (N == model::kMaxThrusters) {
-    return params.config;
-  } else {
-    return params.config.template leftCols<N>();
-  }
+ConfigMap<N> config_of(const AllocationParams& params) {
+  return ConfigMap<N>(params.config.data());
 }
 
 // The padding columns are zero, so the largest entry of the solver's columns is the set's.
 template <int N>
-Scaling scaling_of(const AllocationParams& params, const ConfigN<N>& config) {
+Scaling scaling_of(const AllocationParams& params, const ConfigMap<N>& config) {
   return {power_of_two_above(config.cwiseAbs().maxCoeff()), power_of_two_above(params.error_weights.maxCoeff())};
 }
 
 // The two-phase solve; `lp` keeps the final basis.
 template <int N>
-void solve(const AllocationParams& params, const ConfigN<N>& config, const Vec6& demand, const Scaling& scale,
+void solve(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand, const Scaling& scale,
            Lp<N>& lp, AllocationResult& result) {
   lp.thrusters = params.thrusters;
   init_phase1<N>(lp, config / scale.wrench, params.error_weights / scale.weight, demand / scale.wrench);
@@ -430,7 +428,7 @@ void remember(const Lp<N>& lp, AllocationWarmStart& warm) {
 template <int N>
 AllocationResult allocate_cold(const AllocationParams& params, const Vec6& demand_wrench) {
   AllocationResult result;
-  const ConfigN<N> config = config_of<N>(params);
+  const ConfigMap<N> config = config_of<N>(params);
   if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
   Lp<N> lp;
   solve<N>(params, config, demand_wrench, scaling_of<N>(params, config), lp, result);
@@ -440,14 +438,14 @@ AllocationResult allocate_cold(const AllocationParams& params, const Vec6& deman
 // The slots belong to the same set: the solver's columns compared at its width (the padding is
 // zero in both).
 template <int N>
-bool same_problem(const AllocationParams& params, const ConfigN<N>& config, const AllocationWarmStart& warm) {
+bool same_problem(const AllocationParams& params, const ConfigMap<N>& config, const AllocationWarmStart& warm) {
   return warm.thrusters == params.thrusters && warm.config.template leftCols<N>() == config;
 }
 
 template <int N>
 AllocationResult allocate_warm(const AllocationParams& params, const Vec6& demand_wrench, AllocationWarmStart& warm) {
   AllocationResult result;
-  const ConfigN<N> config = config_of<N>(params);
+  const ConfigMap<N> config = config_of<N>(params);
   if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
   if (!same_problem<N>(params, config, warm)) {  // another problem: the kept bases do not belong to it
     warm.slots = {};
