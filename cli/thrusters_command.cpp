@@ -21,31 +21,6 @@ namespace chaser::cli {
 
 namespace {
 
-struct NamedSet {
-  std::string label;  // "at the start", "after a fault in group A"
-  model::ThrusterMask mask = 0;
-};
-
-// The set that flies at the start, then each distinct set the recovery policy can switch to (one
-// fault in each group of the starting set), as scenario validation checks them.
-std::vector<NamedSet> sets_to_analyse(const model::Scenario& s) {
-  const model::ThrusterConfiguration start = model::initial_configuration(s.thrusters);
-  std::vector<NamedSet> sets{{"the set that flies at the start", start.active}};
-  const model::ThrusterList list = model::thruster_list(start.active);
-  for (int k = 0; k < list.count; ++k) {
-    const int group = s.thrusters.thrusters[static_cast<std::size_t>(list.index[k])].group;
-    const auto after = model::recover(s.thrusters, s.fdi.recovery, start, list.index[k]);
-    if (group == model::kNoGroup || !after) continue;
-    bool seen = false;
-    for (const NamedSet& n : sets) seen |= n.mask == after->active;
-    if (!seen)
-      sets.push_back({fmt::format("the set that flies after a fault in group {} (fdi.recovery: switch_group)",
-                                  s.thrusters.groups[static_cast<std::size_t>(group)].name),
-                      after->active});
-  }
-  return sets;
-}
-
 std::vector<std::string> names_of(model::ThrusterMask mask) {
   std::vector<std::string> names;
   const model::ThrusterList list = model::thruster_list(mask);
@@ -75,16 +50,18 @@ int thrusters_command(const ThrustersArgs& args) {
   nlohmann::json report{{"scenario", s.name}, {"thrusters", s.thrusters.count}, {"sets", nlohmann::json::array()}};
   std::cout << fmt::format("{}: {} thrusters; torques about the centre of mass [{}, {}, {}] m\n", s.name,
                            s.thrusters.count, s.chaser.com_body_m.x(), s.chaser.com_body_m.y(), s.chaser.com_body_m.z());
-  for (const NamedSet& set : sets_to_analyse(s)) {
-    const std::vector<std::string> names = names_of(set.mask);
-    const model::ThrusterSetMatrix m = model::configuration_columns(s.thrusters, set.mask, s.chaser.com_body_m);
+  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery)) {
+    const model::ThrusterMask mask = r.configuration.active;
+    const std::string label = model::when_it_flies(s.thrusters, r);
+    const std::vector<std::string> names = names_of(mask);
+    const model::ThrusterSetMatrix m = model::configuration_columns(s.thrusters, mask, s.chaser.com_body_m);
     const model::ThrusterSetAnalysis analysis = model::analyse_thruster_set(m, names);
     std::cout << fmt::format("\n{} ({}):\nconfiguration matrix M (Fonod 2015, eq. 2), one column per thruster "
                              "open for a whole period:\n",
-                             set.label, fmt::join(names, ", "));
+                             label, fmt::join(names, ", "));
     std::cout << format_matrix(m, names) << "\n" << model::format_thruster_set_analysis(analysis);
     nlohmann::json entry = nlohmann::json::parse(model::thruster_set_analysis_json(analysis));
-    entry["set"] = set.label;
+    entry["set"] = label;
     nlohmann::json columns = nlohmann::json::array();
     for (int c = 0; c < m.cols(); ++c)
       columns.push_back(std::vector<double>(m.col(c).data(), m.col(c).data() + 6));

@@ -83,19 +83,12 @@ fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const fdi::
   return p;
 }
 
-// The active sets the FDI may watch: the starting one, then every set the recovery policy can
-// switch to from there (breadth first), those of the FDI's size only.
+// The active sets the FDI may watch: every set the vehicle may fly (model::reachable_configurations)
+// of the FDI's size.
 std::vector<model::ThrusterMask> watchable_sets(const model::Scenario& s) {
-  std::vector<model::ThrusterConfiguration> queue{model::initial_configuration(s.thrusters)};
   std::vector<model::ThrusterMask> sets;
-  for (std::size_t q = 0; q < queue.size(); ++q) {
-    const model::ThrusterConfiguration c = queue[q];
-    if (std::find(sets.begin(), sets.end(), c.active) != sets.end()) continue;
-    if (model::thruster_count(c.active) == fdi::kWatchedThrusters) sets.push_back(c.active);
-    const model::ThrusterList list = model::thruster_list(c.active);
-    for (int k = 0; k < list.count; ++k)
-      if (const auto next = model::recover(s.thrusters, s.fdi.recovery, c, list.index[k])) queue.push_back(*next);
-  }
+  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery))
+    if (model::thruster_count(r.configuration.active) == fdi::kWatchedThrusters) sets.push_back(r.configuration.active);
   return sets;
 }
 

@@ -1,5 +1,6 @@
 #include "flight/modulation.hpp"
 
+#include "model/recovery.hpp"
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
@@ -12,14 +13,13 @@ Vec6 set_authority(const model::ConfigMatrix& m) {
   return m.cwiseMax(0.0).rowwise().sum().cwiseMax((-m).cwiseMax(0.0).rowwise().sum());
 }
 
-// The largest authority of the sets the vehicle may fly: the starting active set and each
-// redundancy group on its own (what a recovery switches to).
+// The largest authority of the sets the vehicle may fly: the starting active set and each set a
+// recovery can switch to.
 Vec6 largest_authority(const model::Scenario& s) {
-  Vec6 authority = set_authority(
-      model::configuration_matrix(s.thrusters, model::initial_active_set(s.thrusters), s.chaser.com_body_m));
-  for (int g = 0; g < static_cast<int>(s.thrusters.groups.size()); ++g)
-    authority = authority.cwiseMax(set_authority(
-        model::configuration_matrix(s.thrusters, model::group_thrusters(s.thrusters, g), s.chaser.com_body_m)));
+  Vec6 authority = Vec6::Zero();
+  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery))
+    authority = authority.cwiseMax(
+        set_authority(model::configuration_matrix(s.thrusters, r.configuration.active, s.chaser.com_body_m)));
   return authority;
 }
 

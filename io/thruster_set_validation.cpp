@@ -3,6 +3,8 @@
 // columns positively span R^6); the FDI's fixed-size kernels must fit the active set; a scenario
 // may require that every single-thruster loss leaves a spanning set; faults must name thrusters
 // that exist.
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -61,42 +63,28 @@ bool fdi_watches(const model::FdiParams& f) {
          (f.isolation_method == model::IsolationMethod::kDeficit && f.deficit.detection);
 }
 
-// The active set at the start, then each set the recovery policy can switch to (one fault in each
-// group of the starting set), checked for span and, with the FDI on, for the FDI's set size.
+// Every set the vehicle may fly (model::reachable_configurations: the start, then each set the
+// recovery policy can switch to, fault after fault), checked for span and, with the FDI on, for
+// the FDI's set size.
 void check_configurations(const model::Scenario& s, Diagnostics& d) {
-  const model::ThrusterConfiguration start = model::initial_configuration(s.thrusters);
   const bool fdi = fdi_watches(s.fdi);
-  // `flies`: how the message names the set, e.g. "the set that flies at the start".
-  auto check = [&](const model::ThrusterConfiguration& c, const std::string& flies) {
-    const std::string set = describe_set(s.thrusters, c.active);
-    if (const std::string problem = span_problem(s, c.active); !problem.empty())
+  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery)) {
+    const model::ThrusterMask active = r.configuration.active;
+    const std::string flies = model::when_it_flies(s.thrusters, r);
+    const std::string set = describe_set(s.thrusters, active);
+    if (const std::string problem = span_problem(s, active); !problem.empty())
       d.add("thrusters.list", fmt::format("{}, {}, {}", flies, set, problem));
-    if (fdi && model::thruster_count(c.active) != model::kFdiWatchedThrusters)
+    if (fdi && model::thruster_count(active) != model::kFdiWatchedThrusters)
       d.add("fdi", fmt::format("the FDI schemes (Fonod 2015) and the deficit bank watch exactly {} active thrusters; "
                                "{}, {}, has {}: disable fdi.position, fdi.attitude and fdi.deficit.detection, "
                                "or fly {} at a time (thrusters.standby_groups)",
-                               model::kFdiWatchedThrusters, flies, set, model::thruster_count(c.active),
+                               model::kFdiWatchedThrusters, flies, set, model::thruster_count(active),
                                model::kFdiWatchedThrusters));
-  };
-  check(start, "the set that flies at the start");
-  if (s.fdi.recovery == model::RecoveryPolicy::kNone) return;
-  bool any = false;
-  for (const model::ThrusterGroup& g : s.thrusters.groups) any |= g.standby;
-  if (!any) {
+  }
+  if (s.fdi.recovery == model::RecoveryPolicy::kSwitchGroup &&
+      std::none_of(s.thrusters.groups.begin(), s.thrusters.groups.end(), [](const auto& g) { return g.standby; }))
     d.add("fdi.recovery", "switch_group needs a standby group to switch to (thrusters.standby_groups), "
                           "or set fdi.recovery: none");
-    return;
-  }
-  model::ThrusterMask faulty_groups_seen = 0;
-  const model::ThrusterList list = model::thruster_list(start.active);
-  for (int k = 0; k < list.count; ++k) {
-    const int group = s.thrusters.thrusters[static_cast<std::size_t>(list.index[k])].group;
-    if (group == model::kNoGroup || ((faulty_groups_seen >> group) & 1U)) continue;
-    faulty_groups_seen |= std::uint32_t{1} << group;
-    if (const auto after = model::recover(s.thrusters, s.fdi.recovery, start, list.index[k]))
-      check(*after, fmt::format("the set that flies after a fault in group {} (fdi.recovery: switch_group)",
-                                s.thrusters.groups[static_cast<std::size_t>(group)].name));
-  }
 }
 
 // tolerates_single_loss: every thruster of the starting set may be lost alone.

@@ -1,5 +1,7 @@
 #include "model/recovery.hpp"
 
+#include <algorithm>
+
 namespace chaser::model {
 
 ThrusterConfiguration initial_configuration(const ThrusterSetParams& set) {
@@ -20,6 +22,28 @@ std::optional<ThrusterConfiguration> recover(const ThrusterSetParams& set, Recov
                                  .closed_groups = now.closed_groups | (std::uint32_t{1} << group)};
   }
   return std::nullopt;
+}
+
+std::vector<ReachableConfiguration> reachable_configurations(const ThrusterSetParams& set, RecoveryPolicy policy) {
+  std::vector<ReachableConfiguration> found{{initial_configuration(set), kNoGroup}};
+  for (std::size_t q = 0; q < found.size(); ++q) {
+    const ThrusterConfiguration now = found[q].configuration;  // a copy: `found` grows below
+    const ThrusterList list = thruster_list(now.active);
+    for (int k = 0; k < list.count; ++k) {
+      const auto next = recover(set, policy, now, list.index[k]);
+      if (!next) continue;
+      const bool seen = std::any_of(found.begin(), found.end(),
+                                    [&](const ReachableConfiguration& r) { return r.configuration.active == next->active; });
+      if (!seen) found.push_back({*next, set.thrusters[static_cast<std::size_t>(list.index[k])].group});
+    }
+  }
+  return found;
+}
+
+std::string when_it_flies(const ThrusterSetParams& set, const ReachableConfiguration& reachable) {
+  if (reachable.failed_group == kNoGroup) return "the set that flies at the start";
+  return "the set that flies after a fault in group " + set.groups[static_cast<std::size_t>(reachable.failed_group)].name +
+         " (fdi.recovery: switch_group)";
 }
 
 }  // namespace chaser::model

@@ -5,6 +5,8 @@
 // recovery can lead to can still push and turn in every direction.
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "model/fdi.hpp"
 #include "model/thrusters.hpp"
@@ -25,5 +27,20 @@ ThrusterConfiguration initial_configuration(const ThrusterSetParams& set);
 // (which also stops a stuck-open valve) and makes the first standby group not yet used active.
 std::optional<ThrusterConfiguration> recover(const ThrusterSetParams& set, RecoveryPolicy policy,
                                              const ThrusterConfiguration& now, int faulty);
+
+// A configuration the vehicle may fly, and the fault that led to it.
+struct ReachableConfiguration {
+  ThrusterConfiguration configuration;
+  int failed_group = kNoGroup;  // group of the fault whose recovery led here; kNoGroup: the start
+};
+
+// The starting configuration, then every configuration the policy can lead to by faults of active
+// thrusters, one after another (breadth first), each active set once. What validation checks,
+// what the FDI prepares parameters for, what the TMU's clamp and `chaser thrusters` cover.
+std::vector<ReachableConfiguration> reachable_configurations(const ThrusterSetParams& set, RecoveryPolicy policy);
+
+// How reports name it: "the set that flies at the start", "the set that flies after a fault in
+// group A (fdi.recovery: switch_group)".
+std::string when_it_flies(const ThrusterSetParams& set, const ReachableConfiguration& reachable);
 
 }  // namespace chaser::model

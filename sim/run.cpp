@@ -130,10 +130,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     const plant::RigidState truth = plant.state.rigid;
 
     const model::SensorMeasurements meas = plant::sense_plant(plant.params, plant.state, t_k);
-    // The FDI's lanes of this period (before a recovery in it changes them), for telemetry.
-    const flight::fdi::WatchedSet watched =
-        flight_params.fdir.watched.empty() || flight_state.fdir.watched < 0 ? flight::fdi::WatchedSet{}
-                                                                            : flight::watched_set(flight_params.fdir, flight_state.fdir);
+    // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
+    const flight::fdi::WatchedSet watched = telemetry && !flight_params.fdir.watched.empty() && flight_state.fdir.watched >= 0
+                                                ? flight::watched_set(flight_params.fdir, flight_state.fdir)
+                                                : flight::fdi::WatchedSet{};
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
     const MonitorSample sample = monitor_sample(t_s, n, truth, out.reference);
     if (!monitor_period(scenario, sample, result.figures)) break;

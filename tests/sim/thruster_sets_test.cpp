@@ -46,8 +46,8 @@ TEST(ThrusterSets, MoreThrustersNeedNoMorePropellant) {
 }
 
 // Sets that cannot push and turn in every direction are refused before any run, at thrusters.list:
-// one thruster, and six (the fewest that could span R^6 only with a special layout; branch A's
-// first six cannot).
+// one thruster, and six (positively spanning R^6 takes at least seven vectors, so no layout of six
+// can).
 TEST(ThrusterSets, SetsThatCannotSpanAreRefused) {
   for (const int count : {1, 6}) {
     std::vector<std::string> overrides = one_set_overrides(8);
