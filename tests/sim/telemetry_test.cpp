@@ -88,5 +88,25 @@ TEST(TelemetryTable, NamesEndWithTheirUnit) {
   }
 }
 
+// The writer's shortcut for +0.0 writes what the formatter writes: every value's text is
+// fmt's "{:.10g}" of it, zeros of both signs included.
+TEST(TelemetryWriter, ZeroShortcutWritesWhatFmtWrites) {
+  const auto path = std::filesystem::temp_directory_path() / "chaser_telemetry_writer.csv";
+  const std::vector<double> values = {0.0, -0.0, 1.0, -1.5e-300, 123456.789012345, 1e-320, 0.1};
+  {
+    TelemetryWriter w(path.string());
+    ASSERT_TRUE(w.ok());
+    for (const double v : values) w.add(v);
+    w.end_row();
+  }
+  std::string expected;
+  for (std::size_t i = 0; i < values.size(); ++i) expected += (i ? "," : "") + fmt::format("{:.10g}", values[i]);
+  std::ifstream in(path);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(line, expected);
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace chaser::sim
