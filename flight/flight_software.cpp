@@ -40,7 +40,8 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
-  ThrusterManagementOutput managed = manage_thrusters(params.management, state.management, out.released_wrench);
+  ThrusterManagementOutput managed =
+      manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton);
 
   // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
   const FdirInput fdir_in{.t_s = t_s,
@@ -48,7 +49,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
-                          .ton = watched_on_times(params.fdir, state.fdir, managed.command.ton),
+                          .ton = watched_on_times(params.fdir, state.fdir, out.command.ton),
                           .commanded_wrench = managed.commanded_wrench};
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
   if (out.fdir.confirmed_now != model::kNoThruster) {
@@ -57,13 +58,12 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
       state.thrusters = *next;
       set_active_thrusters(params.management, state.management, state.thrusters.active);
       rearm_fdir(params.fdir, state.fdir, state.thrusters.active, t_s, out.fdir.confirmed_now);
-      managed = manage_thrusters(params.management, state.management, out.released_wrench);
+      managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton);
       out.recovered_now = true;
     }
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
 
-  out.command = managed.command;
   out.command.latch_closed_groups = state.thrusters.closed_groups;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;

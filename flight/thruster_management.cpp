@@ -1,5 +1,7 @@
 #include "flight/thruster_management.hpp"
 
+#include <algorithm>
+
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
@@ -22,7 +24,7 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
 }
 
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
-                                          const Vec6& demand_wrench) {
+                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton_by_thruster) {
   ThrusterManagementOutput out;
   AllocationResult result = allocate_thrusters(state.allocation, demand_wrench, state.warm);
   const int n = state.active_list.count;
@@ -34,8 +36,9 @@ ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params
   out.commanded_wrench = n == 8  // fixed-size product for eight (MSR's branch): same sums, no dynamic loop
                              ? Vec6(state.allocation.config.leftCols<8>() * ton.head<8>())
                              : Vec6(state.allocation.config.leftCols(n) * ton.head(n));
+  std::fill_n(ton_by_thruster.begin(), params.thrusters.count, 0.0);
   for (int k = 0; k < n; ++k)
-    out.command.ton[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = ton[k];
+    ton_by_thruster[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = ton[k];
   return out;
 }
 

@@ -31,12 +31,14 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
                           model::ThrusterMask active);
 
 struct ThrusterManagementOutput {
-  model::ThrusterCommand command;  // every thruster by index; inactive ones zero
   Vec6 commanded_wrench = Vec6::Zero();  // [N; N m] M ton: what the command realises if healthy
-  bool feasible = true;            // the allocator reached the demand exactly
+  bool feasible = true;                  // the allocator reached the demand exactly
 };
 
+// Writes the on-times of thrusters [0, N) into `ton` by thruster index, inactive ones zero (entries
+// from N on are left as they are). In place, because the command is the flight software's output and
+// a copy of the whole capacity-wide array every period is measurable (docs/performance.md).
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
-                                          const Vec6& demand_wrench);
+                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton);
 
 }  // namespace chaser::flight

@@ -72,8 +72,8 @@ TimeNs add_pulse(ValveSchedule& valve, TimeNs open_ns, TimeNs length_ns, TimeNs 
   return length_ns;
 }
 
-void append_piece(const ThrusterHardware& hw, const std::array<double, model::kMaxThrusters>& scale, Mask mask,
-                  TimeNs t_begin, TimeNs t_end, ThrustProfile& out) {
+void append_piece(const ThrusterHardware& hw, const FaultEffects& effects, Mask mask, TimeNs t_begin, TimeNs t_end,
+                  ThrustProfile& out) {
   ThrustPiece& piece = out.pieces[static_cast<std::size_t>(out.count++)];
   piece.t_begin_ns = t_begin;
   piece.t_end_ns = t_end;
@@ -82,9 +82,10 @@ void append_piece(const ThrusterHardware& hw, const std::array<double, model::kM
   piece.mass_flow_kgps = 0.0;
   for (int i = 0; mask != 0; ++i, mask >>= 1) {
     if ((mask & 1U) == 0) continue;
-    piece.force_body_N += scale[i] * hw.force_body_N[i];
-    piece.torque_body_Nm += scale[i] * hw.torque_body_Nm[i];
-    piece.mass_flow_kgps += scale[i] * hw.mass_flow_kgps[i];
+    const double scale = effects[i].thrust_scale;
+    piece.force_body_N += scale * hw.force_body_N[i];
+    piece.torque_body_Nm += scale * hw.torque_body_Nm[i];
+    piece.mass_flow_kgps += scale * hw.mass_flow_kgps[i];
   }
   out.propellant_kg += piece.mass_flow_kgps * to_seconds(t_end - t_begin);
 }
@@ -123,8 +124,6 @@ int collect_events(const ThrusterHardware& hw, const ThrusterState& state, const
 void build_pieces(const ThrusterHardware& hw, const FaultEffects& effects, const ThrusterState& state, TimeNs t_k,
                   ThrustProfile& out) {
   const TimeNs t_end = t_k + hw.period_ns;
-  std::array<double, model::kMaxThrusters> scale{};
-  for (int i = 0; i < hw.count; ++i) scale[i] = effects[i].thrust_scale;
   std::array<std::int64_t, kMaxThrustEvents> keys;
   Mask mask = 0;
   const int n = collect_events(hw, state, effects, t_k, t_end, keys, &mask);
@@ -136,11 +135,11 @@ void build_pieces(const ThrusterHardware& hw, const FaultEffects& effects, const
     Mask next = mask;
     for (; j < n && keys[j] / kThrusterKeyBase == offset; ++j) next ^= Mask{1} << (keys[j] % kThrusterKeyBase);
     if (next == mask) continue;  // e.g. one interval closes where the next opens
-    append_piece(hw, scale, mask, piece_begin, t_k + offset, out);
+    append_piece(hw, effects, mask, piece_begin, t_k + offset, out);
     piece_begin = t_k + offset;
     mask = next;
   }
-  append_piece(hw, scale, mask, piece_begin, t_end, out);
+  append_piece(hw, effects, mask, piece_begin, t_end, out);
 }
 
 }  // namespace
