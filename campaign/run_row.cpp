@@ -25,7 +25,7 @@ double glr_before(const sim::RunResult& result, int scheme, double onset_s) {
 // alarm_s / isolated_s are run times (-1: none); with a fault, the paper's t_d and t_i from the onset.
 SchemeOutcome judge(double alarm_s, double isolated_s, int isolated, int fault_thruster, double onset_s,
                     double glr_max) {
-  const bool fault = fault_thruster > 0;
+  const bool fault = fault_thruster != model::kNoThruster;
   const bool alarm = alarm_s >= 0.0;
   const bool alarm_after = fault && alarm && alarm_s >= onset_s;
   SchemeOutcome o{};
@@ -33,8 +33,8 @@ SchemeOutcome judge(double alarm_s, double isolated_s, int isolated, int fault_t
   o.missed = fault && !alarm_after;
   o.detection_s = alarm_after ? alarm_s - onset_s : kNaN;
   o.isolation_s = alarm_after && isolated_s >= onset_s ? isolated_s - onset_s : kNaN;
-  o.isolated = isolated > 0 ? isolated : -1;
-  o.wrong_isolation = o.isolated > 0 && o.isolated != fault_thruster;
+  o.isolated = isolated;
+  o.wrong_isolation = o.isolated != model::kNoThruster && o.isolated != fault_thruster;
   o.glr_max_before_onset = glr_max;
   return o;
 }
@@ -57,7 +57,7 @@ RunRecord base_record(const RunSetup& setup) {
   r.run = setup.run;
   r.seed = setup.seed;
   r.fault_case = setup.fault_case;
-  r.fault_thruster = setup.fault ? setup.fault->thruster + 1 : 0;
+  r.fault_thruster = setup.fault ? setup.fault->thruster : model::kNoThruster;
   r.fault_size = fault_size(setup.fault);
   r.onset_s = setup.fault ? setup.fault->onset_s : kNaN;
   r.chaser = setup.truth.chaser;
@@ -72,12 +72,14 @@ bool finite_figures(const sim::RunResult& result) {
 void number(std::string& out, double v) { append_number(out, v); }
 void flag(std::string& out, bool v) { out += v ? '1' : '0'; }
 void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_inserter(out), "{}", v); }
+// A thruster in a numeric table: n of its name Tn, 0 for none (docs/style.md, "Naming and layout").
+void thruster_number(std::string& out, int index) { integer(out, index == model::kNoThruster ? 0 : index + 1); }
 
 // One scheme's seven columns, in the spec's order.
 #define CHASER_SCHEME_COLUMNS(scheme)                                                                  \
   {#scheme "_detection_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }}, \
   {#scheme "_isolation_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }}, \
-  {#scheme "_isolated", [](const RunRecord& r, std::string& o) { integer(o, r.scheme.isolated); }},      \
+  {#scheme "_isolated", [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }},      \
   {#scheme "_false_alarm", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},   \
   {#scheme "_missed", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},             \
   {#scheme "_wrong_isolation", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
@@ -122,7 +124,7 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
 RunRecord error_record(const RunSetup& setup) {
   RunRecord r = base_record(setup);
   r.status = RunStatus::kError;
-  const SchemeOutcome empty{kNaN, kNaN, -1, false, false, false, kNaN};
+  const SchemeOutcome empty{kNaN, kNaN, model::kNoThruster, false, false, false, kNaN};
   r.position = r.attitude = r.deficit = r.fdir = empty;
   r.recovery_s = kNaN;
   r.propellant_kg = kNaN;
@@ -130,13 +132,13 @@ RunRecord error_record(const RunSetup& setup) {
 }
 
 const std::vector<RunColumn>& run_columns() {
-  // The one table of runs.csv columns (.coord/campaign_spec.md), in file order.
+  // The one table of runs.csv columns (docs/campaigns.md), in file order.
   static const std::vector<RunColumn> columns = {
       {"run", [](const RunRecord& r, std::string& o) { integer(o, r.run); }},
       {"seed", [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
       {"case", [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }},
       {"status", [](const RunRecord& r, std::string& o) { o += to_string(r.status); }},
-      {"fault_thruster", [](const RunRecord& r, std::string& o) { integer(o, r.fault_thruster); }},
+      {"fault_thruster", [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }},
       {"fault_size", [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }},
       {"onset_s", [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }},
       {"mass_kg", [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }},

@@ -1,5 +1,5 @@
 #pragma once
-// One runs.csv row (.coord/campaign_spec.md): what a run was (seed, dispersed chaser, fault) and
+// One runs.csv row (docs/campaigns.md, "runs.csv"): what a run was (seed, dispersed chaser, fault) and
 // what the FDI schemes and the mission made of it. The columns live in ONE table (run_row.cpp,
 // run_columns): adding a column is adding one line there.
 #include <cstdint>
@@ -20,7 +20,7 @@ std::string_view to_string(RunStatus s);
 struct SchemeOutcome {
   double detection_s;          // [s] first alarm minus onset; NaN: none, or a false alarm, or case none
   double isolation_s;          // [s] confirmation minus onset; NaN likewise
-  int isolated;                // confirmed thruster 1..8, -1: none
+  int isolated;                // index of the confirmed thruster, model::kNoThruster: none
   bool false_alarm;            // alarm before the onset (any alarm for case none)
   bool missed;                 // fault case and no alarm at or after the onset
   bool wrong_isolation;        // a thruster confirmed that is not the faulty one (any, for case none)
@@ -32,12 +32,12 @@ struct RunRecord {
   std::uint64_t seed = 0;
   FaultCase fault_case = FaultCase::kNone;
   RunStatus status = RunStatus::kOk;
-  int fault_thruster = 0;      // 1..8, 0 for case none
+  int fault_thruster = model::kNoThruster;  // index, kNoThruster for case none
   double fault_size = 0;       // [-] leak or loss size, 1 stuck, 0 none
   double onset_s = 0;          // [s] NaN for case none
   model::SpacecraftParams chaser;
   SchemeOutcome position{}, attitude{}, deficit{}, fdir{};
-  double recovery_s = 0;       // [s] run time of the switch to branch B, NaN: none
+  double recovery_s = 0;       // [s] run time of the recovery, NaN: none
   bool capture = false, corridor_kept = false, target_in_view = false;
   double propellant_kg = 0;    // [kg]
   double simulated_s = 0;      // [s]

@@ -42,7 +42,7 @@ void CampaignStats::add(const RowFacts& row) {
       s.detection_s.add(f.detection_s);
     }
     // A right isolation: the faulty thruster confirmed after the onset (Fonod 2015, P_i).
-    if (row.fault_thruster > 0 && f.isolated == row.fault_thruster && !std::isnan(f.isolation_s)) {
+    if (row.fault_thruster != model::kNoThruster && f.isolated == row.fault_thruster && !std::isnan(f.isolation_s)) {
       ++s.right_isolations;
       s.isolation_s.add(f.isolation_s);
     }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "campaign/cases.hpp"
+#include "model/thrusters.hpp"
 
 namespace chaser::campaign {
 
@@ -32,7 +33,7 @@ inline constexpr std::array<std::string_view, 4> kSchemes = {"position", "attitu
 struct SchemeFacts {
   double detection_s;  // NaN: not detected after the onset
   double isolation_s;  // NaN: no confirmation after the onset
-  int isolated;        // 1..8 or -1
+  int isolated;        // thruster index, model::kNoThruster: none
   bool false_alarm, missed;
 };
 
@@ -40,7 +41,7 @@ struct RowFacts {
   FaultCase fault_case;
   bool counted;        // status ok or diverged; error runs carry no figures
   bool diverged, error;
-  int fault_thruster;
+  int fault_thruster;  // thruster index, model::kNoThruster: case none
   std::array<SchemeFacts, kSchemes.size()> schemes;  // kSchemes order
   bool capture, corridor_kept;
   double propellant_kg;

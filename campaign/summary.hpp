@@ -1,6 +1,6 @@
 #pragma once
 // The campaign's result files, derived only from the files of the run rows (runs.csv, glr_runs.csv)
-// read in run-index order: summary.csv, summary.md and glr_envelope.csv (.coord/campaign_spec.md).
+// read in run-index order: summary.csv, summary.md and glr_envelope.csv (docs/campaigns.md).
 // An interrupted-and-resumed, a sharded-and-merged and a one-go campaign therefore write the same
 // bytes.
 #include <optional>

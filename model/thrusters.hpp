@@ -1,8 +1,8 @@
 #pragma once
 // Thruster hardware description (Fonod 2015, section II.C, eq. 2), for any set of 1..kMaxThrusters
-// thrusters. Thrusters are numbered by their index 0..N-1 inside the code and named T1..TN at every
-// boundary (scenario files, telemetry, results); kNoThruster (-1) is the one value for "none" inside
-// and "none" outside.
+// thrusters. Thrusters are numbered by their index 0..N-1 inside the code, kNoThruster (-1) for
+// none, and named T1..TN at every boundary (thruster_name); tables of numbers (telemetry.csv,
+// runs.csv) hold the n of Tn and 0 for none (docs/style.md, "Naming and layout").
 //
 // Redundancy groups: a thruster may belong to a group that sits behind its own latch valve (MSR's
 // branches A and B). A standby group does not fly until a recovery opens it (cold redundancy);

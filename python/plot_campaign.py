@@ -3,7 +3,7 @@
 
 Usage: /usr/bin/python3 python/plot_campaign.py DIR [--out OUTDIR] [--margin M] [--threshold J_TH]
 
-Reads DIR/runs.csv (required; format in .coord/campaign_spec.md) and, when present, DIR/summary.csv,
+Reads DIR/runs.csv (required; format in docs/campaigns.md, "runs.csv") and, when present, DIR/summary.csv,
 DIR/summary.md, DIR/glr_envelope.csv and DIR/campaign.json. Writes into OUTDIR (default DIR):
 detection_times.png (Fig. 11) and isolation_times.png (Fig. 12) when a fault case ran, outcome.png
 (Table 2 as bars) and, when DIR/glr_envelope.csv exists, glr_envelope.png (Fig. 8). A last line
@@ -81,7 +81,7 @@ def load_runs(path):
              for i, (h, s) in enumerate(zip(header, RUNS_HEADER)) if h != s),
             f"header has {len(header)} columns, the spec {len(RUNS_HEADER)}")
         why = "empty file or no complete header line" if header == [] else why
-        print(f"plot_campaign: error: {path}: {why} (see .coord/campaign_spec.md)", file=sys.stderr)
+        print(f"plot_campaign: error: {path}: {why} (see docs/campaigns.md, runs.csv)", file=sys.stderr)
         sys.exit(2)
     parsed = []
     for row in rows:

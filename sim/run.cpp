@@ -50,13 +50,12 @@ MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, c
   };
 }
 
-// Thruster numbers 1..N in results, -1 for none.
 SchemeResult scheme_result(bool enabled, const flight::SchemeSummary& s) {
   SchemeResult r;
   r.enabled = enabled;
   r.alarm_s = s.alarm_s;
   r.isolated_s = s.isolated_s;
-  r.isolated_thruster = s.confirmed >= 0 ? s.confirmed + 1 : -1;
+  r.isolated_thruster = s.confirmed;
   if (s.diagnosis.decided && s.diagnosis.thruster >= 0) {
     r.diagnosed_kind = s.diagnosis.kind;
     r.diagnosed_size = s.diagnosis.size;
@@ -71,7 +70,8 @@ FdirResult episode_result(const flight::FlightParams& p, const flight::FdirEpiso
       .attitude = scheme_result(p.fdir.attitude_enabled, e.attitude),
       .deficit = scheme_result(p.fdir.deficit_detection, e.detector),
       .recovery_s = e.recovery_s,
-      .recovered_thruster = e.recovered_thruster >= 0 ? e.recovered_thruster + 1 : -1,
+      .recovered_thruster = e.recovered_thruster,
+      .episodes = {},
   };
   for (const SchemeResult* scheme : {&r.position, &r.attitude, &r.deficit}) {
     if (scheme->alarm_s >= 0 && (r.detection_s < 0 || scheme->alarm_s < r.detection_s)) r.detection_s = scheme->alarm_s;

@@ -22,7 +22,7 @@ struct SchemeResult {
   bool enabled = false;
   double alarm_s = -1;        // [s] first GLR alarm, -1: none
   double isolated_s = -1;     // [s] thruster confirmed, -1: none
-  int isolated_thruster = -1; // thruster number 1..N (T1..TN), -1: none
+  int isolated_thruster = model::kNoThruster;  // index; its name is model::thruster_name
   // With isolation_method deficit: what the deficit bank read from the fit (flight/fdi/deficit_isolation.hpp).
   std::optional<model::FaultKind> diagnosed_kind;  // empty: no diagnosis
   double diagnosed_size = 0;   // [-] leak a or loss -b; 1 for stuck open / closed
@@ -35,9 +35,9 @@ struct FdirResult {
   // The FDIR as a whole: the first alarm of any scheme, the first confirmed thruster.
   double detection_s = -1;       // [s] -1: none
   double isolation_s = -1;       // [s] -1: none
-  int isolated_thruster = -1;    // 1-based, -1: none
+  int isolated_thruster = model::kNoThruster;   // index
   double recovery_s = -1;        // [s] the recovery this diagnosis triggered; -1: none
-  int recovered_thruster = -1;   // 1-based thruster the recovery acted on
+  int recovered_thruster = model::kNoThruster;  // index of the thruster the recovery acted on
   // Every diagnosis in order (the FDI watches again after a recovery): the fields above are the
   // first's; empty entries' `episodes` are empty.
   std::vector<FdirResult> episodes;

@@ -10,10 +10,15 @@ namespace {
 
 constexpr double kRadToDeg = 1.0 / kDegToRad;
 
+// A thruster at the boundary: its name, or null for none (model/thrusters.hpp).
+nlohmann::json thruster_json(int index) {
+  return index == model::kNoThruster ? nlohmann::json(nullptr) : nlohmann::json(model::thruster_name(index));
+}
+
 nlohmann::json faults_json(const model::Scenario& scenario) {
   nlohmann::json faults = nlohmann::json::array();
   for (const auto& f : scenario.faults) {
-    nlohmann::json j{{"thruster", fmt::format("T{}", f.thruster + 1)},
+    nlohmann::json j{{"thruster", model::thruster_name(f.thruster)},
                      {"kind", std::string(model::to_string(f.kind))},
                      {"onset_s", f.onset_s}};
     if (f.kind == model::FaultKind::kLeak) j["leak_size"] = f.leak_size, j["leak_slope_per_s"] = f.leak_slope_per_s;
@@ -39,8 +44,7 @@ nlohmann::json scheme_json(const SchemeResult& r, double onset_s) {
                         {"alarm_s", r.alarm_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(r.alarm_s)},
                         {"detection_time_s", since(r.alarm_s)},
                         {"isolation_time_s", since(r.isolated_s)},
-                        {"isolated_thruster", r.isolated_thruster < 0 ? nlohmann::json(nullptr)
-                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))},
+                        {"isolated_thruster", thruster_json(r.isolated_thruster)},
                         {"diagnosis", diagnosis_json(r)}};
 }
 
@@ -54,8 +58,7 @@ nlohmann::json watch_scheme_json(const SchemeResult& r) {
   return nlohmann::json{{"enabled", r.enabled},
                         {"alarm_s", at(r.alarm_s)},
                         {"isolation_s", at(r.isolated_s)},
-                        {"isolated_thruster", r.isolated_thruster < 0 ? nlohmann::json(nullptr)
-                                                                      : nlohmann::json(fmt::format("T{}", r.isolated_thruster))},
+                        {"isolated_thruster", thruster_json(r.isolated_thruster)},
                         {"diagnosis", diagnosis_json(r)}};
 }
 
@@ -71,7 +74,7 @@ nlohmann::json diagnoses_json(const FdirResult& f) {
         {"detection_s", e.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.detection_s)},
         {"isolation_s", e.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.isolation_s)},
         {"isolated_thruster",
-         e.isolated_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", e.isolated_thruster))},
+         thruster_json(e.isolated_thruster)},
         {"recovery_s", e.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.recovery_s)},
     });
   return list;
@@ -87,26 +90,26 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
       {"deficit_threshold", scenario.fdi.deficit.detection_threshold}, // deficit scheme
       {"detection_time_s", f.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.detection_s - onset)},
       {"isolation_time_s", f.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.isolation_s - onset)},
-      {"isolated_thruster", f.isolated_thruster < 0 ? nlohmann::json(nullptr)
-                                                    : nlohmann::json(fmt::format("T{}", f.isolated_thruster))},
+      {"isolated_thruster", thruster_json(f.isolated_thruster)},
       {"recovery_s", f.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.recovery_s)},
       {"recovered_thruster",
-       f.recovered_thruster < 0 ? nlohmann::json(nullptr) : nlohmann::json(fmt::format("T{}", f.recovered_thruster))},
+       thruster_json(f.recovered_thruster)},
       {"diagnoses", diagnoses_json(f)},
   };
 }
 
-// faulty_thruster: 1-based truth, 0 when the run has no fault.
+// faulty_thruster: the truth's index, model::kNoThruster when the run has no fault.
 std::string scheme_text(const char* name, const SchemeResult& r, double onset_s, int faulty_thruster) {
-  const bool has_fault = faulty_thruster > 0;
+  const bool has_fault = faulty_thruster != model::kNoThruster;
   if (!r.enabled) return fmt::format("  {} scheme: off\n", name);
   if (r.alarm_s < 0) return fmt::format("  {} scheme: no alarm\n", name);
   std::string out = has_fault ? fmt::format("  {} scheme: alarm {:.1f} s after onset", name, r.alarm_s - onset_s)
                               : fmt::format("  {} scheme: FALSE ALARM at {:.1f} s", name, r.alarm_s);
-  if (r.isolated_thruster > 0)
-    out += fmt::format(", T{} isolated {:.1f} s after onset{}", r.isolated_thruster, r.isolated_s - onset_s,
+  if (r.isolated_thruster != model::kNoThruster)
+    out += fmt::format(", {} isolated {:.1f} s after onset{}", model::thruster_name(r.isolated_thruster),
+                       r.isolated_s - onset_s,
                        has_fault && r.isolated_thruster != faulty_thruster
-                           ? fmt::format(" (WRONG: the fault is on T{})", faulty_thruster)
+                           ? fmt::format(" (WRONG: the fault is on {})", model::thruster_name(faulty_thruster))
                            : "");
   if (r.diagnosed_kind)
     out += fmt::format(" [{} {:.2f}, onset {:.1f} s]", model::to_string(*r.diagnosed_kind), r.diagnosed_size,
@@ -157,7 +160,7 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   const MissionFigures& f = r.figures;
   std::string faults = scenario.faults.empty() ? "none" : "";
   for (const auto& fault : scenario.faults)
-    faults += fmt::format("{}T{} {} at {:.0f} s", faults.empty() ? "" : ", ", fault.thruster + 1,
+    faults += fmt::format("{}{} {} at {:.0f} s", faults.empty() ? "" : ", ", model::thruster_name(fault.thruster),
                           model::to_string(fault.kind), fault.onset_s);
   std::string out = fmt::format("{}: seed {}, fault: {}\n", scenario.name, scenario.seed, faults);
   out += fmt::format("  flown {:.1f} s of {:.1f} s in {:.3f} s wall ({:.0f} x real time){}\n", r.simulated_s,
@@ -175,7 +178,7 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                      f.out_of_view_periods * scenario.control_period_s, f.max_attitude_error_rad * kRadToDeg,
                      f.max_position_error_m);
   const double onset = first_onset_s(scenario);
-  const int faulty = scenario.faults.empty() ? 0 : scenario.faults.front().thruster + 1;
+  const int faulty = scenario.faults.empty() ? model::kNoThruster : scenario.faults.front().thruster;
   out += scheme_text("position", r.fdir.position, onset, faulty);
   out += scheme_text("attitude", r.fdir.attitude, onset, faulty);
   out += scheme_text("deficit", r.fdir.deficit, onset, faulty);
@@ -183,11 +186,12 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
     const FdirResult& e = r.fdir.episodes[i];
     if (i > 0 && e.detection_s >= 0)
       out += fmt::format("  diagnosis {} (after recovery): alarm at {:.1f} s{}\n", i + 1, e.detection_s,
-                         e.isolated_thruster > 0 ? fmt::format(", T{} isolated at {:.1f} s", e.isolated_thruster, e.isolation_s)
+                         e.isolated_thruster != model::kNoThruster
+                             ? fmt::format(", {} isolated at {:.1f} s", model::thruster_name(e.isolated_thruster), e.isolation_s)
                                                  : std::string());
     if (e.recovery_s >= 0)
-      out += fmt::format("  recovery: T{}'s group latch closed at {:.1f} s, flying on the standby group\n",
-                         e.recovered_thruster, e.recovery_s);
+      out += fmt::format("  recovery: {}'s group latch closed at {:.1f} s, flying on the standby group\n",
+                         model::thruster_name(e.recovered_thruster), e.recovery_s);
   }
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
   return out;

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A synthetic Chaser campaign directory, in the exact format of .coord/campaign_spec.md.
+"""A synthetic Chaser campaign directory, in the format of docs/campaigns.md ("runs.csv").
 
 Usage: /usr/bin/python3 python/tests/make_fake_campaign.py OUTDIR [--seed S] [--per-case N] [--free N]
 
@@ -37,14 +37,14 @@ def scheme(rng, case, thruster, median_s, p_miss, hard):
     false_alarm = int(rng.random() < (0.05 if case == "none" else 0.01))
     glr_max = rng.uniform(22.0, 40.0) if false_alarm else rng.uniform(4.0, 18.0)
     if case == "none":
-        isolated = int(rng.integers(1, 9)) if false_alarm and rng.random() < 0.5 else -1
+        isolated = int(rng.integers(1, 9)) if false_alarm and rng.random() < 0.5 else 0
         return NAN, NAN, isolated, false_alarm, 0, int(isolated > 0), glr_max
     missed = int(hard or rng.random() < p_miss)
     if missed or false_alarm:
-        return NAN, NAN, -1, false_alarm, missed, 0, glr_max
+        return NAN, NAN, 0, false_alarm, missed, 0, glr_max
     detection = median_s * rng.lognormal(0.0, 0.5)
     if rng.random() < 0.05:  # detected, never confirmed
-        return detection, NAN, -1, 0, 0, 0, glr_max
+        return detection, NAN, 0, 0, 0, 0, glr_max
     isolated = thruster if rng.random() > 0.07 else int(rng.choice([i for i in range(1, 9) if i != thruster]))
     return detection, detection + rng.lognormal(1.5, 0.4), isolated, 0, 0, int(isolated != thruster), glr_max
 
@@ -53,7 +53,7 @@ def fdir_of(case, thruster, pos, att):
     """The FDIR as a whole: first alarm of either scheme, the earlier confirmation of either scheme."""
     finite_d = [s[0] for s in (pos, att) if np.isfinite(s[0])]
     confirmed = sorted((s for s in (pos, att) if s[2] > 0), key=lambda s: s[1] if np.isfinite(s[1]) else -1)
-    isolation, isolated = (confirmed[0][1], confirmed[0][2]) if confirmed else (NAN, -1)
+    isolation, isolated = (confirmed[0][1], confirmed[0][2]) if confirmed else (NAN, 0)
     wrong = int(isolated > 0 and (case == "none" or isolated != thruster))
     return (min(finite_d) if finite_d else NAN, isolation, isolated, max(pos[3], att[3]),
             int(pos[4] and att[4]), wrong)

@@ -46,11 +46,11 @@ TEST(CampaignStats, CountsPerCaseAndScheme) {
   const double nan = std::nan("");
   const SchemeFacts detected_right{1.0, 2.0, 3, false, false};
   const SchemeFacts wrong{1.5, 2.5, 4, false, false};
-  const SchemeFacts missed{nan, nan, -1, false, true};
+  const SchemeFacts missed{nan, nan, model::kNoThruster, false, true};
   stats.add({FaultCase::kLeak, true, false, false, 3, {detected_right, wrong, missed}, true, true, 0.1});
   stats.add({FaultCase::kLeak, true, false, false, 3, {missed, detected_right, missed}, false, true, 0.3});
   stats.add({FaultCase::kLeak, false, false, true, 3, {detected_right, detected_right, detected_right}, true, true, 9});
-  stats.add({FaultCase::kNone, true, true, false, 0, {SchemeFacts{nan, nan, 2, true, false}, missed, missed}, false, false, 0.2});
+  stats.add({FaultCase::kNone, true, true, false, model::kNoThruster, {SchemeFacts{nan, nan, 2, true, false}, missed, missed}, false, false, 0.2});
   const SchemeCaseStats& pos = stats.at(1, 0);
   EXPECT_EQ(pos.runs, 2);
   EXPECT_EQ(pos.detected, 1);

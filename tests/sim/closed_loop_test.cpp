@@ -84,15 +84,15 @@ TEST(ClosedLoop, SecondFaultAfterRecoveryIsDiagnosedOnBranchB) {
   ASSERT_EQ(r.fdir.episodes.size(), 2u);
   const FdirResult& first = r.fdir.episodes[0];
   const FdirResult& second = r.fdir.episodes[1];
-  EXPECT_EQ(first.isolated_thruster, 8);
-  EXPECT_EQ(first.recovered_thruster, 8);
+  EXPECT_EQ(first.isolated_thruster, 7);  // T8
+  EXPECT_EQ(first.recovered_thruster, 7);
   EXPECT_GE(first.detection_s, 1000.0);
   EXPECT_LT(first.detection_s, 1005.0);
-  EXPECT_EQ(second.isolated_thruster, 12);
+  EXPECT_EQ(second.isolated_thruster, 11);  // T12
   EXPECT_GE(second.detection_s, 1100.0);
   EXPECT_LT(second.detection_s, 1105.0);
   EXPECT_EQ(second.recovery_s, -1.0);  // branch B was the last standby group
-  EXPECT_EQ(r.fdir.isolated_thruster, 8);  // the top-level fields are the first diagnosis's
+  EXPECT_EQ(r.fdir.isolated_thruster, 7);  // the top-level fields are the first diagnosis's
 }
 
 std::string read_file(const std::filesystem::path& path) {

@@ -1,0 +1,49 @@
+// runs.csv rows: thrusters are written as n of their name Tn, 0 for none (docs/style.md), from the
+// index and kNoThruster the code holds; the summary reads them back to the same indices.
+#include "campaign/run_row.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace chaser::campaign {
+namespace {
+
+std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out(1);
+  for (char c : line) {
+    if (c == ',') out.emplace_back();
+    else out.back().push_back(c);
+  }
+  return out;
+}
+
+std::string column(const RunRecord& r, const std::string& name) {
+  const std::vector<std::string> names = fields(runs_header());
+  const std::vector<std::string> values = fields(format_row(r));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return values[i];
+  ADD_FAILURE() << "no column " << name;
+  return {};
+}
+
+TEST(RunRow, ThrustersAreWrittenAsTheNumberOfTheirNameAndZeroForNone) {
+  RunSetup faulty;
+  faulty.fault_case = FaultCase::kLeak;
+  faulty.fault = model::FaultParams{.kind = model::FaultKind::kLeak, .thruster = 2, .onset_s = 1000.0};
+  RunRecord r = error_record(faulty);  // no figures: every scheme isolated none
+  EXPECT_EQ(r.fault_thruster, 2);
+  EXPECT_EQ(column(r, "fault_thruster"), "3");  // T3
+  for (const char* scheme : {"position", "attitude", "deficit", "fdir"})
+    EXPECT_EQ(column(r, std::string(scheme) + "_isolated"), "0") << scheme;
+  r.attitude.isolated = 7;
+  EXPECT_EQ(column(r, "attitude_isolated"), "8");  // T8
+
+  const RunRecord none = error_record(RunSetup{});
+  EXPECT_EQ(none.fault_thruster, model::kNoThruster);
+  EXPECT_EQ(column(none, "fault_thruster"), "0");
+}
+
+}  // namespace
+}  // namespace chaser::campaign
