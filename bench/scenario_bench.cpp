@@ -72,7 +72,7 @@ struct LoopFixture {
     for (int k = 0; k < 5000; ++k) step();
   }
   static plant::RigidState start_state(const model::Scenario& s) {
-    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, s.orbit.mean_motion_radps(), 0.0);
+    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, model::TargetOrbit(s.orbit), 0.0);
     return plant::RigidState{ref.r_lvlh_m, ref.v_lvlh_mps, ref.q_inertial_from_body, ref.omega_body_radps,
                              s.chaser.mass_kg};
   }
@@ -201,7 +201,7 @@ void BM_FdirPeriod(benchmark::State& state, Fdi fdi) {
                                          .period = f.last_meas.t / f.period_ns,
                                          .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                                          .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
-                                         .q_inertial_from_lvlh = q_inertial_from_lvlh(f.scenario.orbit.mean_motion_radps(), t_s),
+                                         .q_inertial_from_lvlh = f.flight_params.orbit.q_inertial_from_lvlh(t_s),
                                          .ton = flight::watched_on_times(f.flight_params.fdir, f.flight_state.fdir, out.command.ton),
                                          .commanded_wrench = out.commanded_wrench});
     plant::step_plant(f.plant.params, f.plant.state, out.command, f.t_ns);

@@ -34,8 +34,8 @@ Quat q_lvlh_from_hill();
 Quat q_hill_from_lvlh();
 
 // The orbital rate [rad/s], the angular velocity of both frames relative to inertial, in Hill
-// components: (0, -n, 0) (the vector of Zhou 2018, eq. 11). In LVLH components it is omega_lvlh_in_lvlh(n) =
-// (0, 0, n) of core/rotation.hpp; the two are the same vector (tested).
+// components: (0, -n, 0) (the vector of Zhou 2018, eq. 11). In LVLH components it is (0, 0, n), the
+// rate model::TargetOrbit gives for a circular orbit; the two are the same vector (tested).
 Vec3 omega_hill_in_hill(double mean_motion_radps);
 
 }  // namespace chaser

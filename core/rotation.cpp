@@ -46,12 +46,6 @@ Vec3 small_angle_error_body(const Quat& q_inertial_from_desired, const Quat& q_i
   return (q.w() < 0.0 ? -2.0 : 2.0) * q.vec();
 }
 
-Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s) {
-  const double half = 0.5 * mean_motion_radps * t_s;
-  return Quat(std::cos(half), 0.0, 0.0, std::sin(half));
-}
-
-Vec3 omega_lvlh_in_lvlh(double mean_motion_radps) { return Vec3(0.0, 0.0, mean_motion_radps); }
 
 // MSR: x zenith, y along-track, z orbit normal. Zhou: x along-track, y anti-normal, z nadir.
 Vec3 zhou_from_msr(const Vec3& v) { return Vec3(v.y(), -v.z(), -v.x()); }

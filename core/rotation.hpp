@@ -7,8 +7,8 @@
 // Two Hill (LVLH) frames appear in the papers:
 //  - MSR (Fonod 2015): x radial out (zenith), y along-track, z orbit normal. Used by the MSR scenario.
 //  - Manual RVD (Zhou 2018): x along-track, y opposite the orbit normal, z towards the planet (nadir).
-// The inertial frame of a run is the MSR LVLH frame at t = 0; LVLH then turns about its z axis at
-// the mean motion n.
+// The inertial frame of a run is the MSR LVLH frame at t = 0; where LVLH is at a later time is the
+// target orbit's answer (model/target_orbit.hpp), not a formula of this file.
 #include "core/types.hpp"
 
 namespace chaser {
@@ -35,11 +35,6 @@ Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_iner
 // them. No division, no series: it runs in the attitude FDI scheme every control period.
 Vec3 small_angle_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body);
 
-// Orientation of the MSR LVLH frame in the run's inertial frame at time t for mean motion n.
-Quat q_inertial_from_lvlh(double mean_motion_radps, double t_s);
-
-// Angular velocity of the MSR LVLH frame relative to inertial, in LVLH components: (0, 0, n).
-Vec3 omega_lvlh_in_lvlh(double mean_motion_radps);
 
 // Converts between the MSR and the manual-RVD Hill frames (a fixed permutation with signs).
 Vec3 zhou_from_msr(const Vec3& v_msr);

@@ -6,7 +6,7 @@ namespace chaser::flight {
 
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
-      .mean_motion_radps = scenario.orbit.mean_motion_radps(),
+      .orbit = model::TargetOrbit(scenario.orbit),
       .period_ns = from_seconds(scenario.control_period_s),
       .guidance = scenario.guidance,
       .navigation = make_nav_params(scenario),
@@ -29,13 +29,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   }
   const double t_s = to_seconds(meas.t);
   out.estimate = step_nav(params.navigation, state.navigation, meas, state.force_cmd_lvlh_N_prev);
-  out.reference = guidance_reference(params.guidance, params.mean_motion_radps, t_s);
+  const model::LvlhFrame lvlh = params.orbit.lvlh_at(t_s);
+  out.reference = guidance_reference(params.guidance, t_s, lvlh);
   out.force_demand_lvlh_N = position_control(params.position, out.estimate, out.reference);
   out.torque_demand_body_Nm = attitude_control(params.attitude, out.estimate, out.reference);
 
   // The force is wanted in LVLH; the thrusters are fixed in the body: rotate with the estimate.
-  const Quat q_inertial_from_lvlh_now = q_inertial_from_lvlh(params.mean_motion_radps, t_s);
-  const Quat q_body_from_lvlh = out.estimate.q_inertial_from_body.conjugate() * q_inertial_from_lvlh_now;
+  const Quat q_body_from_lvlh = out.estimate.q_inertial_from_body.conjugate() * lvlh.q_inertial_from_lvlh;
   Vec6 demand_wrench;
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
@@ -48,7 +48,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .period = meas.t / params.period_ns,
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
-                          .q_inertial_from_lvlh = q_inertial_from_lvlh_now,
+                          .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
                           .ton = watched_on_times(params.fdir, state.fdir, out.command.ton),
                           .commanded_wrench = managed.commanded_wrench};
   out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);

@@ -15,11 +15,12 @@
 #include "model/messages.hpp"
 #include "model/recovery.hpp"
 #include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
 
 namespace chaser::flight {
 
 struct FlightParams {
-  double mean_motion_radps = 0;  // [rad/s] n of the target orbit
+  model::TargetOrbit orbit;      // the target orbit the flight software believes (LVLH at t)
   TimeNs period_ns = 0;          // [ns] control period T
   model::GuidanceParams guidance;
   NavParams navigation;

@@ -54,7 +54,7 @@ Quat target_pointing_q_lvlh_from_body(const Vec3& approach_axis_lvlh) {
   return Quat(lvlh_from_body).normalized();
 }
 
-GuidanceRef guidance_reference(const model::GuidanceParams& params, double mean_motion_radps, double t_s) {
+GuidanceRef guidance_reference(const model::GuidanceParams& params, double t_s, const model::LvlhFrame& lvlh) {
   const Vec3 axis = params.approach_axis_lvlh.normalized();
   const ApproachProfile p = approach_profile(params, t_s);
   const Quat q_lvlh_from_body = target_pointing_q_lvlh_from_body(axis);
@@ -63,8 +63,8 @@ GuidanceRef guidance_reference(const model::GuidanceParams& params, double mean_
   ref.v_lvlh_mps = p.rate_mps * axis;
   ref.a_lvlh_mps2 = p.accel_mps2 * axis;
   ref.j_lvlh_mps3 = p.jerk_mps3 * axis;
-  ref.q_inertial_from_body = q_inertial_from_lvlh(mean_motion_radps, t_s) * q_lvlh_from_body;
-  ref.omega_body_radps = q_lvlh_from_body.conjugate() * omega_lvlh_in_lvlh(mean_motion_radps);
+  ref.q_inertial_from_body = lvlh.q_inertial_from_lvlh * q_lvlh_from_body;
+  ref.omega_body_radps = q_lvlh_from_body.conjugate() * lvlh.omega_lvlh_radps;
   return ref;
 }
 

@@ -19,6 +19,7 @@
 // attitude is constant in LVLH and turns with it at the orbit rate n about LVLH z.
 #include "core/types.hpp"
 #include "model/gnc.hpp"
+#include "model/target_orbit.hpp"
 
 namespace chaser::flight {
 
@@ -43,7 +44,11 @@ ApproachProfile approach_profile(const model::GuidanceParams& params, double t_s
 // Constant target-pointing attitude of the body relative to LVLH for an approach axis.
 Quat target_pointing_q_lvlh_from_body(const Vec3& approach_axis_lvlh);
 
-// The full reference at time t (a pure function of time; allocation-free).
-GuidanceRef guidance_reference(const model::GuidanceParams& params, double mean_motion_radps, double t_s);
+// The full reference at time t (a pure function of time; allocation-free), in the target's LVLH
+// frame at t as the orbit model gives it.
+GuidanceRef guidance_reference(const model::GuidanceParams& params, double t_s, const model::LvlhFrame& lvlh);
+inline GuidanceRef guidance_reference(const model::GuidanceParams& params, const model::TargetOrbit& orbit, double t_s) {
+  return guidance_reference(params, t_s, orbit.lvlh_at(t_s));
+}
 
 }  // namespace chaser::flight

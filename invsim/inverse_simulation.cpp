@@ -42,7 +42,7 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
   c.rvd = make_rvd_constants(p.mu_m3ps2, p.radius_m(), p.mass_kg, p.inertia_kgm2, period_s);
   Vec6 weights;
   for (int i = 0; i < 6; ++i) weights(i) = p.inverse.state_weights[i];
-  c.inverse = make_inverse_model(c.rvd.dynamics.mean_motion_radps, p.step_s, p.inverse.horizon_steps, weights);
+  c.inverse = make_inverse_model(c.rvd.dynamics.orbit.mean_motion_radps(), p.step_s, p.inverse.horizon_steps, weights);
   for (int axis = 0; axis < 3; ++axis) {
     for (int d : {1, -1}) {
       c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
@@ -158,7 +158,7 @@ RvdState initial_state(const RunContext& c, const model::InvSimParams& p) {
   s.v_hill_mps = p.v0_hill_mps;
   s.q_hill_from_body = Quat(matrix_from_euler321(p.euler0_rad));
   s.omega_body_radps = p.omega0_rel_body_radps + s.q_hill_from_body.toRotationMatrix().transpose() *
-                                                   omega_hill_in_hill(c.rvd.dynamics.mean_motion_radps);
+                                                   omega_hill_in_hill(c.rvd.dynamics.orbit.mean_motion_radps());
   return s;
 }
 

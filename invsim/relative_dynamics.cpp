@@ -11,9 +11,7 @@ namespace chaser::invsim {
 RvdConstants make_rvd_constants(double mu, double radius, double mass, const Mat3& inertia,
                                 double max_substep_s) {
   plant::DynamicsParams d;
-  d.mu_m3ps2 = mu;
-  d.orbit_radius_m = radius;
-  d.mean_motion_radps = std::sqrt(mu / (radius * radius * radius));
+  d.orbit = model::TargetOrbit(mu, radius);
   d.inertia_kgm2 = inertia;
   d.inertia_inv = inertia.inverse();
   d.gravity_gradient = false;
@@ -23,12 +21,12 @@ RvdConstants make_rvd_constants(double mu, double radius, double mass, const Mat
 
 Vec3 relative_gravity_accel(const RvdConstants& c, const Vec3& r, const Vec3& v) {
   return hill_from_lvlh(plant::relative_orbit_acceleration_lvlh(
-      c.dynamics.orbit_radius_m, c.dynamics.mean_motion_radps, lvlh_from_hill(r), lvlh_from_hill(v)));
+      c.dynamics.orbit.radius_m(), c.dynamics.orbit.mean_motion_radps(), lvlh_from_hill(r), lvlh_from_hill(v)));
 }
 
 Vec3 relative_rate_body(const RvdConstants& c, const RvdState& s) {
   return s.omega_body_radps -
-         s.q_hill_from_body.toRotationMatrix().transpose() * omega_hill_in_hill(c.dynamics.mean_motion_radps);
+         s.q_hill_from_body.toRotationMatrix().transpose() * omega_hill_in_hill(c.dynamics.orbit.mean_motion_radps());
 }
 
 void propagate_piece(const RvdConstants& c, const Vec3& force, const Vec3& torque, double dt,
@@ -47,7 +45,7 @@ void propagate_piece(const RvdConstants& c, const Vec3& force, const Vec3& torqu
                          plant::PieceInput{.force_body_N = force, .torque_body_Nm = torque});
   s.r_hill_m = hill_from_lvlh(x.r_lvlh_m);
   s.v_hill_mps = hill_from_lvlh(x.v_lvlh_mps);
-  const Quat q_lvlh_from_inertial = q_inertial_from_lvlh(c.dynamics.mean_motion_radps, dt).conjugate();
+  const Quat q_lvlh_from_inertial = c.dynamics.orbit.q_inertial_from_lvlh(dt).conjugate();
   s.q_hill_from_body = (q_hill_from_lvlh() * q_lvlh_from_inertial * x.q_inertial_from_body).normalized();
   s.omega_body_radps = x.omega_body_radps;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Circular target orbit about a central body (Fonod 2015, eqs. 6-7).
+// Circular target orbit about a central body (Fonod 2015, eqs. 6-7): the scenario's parameters.
+// The core asks the orbit through model::TargetOrbit (model/target_orbit.hpp).
 #include <cmath>
 
 namespace chaser::model {
@@ -9,8 +10,10 @@ struct OrbitParams {
   double body_radius_m = 3.3895e6;    // [m] mean equatorial radius (Mars)
   double altitude_m = 500e3;          // [m] target orbit altitude
 
-  double radius_m() const { return body_radius_m + altitude_m; }                       // a
-  double mean_motion_radps() const { return std::sqrt(mu_m3ps2 / std::pow(radius_m(), 3)); }  // eq. 7
+  double radius_m() const { return body_radius_m + altitude_m; }  // a
+  double mean_motion_radps() const { return mean_motion_radps(mu_m3ps2, radius_m()); }
+  // n = sqrt(mu / a^3), eq. 7: the one formula, for the scenario's orbit and for TargetOrbit.
+  static double mean_motion_radps(double mu_m3ps2, double radius_m) { return std::sqrt(mu_m3ps2 / std::pow(radius_m, 3)); }
 };
 
 }  // namespace chaser::model

@@ -10,9 +10,7 @@ namespace chaser::plant {
 
 DynamicsParams make_dynamics_params(const model::Scenario& s) {
   return DynamicsParams{
-      .mu_m3ps2 = s.orbit.mu_m3ps2,
-      .orbit_radius_m = s.orbit.radius_m(),
-      .mean_motion_radps = s.orbit.mean_motion_radps(),
+      .orbit = model::TargetOrbit(s.orbit),
       .inertia_kgm2 = s.chaser.inertia_kgm2,
       .inertia_inv = s.chaser.inertia_kgm2.inverse(),
       .gravity_gradient = s.environment.gravity_gradient,
@@ -47,7 +45,8 @@ void unpack(const StateVec& y, RigidState& x) {
   x.mass_kg = y[kM];
 }
 
-// Orientation of LVLH in inertial at a stage time: a turn about z by n t, kept as (cos, sin).
+// Orientation of LVLH in inertial at a stage time: a turn about z by the argument of latitude u
+// travelled since t = 0, kept as (cos u, sin u).
 struct LvlhAngle {
   double c, s;
   LvlhAngle turned(const LvlhAngle& d) const { return {c * d.c - s * d.s, s * d.c + c * d.s}; }
@@ -81,14 +80,14 @@ StateVec derivative(const DynamicsParams& p, const PieceInput& u, const StateVec
   const double m = y[kM];
 
   const Vec3 thrust_lvlh_N = lvlh_from_inertial(lvlh, q * u.force_body_N);
-  const Vec3 accel = relative_orbit_acceleration_lvlh(p.orbit_radius_m, p.mean_motion_radps, r, v) +
+  const Vec3 accel = relative_orbit_acceleration_lvlh(p.orbit.radius_m(), p.orbit.mean_motion_radps(), r, v) +
                      (thrust_lvlh_N + u.force_lvlh_N) * (1.0 / m);
 
   Vec3 torque = u.torque_body_Nm;
   if (p.gravity_gradient) {
-    const Vec3 r_planet_lvlh_m(p.orbit_radius_m + r.x(), r.y(), r.z());
+    const Vec3 r_planet_lvlh_m(p.orbit.radius_m() + r.x(), r.y(), r.z());
     const Vec3 r_planet_body_m = q.conjugate() * inertial_from_lvlh(lvlh, r_planet_lvlh_m);
-    const double gain = gravity_gradient_gain(p.mu_m3ps2, r_planet_lvlh_m.squaredNorm());
+    const double gain = gravity_gradient_gain(p.orbit.mu_m3ps2(), r_planet_lvlh_m.squaredNorm());
     torque += gravity_gradient_torque_body(gain, r_planet_body_m, p.inertia_kgm2);
   }
 
@@ -107,10 +106,11 @@ void propagate_piece(const DynamicsParams& p, RigidState& x, double t0_s, double
   if (!(dt_s > 0.0)) return;
   const int steps = substep_count(dt_s, p.max_substep_s);
   const double h = dt_s / steps;
-  const double n = p.mean_motion_radps;
-  // LVLH angle at the substep start, and its turn over half a substep: stage times t, t + h/2, t + h.
-  LvlhAngle start{std::cos(n * t0_s), std::sin(n * t0_s)};
-  const LvlhAngle half_turn = small_turn(0.5 * n * h);
+  // LVLH angle at the substep start, and its turn over half a substep (the circle's u' = n): stage
+  // times t, t + h/2, t + h.
+  const double u0 = p.orbit.argument_of_latitude_rad(t0_s);
+  LvlhAngle start{std::cos(u0), std::sin(u0)};
+  const LvlhAngle half_turn = small_turn(0.5 * p.orbit.mean_motion_radps() * h);
 
   StateVec y = pack(x);
   for (int i = 0; i < steps; ++i) {  // classical RK4

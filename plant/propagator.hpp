@@ -14,6 +14,7 @@
 // the measured accuracy and cost.
 #include "core/types.hpp"
 #include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
 #include "plant/rigid_body.hpp"
 
 namespace chaser::plant {
@@ -24,9 +25,10 @@ namespace chaser::plant {
 inline constexpr double kDefaultMaxSubstepS = 0.1;  // [s]
 
 struct DynamicsParams {  // derived once per run from the scenario (make_dynamics_params)
-  double mu_m3ps2 = 0.0;           // [m^3/s^2] gravitational parameter
-  double orbit_radius_m = 1.0;     // [m] a, target orbit radius
-  double mean_motion_radps = 0.0;  // [rad/s] n = sqrt(mu / a^3), Fonod 2015, eq. 7
+  // The target's orbit: its radius a, mean motion n and mu for eq. 8 and the gravity gradient, and
+  // the angle LVLH has turned since t = 0. Eq. 8 is the circular orbit's relative motion; a
+  // perturbed orbit (issue 17) brings its own relative dynamics.
+  model::TargetOrbit orbit;
   Mat3 inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the CoM, body axes, constant
   Mat3 inertia_inv = Mat3::Identity();   // [1/(kg m^2)]
   bool gravity_gradient = false;         // gravity-gradient torque on

@@ -17,13 +17,12 @@ namespace {
 
 // The chaser's truth at t = 0: on the approach axis at the start distance, at rest and pointing at
 // the target, unless the scenario gives the state explicitly.
-plant::RigidState initial_truth(const model::Scenario& s) {
-  const double n = s.orbit.mean_motion_radps();
+plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrbit& orbit) {
   const model::InitialState& init = s.initial;
   plant::RigidState x{};
   x.mass_kg = s.chaser.mass_kg;
   if (init.use_guidance_start) {
-    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, n, 0.0);
+    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, orbit, 0.0);
     x.r_lvlh_m = ref.r_lvlh_m;
     x.v_lvlh_mps = ref.v_lvlh_mps;
     x.q_inertial_from_body = ref.q_inertial_from_body;
@@ -31,13 +30,14 @@ plant::RigidState initial_truth(const model::Scenario& s) {
   } else {
     x.r_lvlh_m = init.r_lvlh_m;
     x.v_lvlh_mps = init.v_lvlh_mps;
-    x.q_inertial_from_body = q_inertial_from_lvlh(n, 0.0) * init.q_lvlh_from_body;
+    x.q_inertial_from_body = orbit.q_inertial_from_lvlh(0.0) * init.q_lvlh_from_body;
     x.omega_body_radps = init.omega_body_radps;
   }
   return x;
 }
 
-MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, const flight::GuidanceRef& ref) {
+MonitorSample monitor_sample(double t_s, const model::TargetOrbit& orbit, const plant::RigidState& x,
+                             const flight::GuidanceRef& ref) {
   return MonitorSample{
       .t_s = t_s,
       .r_lvlh_m = x.r_lvlh_m,
@@ -46,7 +46,7 @@ MonitorSample monitor_sample(double t_s, double n, const plant::RigidState& x, c
       .r_ref_lvlh_m = ref.r_lvlh_m,
       .v_ref_lvlh_mps = ref.v_lvlh_mps,
       .q_ref_inertial_from_body = ref.q_inertial_from_body,
-      .q_inertial_from_lvlh = q_inertial_from_lvlh(n, t_s),
+      .q_inertial_from_lvlh = orbit.q_inertial_from_lvlh(t_s),
   };
 }
 
@@ -105,11 +105,11 @@ RunResult run_scenario(const model::Scenario& scenario, const RunOptions& option
 RunResult run_scenario(const model::Scenario& scenario, const flight::FlightParams& flight_params,
                        const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
-  const double n = scenario.orbit.mean_motion_radps();
+  const model::TargetOrbit orbit(scenario.orbit);  // the truth's, for the initial state and the monitor
   const TimeNs period_ns = from_seconds(scenario.control_period_s);
   const std::int64_t periods = from_seconds(scenario.duration_s) / period_ns;
 
-  plant::Plant plant = plant::make_plant(scenario, initial_truth(scenario), scenario.seed);
+  plant::Plant plant = plant::make_plant(scenario, initial_truth(scenario, orbit), scenario.seed);
   flight::FlightState flight_state;
 
   std::unique_ptr<TelemetryWriter> telemetry;
@@ -135,7 +135,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
                                                 ? flight::watched_set(flight_params.fdir, flight_state.fdir)
                                                 : flight::fdi::WatchedSet{};
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
-    const MonitorSample sample = monitor_sample(t_s, n, truth, out.reference);
+    const MonitorSample sample = monitor_sample(t_s, orbit, truth, out.reference);
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
@@ -160,8 +160,8 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   }
 
   const double t_end_s = to_seconds(k * period_ns);
-  const flight::GuidanceRef final_ref = flight::guidance_reference(scenario.guidance, n, t_end_s);
-  monitor_final(scenario, monitor_sample(t_end_s, n, plant.state.rigid, final_ref), result.figures);
+  const flight::GuidanceRef final_ref = flight::guidance_reference(scenario.guidance, orbit, t_end_s);
+  monitor_final(scenario, monitor_sample(t_end_s, orbit, plant.state.rigid, final_ref), result.figures);
 
   result.fdir = fdir_result(flight_params, flight_state);
   result.propellant_used_kg = plant.state.propellant_used_kg;

@@ -72,13 +72,6 @@ TEST(Rotation, SmallAngleErrorIsTwiceTheVectorPartOfTheShorterRotation) {
   }
 }
 
-// After a quarter orbit the LVLH x axis (radial) points along the initial y axis (along-track).
-TEST(Rotation, LvlhTurnsAboutOrbitNormal) {
-  const double n = 1e-3;
-  const Quat q = q_inertial_from_lvlh(n, 0.5 * kPi / n);
-  EXPECT_LT((q * Vec3::UnitX() - Vec3::UnitY()).norm(), 1e-12);
-}
-
 // The two Hill conventions: MSR radial-out is Zhou's -z (z points to the planet), and the maps
 // are mutual inverses.
 TEST(Rotation, HillFrameConversions) {

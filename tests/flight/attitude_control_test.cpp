@@ -14,7 +14,7 @@ namespace {
 constexpr double kT = 0.1;  // [s]
 
 Mat3 msr_inertia() { return Vec3(2000.0, 2500.0, 3000.0).asDiagonal(); }
-double mean_motion() { return model::OrbitParams{}.mean_motion_radps(); }
+const model::TargetOrbit kOrbit{model::OrbitParams{}};  // the MSR scenario's
 
 // Truth for these tests: the nonlinear rigid body (Euler's equation and quaternion kinematics)
 // under a torque held over each period, RK4 with 10 substeps (error ~1e-14 at these rates).
@@ -106,15 +106,14 @@ TEST(AttitudeControl, FeedForwardMakesReferenceAFixedPoint) {
   inertia(0, 2) = inertia(2, 0) = 150.0;
   const AttitudeControlParams ac = design_attitude_control(model::ControlParams{}, inertia, kT);
   const model::GuidanceParams gp;
-  const double n = mean_motion();
-  GuidanceRef ref = guidance_reference(gp, n, 0.0);
+  GuidanceRef ref = guidance_reference(gp, kOrbit, 0.0);
   Body b{ref.q_inertial_from_body, ref.omega_body_radps};
   const Vec3 torque0 = attitude_control(ac, nav_of(b), ref);
   EXPECT_LT((torque0 - ref.omega_body_radps.cross(inertia * ref.omega_body_radps)).norm(), 1e-18);
   EXPECT_GT(torque0.norm(), 1e-5);
   double worst = 0.0;
   for (int k = 0; k < 36000; ++k) {
-    ref = guidance_reference(gp, n, k * kT);
+    ref = guidance_reference(gp, kOrbit, k * kT);
     worst = std::max(worst, attitude_error_body(ref.q_inertial_from_body, b.q).norm());
     b = propagate(b, inertia, attitude_control(ac, nav_of(b), ref), kT);
   }
@@ -129,12 +128,11 @@ TEST(AttitudeControl, AcquiresTurningReferenceFromLargeError) {
   inertia(0, 1) = inertia(1, 0) = -100.0;
   const AttitudeControlParams ac = design_attitude_control(model::ControlParams{}, inertia, kT);
   const model::GuidanceParams gp;
-  const double n = mean_motion();
-  Body b{guidance_reference(gp, n, 0.0).q_inertial_from_body * quat_from_rotation_vector(Vec3(0.3, -0.3, 0.25)),
+  Body b{guidance_reference(gp, kOrbit, 0.0).q_inertial_from_body * quat_from_rotation_vector(Vec3(0.3, -0.3, 0.25)),
          Vec3(0.005, -0.003, 0.002)};
   for (int k = 0; k < 1500; ++k)
-    b = propagate(b, inertia, attitude_control(ac, nav_of(b), guidance_reference(gp, n, k * kT)), kT);
-  const GuidanceRef ref = guidance_reference(gp, n, 1500 * kT);
+    b = propagate(b, inertia, attitude_control(ac, nav_of(b), guidance_reference(gp, kOrbit, k * kT)), kT);
+  const GuidanceRef ref = guidance_reference(gp, kOrbit, 1500 * kT);
   EXPECT_LT(attitude_error_body(ref.q_inertial_from_body, b.q).norm(), 1e-6);
   EXPECT_LT((b.omega - ref.omega_body_radps).norm(), 1e-7);
 }

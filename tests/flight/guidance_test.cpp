@@ -10,7 +10,8 @@
 namespace chaser::flight {
 namespace {
 
-constexpr double kN = 8.5e-4;  // [rad/s] Mars orbit rate, order of magnitude of the MSR scenario
+const model::TargetOrbit kOrbit{model::OrbitParams{}};  // the MSR scenario's: Mars, 500 km
+const double kN = kOrbit.mean_motion_radps();           // [rad/s]
 
 model::GuidanceParams default_params() { return model::GuidanceParams{}; }
 
@@ -20,13 +21,13 @@ TEST(Guidance, EndpointsAndHolds) {
   const model::GuidanceParams p = default_params();
   const Vec3 u = p.approach_axis_lvlh.normalized();
   for (double t : {-100.0, 0.0}) {
-    const GuidanceRef ref = guidance_reference(p, kN, t);
+    const GuidanceRef ref = guidance_reference(p, kOrbit, t);
     EXPECT_LT((ref.r_lvlh_m - p.start_distance_m * u).norm(), 1e-15);
     EXPECT_EQ(ref.v_lvlh_mps.norm(), 0.0);
     EXPECT_EQ(ref.a_lvlh_mps2.norm(), 0.0);
   }
   for (double t : {p.approach_duration_s, p.approach_duration_s + 500.0}) {
-    const GuidanceRef ref = guidance_reference(p, kN, t);
+    const GuidanceRef ref = guidance_reference(p, kOrbit, t);
     EXPECT_LT((ref.r_lvlh_m - p.capture_distance_m * u).norm(), 1e-14);
     EXPECT_EQ(ref.v_lvlh_mps.norm(), 0.0);
     EXPECT_EQ(ref.a_lvlh_mps2.norm(), 0.0);
@@ -41,8 +42,8 @@ TEST(Guidance, VelocityAndAccelerationAreDerivatives) {
   const model::GuidanceParams p = default_params();
   const double h = 1e-3;
   for (double t = 0.37; t < p.approach_duration_s; t += 7.3) {
-    const GuidanceRef ref = guidance_reference(p, kN, t);
-    const GuidanceRef plus = guidance_reference(p, kN, t + h), minus = guidance_reference(p, kN, t - h);
+    const GuidanceRef ref = guidance_reference(p, kOrbit, t);
+    const GuidanceRef plus = guidance_reference(p, kOrbit, t + h), minus = guidance_reference(p, kOrbit, t - h);
     EXPECT_LT(((plus.r_lvlh_m - minus.r_lvlh_m) / (2 * h) - ref.v_lvlh_mps).norm(), 1e-9) << t;
     EXPECT_LT(((plus.v_lvlh_mps - minus.v_lvlh_mps) / (2 * h) - ref.a_lvlh_mps2).norm(), 1e-9) << t;
     EXPECT_LT(((plus.a_lvlh_mps2 - minus.a_lvlh_mps2) / (2 * h) - ref.j_lvlh_mps3).norm(), 1e-9) << t;
@@ -105,11 +106,11 @@ TEST(Guidance, TargetPointingAttitude) {
 TEST(Guidance, AttitudeTurnsWithLvlhAtOrbitRate) {
   const model::GuidanceParams p = default_params();
   for (double t : {0.0, 300.0, 2000.0}) {
-    const GuidanceRef ref = guidance_reference(p, kN, t);
-    const Vec3 to_target_inertial = q_inertial_from_lvlh(kN, t) * (-ref.r_lvlh_m.normalized());
+    const GuidanceRef ref = guidance_reference(p, kOrbit, t);
+    const Vec3 to_target_inertial = kOrbit.q_inertial_from_lvlh(t) * (-ref.r_lvlh_m.normalized());
     EXPECT_LT((ref.q_inertial_from_body * Vec3::UnitX() - to_target_inertial).norm(), 1e-14);
     const double h = 0.01;
-    const Quat q_next = guidance_reference(p, kN, t + h).q_inertial_from_body;
+    const Quat q_next = guidance_reference(p, kOrbit, t + h).q_inertial_from_body;
     const Vec3 omega_fd = rotation_vector_from_quat(ref.q_inertial_from_body.conjugate() * q_next) / h;
     EXPECT_LT((omega_fd - ref.omega_body_radps).norm(), 1e-12);
     EXPECT_NEAR(ref.omega_body_radps.norm(), kN, 1e-18);

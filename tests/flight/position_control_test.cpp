@@ -93,12 +93,12 @@ TEST(PositionControl, FeedForwardTracksApproachWithoutError) {
   const model::GuidanceParams gp;
   const double n = mean_motion();
   const DiscreteLinear6 m = discrete_hcw(n, kT);
-  GuidanceRef ref = guidance_reference(gp, n, 0.0);
+  GuidanceRef ref = guidance_reference(gp, model::TargetOrbit(model::OrbitParams{}), 0.0);
   Vec6 x;
   x << ref.r_lvlh_m, ref.v_lvlh_mps;
   double worst = 0.0;
   for (int k = 0; k < 12000; ++k) {
-    ref = guidance_reference(gp, n, k * kT);
+    ref = guidance_reference(gp, model::TargetOrbit(model::OrbitParams{}), k * kT);
     worst = std::max(worst, (x.head<3>() - ref.r_lvlh_m).norm());
     x = m.Ad * x + m.Bd / kMass * position_control(pc, nav_at(x.head<3>(), x.tail<3>()), ref);
   }

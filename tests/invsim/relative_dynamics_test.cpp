@@ -22,7 +22,7 @@ RvdConstants leo(double max_substep_s = kRunPieceS) {
   return make_rvd_constants(kMu, kRadius, 8000.0, Vec3(6000.0, 28000.0, 28000.0).asDiagonal(), max_substep_s);
 }
 
-double mean_motion(const RvdConstants& c) { return c.dynamics.mean_motion_radps; }
+double mean_motion(const RvdConstants& c) { return c.dynamics.orbit.mean_motion_radps(); }
 
 // Near the target eq. 1 reduces to the CW model (eq. 2): over 100 s from 100 m the nonlinear
 // propagation (0.25 s RK4 pieces) and the closed form agree to the neglected second-order terms,
@@ -172,7 +172,7 @@ TEST(RelativeDynamics, IsThePlantsPropagation) {
     t_s += d.dt_s;
   }
   const Quat q_hill_from_body =
-      q_hill_from_lvlh() * q_inertial_from_lvlh(mean_motion(c), t_s).conjugate() * x.q_inertial_from_body;
+      q_hill_from_lvlh() * c.dynamics.orbit.q_inertial_from_lvlh(t_s).conjugate() * x.q_inertial_from_body;
   std::printf("vs plant: |dr| %.2e m |dv| %.2e m/s attitude %.2e rad |dw| %.2e rad/s\n",
               (s.r_hill_m - hill_from_lvlh(x.r_lvlh_m)).norm(), (s.v_hill_mps - hill_from_lvlh(x.v_lvlh_mps)).norm(),
               s.q_hill_from_body.angularDistance(q_hill_from_body), (s.omega_body_radps - x.omega_body_radps).norm());

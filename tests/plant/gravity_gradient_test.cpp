@@ -56,15 +56,15 @@ TEST(GravityGradient, PropagatorAppliesItWhenEnabled) {
   DynamicsParams p = make_dynamics_params(model::Scenario{});
   p.inertia_kgm2 = kInertia;
   p.inertia_inv = kInertia.inverse();
-  const double n = p.mean_motion_radps, t0 = 0.5 * kPi / n;
+  const double n = p.orbit.mean_motion_radps(), t0 = 0.5 * kPi / n;
   RigidState x;
   x.mass_kg = 2500.0;
-  x.q_inertial_from_body = q_inertial_from_lvlh(n, t0) * quat_from_rotation_vector(Vec3(0.0, 0.0, 0.25 * kPi));
+  x.q_inertial_from_body = p.orbit.q_inertial_from_lvlh(t0) * quat_from_rotation_vector(Vec3(0.0, 0.0, 0.25 * kPi));
   x.omega_body_radps = Vec3(0.0, 0.0, n);
   RigidState off = x;
   p.gravity_gradient = true;
   propagate_piece(p, x, t0, 1.0, PieceInput{});
-  const double spin_up = 3.0 * p.mu_m3ps2 / std::pow(p.orbit_radius_m, 3) * (2000.0 - 2500.0) * 0.5 / 3000.0;
+  const double spin_up = 3.0 * p.orbit.mu_m3ps2() / std::pow(p.orbit.radius_m(), 3) * (2000.0 - 2500.0) * 0.5 / 3000.0;
   EXPECT_NEAR(x.omega_body_radps.z() - n, spin_up, 1e-6 * std::abs(spin_up));
   EXPECT_LT(x.omega_body_radps.head<2>().norm(), 1e-6 * std::abs(spin_up));
   p.gravity_gradient = false;

@@ -18,9 +18,7 @@ const double kN = std::sqrt(kMu / (kA * kA * kA));  // [rad/s]
 
 DynamicsParams translation_params() {
   DynamicsParams p;
-  p.mu_m3ps2 = kMu;
-  p.orbit_radius_m = kA;
-  p.mean_motion_radps = kN;
+  p.orbit = model::TargetOrbit(kMu, kA);
   p.gravity_gradient = false;
   return p;
 }
