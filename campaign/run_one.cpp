@@ -14,7 +14,7 @@ namespace {
 
 sim::RunResult fly(const RunSetup& setup, const CampaignPlan& plan, const flight::FlightParams& flight,
                    const std::string& telemetry_dir) {
-  sim::RunOptions options{.telemetry_path = "", .record_glr_per_second = true};
+  sim::RunOptions options{.telemetry_path = "", .telemetry_channels = {}, .record_glr_per_second = true};
   if (telemetry_dir.empty()) return sim::run_scenario(setup.truth, flight, options);
   std::filesystem::create_directories(telemetry_dir);
   options.telemetry_path = (std::filesystem::path(telemetry_dir) / "telemetry.csv").string();

@@ -17,6 +17,8 @@ struct RunArgs {
   std::string out_dir = "out";
   std::optional<std::uint64_t> seed;
   std::vector<std::string> overrides;
+  std::string telemetry_format = "csv";  // "csv", "npy" or "none"
+  std::vector<std::string> channels;     // name patterns; empty: every channel
 };
 
 struct FdiDesignArgs {

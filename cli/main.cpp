@@ -35,11 +35,18 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RunArgs run;
-  CLI::App* run_cmd = app.add_subcommand("run", "Fly one closed-loop run; writes telemetry.csv and summary.json");
+  CLI::App* run_cmd =
+      app.add_subcommand("run", "Fly one closed-loop run; writes telemetry.csv (or .npy) and summary.json");
   run_cmd->add_option("scenario", run.scenario_path, "Scenario file (YAML)")->required();
   run_cmd->add_option("--out", run.out_dir, "Output directory")->capture_default_str();
   run_cmd->add_option("--seed", run.seed, "Run seed (replaces the scenario's seed)");
   run_cmd->add_option("--set", run.overrides, "Override a scenario key: key.path=value (repeatable)");
+  run_cmd->add_option("--telemetry", run.telemetry_format, "Telemetry file: csv, npy (NumPy, np.load) or none")
+      ->check(CLI::IsMember({"csv", "npy", "none"}))
+      ->capture_default_str();
+  run_cmd->add_option("--channels", run.channels,
+                      "Telemetry channels to write, by name pattern ('*', '?'), comma-separated; t_s always")
+      ->delimiter(',');
 
   std::string validate_path;
   std::vector<std::string> validate_overrides;

@@ -3,15 +3,34 @@
 #include <iostream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
 #include "cli/scenario_input.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
 #include "sim/summary.hpp"
+#include "sim/telemetry_channels.hpp"
 
 namespace chaser::cli {
 
+namespace {
+
+// Writes `text` to `path` through "<path>.partial" and a rename: the file is whole or absent.
+bool write_whole(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::path partial = path;
+  partial += ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    out << text;
+    if (!out.flush()) return false;
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, path, ec);
+  return !ec;
+}
+
+}  // namespace
 
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides) {
   const auto loaded = load_or_report(scenario_path, overrides);
@@ -26,6 +45,14 @@ int run_command(const RunArgs& args) {
   if (!loaded) return kExitBadInput;
   model::Scenario scenario = *loaded->scenario;
   if (args.seed) scenario.seed = *args.seed;
+  const std::vector<std::string> unmatched =
+      sim::unmatched_patterns(sim::telemetry_channels(scenario.thrusters.count), args.channels);
+  if (!unmatched.empty()) {
+    std::cerr << fmt::format("chaser: --channels: {} match no telemetry channel (names as in telemetry.csv's "
+                             "header, e.g. r_lvlh_*, ton_cmd_?, glr_*)\n",
+                             fmt::join(unmatched, ", "));
+    return kExitBadInput;
+  }
 
   std::error_code ec;
   std::filesystem::create_directories(args.out_dir, ec);
@@ -34,19 +61,22 @@ int run_command(const RunArgs& args) {
     return kExitFailure;
   }
   const std::filesystem::path out(args.out_dir);
-  const sim::RunResult result = sim::run_scenario(scenario, {.telemetry_path = (out / "telemetry.csv").string()});
+  const std::filesystem::path telemetry =
+      args.telemetry_format == "none" ? std::filesystem::path() : out / ("telemetry." + args.telemetry_format);
+  const sim::RunResult result =
+      sim::run_scenario(scenario, {.telemetry_path = telemetry.string(), .telemetry_channels = args.channels});
   if (!result.telemetry_ok) {
-    std::cerr << fmt::format("chaser: cannot write {}\n", (out / "telemetry.csv").string());
+    std::cerr << fmt::format("chaser: cannot write {}\n", telemetry.string());
     return kExitFailure;
   }
-  std::ofstream summary(out / "summary.json");
-  summary << sim::run_summary(scenario, loaded->hash, result).dump(2) << '\n';
-  if (!summary) {
+  // summary.json last: where it exists, the run and its telemetry are complete.
+  if (!write_whole(out / "summary.json", sim::run_summary(scenario, loaded->hash, result).dump(2) + "\n")) {
     std::cerr << fmt::format("chaser: cannot write {}\n", (out / "summary.json").string());
     return kExitFailure;
   }
   std::cout << sim::summary_text(scenario, result);
-  std::cout << fmt::format("  wrote {} and {}\n", (out / "telemetry.csv").string(), (out / "summary.json").string());
+  std::cout << fmt::format("  wrote {}{}\n", telemetry.empty() ? "" : telemetry.string() + " and ",
+                           (out / "summary.json").string());
   return kExitOk;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <future>
 
 #include "core/rotation.hpp"
 #include "flight/fdi/design_inputs.hpp"
@@ -198,13 +200,18 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
   p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
   if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection) return p;
-  fdi::FdiSchemeParams position, attitude;  // designed once, for the starting set
-  if (p.position_enabled)
-    position = scheme_params(s, s.fdi.position,
-                             fdi::design_residual_generator(scheme_design_inputs(s, FdiModel::kPosition)));
+  // Designed once, for the starting set. The two designs are independent pure functions of the
+  // scenario: the attitude one runs on a second thread while this one designs the position scheme
+  // (the same results; the run waits for max(position, attitude) instead of their sum).
+  const auto design = [&s](FdiModel model, const model::FdiSchemeParams& scheme) {
+    return scheme_params(s, scheme, fdi::design_residual_generator(scheme_design_inputs(s, model)));
+  };
+  std::future<fdi::FdiSchemeParams> attitude_design;
   if (p.attitude_enabled)
-    attitude = scheme_params(s, s.fdi.attitude,
-                             fdi::design_residual_generator(scheme_design_inputs(s, FdiModel::kAttitude)));
+    attitude_design = std::async(std::launch::async, design, FdiModel::kAttitude, std::cref(s.fdi.attitude));
+  fdi::FdiSchemeParams position, attitude;
+  if (p.position_enabled) position = design(FdiModel::kPosition, s.fdi.position);
+  if (p.attitude_enabled) attitude = attitude_design.get();  // rethrows the design's exception, if any
   for (const model::ThrusterMask mask : watchable_sets(s)) {
     const fdi::WatchedConfig config = watched_config(s, mask);
     FdiWatchedParams& w = p.watched.emplace_back();

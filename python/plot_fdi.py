@@ -21,11 +21,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from chaser_telemetry import load_telemetry  # noqa: E402
+
 SCHEMES = ("position", "attitude", "deficit")
 
 
 def load(run_dir):
-    telemetry = np.genfromtxt(run_dir / "telemetry.csv", delimiter=",", names=True)
+    telemetry = load_telemetry(run_dir)
     summary = json.loads((run_dir / "summary.json").read_text())
     return telemetry, summary
 

@@ -2,7 +2,7 @@
 """Plots of one Chaser run: trajectory in the approach corridor, attitude errors, thruster on-times.
 
 Usage: /usr/bin/python3 python/plot_run.py RUN_DIR
-Reads RUN_DIR/telemetry.csv and RUN_DIR/summary.json; writes trajectory.png, attitude.png and
+Reads RUN_DIR/telemetry.csv or telemetry.npy and RUN_DIR/summary.json; writes trajectory.png, attitude.png and
 thrusters.png into RUN_DIR.
 """
 import json
@@ -15,9 +15,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from chaser_telemetry import load_telemetry  # noqa: E402
+
 
 def load(run_dir):
-    telemetry = np.genfromtxt(run_dir / "telemetry.csv", delimiter=",", names=True)
+    telemetry = load_telemetry(run_dir)
     summary = json.loads((run_dir / "summary.json").read_text())
     return telemetry, summary
 

@@ -115,9 +115,8 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   std::unique_ptr<TelemetryWriter> telemetry;
   std::vector<TelemetryChannel> channels;
   if (!options.telemetry_path.empty()) {
-    telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path);
-    channels = telemetry_channels(scenario.thrusters.count);
-    if (telemetry->ok()) telemetry->header(channel_names(channels));
+    channels = select_channels(telemetry_channels(scenario.thrusters.count), options.telemetry_channels);
+    telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
   }
 
   RunResult result;
@@ -167,7 +166,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   result.propellant_used_kg = plant.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k;
-  result.telemetry_ok = !telemetry || telemetry->ok();
+  result.telemetry_ok = !telemetry || telemetry->finish();  // before wall_s: the user waits for the file
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;
 }

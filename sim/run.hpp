@@ -13,7 +13,8 @@
 namespace chaser::sim {
 
 struct RunOptions {
-  std::string telemetry_path;  // empty: no telemetry (campaigns, benchmarks)
+  std::string telemetry_path;  // empty: no telemetry (campaigns, benchmarks); ".csv" or ".npy" (sim/telemetry.hpp)
+  std::vector<std::string> telemetry_channels;  // name patterns ('*' and '?'); empty: every channel
   bool record_glr_per_second = false;  // fill RunResult::glr_max_per_s (threshold selection)
 };
 

@@ -1,47 +1,77 @@
 #pragma once
-// Telemetry recorder: one CSV row per control period, channels named as in the code with their SI
-// unit as a suffix. Rows are formatted into a buffer and written in large blocks, so recording costs
-// little; a run without a recorder pays nothing.
-#include <cmath>
+// Telemetry recorder: one row of doubles per control period, written to a file on a background
+// thread while the run goes on, so a run with telemetry costs the loop little more than one
+// without (docs/performance.md). Two formats, chosen by the file's extension:
+//  - ".csv": a header of channel names, then one line per row; every number in the shortest text
+//    that reads back to the same double (std::to_chars), so the file round-trips exactly;
+//  - ".npy": a NumPy structured array, one float64 field per channel (sim/npy_header.hpp): the
+//    bytes of the doubles, read without a parser by np.load (MATLAB, Julia: readNPY, NPZ.jl).
+// Nothing lost, nothing half-written: the file is "<path>.partial" until finish() has written and
+// closed it and renamed it to <path>. A run killed before that leaves only the .partial file.
+//
+// Rows are handed over in blocks; at most a few blocks are in flight (the loop waits if the disk is
+// slower), so memory stays flat whatever the run's length. The bytes do not depend on the timing.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
 #include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <span>
 #include <string>
-#include <string_view>
+#include <thread>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace chaser::sim {
 
+enum class TelemetryFormat { kCsv, kNpy };
+
+// The format a path asks for by its extension (".csv" or ".npy"); false for any other.
+bool telemetry_format_of(const std::filesystem::path& path, TelemetryFormat& format);
+
 class TelemetryWriter {
  public:
-  // Opens `path` for writing; ok() tells whether it worked.
-  explicit TelemetryWriter(const std::string& path);
-  ~TelemetryWriter();
+  // Opens "<path>.partial" and starts the writer thread; ok() tells whether it worked.
+  TelemetryWriter(std::filesystem::path path, std::vector<std::string> channels);
+  ~TelemetryWriter();  // without finish(): stops the thread, removes the partial file
   TelemetryWriter(const TelemetryWriter&) = delete;
   TelemetryWriter& operator=(const TelemetryWriter&) = delete;
 
-  bool ok() const { return file_ != nullptr; }
-  void header(const std::vector<std::string>& channels);
-  // A row is a sequence of add() calls followed by end_row(); values are printed with 10
-  // significant digits, enough for mm on 1e4 m and for nanosecond-resolved times.
-  void add(double value) {
-    if (!first_) buffer_.push_back(',');
-    // Most channels of a period are exact zeros (idle thrusters' on-times, flags, FDI outputs):
-    // written as fmt writes +0.0 with {:.10g}, "0", without the float formatter (tested).
-    if (value == 0.0 && !std::signbit(value)) {
-      buffer_.push_back('0');
-    } else {
-      fmt::format_to(std::back_inserter(buffer_), "{:.10g}", value);
-    }
-    first_ = false;
-  }
-  void end_row();
-  void flush();
+  bool ok() const { return file_ != nullptr && !failed_; }
+  std::size_t channels() const { return channels_.size(); }
+
+  // Storage for the next row: the caller fills all channels() values before the next call.
+  std::span<double> new_row();
+  // Writes what is left, closes the file and renames it into place. False if anything failed.
+  bool finish();
 
  private:
+  void hand_over_block();  // queues the current block for the writer thread
+  void writer_loop();
+  void write_block(const std::vector<double>& block);
+  void write_bytes(const char* data, std::size_t size);
+  void stop_thread();
+
+  std::filesystem::path path_, partial_path_;
+  std::vector<std::string> channels_;
+  TelemetryFormat format_ = TelemetryFormat::kCsv;
   std::FILE* file_ = nullptr;
-  fmt::memory_buffer buffer_;
-  bool first_ = true;
+  std::size_t npy_header_bytes_ = 0;
+  std::int64_t rows_ = 0;
+  bool finished_ = false;
+
+  std::vector<double> block_;  // rows being filled by the run, row-major
+  std::size_t block_rows_ = 0;
+  std::vector<char> text_;     // the writer thread's CSV text buffer
+
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<double>> full_;   // blocks waiting for the writer thread, in order
+  std::vector<std::vector<double>> free_;  // blocks to reuse
+  bool closing_ = false;
+  std::atomic<bool> failed_ = false;  // an I/O error, on either thread
+  std::thread thread_;
 };
 
 }  // namespace chaser::sim

@@ -1,5 +1,7 @@
 #include "sim/telemetry_channels.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace chaser::sim {
@@ -84,7 +86,7 @@ std::vector<TelemetryChannel> telemetry_channels(int thrusters) {
   fdi_scheme(t, "attitude", 1);
   fdi_scheme(t, "deficit", 2);
   scalar(t, "over_consumption", "", [](const PeriodRecord& r, int) { return r.flight->fdir.over_consumption ? 1.0 : 0.0; });
-  // Exact: a 32-bit mask has at most 10 digits, the writer prints 10.
+  // Exact: a 32-bit mask is an integer below 2^53, which a double holds and the writer round-trips.
   scalar(t, "active_thrusters", "",
          [](const PeriodRecord& r, int) { return static_cast<double>(r.flight_state->thrusters.active); });
   scalar(t, "delay", "s", [](const PeriodRecord& r, int) { return to_seconds(r.plant->last_delay_ns); });
@@ -100,9 +102,47 @@ std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& chan
   return names;
 }
 
+std::vector<TelemetryChannel> select_channels(std::vector<TelemetryChannel> channels,
+                                              const std::vector<std::string>& patterns) {
+  if (patterns.empty()) return channels;
+  std::vector<TelemetryChannel> kept;
+  for (TelemetryChannel& c : channels)
+    if (c.name == "t_s" || std::any_of(patterns.begin(), patterns.end(),
+                                       [&](const std::string& p) { return name_matches(p, c.name); }))
+      kept.push_back(std::move(c));
+  return kept;
+}
+
+std::vector<std::string> unmatched_patterns(const std::vector<TelemetryChannel>& channels,
+                                            const std::vector<std::string>& patterns) {
+  std::vector<std::string> unmatched;
+  for (const std::string& p : patterns)
+    if (std::none_of(channels.begin(), channels.end(), [&](const TelemetryChannel& c) { return name_matches(p, c.name); }))
+      unmatched.push_back(p);
+  return unmatched;
+}
+
+bool name_matches(std::string_view pattern, std::string_view name) {
+  // '*' any run of characters, '?' one character; iterative with one backtrack point (linear in practice).
+  std::size_t p = 0, n = 0, star = std::string_view::npos, resume = 0;
+  while (n < name.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
+      ++p, ++n;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++, resume = n;
+    } else if (star != std::string_view::npos) {
+      p = star + 1, n = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
 void record_period(TelemetryWriter& w, const std::vector<TelemetryChannel>& channels, const PeriodRecord& r) {
-  for (const TelemetryChannel& c : channels) w.add(c.value(r, c.index));
-  w.end_row();
+  const std::span<double> row = w.new_row();
+  for (std::size_t i = 0; i < channels.size(); ++i) row[i] = channels[i].value(r, channels[i].index);
 }
 
 }  // namespace chaser::sim

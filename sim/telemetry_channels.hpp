@@ -3,6 +3,7 @@
 // from a period's record, so the header and every row come from the same list and cannot drift
 // apart. The table is built once per run for the scenario's thruster count.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/types.hpp"
@@ -39,6 +40,16 @@ struct TelemetryChannel {
 std::vector<TelemetryChannel> telemetry_channels(int thrusters);
 
 std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);
+
+// Channel selection (`chaser run --channels`): the channels whose name matches one of the patterns
+// ('*' any run of characters, '?' one), in table order, and t_s always; every channel if there are
+// no patterns. unmatched_patterns lists the patterns that match no channel (a typo: the command
+// line refuses them).
+bool name_matches(std::string_view pattern, std::string_view name);
+std::vector<TelemetryChannel> select_channels(std::vector<TelemetryChannel> channels,
+                                              const std::vector<std::string>& patterns);
+std::vector<std::string> unmatched_patterns(const std::vector<TelemetryChannel>& channels,
+                                            const std::vector<std::string>& patterns);
 
 // One row: every channel's value, in table order.
 void record_period(TelemetryWriter& writer, const std::vector<TelemetryChannel>& channels, const PeriodRecord& record);

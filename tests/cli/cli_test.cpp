@@ -1,7 +1,16 @@
 // The `chaser` command as a user meets it: exit codes, messages, files written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
+#include <csignal>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +23,8 @@
 namespace {
 
 using chaser::testing::CommandResult;
+
+CommandResult run_chaser_shell(const std::string& command) { return chaser::testing::run_shell(command); }
 
 CommandResult run_chaser(const std::string& args) {
   return chaser::testing::run_shell(std::string(CHASER_BINARY) + " " + args);
@@ -44,6 +55,84 @@ TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
 }
 
 // A short run writes telemetry.csv (a header plus one row per period) and summary.json.
+// A run killed mid-way (SIGKILL while the telemetry is being written) leaves no file that looks
+// complete: telemetry.csv and summary.json appear only when the run has finished them; what is on
+// disk is telemetry.csv.partial. The same command run to the end leaves exactly the two files.
+TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_killed";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string out = dir.string();
+  const pid_t pid = fork();
+  if (pid == 0) {  // the child becomes chaser itself, so the SIGKILL hits the run
+    std::vector<std::string> words = {CHASER_BINARY, "run", "scenarios/msr_terminal.yaml", "--set",
+                                      "duration_s=200000", "--out", out};
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    execv(CHASER_BINARY, argv.data());
+    _exit(127);
+  }
+  const auto partial = dir / "telemetry.csv.partial";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline &&
+         !(std::filesystem::exists(partial) && std::filesystem::file_size(partial) > (1u << 20)))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the run ended before it was killed";
+  EXPECT_TRUE(std::filesystem::exists(partial));
+  EXPECT_FALSE(std::filesystem::exists(dir / "telemetry.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=5 --telemetry npy --out " + out).exit_code, 0);
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"summary.json", "telemetry.npy"}));
+  std::filesystem::remove_all(dir);
+}
+
+// --channels keeps the named channels (and t_s); a pattern that matches nothing is a typo: exit 2.
+TEST(Cli, RunWritesTheChosenChannelsAndRefusesUnknownOnes) {
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_channels";
+  std::filesystem::remove_all(dir);
+  const CommandResult r = run_chaser("run scenarios/msr_terminal.yaml --set duration_s=1 --channels 'r_lvlh_?_m,glr_*' --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream telemetry(dir / "telemetry.csv");
+  std::string header;
+  std::getline(telemetry, header);
+  EXPECT_EQ(header, "t_s,r_lvlh_x_m,r_lvlh_y_m,r_lvlh_z_m,glr_position,glr_attitude,glr_deficit");
+  const CommandResult bad = run_chaser("run scenarios/msr_terminal.yaml --channels r_lvhl_x_m --out " + dir.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("--channels: r_lvhl_x_m match no telemetry channel"), std::string::npos) << bad.output;
+  std::filesystem::remove_all(dir);
+}
+
+// The plotting scripts read either telemetry format (python/chaser_telemetry.py) and draw every
+// figure from a real run. Skipped where /usr/bin/python3 lacks numpy or matplotlib.
+TEST(Cli, PlotScriptsReadCsvAndNpyTelemetry) {
+  if (run_chaser_shell("/usr/bin/python3 -c 'import numpy, matplotlib'").exit_code != 0) GTEST_SKIP() << "no numpy/matplotlib";
+  for (const std::string format : {"csv", "npy"}) {
+    const auto dir = std::filesystem::temp_directory_path() / ("chaser_cli_plots_" + format);
+    std::filesystem::remove_all(dir);
+    ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=30 --telemetry " + format + " --out " +
+                         dir.string()).exit_code, 0);
+    for (const char* script : {"python/plot_run.py", "python/plot_fdi.py"}) {
+      const CommandResult r = run_chaser_shell(std::string("/usr/bin/python3 ") + script + " " + dir.string());
+      EXPECT_EQ(r.exit_code, 0) << format << " " << script << ": " << r.output;
+    }
+    for (const char* png : {"trajectory.png", "attitude.png", "thrusters.png", "fdi.png"})
+      EXPECT_TRUE(std::filesystem::exists(dir / png)) << format << " " << png;
+    std::filesystem::remove_all(dir);
+  }
+}
+
 TEST(Cli, RunWritesTelemetryAndSummary) {
   const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_test";
   std::filesystem::remove_all(dir);

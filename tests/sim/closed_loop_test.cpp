@@ -109,10 +109,10 @@ TEST(ClosedLoop, SameSeedGivesBitIdenticalTelemetry) {
   scenario.duration_s = 200.0;
   const auto dir = std::filesystem::temp_directory_path() / "chaser_determinism_test";
   std::filesystem::create_directories(dir);
-  const RunResult a = run_scenario(scenario, {.telemetry_path = (dir / "a.csv").string()});
-  const RunResult b = run_scenario(scenario, {.telemetry_path = (dir / "b.csv").string()});
+  const RunResult a = run_scenario(scenario, {.telemetry_path = (dir / "a.csv").string(), .telemetry_channels = {}});
+  const RunResult b = run_scenario(scenario, {.telemetry_path = (dir / "b.csv").string(), .telemetry_channels = {}});
   scenario.seed += 1;
-  run_scenario(scenario, {.telemetry_path = (dir / "c.csv").string()});
+  run_scenario(scenario, {.telemetry_path = (dir / "c.csv").string(), .telemetry_channels = {}});
   const std::string ta = read_file(dir / "a.csv");
   EXPECT_GT(ta.size(), 100000u);
   EXPECT_EQ(ta, read_file(dir / "b.csv"));
@@ -132,7 +132,7 @@ TEST(ClosedLoop, FlightDesignedFromNominalFliesADispersedPlant) {
   nominal.duration_s = 300.0;
   const flight::FlightParams flight = flight::make_flight_params(nominal);
   const RunResult own = run_scenario(nominal);
-  const RunResult shared = run_scenario(nominal, flight, {.telemetry_path = {}, .record_glr_per_second = true});
+  const RunResult shared = run_scenario(nominal, flight, {.telemetry_path = {}, .telemetry_channels = {}, .record_glr_per_second = true});
   EXPECT_EQ(own.propellant_used_kg, shared.propellant_used_kg);
   EXPECT_EQ(own.figures.final_position_error_m, shared.figures.final_position_error_m);
   // The per-second GLR maxima: one entry per second, positive where a scheme runs, below J_th.

@@ -1,8 +1,12 @@
 // telemetry.csv from the channel table: the header is the table's names, and every row has a
-// finite value for every channel, for thruster sets of 8, 16 (MSR) and 24.
+// finite value for every channel, for thruster sets of 8, 16 (MSR) and 24; the .npy of a run holds
+// the same doubles; --channels selects.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
+#include <iterator>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -50,7 +54,7 @@ TEST_P(TelemetryTable, EveryChannelHasAFiniteValueInEveryRow) {
   const int count = GetParam();
   const model::Scenario s = scenario_with(count);
   const auto path = std::filesystem::temp_directory_path() / ("chaser_telemetry_" + std::to_string(count) + ".csv");
-  const RunResult r = run_scenario(s, {.telemetry_path = path.string()});
+  const RunResult r = run_scenario(s, {.telemetry_path = path.string(), .telemetry_channels = {}});
   ASSERT_TRUE(r.telemetry_ok);
   std::ifstream in(path);
   std::string line;
@@ -88,24 +92,57 @@ TEST(TelemetryTable, NamesEndWithTheirUnit) {
   }
 }
 
-// The writer's shortcut for +0.0 writes what the formatter writes: every value's text is
-// fmt's "{:.10g}" of it, zeros of both signs included.
-TEST(TelemetryWriter, ZeroShortcutWritesWhatFmtWrites) {
-  const auto path = std::filesystem::temp_directory_path() / "chaser_telemetry_writer.csv";
-  const std::vector<double> values = {0.0, -0.0, 1.0, -1.5e-300, 123456.789012345, 1e-320, 0.1};
-  {
-    TelemetryWriter w(path.string());
-    ASSERT_TRUE(w.ok());
-    for (const double v : values) w.add(v);
-    w.end_row();
-  }
-  std::string expected;
-  for (std::size_t i = 0; i < values.size(); ++i) expected += (i ? "," : "") + fmt::format("{:.10g}", values[i]);
-  std::ifstream in(path);
+// The run's telemetry reads back to the run's numbers: the CSV and the .npy of one run hold the
+// same doubles, bit for bit, and the last row's propellant is the run result's.
+TEST(TelemetryFile, CsvAndNpyOfARunHoldTheSameDoublesAsTheRun) {
+  const model::Scenario s = scenario_with(16);
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_telemetry_formats";
+  std::filesystem::create_directories(dir);
+  const RunResult csv_run = run_scenario(s, {.telemetry_path = (dir / "t.csv").string(), .telemetry_channels = {}});
+  const RunResult npy_run = run_scenario(s, {.telemetry_path = (dir / "t.npy").string(), .telemetry_channels = {}});
+  ASSERT_TRUE(csv_run.telemetry_ok && npy_run.telemetry_ok);
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.csv.partial"));
+
+  std::ifstream csv(dir / "t.csv");
   std::string line;
-  ASSERT_TRUE(std::getline(in, line));
-  EXPECT_EQ(line, expected);
-  std::filesystem::remove(path);
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = split(line);
+  std::vector<double> from_csv;
+  while (std::getline(csv, line))
+    for (const std::string& field : split(line)) from_csv.push_back(std::strtod(field.c_str(), nullptr));
+
+  std::ifstream npy(dir / "t.npy", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(npy)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 10u);
+  const std::size_t header_len = static_cast<unsigned char>(bytes[8]) | static_cast<unsigned char>(bytes[9]) << 8;
+  const std::string dict = bytes.substr(10, header_len);
+  EXPECT_NE(dict.find(fmt::format("'shape': ({},)", csv_run.periods)), std::string::npos) << dict;
+  EXPECT_NE(dict.find("('propellant_used_kg', '<f8')"), std::string::npos);
+  const std::size_t data = 10 + header_len;
+  ASSERT_EQ((bytes.size() - data) % sizeof(double), 0u);
+  std::vector<double> from_npy((bytes.size() - data) / sizeof(double));
+  std::memcpy(from_npy.data(), bytes.data() + data, bytes.size() - data);
+
+  ASSERT_EQ(from_csv.size(), header.size() * static_cast<std::size_t>(csv_run.periods));
+  ASSERT_EQ(from_npy.size(), from_csv.size());
+  for (std::size_t i = 0; i < from_csv.size(); ++i)
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(from_csv[i]), std::bit_cast<std::uint64_t>(from_npy[i]))
+        << header[i % header.size()] << " row " << i / header.size();
+  const auto column = std::find(header.begin(), header.end(), "propellant_used_kg") - header.begin();
+  EXPECT_EQ(from_csv[from_csv.size() - header.size() + static_cast<std::size_t>(column)], csv_run.propellant_used_kg);
+  std::filesystem::remove_all(dir);
+}
+
+// --channels: the chosen channels and t_s, in table order.
+TEST(TelemetryFile, ChannelSelectionKeepsTableOrderAndTime) {
+  const std::vector<TelemetryChannel> all = telemetry_channels(16);
+  const std::vector<TelemetryChannel> some = select_channels(all, {"ton_cmd_1?", "r_lvlh_*"});
+  std::vector<std::string> names = channel_names(some);
+  EXPECT_EQ(names, (std::vector<std::string>{"t_s", "r_lvlh_x_m", "r_lvlh_y_m", "r_lvlh_z_m", "ton_cmd_10",
+                                             "ton_cmd_11", "ton_cmd_12", "ton_cmd_13", "ton_cmd_14",
+                                             "ton_cmd_15", "ton_cmd_16"}));
+  EXPECT_EQ(select_channels(all, {}).size(), all.size());
+  EXPECT_EQ(unmatched_patterns(all, {"glr_*", "r_lvhl_*"}), std::vector<std::string>{"r_lvhl_*"});
 }
 
 }  // namespace
