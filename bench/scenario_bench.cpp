@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <utility>
@@ -56,6 +57,27 @@ BENCHMARK_CAPTURE(BM_EndToEnd, nominal, false, Fdi::kOn)->Unit(benchmark::kMilli
 BENCHMARK_CAPTURE(BM_EndToEnd, nominal_fdi_published, false, Fdi::kPublished)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEnd, nominal_fdi_off, false, Fdi::kOff)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEnd, stuck_open_T8, true, Fdi::kOn)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What `chaser run` waits for, less process start and scenario loading: the whole 1200 s run with
+// its telemetry file written (csv or npy, every channel, finished and renamed), against none. Issue
+// 16's target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop.
+void BM_RunWithTelemetry(benchmark::State& state, const char* extension) {
+  const model::Scenario scenario = msr_scenario();
+  const std::string path =
+      *extension ? (std::filesystem::temp_directory_path() / (std::string("chaser_bench_telemetry.") + extension)).string()
+                 : std::string();
+  double simulated_s = 0;
+  for (auto _ : state) {
+    const sim::RunResult result = sim::run_scenario(scenario, {.telemetry_path = path, .telemetry_channels = {}});
+    if (!result.telemetry_ok) state.SkipWithError("telemetry not written");
+    simulated_s += result.simulated_s;
+  }
+  if (!path.empty()) std::filesystem::remove(path);
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(BM_RunWithTelemetry, csv, "csv")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_RunWithTelemetry, npy, "npy")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_RunWithTelemetry, none, "")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Shared set-up for the per-period benchmarks: a plant and flight software 500 s into the approach.
 struct LoopFixture {

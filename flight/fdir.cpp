@@ -204,7 +204,9 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   // scenario: the attitude one runs on a second thread while this one designs the position scheme
   // (the same results; the run waits for max(position, attitude) instead of their sum).
   const auto design = [&s](FdiModel model, const model::FdiSchemeParams& scheme) {
-    return scheme_params(s, scheme, fdi::design_residual_generator(scheme_design_inputs(s, model)));
+    fdi::DesignInputs inputs = scheme_design_inputs(s, model);
+    inputs.compute_figures = false;  // for reports only (chaser fdi design)
+    return scheme_params(s, scheme, fdi::design_residual_generator(inputs));
   };
   std::future<fdi::FdiSchemeParams> attitude_design;
   if (p.attitude_enabled)

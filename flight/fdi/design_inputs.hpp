@@ -41,6 +41,9 @@ struct DesignInputs {
   int ch_grid_points = 256;          // delay grid for s_i^min, s_i^max (App. A)
   SubspaceSearchOptions search;      // Q direction search
   FigureOptions figures;             // frequency and delay grids of the figures
+  // The figures (eqs. 31-32) judge a design for a report (`chaser fdi design`); nothing in the
+  // observer depends on them. A run's in-memory design skips them: they were most of its set-up time.
+  bool compute_figures = true;
 };
 
 // Position model (eq. 12) from the scenario: n from the orbit, mass, T; fault directions

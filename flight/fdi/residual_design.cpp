@@ -101,7 +101,7 @@ ResidualDesign design_residual_generator(const DesignInputs& in) {
   reduce_and_weight(in, d);
   d.assignment = assign_left_eigenstructure(d.A_bar, in.C, d.H, in.eigenvalues);  // eqs. 35-38
   d.L = d.assignment.L;
-  d.figures = compute_design_figures(observer_under_test(in, d), in.figures);
+  if (in.compute_figures) d.figures = compute_design_figures(observer_under_test(in, d), in.figures);
   return d;
 }
 
