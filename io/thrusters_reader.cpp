@@ -59,8 +59,9 @@ void read_standby_groups(MapReader& r, model::ThrusterSetParams& out) {
   const auto node = r.child("standby_groups", "a list of group names");
   const std::string path = r.path_of("standby_groups");
   if (!node || out.count == 0) return;  // no thruster list: its error is already reported
-  if (!node->IsSequence()) {
-    r.diagnostics().add(path, fmt::format("must be a list of group names, e.g. [B] (got {})", describe_node(*node)));
+  if (!node->IsSequence() || node->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    r.diagnostics().add(path, fmt::format("must be a list of at most {} group names, e.g. [B] (got {})",
+                                          model::kMaxThrusters, describe_node(*node)));
     return;
   }
   for (std::size_t i = 0; i < node->size(); ++i) {
