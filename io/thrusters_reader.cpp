@@ -33,9 +33,9 @@ void read_thruster(const YAML::Node& node, const std::string& path, int index, m
     diag.add(m.path_of("name"), fmt::format("must be {} (thrusters are named T1..TN in list order; got '{}')",
                                             model::thruster_name(index), name));
   if (m.has("group") && m.text("group", group)) out.group = group_index(group, set.groups);
-  m.vec3("position_body_m", out.position_body_m);
+  m.vec3("position_body_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.position_body_m);
   m.direction("direction_body", out.direction_body);
-  m.number("max_thrust_N", Range::positive(), out.max_thrust_N);
+  m.number("max_thrust_N", Range::left_open(0.0, kMaxThrustN), out.max_thrust_N);
   m.finish();
 }
 

@@ -132,15 +132,27 @@ bool MapReader::vec3(std::string_view key, Vec3& out) {
   return node && read_vec3(*node, path_of(key), diag_, out);
 }
 
+bool MapReader::vec3(std::string_view key, const Range& element_range, Vec3& out) {
+  const auto node = find(key, fmt::format("a list of 3 numbers [x, y, z], each {}", element_range.describe()));
+  return node && read_vec3(*node, path_of(key), diag_, out, element_range);
+}
+
 bool MapReader::direction(std::string_view key, Vec3& out) {
   const auto node = find(key, "a nonzero direction [x, y, z]");
   Vec3 v;
   if (!node || !read_vec3(*node, path_of(key), diag_, v)) return false;
-  if (!(v.stableNorm() > 0.0)) {
+  const double norm = v.stableNorm();
+  if (!(norm > 0.0)) {
     diag_.add(path_of(key), "must be a nonzero direction [x, y, z] (got [0, 0, 0])");
     return false;
   }
-  out = v / v.stableNorm();
+  if (!(norm >= kMinDirectionNorm && norm <= kMaxDirectionNorm)) {
+    diag_.add(path_of(key), fmt::format("must be a direction [x, y, z] with a norm in [{}, {}], which normalises "
+                                        "to full precision (got norm {})", format_number(kMinDirectionNorm),
+                                        format_number(kMaxDirectionNorm), format_number(norm)));
+    return false;
+  }
+  out = v / norm;
   return true;
 }
 
