@@ -1,5 +1,6 @@
 # Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
-# benchmarks. Each target installs missing system packages first (scripts/install-deps).
+# benchmarks, `make sanitize` every test under ASan and UBSan, `make fuzz` the loaders' fuzzers
+# (docs/reliability.md). Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
 MAKEFLAGS += --no-print-directory
@@ -7,8 +8,12 @@ PYTHON ?= /usr/bin/python3
 DEMO_OUT ?= demo-out
 
 FMEA_OUT ?= fmea-out
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
+FUZZ_TARGETS ?= scenario overrides invsim
 
-.PHONY: all deps configure build test demo fmea bench clean
+.PHONY: all deps configure build test demo fmea bench sanitize fuzz clean
 
 all: build
 
@@ -38,5 +43,21 @@ fmea: build
 bench: build
 	@./$(BUILD)/bench/chaser_bench
 
+# Every test built with AddressSanitizer and UndefinedBehaviorSanitizer (cmake/sanitizers.cmake).
+sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCHASER_SANITIZE=address,undefined \
+	  -DCHASER_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
+	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j$(JOBS)
+
+# libFuzzer on the scenario loaders and the --set parser, FUZZ_SECONDS per target, one worker.
+fuzz:
+	@bash scripts/install-deps fuzz
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCHASER_FUZZ=ON -DCHASER_BUILD_TESTS=OFF -DCHASER_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target $(addprefix chaser_fuzz_,$(FUZZ_TARGETS))
+	@bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
 clean:
-	rm -rf $(BUILD) $(DEMO_OUT) $(FMEA_OUT)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) $(DEMO_OUT) $(FMEA_OUT)

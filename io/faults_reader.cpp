@@ -75,9 +75,11 @@ void read_faults(MapReader& root, std::vector<model::FaultParams>& out) {
   const auto list = root.child("faults", "a list of faults (may be empty: [])");
   if (!list) return;
   Diagnostics& diag = root.diagnostics();
-  if (!list->IsSequence()) {
-    diag.add("faults", fmt::format("must be a list of faults (may be empty: []) (got {})",
-                                   describe_node(*list)));
+  // At most one fault per thruster, so a longer list cannot be valid: it is refused before its
+  // entries are read.
+  if (!list->IsSequence() || list->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    diag.add("faults", fmt::format("must be a list of faults, at most {} (one per thruster; may be empty: []) (got {})",
+                                   model::kMaxThrusters, describe_node(*list)));
     return;
   }
   std::array<int, model::kMaxThrusters> first_fault;

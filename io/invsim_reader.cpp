@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "io/document_limits.hpp"
 #include "io/invsim_loader.hpp"
 #include "io/invsim_study_reader.hpp"
 #include "io/overrides.hpp"
@@ -233,9 +234,9 @@ std::vector<std::string> read_fault_names(MapReader& r) {
   std::vector<std::string> names;
   const auto node = r.child("faults", "a list of thruster names");
   if (!node) return names;
-  if (!node->IsSequence()) {
-    r.diagnostics().add(r.path_of("faults"),
-                        fmt::format("must be a list of thruster names (got {})", describe_node(*node)));
+  if (!node->IsSequence() || node->size() > model::kMaxInvSimThrusters) {
+    r.diagnostics().add(r.path_of("faults"), fmt::format("must be a list of at most {} thruster names (got {})",
+                                                         model::kMaxInvSimThrusters, describe_node(*node)));
     return names;
   }
   for (std::size_t i = 0; i < node->size(); ++i) {
@@ -251,9 +252,12 @@ InvSimLoadResult load_document(const std::string& text, const std::string& sourc
                                const std::vector<std::string>& overrides) {
   InvSimLoadResult result;
   Diagnostics diag;
-  std::optional<YAML::Node> root = parse_document(text, source, diag);
+  std::optional<YAML::Node> root;
+  if (check_yaml_text(text, source, "", diag)) root = parse_document(text, source, diag);
   if (root) {
     for (const std::string& o : overrides) apply_override(*root, o, diag);
+  }
+  if (root && check_document_tree(*root, source, diag)) {
     InvSimParams p;
     MapReader r(*root, "", diag);
     read_sections(r, p);
@@ -282,7 +286,7 @@ InvSimLoadResult load_invsim_text(const std::string& yaml_text, const std::vecto
 }
 
 InvSimLoadResult load_invsim_file(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::optional<std::string> text = read_text_file(path);
+  const std::optional<std::string> text = read_text_file(path, kMaxDocumentBytes);
   if (!text) {
     InvSimLoadResult result;
     result.errors.push_back({path, kUnreadableScenario});

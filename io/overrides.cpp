@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "io/document_limits.hpp"
+
 namespace chaser::io {
 namespace {
 
@@ -14,6 +16,9 @@ std::string_view trim(std::string_view s) {
   if (first == std::string_view::npos) return {};
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
+
+// The override as echoed in a message: a hostile one may be long.
+std::string shown(const std::string& text) { return text.size() <= 200 ? text : text.substr(0, 197) + "..."; }
 
 std::vector<std::string> split_path(std::string_view path) {
   std::vector<std::string> segments;
@@ -91,27 +96,38 @@ std::string replace_at(YAML::Node& root, const std::vector<std::string>& segment
 void apply_override(YAML::Node& root, const std::string& text, Diagnostics& diag) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
-    diag.add(text, fmt::format("malformed override '{}': expected key.path=value", text));
+    diag.add(shown(text), fmt::format("malformed override '{}': expected key.path=value", shown(text)));
     return;
   }
   const std::string path(trim(std::string_view(text).substr(0, eq)));
   const std::vector<std::string> segments = split_path(path);
+  if (path.size() > kMaxScalarBytes) {
+    diag.add(path.substr(0, 40) + "...", fmt::format("override key path of {} bytes: a key path may be at most {} bytes long",
+                                                     path.size(), kMaxScalarBytes));
+    return;
+  }
+  if (segments.size() > static_cast<std::size_t>(kMaxNestingDepth)) {
+    diag.add(path, fmt::format("override key path of {} parts: a key path may have at most {}", segments.size(),
+                               kMaxNestingDepth));
+    return;
+  }
   for (const std::string& s : segments) {
     if (s.empty()) {
-      diag.add(path, fmt::format("malformed override '{}': the key path has an empty part", text));
+      diag.add(path, fmt::format("malformed override '{}': the key path has an empty part", shown(text)));
       return;
     }
   }
+  if (!check_yaml_text(std::string_view(text).substr(eq + 1), path, path, diag)) return;
   YAML::Node value;
   try {
     value = YAML::Load(text.substr(eq + 1));
   } catch (const YAML::Exception& e) {
-    diag.add(path, fmt::format("override '{}': the value is not valid YAML (column {}: {})", text,
+    diag.add(path, fmt::format("override '{}': the value is not valid YAML (column {}: {})", shown(text),
                                e.mark.column + 1, e.msg));
     return;
   }
   const std::string problem = replace_at(root, segments, value);
-  if (!problem.empty()) diag.add(path, fmt::format("override '{}': {}", text, problem));
+  if (!problem.empty()) diag.add(path, fmt::format("override '{}': {}", shown(text), problem));
 }
 
 }  // namespace chaser::io

@@ -1,5 +1,5 @@
-// Loading pipeline: text -> YAML document -> overrides -> canonical text and hash -> typed reading
-// of every key -> checks between keys. Exceptions of the YAML parser stop here: the caller gets
+// Loading pipeline: text -> limits (io/document_limits.hpp) -> YAML document -> overrides -> limits
+// again -> canonical text and hash -> typed reading of every key -> checks between keys. Exceptions of the YAML parser stop here: the caller gets
 // errors as values.
 #include "io/scenario_loader.hpp"
 
@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "io/document_limits.hpp"
 #include "io/overrides.hpp"
 #include "io/scenario_hash.hpp"
 #include "io/scenario_sections.hpp"
@@ -40,9 +41,12 @@ LoadResult load_document(const std::string& text, const std::string& source,
                          const std::vector<std::string>& overrides) {
   LoadResult result;
   Diagnostics diag;
-  std::optional<YAML::Node> root = parse_document(text, source, diag);
+  std::optional<YAML::Node> root;
+  if (check_yaml_text(text, source, "", diag)) root = parse_document(text, source, diag);
   if (root) {
     for (const std::string& o : overrides) apply_override(*root, o, diag);
+  }
+  if (root && check_document_tree(*root, source, diag)) {
     result.canonical_yaml = canonical_yaml(*root);
     result.hash = hash_text(result.canonical_yaml);
     const model::Scenario scenario = read_scenario(*root, source, diag);
@@ -60,7 +64,7 @@ LoadResult load_scenario_text(const std::string& yaml_text, const std::vector<st
 }
 
 LoadResult load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::optional<std::string> text = read_text_file(path);
+  const std::optional<std::string> text = read_text_file(path, kMaxDocumentBytes);
   if (!text) {
     LoadResult result;
     result.errors.push_back({path, kUnreadableScenario});

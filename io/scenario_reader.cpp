@@ -43,7 +43,7 @@ void read_orbit(MapReader& r, model::OrbitParams& out) {
 void read_chaser(MapReader& r, model::SpacecraftParams& out) {
   r.number("mass_kg", Range::positive(), out.mass_kg);
   r.mat3("inertia_kgm2", out.inertia_kgm2);
-  r.vec3("com_body_m", out.com_body_m);
+  r.vec3("com_body_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.com_body_m);
   r.number("isp_s", Range::positive(), out.isp_s);
 }
 

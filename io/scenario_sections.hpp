@@ -13,6 +13,11 @@ namespace chaser::io {
 // Upper bounds that keep every time representable as int64 nanoseconds with margin.
 inline constexpr double kMaxDurationS = 1e8;      // [s] about three years
 inline constexpr double kMaxControlPeriodS = 10.0;  // [s]
+// Thruster positions and the centre of mass lie within this of the layout origin, per axis: no
+// spacecraft is 2 km across, and torques stay within a few orders of magnitude of forces.
+inline constexpr double kMaxLayoutExtentM = 1e3;  // [m]
+// A thruster's thrust: the largest engines ever flown give about 1e7 N.
+inline constexpr double kMaxThrustN = 1e7;        // [N]
 // Longest campaign run (onset + horizon): each run keeps a per-second GLR record of this length.
 inline constexpr double kMaxCampaignRunS = 1e6;     // [s] about 11 days
 

@@ -33,9 +33,9 @@ void read_thruster(const YAML::Node& node, const std::string& path, int index, m
     diag.add(m.path_of("name"), fmt::format("must be {} (thrusters are named T1..TN in list order; got '{}')",
                                             model::thruster_name(index), name));
   if (m.has("group") && m.text("group", group)) out.group = group_index(group, set.groups);
-  m.vec3("position_body_m", out.position_body_m);
+  m.vec3("position_body_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.position_body_m);
   m.direction("direction_body", out.direction_body);
-  m.number("max_thrust_N", Range::positive(), out.max_thrust_N);
+  m.number("max_thrust_N", Range::left_open(0.0, kMaxThrustN), out.max_thrust_N);
   m.finish();
 }
 
@@ -59,8 +59,9 @@ void read_standby_groups(MapReader& r, model::ThrusterSetParams& out) {
   const auto node = r.child("standby_groups", "a list of group names");
   const std::string path = r.path_of("standby_groups");
   if (!node || out.count == 0) return;  // no thruster list: its error is already reported
-  if (!node->IsSequence()) {
-    r.diagnostics().add(path, fmt::format("must be a list of group names, e.g. [B] (got {})", describe_node(*node)));
+  if (!node->IsSequence() || node->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    r.diagnostics().add(path, fmt::format("must be a list of at most {} group names, e.g. [B] (got {})",
+                                          model::kMaxThrusters, describe_node(*node)));
     return;
   }
   for (std::size_t i = 0; i < node->size(); ++i) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -34,6 +35,8 @@ std::string unknown_key_message(std::string_view key, const std::vector<std::str
   std::size_t best = 3;  // suggest only close matches: up to two edits
   std::string_view suggestion;
   for (const std::string& k : known) {
+    // Lengths that differ by more than two are more than two edits apart: skip the quadratic work.
+    if (key.size() > k.size() + 2 || k.size() > key.size() + 2) continue;
     const std::size_t d = edit_distance(key, k);
     if (d < best) best = d, suggestion = k;
   }
@@ -129,15 +132,27 @@ bool MapReader::vec3(std::string_view key, Vec3& out) {
   return node && read_vec3(*node, path_of(key), diag_, out);
 }
 
+bool MapReader::vec3(std::string_view key, const Range& element_range, Vec3& out) {
+  const auto node = find(key, fmt::format("a list of 3 numbers [x, y, z], each {}", element_range.describe()));
+  return node && read_vec3(*node, path_of(key), diag_, out, element_range);
+}
+
 bool MapReader::direction(std::string_view key, Vec3& out) {
   const auto node = find(key, "a nonzero direction [x, y, z]");
   Vec3 v;
   if (!node || !read_vec3(*node, path_of(key), diag_, v)) return false;
-  if (!(v.stableNorm() > 0.0)) {
+  const double norm = v.stableNorm();
+  if (!(norm > 0.0)) {
     diag_.add(path_of(key), "must be a nonzero direction [x, y, z] (got [0, 0, 0])");
     return false;
   }
-  out = v / v.stableNorm();
+  if (!(norm >= kMinDirectionNorm && norm <= kMaxDirectionNorm)) {
+    diag_.add(path_of(key), fmt::format("must be a direction [x, y, z] with a norm in [{}, {}], which normalises "
+                                        "to full precision (got norm {})", format_number(kMinDirectionNorm),
+                                        format_number(kMaxDirectionNorm), format_number(norm)));
+    return false;
+  }
+  out = v / norm;
   return true;
 }
 
@@ -181,7 +196,7 @@ bool MapReader::mat3(std::string_view key, Mat3& out) {
 
 void MapReader::finish() {
   if (!valid_) return;
-  std::vector<std::pair<std::string, int>> seen;  // key, line (1-based)
+  std::unordered_map<std::string, int> seen;  // key -> its first line (1-based); a hostile mapping may have many
   for (const auto& kv : node_) {
     if (!kv.first.IsScalar()) {
       diag_.add(path_.empty() ? "(top level)" : path_,
@@ -190,12 +205,11 @@ void MapReader::finish() {
       continue;
     }
     const std::string& key = kv.first.Scalar();
-    const auto first = std::find_if(seen.begin(), seen.end(), [&](const auto& s) { return s.first == key; });
-    if (first != seen.end())
+    const auto [first, inserted] = seen.try_emplace(key, kv.first.Mark().line + 1);
+    if (!inserted)
       diag_.add(path_of(key), fmt::format("duplicate key (first at line {})", first->second));
     else if (std::find(known_.begin(), known_.end(), key) == known_.end())
       diag_.add(path_of(key), unknown_key_message(key, known_));
-    seen.emplace_back(key, kv.first.Mark().line + 1);
   }
 }
 

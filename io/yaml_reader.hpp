@@ -20,6 +20,10 @@ namespace chaser::io {
 
 // Quaternions in a file are normalised if their norm is this close to 1, and rejected otherwise.
 inline constexpr double kQuaternionNormTolerance = 1e-6;
+// A direction's norm must lie where its squares neither overflow nor underflow, so that it
+// normalises to a unit vector to full precision: [1e-150, 1e150].
+inline constexpr double kMinDirectionNorm = 1e-150;
+inline constexpr double kMaxDirectionNorm = 1e150;
 
 class Diagnostics {
  public:
@@ -59,7 +63,9 @@ std::string describe_node(const YAML::Node& node);  // what was found, for "(got
 // Value readers for a node already found at key_path.
 bool read_number(const YAML::Node& node, const std::string& key_path, const Range& range,
                  Diagnostics& diag, double& out);
-bool read_vec3(const YAML::Node& node, const std::string& key_path, Diagnostics& diag, Vec3& out);
+// Each element within `element_range`.
+bool read_vec3(const YAML::Node& node, const std::string& key_path, Diagnostics& diag, Vec3& out,
+               const Range& element_range = Range::any());
 // A list node of exactly `size` elements (any element type); reports "must be <expected>".
 bool check_list(const YAML::Node& node, const std::string& key_path, std::size_t size,
                 std::string_view expected, Diagnostics& diag);
@@ -82,7 +88,9 @@ class MapReader {
   bool boolean(std::string_view key, bool& out);
   bool text(std::string_view key, std::string& out);     // non-empty scalar
   bool vec3(std::string_view key, Vec3& out);            // [x, y, z]
-  bool direction(std::string_view key, Vec3& out);       // [x, y, z], nonzero, normalised on load
+  bool vec3(std::string_view key, const Range& element_range, Vec3& out);  // each of x, y, z in range
+  // [x, y, z], norm in [kMinDirectionNorm, kMaxDirectionNorm], normalised on load.
+  bool direction(std::string_view key, Vec3& out);
   bool quaternion(std::string_view key, Quat& out);      // [w, x, y, z], normalised on load
   bool mat3(std::string_view key, Mat3& out);            // 3 rows of 3 numbers
 

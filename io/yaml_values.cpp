@@ -109,12 +109,13 @@ bool check_list(const YAML::Node& node, const std::string& key_path, std::size_t
   return true;
 }
 
-bool read_vec3(const YAML::Node& node, const std::string& key_path, Diagnostics& diag, Vec3& out) {
+bool read_vec3(const YAML::Node& node, const std::string& key_path, Diagnostics& diag, Vec3& out,
+               const Range& element_range) {
   if (!check_list(node, key_path, 3, "a list of 3 numbers [x, y, z]", diag)) return false;
   Vec3 v;
   bool ok = true;
   for (int i = 0; i < 3; ++i)
-    ok &= read_number(node[i], join_path(key_path, std::to_string(i)), Range::any(), diag, v(i));
+    ok &= read_number(node[i], join_path(key_path, std::to_string(i)), element_range, diag, v(i));
   if (ok) out = v;
   return ok;
 }
