@@ -69,17 +69,7 @@ bool kill_campaign_midway(const std::string& args, const fs::path& dir, std::siz
   std::vector<std::string> words;
   std::istringstream split(args);
   for (std::string w; split >> w;) words.push_back(w);
-  const pid_t pid = fork();
-  if (pid == 0) {  // the child becomes chaser itself, so the SIGKILL hits the campaign
-    std::vector<char*> argv{const_cast<char*>(CHASER_BINARY)};
-    for (std::string& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    const int null = open("/dev/null", O_WRONLY);
-    dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-    execv(CHASER_BINARY, argv.data());
-    _exit(127);
-  }
+  const pid_t pid = chaser::testing::start_process(CHASER_BINARY, words);  // the SIGKILL hits the campaign
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline) {
     const std::string runs = read_file(dir / "runs.csv");

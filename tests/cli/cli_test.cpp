@@ -8,9 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include <fcntl.h>
 #include <sys/wait.h>
-#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,19 +61,8 @@ TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string out = dir.string();
-  const pid_t pid = fork();
-  if (pid == 0) {  // the child becomes chaser itself, so the SIGKILL hits the run
-    std::vector<std::string> words = {CHASER_BINARY, "run", "scenarios/msr_terminal.yaml", "--set",
-                                      "duration_s=200000", "--out", out};
-    std::vector<char*> argv;
-    for (std::string& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    const int null = open("/dev/null", O_WRONLY);
-    dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-    execv(CHASER_BINARY, argv.data());
-    _exit(127);
-  }
+  const pid_t pid = chaser::testing::start_process(
+      CHASER_BINARY, {"run", "scenarios/msr_terminal.yaml", "--set", "duration_s=200000", "--out", out});
   const auto partial = dir / "telemetry.csv.partial";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline &&

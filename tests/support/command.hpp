@@ -1,7 +1,9 @@
 #pragma once
 // Running a command line from a test, as a user would: its exit code and everything it printed.
 // Shared by the CLI suites (tests/cli).
+#include <fcntl.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -9,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace chaser::testing {
 
@@ -27,6 +30,21 @@ inline CommandResult run_shell(const std::string& command) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// Starts `binary args...` as a child process that becomes the program itself (so a signal sent to
+// the returned pid hits it), its output sent to /dev/null. For the tests that kill a run mid-way.
+inline pid_t start_process(const std::string& binary, std::vector<std::string> args) {
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const int null = open("/dev/null", O_WRONLY);
+  dup2(null, STDOUT_FILENO);
+  dup2(null, STDERR_FILENO);
+  execv(binary.c_str(), argv.data());
+  _exit(127);
 }
 
 // The whole file as bytes (empty if it cannot be read).
