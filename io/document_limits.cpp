@@ -31,7 +31,13 @@ class LimitScanner : public YAML::EventHandler {
  public:
   explicit LimitScanner(std::string prefix) : prefix_(std::move(prefix)) {}
 
-  void OnDocumentStart(const YAML::Mark&) override {}
+  // A scenario is one document. yaml-cpp 0.7 reads a text holding only "," as an endless stream of
+  // empty documents, so the scan stops at the second.
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ == 1) return;
+    second_document_ = mark;
+    throw StopScan{};
+  }
   void OnDocumentEnd() override {}
   void OnAnchor(const YAML::Mark&, const std::string& name) override { anchor_names_.push_back(name); }
   void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
@@ -63,6 +69,9 @@ class LimitScanner : public YAML::EventHandler {
   // Reports what was found; true if nothing was.
   bool report(const std::string& source, Diagnostics& diag) const {
     const std::size_t before = diag.errors().size();
+    if (documents_ > 1)
+      diag.add(source, fmt::format("must hold exactly one YAML document (a second begins at line {}, column {})",
+                                   second_document_.line + 1, second_document_.column + 1));
     if (too_many_nodes_.count)
       diag.add(source, fmt::format("has more than {} nodes (keys, values and list items; the limit was passed at "
                                    "line {}): the shipped scenarios have under a thousand", kMaxDocumentNodes, too_many_nodes_.line));
@@ -149,6 +158,8 @@ class LimitScanner : public YAML::EventHandler {
   std::vector<Frame> frames_;
   std::vector<std::string> anchor_names_;
   std::size_t nodes_ = 0;
+  std::size_t documents_ = 0;
+  YAML::Mark second_document_;
   Occurrence too_many_nodes_, anchors_, aliases_, too_deep_, long_scalars_;
 };
 

@@ -22,8 +22,8 @@ inline constexpr int kMaxNestingDepth = 32;          // lists and mappings insid
 inline constexpr std::size_t kMaxDocumentNodes = 100000;  // keys, values and list items; shipped: 774 at most
 inline constexpr std::size_t kMaxScalarBytes = 1024;      // [B] one key or value; shipped: 80 at most
 
-// Scans `text` (one or more YAML documents) without building it and reports at the key path where
-// each was first found: an anchor, an alias, nesting deeper than kMaxNestingDepth, a scalar longer
+// Scans `text` without building it and reports at the key path where each was first found: a
+// second document (the scan stops there), an anchor, an alias, nesting deeper than kMaxNestingDepth, a scalar longer
 // than kMaxScalarBytes, more than kMaxDocumentNodes nodes (the scan stops there), text longer than
 // kMaxDocumentBytes, and invalid YAML (at `source`, with line and column). `path_prefix` is
 // prepended to key paths (an override's path). Returns true if the text may be built and walked.

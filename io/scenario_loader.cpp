@@ -1,6 +1,6 @@
 // Loading pipeline: text -> limits (io/document_limits.hpp) -> YAML document -> overrides -> limits
-// again -> canonical text and hash -> typed reading of every key -> checks between keys. Exceptions of the YAML parser stop here: the caller gets
-// errors as values.
+// again -> canonical text and hash -> typed reading of every key -> checks between keys. Exceptions
+// of the YAML parser stop here: the caller gets errors as values.
 #include "io/scenario_loader.hpp"
 
 #include <sstream>

@@ -184,6 +184,19 @@ TEST(DocumentLimits, InverseSimulationFilesHaveTheSameLimits) {
   EXPECT_TRUE(has(many, "faults", "must be a list of at most 64 thruster names (got a list of 65)"));
 }
 
+// Found by fuzz_invsim (docs/reliability.md): yaml-cpp 0.7 reads a text holding only "," as an
+// endless stream of empty documents, so loading it never returned; the scan stops at the second.
+TEST(DocumentLimits, ACommaAloneIsNotAnEndlessStreamOfDocuments) {
+  EXPECT_TRUE(has_error(load_scenario_text(","), "<text>", "must hold exactly one YAML document (a second begins at line 1, column 1)"));
+  EXPECT_EQ(load_scenario_text(",").errors.size(), 1u);
+  const InvSimLoadResult r = load_invsim_text("# comment\n, , gg\n");
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].key_path, "<text>");
+  EXPECT_EQ(r.errors[0].message, "must hold exactly one YAML document (a second begins at line 2, column 1)");
+  // Two real documents are reported the same way.
+  EXPECT_TRUE(has_error(load_scenario_text("a: 1\n---\nb: 2\n"), "<text>", "must hold exactly one YAML document (a second begins at line 2"));
+}
+
 // The shipped scenarios sit far inside every limit.
 TEST(DocumentLimits, ShippedScenariosAreFarInside) {
   Diagnostics d;
