@@ -73,7 +73,7 @@ void number(std::string& out, double v) { append_number(out, v); }
 void flag(std::string& out, bool v) { out += v ? '1' : '0'; }
 void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_inserter(out), "{}", v); }
 // A thruster in a numeric table: n of its name Tn, 0 for none (docs/style.md, "Naming and layout").
-void thruster_number(std::string& out, int index) { integer(out, index == model::kNoThruster ? 0 : index + 1); }
+void thruster_number(std::string& out, int index) { integer(out, model::thruster_number(index)); }
 
 // One scheme's seven columns, in the spec's order.
 #define CHASER_SCHEME_COLUMNS(scheme)                                                                  \

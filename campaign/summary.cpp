@@ -40,9 +40,6 @@ FactColumns fact_columns(const std::vector<std::string_view>& h) {
   return c;
 }
 
-// runs.csv writes a thruster as n of Tn, 0 for none; files written before that used -1 for none.
-int thruster_index(std::int64_t number) { return number > 0 ? static_cast<int>(number - 1) : model::kNoThruster; }
-
 std::optional<RowFacts> row_facts(const std::vector<std::string_view>& f, const FactColumns& c, std::size_t width) {
   if (f.size() != width) return std::nullopt;
   const auto fault_case = parse_case(f[c.fault_case]);
@@ -54,7 +51,7 @@ std::optional<RowFacts> row_facts(const std::vector<std::string_view>& f, const 
   r.diverged = f[c.status] == "diverged";
   r.error = f[c.status] == "error";
   r.counted = !r.error;
-  r.fault_thruster = thruster_index(*thruster);
+  r.fault_thruster = model::thruster_index_from_number(*thruster);
   r.capture = f[c.capture] == "1";
   r.corridor_kept = f[c.corridor] == "1";
   r.propellant_kg = *propellant;
@@ -63,7 +60,7 @@ std::optional<RowFacts> row_facts(const std::vector<std::string_view>& f, const 
     const auto td = parse_number(f[i[0]]), ti = parse_number(f[i[1]]);
     const auto isolated = parse_integer(f[i[2]]);
     if (!td || !ti || !isolated) return std::nullopt;
-    r.schemes[k] = SchemeFacts{*td, *ti, thruster_index(*isolated), f[i[3]] == "1", f[i[4]] == "1"};
+    r.schemes[k] = SchemeFacts{*td, *ti, model::thruster_index_from_number(*isolated), f[i[3]] == "1", f[i[4]] == "1"};
   }
   return r;
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/output_file.hpp"
 #include "cli/scenario_input.hpp"
 #include "flight/fdir.hpp"
 #include "flight/fdi/residual_design.hpp"
@@ -59,12 +60,7 @@ int fdi_design_command(const FdiDesignArgs& args) {
   }
   print_design(design);
   if (!args.out_path.empty()) {
-    std::ofstream out(args.out_path);
-    out << flight::fdi::to_json(design).dump(2) << '\n';
-    if (!out) {
-      std::cerr << fmt::format("chaser: cannot write {}\n", args.out_path);
-      return kExitFailure;
-    }
+    if (!write_output_file(args.out_path, flight::fdi::to_json(design).dump(2) + "\n")) return kExitFailure;
     std::cout << fmt::format("  wrote {}\n", args.out_path);
   }
   return kExitOk;

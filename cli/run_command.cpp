@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
+#include "cli/output_file.hpp"
 #include "cli/scenario_input.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
@@ -13,24 +14,6 @@
 #include "sim/telemetry_channels.hpp"
 
 namespace chaser::cli {
-
-namespace {
-
-// Writes `text` to `path` through "<path>.partial" and a rename: the file is whole or absent.
-bool write_whole(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::path partial = path;
-  partial += ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary);
-    out << text;
-    if (!out.flush()) return false;
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, path, ec);
-  return !ec;
-}
-
-}  // namespace
 
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides) {
   const auto loaded = load_or_report(scenario_path, overrides);
@@ -70,10 +53,8 @@ int run_command(const RunArgs& args) {
     return kExitFailure;
   }
   // summary.json last: where it exists, the run and its telemetry are complete.
-  if (!write_whole(out / "summary.json", sim::run_summary(scenario, loaded->hash, result).dump(2) + "\n")) {
-    std::cerr << fmt::format("chaser: cannot write {}\n", (out / "summary.json").string());
+  if (!write_output_file(out / "summary.json", sim::run_summary(scenario, loaded->hash, result).dump(2) + "\n"))
     return kExitFailure;
-  }
   std::cout << sim::summary_text(scenario, result);
   std::cout << fmt::format("  wrote {}{}\n", telemetry.empty() ? "" : telemetry.string() + " and ",
                            (out / "summary.json").string());

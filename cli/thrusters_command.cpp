@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/output_file.hpp"
 #include "cli/scenario_input.hpp"
 #include "model/recovery.hpp"
 #include "model/thruster_geometry.hpp"
@@ -69,12 +70,7 @@ int thrusters_command(const ThrustersArgs& args) {
     report["sets"].push_back(entry);
   }
   if (!args.json_path.empty()) {
-    std::ofstream out(args.json_path);
-    out << report.dump(2) << '\n';
-    if (!out) {
-      std::cerr << fmt::format("chaser: cannot write {}\n", args.json_path);
-      return kExitFailure;
-    }
+    if (!write_output_file(args.json_path, report.dump(2) + "\n")) return kExitFailure;
     std::cout << fmt::format("\nwrote {}\n", args.json_path);
   }
   return kExitOk;

@@ -29,18 +29,23 @@ Vec3 relative_rate_body(const RvdConstants& c, const RvdState& s) {
          s.q_hill_from_body.toRotationMatrix().transpose() * omega_hill_in_hill(c.dynamics.orbit.mean_motion_radps());
 }
 
-void propagate_piece(const RvdConstants& c, const Vec3& force, const Vec3& torque, double dt,
-                     RvdState& s) {
-  if (!(dt > 0.0)) return;
-  // The piece's inertial frame is LVLH at the piece's start (t0 = 0 below): the equations do not
-  // depend on which inertial frame is chosen, so re-basing it at every piece is exact and spares
-  // invsim a run clock. At the end LVLH has turned by n dt about its z axis in that frame.
+plant::RigidState plant_state(const RvdConstants& c, const RvdState& s) {
   plant::RigidState x;
   x.r_lvlh_m = lvlh_from_hill(s.r_hill_m);
   x.v_lvlh_mps = lvlh_from_hill(s.v_hill_mps);
   x.q_inertial_from_body = q_lvlh_from_hill() * s.q_hill_from_body;
   x.omega_body_radps = s.omega_body_radps;
   x.mass_kg = c.mass_kg;
+  return x;
+}
+
+void propagate_piece(const RvdConstants& c, const Vec3& force, const Vec3& torque, double dt,
+                     RvdState& s) {
+  if (!(dt > 0.0)) return;
+  // The piece's inertial frame is LVLH at the piece's start (t0 = 0 below): the equations do not
+  // depend on which inertial frame is chosen, so re-basing it at every piece is exact and spares
+  // invsim a run clock. At the end LVLH has turned by n dt about its z axis in that frame.
+  plant::RigidState x = plant_state(c, s);
   plant::propagate_piece(c.dynamics, x, 0.0, dt,
                          plant::PieceInput{.force_body_N = force, .torque_body_Nm = torque});
   s.r_hill_m = hill_from_lvlh(x.r_lvlh_m);

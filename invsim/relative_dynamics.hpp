@@ -54,6 +54,9 @@ Vec3 relative_gravity_accel(const RvdConstants& c, const Vec3& r_hill_m, const V
 Vec3 relative_rate_body(const RvdConstants& c, const RvdState& s);
 
 // Advances s by dt [s] under body force [N] and torque [N m] held constant: the plant's
+// The state as the plant's, in LVLH, with the inertial frame at LVLH of this instant.
+plant::RigidState plant_state(const RvdConstants& c, const RvdState& s);
+
 // propagate_piece on the state mapped to LVLH. dt <= 0 is a no-op.
 void propagate_piece(const RvdConstants& c, const Vec3& force_body_N, const Vec3& torque_body_Nm,
                      double dt_s, RvdState& s);

@@ -69,6 +69,10 @@ ThrusterMask initial_active_set(const ThrusterSetParams& set);
 
 // "T1".."TN" for indices 0..N-1, "none" for kNoThruster.
 std::string thruster_name(int index);
+// The same thruster in a table of numbers: n of its name Tn, 0 for kNoThruster; and back (any
+// number below 1 reads as none: runs.csv files written before this rule used -1).
+inline int thruster_number(int index) { return index == kNoThruster ? 0 : index + 1; }
+inline int thruster_index_from_number(long long number) { return number >= 1 ? static_cast<int>(number - 1) : kNoThruster; }
 
 // The indices of a mask's thrusters in increasing order (its compact numbering: the k-th active
 // thruster has compact index k).

@@ -31,7 +31,7 @@ double component(const Quat& q, int i) { return i == 0 ? q.w() : q.vec()[i - 1];
 
 // A lane of the watched set as a thruster number 1..N in telemetry, 0 for none.
 double thruster_number(const PeriodRecord& r, int lane) {
-  return lane >= 0 ? r.watched->index[static_cast<std::size_t>(lane)] + 1 : 0;
+  return model::thruster_number(lane >= 0 ? r.watched->index[static_cast<std::size_t>(lane)] : model::kNoThruster);
 }
 
 // The position, attitude and deficit-detector schemes' outputs, by a scheme index.

@@ -157,12 +157,7 @@ TEST(RelativeDynamics, AgreesWithThePreviousHillFrameIntegrator) {
 TEST(RelativeDynamics, IsThePlantsPropagation) {
   const RvdConstants c = leo();
   RvdState s = tumbling_start();
-  plant::RigidState x;
-  x.r_lvlh_m = lvlh_from_hill(s.r_hill_m);
-  x.v_lvlh_mps = lvlh_from_hill(s.v_hill_mps);
-  x.q_inertial_from_body = q_lvlh_from_hill() * s.q_hill_from_body;
-  x.omega_body_radps = s.omega_body_radps;
-  x.mass_kg = c.mass_kg;
+  plant::RigidState x = plant_state(c, s);  // LVLH(0) is the inertial frame of the whole flight
   double t_s = 0.0;
   for (int k = 0; k < kDrivePieces; ++k) {
     const Drive d = drive(k);
