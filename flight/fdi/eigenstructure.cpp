@@ -22,15 +22,18 @@ AssignableSubspace assignable_subspace(const MatrixXd& A_bar, const MatrixXd& C,
   Index r = 0;
   const VectorXd& s = svd.singularValues();
   while (r < s.size() && s(r) > 1e-12 * s(0)) ++r;
-  return {K, svd.matrixV().leftCols(r)};
+  return {K, svd.matrixV().leftCols(r), K.transpose().colPivHouseholderQr()};
+}
+
+std::vector<AssignableSubspace> assignable_subspaces(const MatrixXd& A_bar, const MatrixXd& C,
+                                                     const std::vector<double>& eigenvalues) {
+  std::vector<AssignableSubspace> subspaces;
+  subspaces.reserve(eigenvalues.size());
+  for (const double lambda : eigenvalues) subspaces.push_back(assignable_subspace(A_bar, C, lambda));
+  return subspaces;
 }
 
 namespace {
-
-// m with K^T m = l in the least-squares sense (exact when l is in the row space of K).
-VectorXd multiplier(const MatrixXd& K, const VectorXd& l) {
-  return K.transpose().colPivHouseholderQr().solve(l);
-}
 
 // The unit vector of span(basis) with the largest component orthogonal to span(chosen).
 VectorXd most_orthogonal(const MatrixXd& basis, const MatrixXd& chosen_orthonormal) {
@@ -48,15 +51,23 @@ EigenstructureAssignment assign_left_eigenstructure(const MatrixXd& A_bar, const
                                                     const MatrixXd& H,
                                                     const std::vector<double>& eigenvalues) {
   const Index n = A_bar.rows();
+  if (static_cast<Index>(eigenvalues.size()) != n || H.rows() > n || H.cols() != n)
+    throw std::invalid_argument("need n_x eigenvalues and at most n_x rows of H");
+  return assign_left_eigenstructure(assignable_subspaces(A_bar, C, eigenvalues), H);
+}
+
+EigenstructureAssignment assign_left_eigenstructure(const std::vector<AssignableSubspace>& subspaces,
+                                                    const MatrixXd& H) {
+  const Index n = static_cast<Index>(subspaces.size());
   const Index n_r = H.rows();
-  if (static_cast<Index>(eigenvalues.size()) != n || n_r > n || H.cols() != n)
+  if (n == 0 || n_r > n || H.cols() != n)
     throw std::invalid_argument("need n_x eigenvalues and at most n_x rows of H");
   EigenstructureAssignment result;
   result.P.resize(n, n);
-  result.S.resize(n, C.rows());
+  result.S.resize(n, subspaces.front().K.rows());
   MatrixXd chosen(n, 0);  // orthonormal basis of the eigenvectors chosen so far
   for (Index i = 0; i < n; ++i) {
-    const AssignableSubspace sub = assignable_subspace(A_bar, C, eigenvalues[i]);
+    const AssignableSubspace& sub = subspaces[i];
     VectorXd l;
     if (i < n_r) {  // eq. 37: projection of h_i on the assignable subspace
       const VectorXd h = H.row(i).transpose();
@@ -65,7 +76,8 @@ EigenstructureAssignment assign_left_eigenstructure(const MatrixXd& A_bar, const
     } else {
       l = most_orthogonal(sub.basis, chosen);
     }
-    const VectorXd m = multiplier(sub.K, l);
+    // m with K^T m = l in the least-squares sense (exact when l is in the row space of K).
+    const VectorXd m = sub.K_t_qr.solve(l);
     result.P.row(i) = l.transpose();
     result.S.row(i) = m.transpose();
     const VectorXd fresh = l - chosen * (chosen.transpose() * l);

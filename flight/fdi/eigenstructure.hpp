@@ -12,6 +12,7 @@
 // ones), which keeps P well conditioned. Then P L = S (eq. 38).
 // Eigenvalues must be real and distinct and must not be eigenvalues of A_bar.
 #include <Eigen/Core>
+#include <Eigen/QR>
 #include <vector>
 
 namespace chaser::flight::fdi {
@@ -24,13 +25,24 @@ struct EigenstructureAssignment {
   double p_condition = 0.0;           // 2-norm condition number of P
 };
 
-// Orthonormal basis [n_x x n_y] of the row space of K = -C (lambda I - A_bar)^{-1}, and K itself.
+// Orthonormal basis [n_x x n_y] of the row space of K = -C (lambda I - A_bar)^{-1}, K itself, and
+// the factorisation of K^T that gives m_i from l_i (eq. 35), stored row-major as K^T is: a
+// column-major copy factors with other rounding (an L entry of -0.0 for +0.0 in the MSR design).
 struct AssignableSubspace {
-  Eigen::MatrixXd K;      // [n_y x n_x]
-  Eigen::MatrixXd basis;  // [n_x x rank K]
+  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Eigen::MatrixXd K;                                 // [n_y x n_x]
+  Eigen::MatrixXd basis;                             // [n_x x rank K]
+  Eigen::ColPivHouseholderQR<RowMajorMatrix> K_t_qr;  // of K^T [n_x x n_y]
 };
 AssignableSubspace assignable_subspace(const Eigen::MatrixXd& A_bar, const Eigen::MatrixXd& C,
                                        double lambda);
+
+// One per eigenvalue, in order. They depend on A_bar, C and the eigenvalues only, not on H: a
+// design's subspace search assigns a few hundred H against the same ones, so it computes them once.
+// Throws std::invalid_argument on a singular lambda_i I - A_bar.
+std::vector<AssignableSubspace> assignable_subspaces(const Eigen::MatrixXd& A_bar,
+                                                     const Eigen::MatrixXd& C,
+                                                     const std::vector<double>& eigenvalues);
 
 // H: [n_r x n_x] rows to assign to eigenvalues[0 .. n_r-1]; eigenvalues: n_x values.
 // Throws std::invalid_argument on a size mismatch or a singular lambda_i I - A_bar.
@@ -38,5 +50,9 @@ EigenstructureAssignment assign_left_eigenstructure(const Eigen::MatrixXd& A_bar
                                                     const Eigen::MatrixXd& C,
                                                     const Eigen::MatrixXd& H,
                                                     const std::vector<double>& eigenvalues);
+
+// The same on subspaces computed beforehand (the same numbers, bit for bit).
+EigenstructureAssignment assign_left_eigenstructure(const std::vector<AssignableSubspace>& subspaces,
+                                                    const Eigen::MatrixXd& H);
 
 }  // namespace chaser::flight::fdi

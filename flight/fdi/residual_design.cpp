@@ -49,9 +49,10 @@ void build_unknown_input(const DesignInputs& in, ResidualDesign& d) {
 MatrixXd choose_discarded(const DesignInputs& in, const ResidualDesign& d) {
   if (in.weighting == WeightingChoice::kSvdOrder || d.low_rank.choose == 0 || in.E_f.cols() == 0)
     return svd_order_choice(d.low_rank);
+  // Every trial shares A_bar, C and the eigenvalues: their assignable subspaces are computed once.
+  const std::vector<AssignableSubspace> subspaces = assignable_subspaces(d.A_bar, in.C, in.eigenvalues);
   const SubspaceScore score = [&](const MatrixXd& chosen) {
-    const LowRankResult lr = low_rank_solution(d.E_d, in.C, d.low_rank, chosen);
-    return weakest_dc_fault_gain(d.A_bar, in.C, lr.Q, in.eigenvalues, d.E_f_bar);
+    return weakest_dc_fault_gain(d.A_bar, in.C, low_rank_Q(d.low_rank, chosen), subspaces, d.E_f_bar);
   };
   return choose_subspace(d.low_rank.tied, d.low_rank.choose, score, in.search);
 }
@@ -59,7 +60,7 @@ MatrixXd choose_discarded(const DesignInputs& in, const ResidualDesign& d) {
 void reduce_and_weight(const DesignInputs& in, ResidualDesign& d) {
   d.low_rank = low_rank_choice(d.E_d, in.C, in.residual_dim, in.low_rank, in.tie_rel_tol);
   d.discarded = choose_discarded(in, d);
-  const LowRankResult lr = low_rank_solution(d.E_d, in.C, d.low_rank, d.discarded);
+  const LowRankResult lr = low_rank_solution(d.E_d, d.low_rank, d.discarded);
   d.E_d_star = lr.E_star;
   d.Q = lr.Q;
   d.low_rank_error = lr.frobenius_error;
@@ -83,7 +84,12 @@ ObserverUnderTest observer_under_test(const DesignInputs& in, const ResidualDesi
 
 double weakest_dc_fault_gain(const MatrixXd& A_bar, const MatrixXd& C, const MatrixXd& Q,
                              const std::vector<double>& eigenvalues, const MatrixXd& E_f_bar) {
-  const EigenstructureAssignment a = assign_left_eigenstructure(A_bar, C, Q * C, eigenvalues);
+  return weakest_dc_fault_gain(A_bar, C, Q, assignable_subspaces(A_bar, C, eigenvalues), E_f_bar);
+}
+
+double weakest_dc_fault_gain(const MatrixXd& A_bar, const MatrixXd& C, const MatrixXd& Q,
+                             const std::vector<AssignableSubspace>& subspaces, const MatrixXd& E_f_bar) {
+  const EigenstructureAssignment a = assign_left_eigenstructure(subspaces, Q * C);
   if (!(a.p_condition < 1e10)) return -std::numeric_limits<double>::infinity();
   return dc_fault_gains(A_bar - a.L * C, Q * C, E_f_bar).minCoeff();
 }

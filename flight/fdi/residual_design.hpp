@@ -50,5 +50,9 @@ ResidualDesign design_residual_generator(const DesignInputs& inputs);
 double weakest_dc_fault_gain(const Eigen::MatrixXd& A_bar, const Eigen::MatrixXd& C,
                              const Eigen::MatrixXd& Q, const std::vector<double>& eigenvalues,
                              const Eigen::MatrixXd& E_f_bar);
+// The same with the eigenvalues' assignable subspaces computed beforehand (assignable_subspaces).
+double weakest_dc_fault_gain(const Eigen::MatrixXd& A_bar, const Eigen::MatrixXd& C,
+                             const Eigen::MatrixXd& Q, const std::vector<AssignableSubspace>& subspaces,
+                             const Eigen::MatrixXd& E_f_bar);
 
 }  // namespace chaser::flight::fdi

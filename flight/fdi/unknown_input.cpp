@@ -58,6 +58,7 @@ void fix_row_signs(MatrixXd& Q) {
 LowRankChoice seen_part_choice(const MatrixXd& E_d, const MatrixXd& C, int n_r, double tie_rel_tol) {
   const OutputSvd c = output_svd(C);
   LowRankChoice choice;
+  choice.output_U = c.U, choice.output_s = c.s, choice.output_V = c.V;
   full_left_svd(c.V.transpose() * E_d, choice.tied, choice.singular_values);
   const VectorXd& s = choice.singular_values;
   const Index n_y = C.rows();
@@ -111,24 +112,42 @@ LowRankChoice low_rank_choice(const MatrixXd& E_d, const MatrixXd& C, int residu
 
 MatrixXd svd_order_choice(const LowRankChoice& choice) { return choice.tied.rightCols(choice.choose); }
 
-LowRankResult low_rank_solution(const MatrixXd& E_d, const MatrixXd& C, const LowRankChoice& choice,
-                                const MatrixXd& chosen) {
-  MatrixXd discard(C.rows(), choice.forced.cols() + chosen.cols());
+namespace {
+
+// [chosen, forced]: the n_r directions discarded.
+MatrixXd discarded(const LowRankChoice& choice, const MatrixXd& chosen) {
+  MatrixXd discard(choice.tied.rows(), choice.forced.cols() + chosen.cols());
   discard << chosen, choice.forced;
-  LowRankResult result;
+  return discard;
+}
+
+}  // namespace
+
+MatrixXd low_rank_Q(const LowRankChoice& choice, const MatrixXd& chosen) {
+  const MatrixXd discard = discarded(choice, chosen);
   MatrixXd q_columns;
   if (choice.method == LowRankMethod::kTruncateSeenPart) {
-    const OutputSvd c = output_svd(C);
-    result.E_star = E_d - c.V * (discard * (discard.transpose() * (c.V.transpose() * E_d)));
     // Q^T must be orthogonal to range(C E_d*) = U_C S_C span(kept): take U_C S_C^-1 discard.
-    const MatrixXd raw = c.U * c.s.cwiseInverse().asDiagonal() * discard;
+    const MatrixXd raw = choice.output_U * choice.output_s.cwiseInverse().asDiagonal() * discard;
     q_columns = raw.householderQr().householderQ() * MatrixXd::Identity(raw.rows(), raw.cols());
   } else {
-    result.E_star = choice.truncated_whole;
     q_columns = discard;
   }
-  result.Q = q_columns.transpose();
-  fix_row_signs(result.Q);
+  MatrixXd Q = q_columns.transpose();
+  fix_row_signs(Q);
+  return Q;
+}
+
+LowRankResult low_rank_solution(const MatrixXd& E_d, const LowRankChoice& choice, const MatrixXd& chosen) {
+  LowRankResult result;
+  if (choice.method == LowRankMethod::kTruncateSeenPart) {
+    const MatrixXd discard = discarded(choice, chosen);
+    const MatrixXd& V = choice.output_V;
+    result.E_star = E_d - V * (discard * (discard.transpose() * (V.transpose() * E_d)));
+  } else {
+    result.E_star = choice.truncated_whole;
+  }
+  result.Q = low_rank_Q(choice, chosen);
   result.frobenius_error = (E_d - result.E_star).norm();
   return result;
 }

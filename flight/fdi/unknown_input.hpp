@@ -38,6 +38,10 @@ struct LowRankChoice {
   int choose = 0;                   // how many directions to take from `tied` (p0 + choose = n_r)
   Eigen::VectorXd singular_values;  // sigma_j of M (kTruncateSeenPart) or of C E_d* (kTruncateWhole)
   Eigen::MatrixXd truncated_whole;  // E_d* of kTruncateWhole (independent of the choice)
+  // C = U_C diag(s_C) V_C^T, for kTruncateSeenPart: kept so that no trial choice factors C again.
+  Eigen::MatrixXd output_U;  // [n_y x n_y]
+  Eigen::VectorXd output_s;  // [n_y]
+  Eigen::MatrixXd output_V;  // [n_x x n_y]
 };
 
 // tie_rel_tol: singular values within tie_rel_tol * sigma_1 of the first discarded one are tied.
@@ -54,10 +58,13 @@ struct LowRankResult {
   double frobenius_error = 0;  // ||E_d - E_d*||_F
 };
 
-// E_d* and Q for `chosen` ([n_y x choose], orthonormal, inside span(tied)). Each row of Q has its
-// largest-magnitude entry positive (a deterministic sign).
-LowRankResult low_rank_solution(const Eigen::MatrixXd& E_d, const Eigen::MatrixXd& C,
-                                const LowRankChoice& choice, const Eigen::MatrixXd& chosen);
+// E_d* and Q for `chosen` ([n_y x choose], orthonormal, inside span(tied)), `choice` made for this
+// E_d. Each row of Q has its largest-magnitude entry positive (a deterministic sign).
+LowRankResult low_rank_solution(const Eigen::MatrixXd& E_d, const LowRankChoice& choice,
+                                const Eigen::MatrixXd& chosen);
+
+// Q alone, the same as low_rank_solution's: what a search over the choices scores.
+Eigen::MatrixXd low_rank_Q(const LowRankChoice& choice, const Eigen::MatrixXd& chosen);
 
 // The analytical optimum of eq. 39: sqrt of the sum of the n_r smallest sigma_j(V_C^T E_d)^2.
 double optimal_low_rank_error(const Eigen::MatrixXd& E_d, const Eigen::MatrixXd& C, int residual_dim);

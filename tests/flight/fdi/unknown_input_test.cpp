@@ -57,14 +57,14 @@ TEST(UnknownInput, ExactMinimiserMeetsTheRankConditionAndBeatsNaiveTruncation) {
     const MatrixXd C = random_matrix(rng, 3, 6);
     for (int n_r = 1; n_r <= 3; ++n_r) {
       const LowRankChoice exact = low_rank_choice(E_d, C, n_r, LowRankMethod::kTruncateSeenPart);
-      const LowRankResult r = low_rank_solution(E_d, C, exact, svd_order_choice(exact));
+      const LowRankResult r = low_rank_solution(E_d, exact, svd_order_choice(exact));
       const double scale = C.norm() * E_d.norm();
       EXPECT_EQ(numerical_rank(C * r.E_star, scale), 3 - n_r) << "n_r = " << n_r;
       EXPECT_LT((r.Q * C * r.E_star).norm(), 1e-12 * scale);
       EXPECT_LT((r.Q * r.Q.transpose() - MatrixXd::Identity(n_r, n_r)).norm(), 1e-14);
       EXPECT_NEAR(r.frobenius_error, optimal_low_rank_error(E_d, C, n_r), 1e-12 * E_d.norm());
       const LowRankChoice naive = low_rank_choice(E_d, C, n_r, LowRankMethod::kTruncateWhole);
-      const LowRankResult rn = low_rank_solution(E_d, C, naive, svd_order_choice(naive));
+      const LowRankResult rn = low_rank_solution(E_d, naive, svd_order_choice(naive));
       EXPECT_LE(numerical_rank(C * rn.E_star, scale), 3 - n_r);
       EXPECT_LT((rn.Q * C * rn.E_star).norm(), 1e-12 * scale);
       EXPECT_LE(r.frobenius_error, rn.frobenius_error) << "n_r = " << n_r;
@@ -78,7 +78,7 @@ TEST(UnknownInput, ExactMinimiserKeepsTheUnseenPart) {
   const MatrixXd E_d = random_matrix(rng, 6, 20);
   const MatrixXd C = random_matrix(rng, 3, 6);
   const LowRankChoice choice = low_rank_choice(E_d, C, 1, LowRankMethod::kTruncateSeenPart);
-  const LowRankResult r = low_rank_solution(E_d, C, choice, svd_order_choice(choice));
+  const LowRankResult r = low_rank_solution(E_d, choice, svd_order_choice(choice));
   const MatrixXd unseen = MatrixXd::Identity(6, 6) - C.completeOrthogonalDecomposition().pseudoInverse() * C;
   EXPECT_LT((unseen * (E_d - r.E_star)).norm(), 1e-13 * E_d.norm());
 }
@@ -97,7 +97,7 @@ TEST(UnknownInput, PositionModelSingularValuesTie) {
   EXPECT_EQ(choice.forced.cols(), 0);
   const double optimum = optimal_low_rank_error(E_d, C, 1);
   for (const VectorXd& w : {VectorXd(VectorXd::Unit(3, 0)), VectorXd(Eigen::Vector3d(1, 2, -2).normalized())}) {
-    const LowRankResult r = low_rank_solution(E_d, C, choice, choice.tied * w);
+    const LowRankResult r = low_rank_solution(E_d, choice, choice.tied * w);
     EXPECT_NEAR(r.frobenius_error, optimum, 1e-8 * optimum);
     EXPECT_LT((r.Q * C * r.E_star).norm(), 1e-12 * E_d.norm());
   }
