@@ -1,11 +1,11 @@
 #include "sim/telemetry.hpp"
 
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <system_error>
 
+#include "core/shortest_double.hpp"
 #include "sim/npy_header.hpp"
 
 namespace chaser::sim {
@@ -17,9 +17,9 @@ static_assert(std::endian::native == std::endian::little, "the .npy records are 
 constexpr std::size_t kRowsPerBlock = 256;    // ~0.2 MB for MSR's 100 channels
 constexpr std::size_t kBlocksInFlight = 4;    // the run waits beyond this: flat memory
 constexpr std::size_t kTextFlushBytes = 1 << 20;
-constexpr std::size_t kMaxNumberChars = 32;   // to_chars' shortest double is at most 24 characters
+constexpr std::size_t kNumberRoom = kShortestDoubleRoom;  // what write_number may touch
 
-// The shortest text that reads back to the same double (std::to_chars without a precision:
+// The shortest text that reads back to the same double (as std::to_chars without a precision:
 // round-trip exact, "nan"/"inf" for those). +0.0, most channels of a period, is written "0"
 // without the conversion.
 char* write_number(char* out, double value) {
@@ -27,7 +27,7 @@ char* write_number(char* out, double value) {
     *out = '0';
     return out + 1;
   }
-  return std::to_chars(out, out + kMaxNumberChars, value).ptr;
+  return write_shortest_double(out, value);
 }
 
 }  // namespace
@@ -118,18 +118,19 @@ void TelemetryWriter::write_block(const std::vector<double>& block) {
     return;
   }
   const std::size_t n = channels_.size();
+  // Room for a whole flush and one more row at the widest, allocated once and never cleared: a
+  // row's text is written over whatever the last flush left.
+  if (text_.empty()) text_.resize(kTextFlushBytes + n * (kNumberRoom + 1));
   for (std::size_t r = 0; r * n < block.size(); ++r) {
-    const std::size_t start = text_.size();
-    text_.resize(start + n * (kMaxNumberChars + 1));
-    char* p = text_.data() + start;
+    char* p = text_.data() + text_used_;
     for (std::size_t c = 0; c < n; ++c) {
       p = write_number(p, block[r * n + c]);
       *p++ = c + 1 < n ? ',' : '\n';
     }
-    text_.resize(static_cast<std::size_t>(p - text_.data()));
-    if (text_.size() > kTextFlushBytes) {
-      write_bytes(text_.data(), text_.size());
-      text_.clear();
+    text_used_ = static_cast<std::size_t>(p - text_.data());
+    if (text_used_ > kTextFlushBytes) {
+      write_bytes(text_.data(), text_used_);
+      text_used_ = 0;
     }
   }
 }
@@ -153,7 +154,7 @@ bool TelemetryWriter::finish() {
   if (block_rows_ > 0) hand_over_block();
   stop_thread();  // the thread drains every queued block before it returns
   finished_ = true;
-  if (!text_.empty()) write_bytes(text_.data(), text_.size());
+  write_bytes(text_.data(), text_used_);
   if (format_ == TelemetryFormat::kNpy) {  // the real row count, in the header's first length
     const std::string header = npy_header(channels_, rows_, npy_header_bytes_);
     if (std::fseek(file_, 0, SEEK_SET) != 0) failed_ = true;

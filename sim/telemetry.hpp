@@ -3,7 +3,8 @@
 // thread while the run goes on, so a run with telemetry costs the loop little more than one
 // without (docs/performance.md). Two formats, chosen by the file's extension:
 //  - ".csv": a header of channel names, then one line per row; every number in the shortest text
-//    that reads back to the same double (std::to_chars), so the file round-trips exactly;
+//    that reads back to the same double (as std::to_chars writes it, by core/shortest_double),
+//    so the file round-trips exactly;
 //  - ".npy": a NumPy structured array, one float64 field per channel (sim/npy_header.hpp): the
 //    bytes of the doubles, read without a parser by np.load (MATLAB, Julia: readNPY, NPZ.jl).
 // Nothing lost, nothing half-written: the file is "<path>.partial" until finish() has written and
@@ -64,6 +65,7 @@ class TelemetryWriter {
   std::vector<double> block_;  // rows being filled by the run, row-major
   std::size_t block_rows_ = 0;
   std::vector<char> text_;     // the writer thread's CSV text buffer
+  std::size_t text_used_ = 0;  // its bytes not yet written
 
   std::mutex mutex_;
   std::condition_variable changed_;
