@@ -93,12 +93,19 @@ FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState&
   return r;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
-  RunResult result = run_scenario(scenario, flight::make_flight_params(scenario), options);
-  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const flight::FlightParams flight_params = flight::make_flight_params(scenario);
+  const double design_s = seconds_since(wall_start);
+  RunResult result = run_scenario(scenario, flight_params, options);
+  result.wall_design_s = design_s;
+  result.wall_s = seconds_since(wall_start);
   return result;
 }
 
@@ -120,6 +127,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   }
 
   RunResult result;
+  const auto loop_start = std::chrono::steady_clock::now();
   if (options.record_glr_per_second)
     result.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(scenario.duration_s)), {0.0f, 0.0f, 0.0f});
   std::int64_t k = 0;
@@ -166,8 +174,11 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   result.propellant_used_kg = plant.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k;
+  const auto files_start = std::chrono::steady_clock::now();
+  result.wall_loop_s = std::chrono::duration<double>(files_start - loop_start).count();
   result.telemetry_ok = !telemetry || telemetry->finish();  // before wall_s: the user waits for the file
-  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  result.wall_files_s = seconds_since(files_start);
+  result.wall_s = seconds_since(wall_start);
   return result;
 }
 

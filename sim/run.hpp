@@ -49,6 +49,11 @@ struct RunResult {
   double propellant_used_kg = 0;  // [kg]
   double simulated_s = 0;         // [s] simulated time actually flown (less than duration if diverged)
   double wall_s = 0;              // [s] wall-clock time of the run (with the design when done by the run)
+  // Its parts: the flight software's set-up (the FDI designs) when done by the run, the closed loop
+  // (telemetry rows handed over included), and waiting for the telemetry file to be finished.
+  double wall_design_s = 0;       // [s]
+  double wall_loop_s = 0;         // [s]
+  double wall_files_s = 0;        // [s]
   std::int64_t periods = 0;
   std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
   bool telemetry_ok = true;

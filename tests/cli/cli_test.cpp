@@ -55,12 +55,16 @@ TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
 // A short run writes telemetry.csv (a header plus one row per period) and summary.json.
 // A run killed mid-way (SIGKILL while the telemetry is being written) leaves no file that looks
 // complete: telemetry.csv and summary.json appear only when the run has finished them; what is on
-// disk is telemetry.csv.partial. The same command run to the end leaves exactly the two files.
+// disk is telemetry.csv.partial, and an earlier run's files in the same directory (here an npy
+// run's) are gone, not left to pass for this run's. The same command run to the end leaves exactly
+// the two files.
 TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
   const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_killed";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string out = dir.string();
+  ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=5 --telemetry npy --out " + out).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(dir / "telemetry.npy") && std::filesystem::exists(dir / "summary.json"));
   const pid_t pid = chaser::testing::start_process(
       CHASER_BINARY, {"run", "scenarios/msr_terminal.yaml", "--set", "duration_s=200000", "--out", out});
   const auto partial = dir / "telemetry.csv.partial";
@@ -75,6 +79,7 @@ TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
   EXPECT_TRUE(std::filesystem::exists(partial));
   EXPECT_FALSE(std::filesystem::exists(dir / "telemetry.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "telemetry.npy"));
 
   std::filesystem::remove_all(dir);
   ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=5 --telemetry npy --out " + out).exit_code, 0);
@@ -146,6 +151,13 @@ TEST(Cli, RunWritesTelemetryAndSummary) {
   for (const char* key : {"chaser_version", "final_position_error_m", "corridor_kept", "capture_achieved",
                           "propellant_used_kg", "max_attitude_error_deg", "wall_s"})
     EXPECT_TRUE(summary.contains(key)) << key;
+  // The wall time's parts (design, loop, files) are measured in turn inside it.
+  const double parts = summary["wall_design_s"].get<double>() + summary["wall_loop_s"].get<double>() +
+                       summary["wall_files_s"].get<double>();
+  EXPECT_GT(summary["wall_design_s"].get<double>(), 0.0);
+  EXPECT_GT(summary["wall_loop_s"].get<double>(), 0.0);
+  EXPECT_LE(parts, summary["wall_s"].get<double>());
+  EXPECT_GE(parts, 0.5 * summary["wall_s"].get<double>());
   std::filesystem::remove_all(dir);
 }
 
