@@ -60,7 +60,8 @@ BENCHMARK_CAPTURE(BM_EndToEnd, stuck_open_T8, true, Fdi::kOn)->Unit(benchmark::k
 
 // What `chaser run` waits for, less process start and scenario loading: the whole 1200 s run with
 // its telemetry file written (csv or npy, every channel, finished and renamed), against none. Issue
-// 16's target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop.
+// 16's target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop. As `chaser run`
+// does, each run first removes the last one's file (renaming over it costs an ext4 flush).
 void BM_RunWithTelemetry(benchmark::State& state, const char* extension) {
   const model::Scenario scenario = msr_scenario();
   const std::string path =
@@ -68,6 +69,7 @@ void BM_RunWithTelemetry(benchmark::State& state, const char* extension) {
                  : std::string();
   double simulated_s = 0;
   for (auto _ : state) {
+    if (!path.empty()) std::filesystem::remove(path);
     const sim::RunResult result = sim::run_scenario(scenario, {.telemetry_path = path, .telemetry_channels = {}});
     if (!result.telemetry_ok) state.SkipWithError("telemetry not written");
     simulated_s += result.simulated_s;

@@ -8,8 +8,9 @@
 // the result files are byte-identical to a campaign without MPI. Only each rank's main thread calls
 // MPI (MPI_THREAD_FUNNELED).
 //
-// This header does not include mpi.h: without MPI (CHASER_HAVE_MPI undefined when campaign/ is
-// built) everything here compiles to stubs and mpi_built() is false.
+// This header does not include mpi.h. Two implementations (campaign/mpi/): chaser-mpi links the
+// runner over MPI (mpi_runner.cpp); the plain chaser links stubs (no_mpi.cpp: mpi_built() false),
+// and its main hands an --mpi command line to chaser-mpi.
 #include <string>
 #include <string_view>
 

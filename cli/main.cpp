@@ -1,7 +1,12 @@
 // chaser: the command-line entry point. Parses arguments and dispatches to a subcommand.
+#include <unistd.h>
+
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <string_view>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 
@@ -18,11 +23,24 @@ bool asks_for_mpi(int argc, char** argv) {
   return false;
 }
 
+// The plain chaser does not link MPI (campaign/mpi/CMakeLists.txt: start-up time): it becomes
+// chaser-mpi, the same commands with MPI, from its own folder, with the same arguments and
+// environment (mpirun's included) and the same process. Returns only if there is none to run: the
+// command then says that this chaser has no MPI.
+void become_chaser_mpi(char** argv) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return;
+  const std::string sibling = (self.parent_path() / "chaser-mpi").string();
+  execv(sibling.c_str(), argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace chaser::cli;
   std::unique_ptr<chaser::campaign::MpiSession> mpi;
+  if (asks_for_mpi(argc, argv) && !chaser::campaign::mpi_built()) become_chaser_mpi(argv);
   if (asks_for_mpi(argc, argv) && chaser::campaign::mpi_built()) {
     mpi = std::make_unique<chaser::campaign::MpiSession>(argc, argv);
     if (!mpi->ok()) {

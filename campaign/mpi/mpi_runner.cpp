@@ -1,6 +1,5 @@
+// chaser-mpi's campaign runner over MPI (campaign/mpi_runner.hpp).
 #include "campaign/mpi_runner.hpp"
-
-#ifdef CHASER_HAVE_MPI
 
 #include <mpi.h>
 
@@ -287,28 +286,3 @@ CampaignOutcome run_campaign_mpi(const CampaignPlan& plan, const CampaignOptions
 }
 
 }  // namespace chaser::campaign
-
-#else  // built without MPI: stubs, so that --mpi can say so
-
-namespace chaser::campaign {
-
-bool mpi_built() { return false; }
-
-MpiSession::MpiSession(int&, char**&) : error_(kNoMpiMessage) {}
-
-MpiSession::~MpiSession() = default;
-
-int mpi_rank() { return 0; }
-
-bool mpi_all_agree(const std::string& campaign, int) { return !campaign.empty(); }
-
-CampaignOutcome run_campaign_mpi(const CampaignPlan&, const CampaignOptions&, int) {
-  CampaignOutcome outcome;
-  outcome.status = CampaignStatus::kBadInput;
-  outcome.message = std::string(kNoMpiMessage);
-  return outcome;
-}
-
-}  // namespace chaser::campaign
-
-#endif
