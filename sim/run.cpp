@@ -121,6 +121,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
 
   std::unique_ptr<TelemetryWriter> telemetry;
   std::vector<TelemetryChannel> channels;
+  const bool every_channel = options.telemetry_channels.empty();  // the whole table, record_every_channel
   if (!options.telemetry_path.empty()) {
     channels = select_channels(telemetry_channels(scenario.thrusters.count), options.telemetry_channels);
     telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
@@ -153,17 +154,19 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
       second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
       second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
-    if (telemetry && telemetry->ok())
-      record_period(*telemetry, channels,
-                    PeriodRecord{.t_s = t_s,
-                                 .truth = &truth,
-                                 .plant = &plant.state,
-                                 .flight = &out,
-                                 .flight_state = &flight_state,
-                                 .watched = &watched,
-                                 .attitude_error_body_rad =
-                                     attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
-                                 .q_inertial_from_target = plant::target_attitude(scenario.target, t_s)});
+    if (telemetry && telemetry->ok()) {
+      const PeriodRecord record{
+          .t_s = t_s,
+          .truth = &truth,
+          .plant = &plant.state,
+          .flight = &out,
+          .flight_state = &flight_state,
+          .watched = &watched,
+          .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
+          .q_inertial_from_target = plant::target_attitude(scenario.target, t_s)};
+      if (every_channel) record_every_channel(record, scenario.thrusters.count, telemetry->new_row().data());
+      else record_period(*telemetry, channels, record);
+    }
   }
 
   const double t_end_s = to_seconds(k * period_ns);

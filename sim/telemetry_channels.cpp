@@ -145,4 +145,42 @@ void record_period(TelemetryWriter& w, const std::vector<TelemetryChannel>& chan
   for (std::size_t i = 0; i < channels.size(); ++i) row[i] = channels[i].value(r, channels[i].index);
 }
 
+void record_every_channel(const PeriodRecord& r, int thrusters, double* row) {
+  const auto put3 = [&row](const Vec3& v) { row[0] = v.x(), row[1] = v.y(), row[2] = v.z(), row += 3; };
+  const auto put4 = [&row](const Quat& q) { row[0] = q.w(), row[1] = q.x(), row[2] = q.y(), row[3] = q.z(), row += 4; };
+  const flight::FlightOutput& f = *r.flight;
+  *row++ = r.t_s;
+  put3(r.truth->r_lvlh_m);
+  put3(r.truth->v_lvlh_mps);
+  put4(r.truth->q_inertial_from_body);
+  put3(r.truth->omega_body_radps);
+  put4(r.q_inertial_from_target);
+  put3(f.estimate.r_lvlh_m);
+  put3(f.estimate.v_lvlh_mps);
+  put4(f.estimate.q_inertial_from_body);
+  put3(f.estimate.omega_body_radps);
+  put3(f.reference.r_lvlh_m);
+  put3(r.attitude_error_body_rad);
+  put3(f.force_demand_lvlh_N);
+  put3(f.torque_demand_body_Nm);
+  put3(f.commanded_wrench.head<3>());
+  put3(f.commanded_wrench.tail<3>());
+  for (int i = 0; i < thrusters; ++i) *row++ = f.command.ton[static_cast<std::size_t>(i)];
+  for (int i = 0; i < thrusters; ++i) *row++ = r.plant->last_profile.ton_realised[static_cast<std::size_t>(i)];
+  for (int s = 0; s < 3; ++s) {
+    const flight::fdi::FdiSchemeOutput& o = scheme(r, s);
+    if (s < 2)
+      for (int i = 0; i < 3; ++i) *row++ = o.residual[i];
+    *row++ = o.glr.value();
+    *row++ = o.alarm ? 1.0 : 0.0;
+    *row++ = thruster_number(r, o.candidate);
+    *row++ = thruster_number(r, o.confirmed);
+  }
+  *row++ = f.fdir.over_consumption ? 1.0 : 0.0;
+  *row++ = static_cast<double>(r.flight_state->thrusters.active);
+  *row++ = to_seconds(r.plant->last_delay_ns);
+  *row++ = r.truth->mass_kg;
+  *row++ = r.plant->propellant_used_kg;
+}
+
 }  // namespace chaser::sim

@@ -82,6 +82,32 @@ TEST_P(TelemetryTable, EveryChannelHasAFiniteValueInEveryRow) {
 
 INSTANTIATE_TEST_SUITE_P(ThrusterCounts, TelemetryTable, ::testing::Values(8, 16, 24));
 
+// record_every_channel (the straight-line row of the whole table) against its reference, the table
+// channel by channel (what a selection takes, here '*': every channel): the same file, byte for
+// byte, from a run where the FDI alarms, isolates and recovers (T8 stuck open at 5 s), so its
+// columns are not zero.
+TEST_P(TelemetryTable, EveryChannelRowIsTheTablesRow) {
+  const int count = GetParam();
+  model::Scenario s = scenario_with(count);
+  if (count == 16) s = *io::load_scenario_file("scenarios/msr_terminal.yaml",
+                                               {"faults=[{thruster: T8, kind: stuck_open, onset_s: 5}]", "duration_s=20"})
+                            .scenario;
+  const auto dir = std::filesystem::temp_directory_path() / ("chaser_every_channel_" + std::to_string(count));
+  std::filesystem::create_directories(dir);
+  const RunResult fast = run_scenario(s, {.telemetry_path = (dir / "fast.csv").string(), .telemetry_channels = {}});
+  const RunResult table = run_scenario(s, {.telemetry_path = (dir / "table.csv").string(), .telemetry_channels = {"*"}});
+  ASSERT_TRUE(fast.telemetry_ok && table.telemetry_ok);
+  if (count == 16) {
+    ASSERT_GE(fast.fdir.isolation_s, 0.0) << "the run was meant to isolate T8";
+  }
+  const auto text = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(text(dir / "fast.csv"), text(dir / "table.csv"));
+  std::filesystem::remove_all(dir);
+}
+
 // Units: every name ends with its unit (or has none), so a reader can take the unit from the name.
 TEST(TelemetryTable, NamesEndWithTheirUnit) {
   for (const TelemetryChannel& c : telemetry_channels(16)) {
