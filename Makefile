@@ -1,5 +1,6 @@
 # Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
-# benchmarks, `make sanitize` every test under ASan and UBSan, `make fuzz` the loaders' fuzzers
+# benchmarks, `make sanitize` every test under ASan and UBSan (`make sanitize-fast` CI's subset),
+# `make fuzz` the loaders' fuzzers
 # (docs/reliability.md). Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -13,7 +14,9 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= scenario overrides invsim
 
-.PHONY: all deps configure build test demo fmea bench sanitize fuzz clean
+SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_io test_flight test_fdi
+
+.PHONY: all deps configure build test demo fmea bench sanitize sanitize-fast fuzz clean
 
 all: build
 
@@ -50,6 +53,15 @@ sanitize: deps
 	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
 	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j$(JOBS)
+
+# The suites of core, model, plant, io and flight (fdi included) under both sanitizers: what CI runs
+# after make test (.ci/run), since the whole suite's sanitizer build takes too long there.
+sanitize-fast: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCHASER_SANITIZE=address,undefined \
+	  -DCHASER_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(SANITIZE_BUILD) -j$(JOBS) --target $(SANITIZE_FAST_TESTS)
+	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j$(JOBS) -R '^($(subst $(eval) ,|,$(SANITIZE_FAST_TESTS)))$$'
 
 # libFuzzer on the scenario loaders and the --set parser, FUZZ_SECONDS per target, one worker.
 fuzz:
