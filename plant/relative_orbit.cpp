@@ -4,11 +4,6 @@
 
 namespace chaser::plant {
 
-double battin_f(double q) {
-  const double cube_ratio = (1.0 + q) * std::sqrt(1.0 + q);  // (R / a)^3
-  return q * (3.0 + q * (3.0 + q)) / (1.0 + cube_ratio);
-}
-
 Vec3 relative_orbit_acceleration_lvlh(double a, double n, const Vec3& r, const Vec3& v) {
   // q = (2 a xi + |rho|^2) / a^2. This is the hot path of the simulator: one sqrt and one division
   // on the dependency chain (with p = (R / a)^3: f = q (3 + 3 q + q^2) / (1 + p) and

@@ -20,12 +20,10 @@
 //   eta''  =  (mu / R^3) f(q) eta      - 2 n xi'  + F_eta / m
 //   zeta'' = -(mu / R^3) zeta                     + F_zeta / m.
 // Linearised (f ~ 3 q / 2 ~ 3 xi / a) it is the HCW system: xi'' = 3 n^2 xi + 2 n eta', ...
+#include "core/battin.hpp"  // battin_f
 #include "core/types.hpp"
 
 namespace chaser::plant {
-
-// Battin's f(q) = (1 + q)^(3/2) - 1, evaluated without cancellation for small q (q > -1).
-double battin_f(double q);
 
 // Acceleration of the chaser relative to the target in the rotating LVLH frame due to gravity and
 // frame rotation (Fonod 2015, eq. 8 without the force term), in the cancellation-free form above.

@@ -1,0 +1,51 @@
+#include "plant/earth/gravity.hpp"
+
+#include <cmath>
+
+#include "core/battin.hpp"
+
+namespace chaser::plant::earth {
+
+namespace {
+
+// The J2 part of the acceleration alone.
+Vec3 j2_acceleration(const GravityParams& g, const Vec3& r) {
+  const double r2 = r.squaredNorm();
+  const double rn = std::sqrt(r2);
+  const double k = -1.5 * g.j2 * g.mu_m3ps2 * g.radius_m * g.radius_m / (r2 * r2 * rn);
+  const double z2_r2 = r.z() * r.z() / r2;
+  return k * Vec3(r.x() * (1.0 - 5.0 * z2_r2), r.y() * (1.0 - 5.0 * z2_r2), r.z() * (3.0 - 5.0 * z2_r2));
+}
+
+}  // namespace
+
+Vec3 gravity_acceleration_eci(const GravityParams& g, const Vec3& r_eci_m) {
+  const double rn = r_eci_m.norm();
+  return -g.mu_m3ps2 / (rn * rn * rn) * r_eci_m + j2_acceleration(g, r_eci_m);
+}
+
+double gravity_potential_energy(const GravityParams& g, const Vec3& r_eci_m) {
+  const double r2 = r_eci_m.squaredNorm();
+  const double rn = std::sqrt(r2);
+  const double p2 = 0.5 * (3.0 * r_eci_m.z() * r_eci_m.z() / r2 - 1.0);  // Legendre P2(sin(latitude))
+  return -g.mu_m3ps2 / rn * (1.0 - g.j2 * g.radius_m * g.radius_m / r2 * p2);
+}
+
+Vec3 differential_gravity_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
+  // Central: -mu (r + d) / |r + d|^3 + mu r / |r|^3 = -mu / |r + d|^3 [d - f(q) r], since
+  // |r + d|^3 / |r|^3 = (1 + q)^(3/2) with q = (2 r.d + d.d) / |r|^2 (Battin 1999, sec. 8.4): a
+  // sum of small terms, no two nearly equal accelerations subtracted.
+  const double r2 = r_eci_m.squaredNorm();
+  const double q = (2.0 * r_eci_m.dot(dr_eci_m) + dr_eci_m.squaredNorm()) / r2;
+  const double rd = (r_eci_m + dr_eci_m).norm();
+  const Vec3 central = -g.mu_m3ps2 / (rd * rd * rd) * (dr_eci_m - battin_f(q) * r_eci_m);
+  return central + (j2_acceleration(g, r_eci_m + dr_eci_m) - j2_acceleration(g, r_eci_m));
+}
+
+double nodal_regression_radps(const GravityParams& g, double semi_major_axis_m, double inclination_rad) {
+  const double n = std::sqrt(g.mu_m3ps2 / std::pow(semi_major_axis_m, 3));
+  const double ratio = g.radius_m / semi_major_axis_m;
+  return -1.5 * n * g.j2 * ratio * ratio * std::cos(inclination_rad);
+}
+
+}  // namespace chaser::plant::earth
