@@ -212,7 +212,8 @@ TEST(Campaign, RowMatchesTheRunSetup) {
   EXPECT_EQ(setup.truth.faults[0].kind, model::FaultKind::kLoss);
   EXPECT_EQ(setup.truth.seed, run_seed(plan.nominal.campaign.seed, 1));
   const flight::FlightParams flight = flight::make_flight_params(plan.nominal);
-  const auto f = split_fields(run_one(plan, flight, 1).row);
+  const RunOutput out = run_one(plan, flight, 1);  // split_fields' views point into out.row
+  const auto f = split_fields(out.row);
   EXPECT_EQ(f.size(), run_columns().size());
   EXPECT_EQ(f[2], "loss");
   EXPECT_EQ(*parse_integer(f[4]), setup.truth.faults[0].thruster + 1);
