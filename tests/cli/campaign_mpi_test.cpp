@@ -41,9 +41,11 @@ bool mpirun_found() {
 // OpenMPI leaves allocations of its dlopened components at MPI_Finalize (frames in unloaded
 // modules, which no LeakSanitizer suppression can name); AddressSanitizer's other checks stay on,
 // and the campaign code's own leaks are checked by test_campaign without MPI.
+const std::string kMpiEnv =
+    "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+
 std::string mpirun(int ranks) {
-  return "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 "
-         "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 mpirun -n " + std::to_string(ranks) +
+  return kMpiEnv + "timeout 300 mpirun -n " + std::to_string(ranks) +
          " --oversubscribe --bind-to none --mca btl self,vader " + std::string(CHASER_BINARY) + " ";
 }
 
@@ -140,9 +142,8 @@ TEST_F(CampaignMpi, BadInputEndsEveryRankWithExit2) {
   EXPECT_NE(zero.output.find("--threads: must be >= 1"), std::string::npos) << zero.output;
 
   // Rank 1 given another seed (as if its node read another scenario): refused before any run.
-  const std::string env = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
   const std::string rank = std::string(CHASER_BINARY) + " " + kShort + "--mpi --cases none --out " + dir.string();
-  const CommandResult other = shell(env + "timeout 300 mpirun --oversubscribe --bind-to none --mca btl self,vader -n 1 " +
+  const CommandResult other = shell(kMpiEnv + "timeout 300 mpirun --oversubscribe --bind-to none --mca btl self,vader -n 1 " +
                                     rank + " : -n 1 " + rank + " --seed 7");
   EXPECT_EQ(other.exit_code, 2) << other.output;
   // Found by a torn line here in a fresh-root run: each rank now writes a message in one write,
