@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <fmt/format.h>
+
 namespace chaser::model {
 
 ThrusterMask all_thrusters(const ThrusterSetParams& set) { return first_thrusters(set.count); }
@@ -20,7 +22,8 @@ ThrusterMask initial_active_set(const ThrusterSetParams& set) {
   return mask;
 }
 
-std::string thruster_name(int index) { return index < 0 ? std::string("none") : "T" + std::to_string(index + 1); }
+// fmt, not "T" + std::to_string: GCC 12 -O3 warns falsely (-Wrestrict) on that operator+.
+std::string thruster_name(int index) { return index < 0 ? std::string("none") : fmt::format("T{}", index + 1); }
 
 ThrusterList thruster_list(ThrusterMask mask) {
   ThrusterList list;

@@ -54,7 +54,7 @@ constexpr int kChannels = 7;
 
 std::vector<std::string> names() {
   std::vector<std::string> n;
-  for (int c = 0; c < kChannels; ++c) n.push_back("c" + std::to_string(c));
+  for (int c = 0; c < kChannels; ++c) n.push_back(fmt::format("c{}", c));
   return n;
 }
 
