@@ -44,7 +44,12 @@ int decimal_length(std::uint64_t v) {
 }  // namespace
 
 char* write_shortest_double(char* out, double x) {
-  if (x == 0.0 || !std::isfinite(x)) return std::to_chars(out, out + kMaxShortestDoubleChars, x).ptr;
+  if (x == 0.0) {  // most of a telemetry row: "0" or "-0", as to_chars writes them, without it
+    if (std::signbit(x)) *out++ = '-';
+    *out = '0';
+    return out + 1;
+  }
+  if (!std::isfinite(x)) return std::to_chars(out, out + kMaxShortestDoubleChars, x).ptr;
   // |x| ~ significand * 10^exponent: the shortest significand that rounds back to x (the nearest
   // such where several have that length), without trailing zeros.
   const auto decimal = jkj::dragonbox::to_decimal(x);

@@ -177,8 +177,8 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   result.propellant_used_kg = plant.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k;
+  result.wall_loop_s = seconds_since(loop_start);
   const auto files_start = std::chrono::steady_clock::now();
-  result.wall_loop_s = std::chrono::duration<double>(files_start - loop_start).count();
   result.telemetry_ok = !telemetry || telemetry->finish();  // before wall_s: the user waits for the file
   result.wall_files_s = seconds_since(files_start);
   result.wall_s = seconds_since(wall_start);

@@ -1,7 +1,6 @@
 #include "sim/telemetry.hpp"
 
 #include <bit>
-#include <cmath>
 #include <cstring>
 #include <system_error>
 
@@ -17,18 +16,7 @@ static_assert(std::endian::native == std::endian::little, "the .npy records are 
 constexpr std::size_t kRowsPerBlock = 256;    // ~0.2 MB for MSR's 100 channels
 constexpr std::size_t kBlocksInFlight = 4;    // the run waits beyond this: flat memory
 constexpr std::size_t kTextFlushBytes = 1 << 20;
-constexpr std::size_t kNumberRoom = kShortestDoubleRoom;  // what write_number may touch
-
-// The shortest text that reads back to the same double (as std::to_chars without a precision:
-// round-trip exact, "nan"/"inf" for those). +0.0, most channels of a period, is written "0"
-// without the conversion.
-char* write_number(char* out, double value) {
-  if (value == 0.0 && !std::signbit(value)) {
-    *out = '0';
-    return out + 1;
-  }
-  return write_shortest_double(out, value);
-}
+constexpr std::size_t kNumberRoom = kShortestDoubleRoom;  // what write_shortest_double may touch
 
 }  // namespace
 
@@ -124,7 +112,7 @@ void TelemetryWriter::write_block(const std::vector<double>& block) {
   for (std::size_t r = 0; r * n < block.size(); ++r) {
     char* p = text_.data() + text_used_;
     for (std::size_t c = 0; c < n; ++c) {
-      p = write_number(p, block[r * n + c]);
+      p = write_shortest_double(p, block[r * n + c]);
       *p++ = c + 1 < n ? ',' : '\n';
     }
     text_used_ = static_cast<std::size_t>(p - text_.data());
