@@ -1,0 +1,131 @@
+#include "plant/orbit_propagator.hpp"
+
+#include "plant/gravity_gradient.hpp"
+#include "plant/lvlh_eci.hpp"
+
+namespace chaser::plant {
+
+namespace {
+
+// The integrated state in one fixed-size vector, so the RK4 combinations are plain vector
+// arithmetic: target r, v (0..5); relative dr, dv (6..11); chaser q (x, y, z, w), omega, m
+// (12..19); target q, omega (20..26).
+using StateVec = Eigen::Matrix<double, 27, 1>;
+constexpr int kRt = 0, kVt = 3, kDr = 6, kDv = 9, kQc = 12, kWc = 16, kM = 19, kQt = 20, kWt = 24;
+
+StateVec pack(const OrbitState& o, const RigidState& c) {
+  StateVec y;
+  y << o.r_t_eci_m, o.v_t_eci_mps, o.dr_eci_m, o.dv_eci_mps, c.q_inertial_from_body.coeffs(), c.omega_body_radps,
+      c.mass_kg, o.q_inertial_from_target.coeffs(), o.omega_target_body_radps;
+  return y;
+}
+
+void unpack(const StateVec& y, OrbitState& o, RigidState& c) {
+  o.r_t_eci_m = y.segment<3>(kRt);
+  o.v_t_eci_mps = y.segment<3>(kVt);
+  o.dr_eci_m = y.segment<3>(kDr);
+  o.dv_eci_mps = y.segment<3>(kDv);
+  c.q_inertial_from_body = Quat(Eigen::Vector4d(y.segment<4>(kQc))).normalized();
+  c.omega_body_radps = y.segment<3>(kWc);
+  c.mass_kg = y[kM];
+  o.q_inertial_from_target = Quat(Eigen::Vector4d(y.segment<4>(kQt))).normalized();
+  o.omega_target_body_radps = y.segment<3>(kWt);
+}
+
+// The torques of the Earth's field on one body at r_eci_m (from the Earth's centre), body axes.
+Vec3 environment_torque_body(const BodyTorqueParams& b, const Mat3& body_from_eci, const Vec3& r_eci_m) {
+  Vec3 torque = Vec3::Zero();
+  if (b.gravity_gradient) {
+    // mu of the central field only: J2's share of the gradient is 1e-3 of it.
+    const double gain = gravity_gradient_gain(earth::GravityParams{}.mu_m3ps2, r_eci_m.squaredNorm());
+    torque += gravity_gradient_torque_body(gain, body_from_eci * r_eci_m, b.inertia_kgm2);
+  }
+  return torque;
+}
+
+// Inputs of one piece resolved once: the thrust's force in the run's inertial axes comes from the
+// attitude at each stage; the LVLH disturbance force is rotated to ECI at the piece start.
+struct PieceContext {
+  const OrbitDynamicsParams& p;
+  const Ephemeris& eph;
+  const PieceInput& u;
+  Mat3 eci_from_run;
+  Vec3 force_dist_eci_N;
+};
+
+StateVec derivative(const PieceContext& c, const StateVec& y) {
+  const OrbitDynamicsParams& p = c.p;
+  const Vec3 r_t = y.segment<3>(kRt), v_t = y.segment<3>(kVt);
+  const Vec3 dr = y.segment<3>(kDr), dv = y.segment<3>(kDv);
+  const Quat q_c(Eigen::Vector4d(y.segment<4>(kQc)));
+  const Vec3 w_c = y.segment<3>(kWc);
+  const double m = y[kM];
+  const Quat q_t(Eigen::Vector4d(y.segment<4>(kQt)));
+  const Vec3 w_t = y.segment<3>(kWt);
+
+  const Vec3 thrust_eci_N = c.eci_from_run * (q_c * c.u.force_body_N);
+  StateVec dy;
+  dy.segment<3>(kRt) = v_t;
+  dy.segment<3>(kVt) = target_acceleration_eci(p.perturbations, c.eph, r_t, v_t);
+  dy.segment<3>(kDr) = dv;
+  dy.segment<3>(kDv) = relative_acceleration_eci(p.perturbations, c.eph, r_t, v_t, dr, dv) +
+                       (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
+
+  // q may be slightly off the unit sphere inside a step; the rotation matrices below are then
+  // smooth extensions, which keeps RK4 fourth order (propagator.cpp does the same).
+  const Mat3 chaser_from_eci = (c.eci_from_run * q_c.toRotationMatrix()).transpose();
+  const Vec3 torque_c = c.u.torque_body_Nm + environment_torque_body(p.chaser, chaser_from_eci, r_t + dr);
+  dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
+  dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
+  dy[kM] = -c.u.mass_flow_kgps;
+
+  const Mat3 target_from_eci = (c.eci_from_run * q_t.toRotationMatrix()).transpose();
+  const Vec3 torque_t = environment_torque_body(p.target, target_from_eci, r_t);
+  dy.segment<4>(kQt) = quat_derivative(q_t, w_t);
+  dy.segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
+  return dy;
+}
+
+LvlhOfTarget target_lvlh(const OrbitDynamicsParams& p, const Ephemeris& eph, const OrbitState& o) {
+  return lvlh_of_target(o.r_t_eci_m, o.v_t_eci_mps,
+                        target_acceleration_eci(p.perturbations, eph, o.r_t_eci_m, o.v_t_eci_mps));
+}
+
+}  // namespace
+
+void propagate_orbit_piece(const OrbitDynamicsParams& p, const Ephemeris& eph, OrbitState& orbit,
+                           RigidState& chaser, double /*t0_s*/, double dt_s, const PieceInput& u) {
+  if (!(dt_s > 0.0)) return;
+  const int steps = substep_count(dt_s, p.max_substep_s);
+  const double h = dt_s / steps;
+  const Mat3 eci_from_run = p.run_from_eci.transpose();
+  Vec3 force_dist_eci_N = Vec3::Zero();
+  if (!u.force_lvlh_N.isZero(0.0)) {
+    force_dist_eci_N = target_lvlh(p, eph, orbit).lvlh_from_eci.transpose() * u.force_lvlh_N;
+  }
+  const PieceContext ctx{p, eph, u, eci_from_run, force_dist_eci_N};
+
+  StateVec y = pack(orbit, chaser);
+  for (int i = 0; i < steps; ++i) {  // classical RK4
+    const StateVec k1 = derivative(ctx, y);
+    const StateVec k2 = derivative(ctx, y + (0.5 * h) * k1);
+    const StateVec k3 = derivative(ctx, y + (0.5 * h) * k2);
+    const StateVec k4 = derivative(ctx, y + h * k3);
+    y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+  unpack(y, orbit, chaser);
+}
+
+void update_lvlh_view(const OrbitDynamicsParams& p, const Ephemeris& eph, const OrbitState& orbit,
+                      RigidState& chaser) {
+  const RelativeLvlh rel = relative_lvlh_from_eci(target_lvlh(p, eph, orbit), {orbit.dr_eci_m, orbit.dv_eci_mps});
+  chaser.r_lvlh_m = rel.r_lvlh_m;
+  chaser.v_lvlh_mps = rel.v_lvlh_mps;
+}
+
+Quat q_inertial_from_lvlh(const OrbitDynamicsParams& p, const Ephemeris& eph, const OrbitState& orbit) {
+  const Mat3 run_from_lvlh = p.run_from_eci * target_lvlh(p, eph, orbit).lvlh_from_eci.transpose();
+  return Quat(run_from_lvlh).normalized();
+}
+
+}  // namespace chaser::plant
