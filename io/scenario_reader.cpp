@@ -38,6 +38,7 @@ void read_orbit(MapReader& r, model::OrbitParams& out) {
   r.number("mu_m3ps2", Range::positive(), out.mu_m3ps2);
   r.number("body_radius_m", Range::positive(), out.body_radius_m);
   r.number("altitude_m", Range::positive(), out.altitude_m);
+  read_optional_earth_orbit(r, out.earth);
 }
 
 void read_chaser(MapReader& r, model::SpacecraftParams& out) {
@@ -50,6 +51,7 @@ void read_chaser(MapReader& r, model::SpacecraftParams& out) {
 void read_target(MapReader& r, model::TargetParams& out) {
   r.quaternion("q_inertial_from_target", out.q_inertial_from_target);
   r.vec3("omega_inertial_radps", out.omega_inertial_radps);
+  read_optional_target_body(r, out.body);
 }
 
 void read_environment(MapReader& r, model::EnvironmentParams& out) {

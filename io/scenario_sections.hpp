@@ -3,6 +3,7 @@
 // reads every key of its section with its type and static range (docs/scenario.md); checks that
 // involve more than one key (a delay against the control period, capture against start distance,
 // the inertia matrix as a whole, the thruster set's controllability) are in validate_scenario.
+#include <optional>
 #include <string>
 
 #include "io/yaml_reader.hpp"
@@ -27,6 +28,9 @@ model::Scenario read_scenario(const YAML::Node& root, const std::string& source,
 void read_orbit(MapReader& r, model::OrbitParams& out);
 void read_chaser(MapReader& r, model::SpacecraftParams& out);
 void read_target(MapReader& r, model::TargetParams& out);
+// The optional COMRADE sections orbit.earth and target.body (io/earth_orbit_reader.cpp).
+void read_optional_earth_orbit(MapReader& r, std::optional<model::EarthOrbitParams>& out);
+void read_optional_target_body(MapReader& r, std::optional<model::TargetBodyParams>& out);
 void read_environment(MapReader& r, model::EnvironmentParams& out);
 void read_sensors(MapReader& r, model::SensorParams& out);
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out);

@@ -107,8 +107,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy
 // I1 + I2 >= I3 (each moment is an integral of squared distances, sum of two >= the third).
-void check_inertia(const Mat3& inertia, Diagnostics& d) {
-  const char* path = "chaser.inertia_kgm2";
+void check_inertia(const Mat3& inertia, const char* path, Diagnostics& d) {
   if (!d.clean(path)) return;
   const double scale = inertia.cwiseAbs().maxCoeff();
   const double asymmetry = (inertia - inertia.transpose()).cwiseAbs().maxCoeff();
@@ -155,11 +154,33 @@ void check_guidance(const model::GuidanceParams& g, Diagnostics& d) {
                       format_number(g.approach_duration_s / 2.0), format_number(g.blend_time_s)));
 }
 
+// orbit.earth and target.body come together (the perturbed plant integrates the target's attitude;
+// the circular one turns it at a constant rate), and orbit.earth's environment is the Earth's, so
+// the central body must be the Earth (mu and J2's reference radius within 1e-6 of WGS 84's).
+void check_earth_platform(const model::Scenario& s, Diagnostics& d) {
+  const bool earth = s.orbit.earth.has_value(), body = s.target.body.has_value();
+  if (earth && !body && d.clean("orbit.earth"))
+    d.add("target.body", "must be given with orbit.earth (a perturbed orbit flies a rigid-body target)");
+  if (body && !earth && d.clean("target.body"))
+    d.add("orbit.earth", "must be given with target.body (a rigid-body target flies in a perturbed Earth orbit)");
+  if (earth) {
+    constexpr double kEarthMu = 3.986004418e14, kEarthRadius = 6378137.0, kRelative = 1e-6;
+    if (d.clean("orbit.mu_m3ps2") && std::abs(s.orbit.mu_m3ps2 / kEarthMu - 1.0) > kRelative)
+      d.add("orbit.mu_m3ps2", fmt::format("must be the Earth's, 3.986004418e14 (within 1e-6), with orbit.earth (got {})",
+                                          format_number(s.orbit.mu_m3ps2)));
+    if (d.clean("orbit.body_radius_m") && std::abs(s.orbit.body_radius_m / kEarthRadius - 1.0) > kRelative)
+      d.add("orbit.body_radius_m", fmt::format("must be the Earth's, 6378137 (within 1e-6), with orbit.earth (got {})",
+                                               format_number(s.orbit.body_radius_m)));
+  }
+  if (body) check_inertia(s.target.body->inertia_kgm2, "target.body.inertia_kgm2", d);
+}
+
 }  // namespace
 
 void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   check_timing(s, diag);
-  check_inertia(s.chaser.inertia_kgm2, diag);
+  check_inertia(s.chaser.inertia_kgm2, "chaser.inertia_kgm2", diag);
+  check_earth_platform(s, diag);
   validate_thruster_set(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);

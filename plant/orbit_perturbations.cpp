@@ -1,6 +1,9 @@
 #include "plant/orbit_perturbations.hpp"
 
+#include "plant/earth/magnetic_field.hpp"
+#include "plant/earth/moon.hpp"
 #include "plant/earth/sun.hpp"
+#include "plant/earth/third_body.hpp"
 
 namespace chaser::plant {
 
@@ -31,15 +34,22 @@ Vec3 surface_acceleration(const OrbitPerturbationParams& p, const OrbitBodyParam
 }  // namespace
 
 Ephemeris ephemeris_at(double julian_date_tt) {
-  Ephemeris e;
-  e.sun_eci_m = earth::sun_position_eci_m(julian_date_tt);
-  return e;
+  // UT1 taken as TT, as magnetic_field.hpp does (0.3 deg of the Earth's turn in 2024).
+  const double gmst = earth::greenwich_mean_sidereal_time_rad(julian_date_tt);
+  return {.sun_eci_m = earth::sun_position_eci_m(julian_date_tt),
+          .moon_eci_m = earth::moon_position_eci_m(julian_date_tt),
+          .ecef_from_eci = Eigen::AngleAxisd(-gmst, Vec3::UnitZ()).toRotationMatrix()};
 }
 
 Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
                              const Vec3& v_t_eci_mps) {
-  return earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) +
-         surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
+  Vec3 a = earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) +
+           surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
+  if (p.sun_gravity)
+    a += earth::third_body_acceleration_eci(earth::kSunGravitationalParameterM3ps2, r_t_eci_m, eph.sun_eci_m);
+  if (p.moon_gravity)
+    a += earth::third_body_acceleration_eci(earth::kMoonGravitationalParameterM3ps2, r_t_eci_m, eph.moon_eci_m);
+  return a;
 }
 
 Vec3 relative_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
@@ -49,6 +59,12 @@ Vec3 relative_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris
     a += surface_acceleration(p, p.chaser, eph, r_t_eci_m + dr_eci_m, v_t_eci_mps + dv_eci_mps) -
          surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
   }
+  if (p.sun_gravity)
+    a += earth::differential_third_body_eci(earth::kSunGravitationalParameterM3ps2, r_t_eci_m, dr_eci_m,
+                                            eph.sun_eci_m);
+  if (p.moon_gravity)
+    a += earth::differential_third_body_eci(earth::kMoonGravitationalParameterM3ps2, r_t_eci_m, dr_eci_m,
+                                            eph.moon_eci_m);
   return a;
 }
 

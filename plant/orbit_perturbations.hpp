@@ -37,9 +37,11 @@ struct OrbitPerturbationParams {
 
 // Where the Sun and the Moon are [m], ECI, for one stretch of time short enough to hold them fixed
 // (a control period: the Moon moves 100 m of its 384,000 km in 0.1 s).
+// The Earth's turn, for its magnetic field, likewise (4e-4 deg in 0.1 s).
 struct Ephemeris {
   Vec3 sun_eci_m = Vec3(1.0e11, 0.0, 0.0);
   Vec3 moon_eci_m = Vec3(3.8e8, 0.0, 0.0);
+  Mat3 ecef_from_eci = Mat3::Identity();  // the Earth's rotation by the Greenwich mean sidereal time
 };
 Ephemeris ephemeris_at(double julian_date_tt);
 

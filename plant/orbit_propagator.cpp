@@ -1,5 +1,6 @@
 #include "plant/orbit_propagator.hpp"
 
+#include "plant/earth/magnetic_field.hpp"
 #include "plant/gravity_gradient.hpp"
 #include "plant/lvlh_eci.hpp"
 
@@ -33,12 +34,17 @@ void unpack(const StateVec& y, OrbitState& o, RigidState& c) {
 }
 
 // The torques of the Earth's field on one body at r_eci_m (from the Earth's centre), body axes.
-Vec3 environment_torque_body(const BodyTorqueParams& b, const Mat3& body_from_eci, const Vec3& r_eci_m) {
+Vec3 environment_torque_body(const BodyTorqueParams& b, double mu_m3ps2, const Ephemeris& eph,
+                             const Mat3& body_from_eci, const Vec3& r_eci_m) {
   Vec3 torque = Vec3::Zero();
   if (b.gravity_gradient) {
     // mu of the central field only: J2's share of the gradient is 1e-3 of it.
-    const double gain = gravity_gradient_gain(earth::GravityParams{}.mu_m3ps2, r_eci_m.squaredNorm());
+    const double gain = gravity_gradient_gain(mu_m3ps2, r_eci_m.squaredNorm());
     torque += gravity_gradient_torque_body(gain, body_from_eci * r_eci_m, b.inertia_kgm2);
+  }
+  if (b.magnetic) {
+    const Vec3 field_eci_T = eph.ecef_from_eci.transpose() * earth::magnetic_field_ecef_T(eph.ecef_from_eci * r_eci_m);
+    torque += earth::magnetic_torque_body_Nm(b.residual_dipole_body_Am2, body_from_eci * field_eci_T);
   }
   return torque;
 }
@@ -74,13 +80,14 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
   // q may be slightly off the unit sphere inside a step; the rotation matrices below are then
   // smooth extensions, which keeps RK4 fourth order (propagator.cpp does the same).
   const Mat3 chaser_from_eci = (c.eci_from_run * q_c.toRotationMatrix()).transpose();
-  const Vec3 torque_c = c.u.torque_body_Nm + environment_torque_body(p.chaser, chaser_from_eci, r_t + dr);
+  const double mu = p.perturbations.gravity.mu_m3ps2;
+  const Vec3 torque_c = c.u.torque_body_Nm + environment_torque_body(p.chaser, mu, c.eph, chaser_from_eci, r_t + dr);
   dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
   dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   dy[kM] = -c.u.mass_flow_kgps;
 
   const Mat3 target_from_eci = (c.eci_from_run * q_t.toRotationMatrix()).transpose();
-  const Vec3 torque_t = environment_torque_body(p.target, target_from_eci, r_t);
+  const Vec3 torque_t = environment_torque_body(p.target, mu, c.eph, target_from_eci, r_t);
   dy.segment<4>(kQt) = quat_derivative(q_t, w_t);
   dy.segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
   return dy;
@@ -94,7 +101,7 @@ LvlhOfTarget target_lvlh(const OrbitDynamicsParams& p, const Ephemeris& eph, con
 }  // namespace
 
 void propagate_orbit_piece(const OrbitDynamicsParams& p, const Ephemeris& eph, OrbitState& orbit,
-                           RigidState& chaser, double /*t0_s*/, double dt_s, const PieceInput& u) {
+                           RigidState& chaser, double dt_s, const PieceInput& u) {
   if (!(dt_s > 0.0)) return;
   const int steps = substep_count(dt_s, p.max_substep_s);
   const double h = dt_s / steps;

@@ -27,6 +27,8 @@ struct BodyTorqueParams {
   Mat3 inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the CoM, body axes
   Mat3 inertia_inv = Mat3::Identity();
   bool gravity_gradient = true;
+  bool magnetic = true;                           // magnetic torque m x B of the residual dipole
+  Vec3 residual_dipole_body_Am2 = Vec3::Zero();   // [A m^2] body axes
 };
 
 struct OrbitDynamicsParams {
@@ -48,10 +50,11 @@ struct OrbitState {
   Vec3 omega_target_body_radps = Vec3::Zero();     // [rad/s] target's inertial rate, target axes
 };
 
-// Advances (orbit, chaser) from t0_s to t0_s + dt_s under constant u (PieceInput's LVLH force is
-// rotated with the LVLH frame at t0_s). eph: the Sun and Moon for this piece. Allocation-free.
+// Advances (orbit, chaser) by dt_s [s] under constant u (PieceInput's LVLH force is rotated with
+// the LVLH frame at the piece start). eph: the Sun, the Moon and the Earth's turn for this piece
+// (the time enters only through them: the Earth's field is static in ECI). Allocation-free.
 void propagate_orbit_piece(const OrbitDynamicsParams& p, const Ephemeris& eph, OrbitState& orbit,
-                           RigidState& chaser, double t0_s, double dt_s, const PieceInput& u);
+                           RigidState& chaser, double dt_s, const PieceInput& u);
 
 // The target's LVLH frame now, and the chaser's relative state in it written into chaser.r_lvlh_m
 // and chaser.v_lvlh_mps (what the sensors and the mission monitor read).

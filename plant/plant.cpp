@@ -1,5 +1,7 @@
 #include "plant/plant.hpp"
 
+#include "plant/target.hpp"
+
 namespace chaser::plant {
 
 PlantStreams::PlantStreams(std::uint64_t seed)
@@ -14,6 +16,8 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
   RandomStream dispersion(seed, "thrusters/dispersion");
   PlantParams params{
       .dynamics = make_dynamics_params(scenario),
+      .earth = std::nullopt,
+      .target = scenario.target,
       .thrusters = make_thruster_hardware(scenario.thrusters, scenario.chaser.com_body_m, scenario.chaser.isp_s,
                                           period_ns, dispersion),
       .faults = scenario.faults,
@@ -24,12 +28,29 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
   };
   PlantState state{
       .rigid = initial,
+      .orbit = OrbitState{},
       .thrusters = ThrusterState{},
       .sensors = make_sensor_state(scenario.sensors, period_ns),
       .streams = PlantStreams(seed),
       .last_profile = ThrustProfile{},
   };
+  if (scenario.orbit.earth) {
+    params.earth = make_orbit_plant_params(scenario);
+    state.orbit = initial_orbit_state(scenario, *params.earth, initial.r_lvlh_m, initial.v_lvlh_mps);
+    update_lvlh_view(params.earth->dynamics, ephemeris_at_run_time(*params.earth, 0.0), state.orbit, state.rigid);
+  }
   return Plant{std::move(params), std::move(state)};
+}
+
+Quat target_attitude(const Plant& plant, double t_s) {
+  if (plant.params.earth) return plant.state.orbit.q_inertial_from_target;
+  return target_attitude(plant.params.target, t_s);
+}
+
+Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s) {
+  if (!plant.params.earth) return circle.q_inertial_from_lvlh(t_s);
+  const OrbitPlantParams& e = *plant.params.earth;
+  return q_inertial_from_lvlh(e.dynamics, ephemeris_at_run_time(e, t_s), plant.state.orbit);
 }
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t) {
@@ -49,6 +70,25 @@ Vec3 draw_vector(RandomStream& stream, double sigma) {
   return sigma * Vec3(x, y, z);
 }
 
+// The perturbed orbit's period: the Sun and Moon held at the period start, each piece propagated,
+// then the LVLH view of the relative state refreshed for the sensors.
+void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const ThrustProfile& profile,
+                      const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k) {
+  const Ephemeris eph = ephemeris_at_run_time(earth, to_seconds(t_k));
+  for (int i = 0; i < profile.count; ++i) {
+    const ThrustPiece& piece = profile.pieces[i];
+    const PieceInput input{
+        .force_body_N = piece.force_body_N,
+        .torque_body_Nm = piece.torque_body_Nm + torque_dist_body_Nm,
+        .force_lvlh_N = force_dist_lvlh_N,
+        .mass_flow_kgps = piece.mass_flow_kgps,
+    };
+    propagate_orbit_piece(earth.dynamics, eph, state.orbit, state.rigid, to_seconds(piece.t_end_ns - piece.t_begin_ns),
+                          input);
+  }
+  update_lvlh_view(earth.dynamics, eph, state.orbit, state.rigid);
+}
+
 }  // namespace
 
 void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
@@ -65,6 +105,11 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
       env.torque_bias_body_Nm + draw_vector(state.streams.torque_noise, env.torque_noise_sigma_Nm);
 
   const ThrustProfile& profile = state.last_profile;
+  if (params.earth) {
+    step_orbit_plant(*params.earth, state, profile, torque_dist_body_Nm, force_dist_lvlh_N, t_k);
+    state.propellant_used_kg += profile.propellant_kg;
+    return;
+  }
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
     const PieceInput input{

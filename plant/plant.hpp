@@ -2,12 +2,14 @@
 // The truth side of one run: motion, environment, thruster hardware with its faults, sensors.
 // make_plant builds it from a scenario and a run seed; each control period the simulator calls
 // sense_plant at the period start and step_plant to propagate to the next period start.
+#include <optional>
 #include <vector>
 
 #include "core/random.hpp"
 #include "core/time.hpp"
 #include "model/messages.hpp"
 #include "model/scenario.hpp"
+#include "plant/orbit_plant.hpp"
 #include "plant/propagator.hpp"
 #include "plant/sensors.hpp"
 #include "plant/thruster_hardware.hpp"
@@ -15,7 +17,9 @@
 namespace chaser::plant {
 
 struct PlantParams {
-  DynamicsParams dynamics;
+  DynamicsParams dynamics;              // the circular orbit's (Fonod 2015, eq. 8)
+  std::optional<OrbitPlantParams> earth;  // set: a perturbed Earth orbit instead (issue 17)
+  model::TargetParams target;
   ThrusterHardware thrusters;          // dispersed once per run
   std::vector<model::FaultParams> faults;
   model::SensorParams sensors;
@@ -32,7 +36,8 @@ struct PlantStreams {
 };
 
 struct PlantState {
-  RigidState rigid;
+  RigidState rigid;  // the chaser; with an Earth orbit its r_lvlh_m, v_lvlh_mps are derived from `orbit`
+  OrbitState orbit;  // Earth orbit only: both bodies in ECI, the target's attitude
   ThrusterState thrusters;
   SensorState sensors;
   PlantStreams streams;
@@ -47,6 +52,11 @@ struct Plant {
 };
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed);
+
+// The target's attitude and the target's LVLH at run time t_s (the period start the state is at):
+// integrated or from the circle's constant-rate model, as the plant flies it.
+Quat target_attitude(const Plant& plant, double t_s);
+Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s);
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t);
 

@@ -36,7 +36,7 @@ plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrb
   return x;
 }
 
-MonitorSample monitor_sample(double t_s, const model::TargetOrbit& orbit, const plant::RigidState& x,
+MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const plant::RigidState& x,
                              const flight::GuidanceRef& ref) {
   return MonitorSample{
       .t_s = t_s,
@@ -46,7 +46,7 @@ MonitorSample monitor_sample(double t_s, const model::TargetOrbit& orbit, const 
       .r_ref_lvlh_m = ref.r_lvlh_m,
       .v_ref_lvlh_mps = ref.v_lvlh_mps,
       .q_ref_inertial_from_body = ref.q_inertial_from_body,
-      .q_inertial_from_lvlh = orbit.q_inertial_from_lvlh(t_s),
+      .q_inertial_from_lvlh = q_inertial_from_lvlh,
   };
 }
 
@@ -143,7 +143,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
                                                 ? flight::watched_set(flight_params.fdir, flight_state.fdir)
                                                 : flight::fdi::WatchedSet{};
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
-    const MonitorSample sample = monitor_sample(t_s, orbit, truth, out.reference);
+    const MonitorSample sample =
+        monitor_sample(t_s, plant::q_inertial_from_lvlh(plant, orbit, t_s), truth, out.reference);
+    // The target's attitude at t_k, for telemetry, before the plant steps past it.
+    const Quat q_inertial_from_target = telemetry ? plant::target_attitude(plant, t_s) : Quat::Identity();
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
@@ -163,7 +166,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
           .flight_state = &flight_state,
           .watched = &watched,
           .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
-          .q_inertial_from_target = plant::target_attitude(scenario.target, t_s)};
+          .q_inertial_from_target = q_inertial_from_target};
       if (every_channel) record_every_channel(record, scenario.thrusters.count, telemetry->new_row().data());
       else record_period(*telemetry, channels, record);
     }
@@ -171,7 +174,9 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
 
   const double t_end_s = to_seconds(k * period_ns);
   const flight::GuidanceRef final_ref = flight::guidance_reference(scenario.guidance, orbit, t_end_s);
-  monitor_final(scenario, monitor_sample(t_end_s, orbit, plant.state.rigid, final_ref), result.figures);
+  monitor_final(scenario,
+                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant, orbit, t_end_s), plant.state.rigid, final_ref),
+                result.figures);
 
   result.fdir = fdir_result(flight_params, flight_state);
   result.propellant_used_kg = plant.state.propellant_used_kg;

@@ -1,0 +1,108 @@
+// The COMRADE scenarios (issue 17): both load, their optional sections read into the model, and
+// every new key reports a bad value at its key path with the allowed range, one error per problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "io/scenario_loader.hpp"
+#include "scenario_test_util.hpp"
+
+namespace chaser::io {
+namespace {
+
+using testing::has_error;
+constexpr const char* kEnvisat = "scenarios/comrade_envisat.yaml";
+constexpr const char* kAssist = "scenarios/comrade_assist.yaml";
+
+TEST(ComradeScenario, EnvisatLoadsWithItsEarthOrbitAndTumblingTarget) {
+  const LoadResult r = load_scenario_file(kEnvisat, {});
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  const model::Scenario& s = *r.scenario;
+  ASSERT_TRUE(s.orbit.earth.has_value());
+  ASSERT_TRUE(s.target.body.has_value());
+  EXPECT_EQ(s.orbit.earth->epoch_tt.year, 2027);
+  EXPECT_EQ(s.orbit.earth->epoch_tt.hour, 12);
+  EXPECT_NEAR(s.orbit.earth->inclination_rad, 98.4 * kDegToRad, 1e-15);
+  EXPECT_EQ(s.orbit.earth->target.residual_dipole_body_Am2, Vec3(5.0, 5.0, 5.0));
+  EXPECT_EQ(s.target.body->spin_case, model::SpinCase::s1);
+  EXPECT_NEAR(s.target.body->spin_rate_radps, 2.5 * kDegToRad, 1e-15);
+  EXPECT_EQ(s.target.body->inertia_kgm2(0, 2), -2171.4);
+  EXPECT_EQ(s.thrusters.count, 24);
+  EXPECT_TRUE(s.thrusters.tolerates_single_loss);  // validated: every 23 span
+}
+
+TEST(ComradeScenario, AssistLoadsAndSpinCasesOverride) {
+  const LoadResult assist = load_scenario_file(kAssist, {});
+  ASSERT_TRUE(assist.errors.empty()) << format_errors(assist.errors);
+  EXPECT_EQ(assist.scenario->target.body->spin_case, model::SpinCase::given);
+  EXPECT_FALSE(assist.scenario->orbit.earth->drag);
+  for (const char* spin : {"S2", "S3", "given"}) {
+    const LoadResult r = load_scenario_file(kEnvisat, {std::string("target.body.spin_case=") + spin});
+    EXPECT_TRUE(r.errors.empty()) << spin << ": " << format_errors(r.errors);
+  }
+}
+
+// The circular-orbit scenario has neither section and needs none.
+TEST(ComradeScenario, MsrHasNoEarthOrbit) {
+  const LoadResult r = testing::load_msr();
+  ASSERT_TRUE(r.errors.empty());
+  EXPECT_FALSE(r.scenario->orbit.earth.has_value());
+  EXPECT_FALSE(r.scenario->target.body.has_value());
+}
+
+struct BadCase {
+  const char* label;
+  std::vector<std::string> overrides;  // applied to comrade_envisat.yaml
+  const char* key_path;
+  const char* fragment;
+};
+
+// clang-format off
+const BadCase kBadCases[] = {
+  {"epoch_text", {"orbit.earth.epoch_tt=tomorrow"}, "orbit.earth.epoch_tt", "must be a TT date and time 'YYYY-MM-DDThh:mm:ss' in years [1900, 2100] (got 'tomorrow')"},
+  {"epoch_feb_30", {"orbit.earth.epoch_tt=2027-02-29T00:00:00"}, "orbit.earth.epoch_tt", "(got '2027-02-29T00:00:00')"},
+  {"epoch_year", {"orbit.earth.epoch_tt=2150-01-01T00:00:00"}, "orbit.earth.epoch_tt", "in years [1900, 2100]"},
+  {"epoch_trailing", {"orbit.earth.epoch_tt=2027-03-20T12:00:00Z"}, "orbit.earth.epoch_tt", "must be a TT date"},
+  {"inclination", {"orbit.earth.inclination_deg=190"}, "orbit.earth.inclination_deg", "must be in [0, 180] (got 190)"},
+  {"raan", {"orbit.earth.raan_deg=360"}, "orbit.earth.raan_deg", "must be in [0, 360) (got 360)"},
+  {"j2", {"orbit.earth.j2=-1e-3"}, "orbit.earth.j2", "must be in [0, 0.01] (got -0.001)"},
+  {"drag_text", {"orbit.earth.drag=maybe"}, "orbit.earth.drag", "must be true or false"},
+  {"reflectivity", {"orbit.earth.chaser.reflectivity=3"}, "orbit.earth.chaser.reflectivity", "must be in [1, 2] (got 3)"},
+  {"ballistic", {"orbit.earth.target.ballistic_coefficient_kgpm2=0"}, "orbit.earth.target.ballistic_coefficient_kgpm2", "must be in (0, 1000000] (got 0)"},
+  {"dipole", {"orbit.earth.target.residual_dipole_body_Am2=[0,0,2e4]"}, "orbit.earth.target.residual_dipole_body_Am2.2", "must be in [-10000, 10000] (got 20000)"},
+  {"not_earth_mu", {"orbit.mu_m3ps2=4.282837e13"}, "orbit.mu_m3ps2", "must be the Earth's, 3.986004418e14 (within 1e-6), with orbit.earth (got 42828370000000)"},
+  {"not_earth_radius", {"orbit.body_radius_m=3389.5e3"}, "orbit.body_radius_m", "must be the Earth's, 6378137"},
+  {"spin_case", {"target.body.spin_case=S4"}, "target.body.spin_case", "must be one of given, S1, S2, S3 (got 'S4')"},
+  {"spin_rate", {"target.body.spin_rate_deg_s=45"}, "target.body.spin_rate_deg_s", "must be in [0, 30] (got 45)"},
+  {"target_mass", {"target.body.mass_kg=0"}, "target.body.mass_kg", "must be > 0 (got 0)"},
+  {"target_inertia", {"target.body.inertia_kgm2=[[1,0,0],[0,1,0],[0,0,3]]"}, "target.body.inertia_kgm2", "triangle inequality"},
+  {"unknown_key", {"orbit.earth.j3=1e-6"}, "orbit.earth.j3", "unknown key"},
+};
+// clang-format on
+
+class BadComrade : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadComrade, ReportsOneErrorAtKeyPathWithAllowedRange) {
+  const BadCase& c = GetParam();
+  const LoadResult r = load_scenario_file(kEnvisat, c.overrides);
+  EXPECT_FALSE(r.scenario.has_value());
+  EXPECT_TRUE(has_error(r, c.key_path, c.fragment));
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, BadComrade, ::testing::ValuesIn(kBadCases),
+                         [](const auto& info) { return std::string(info.param.label); });
+
+// orbit.earth and target.body come together: a file with one alone is told which one is missing.
+TEST(ComradeScenario, EarthOrbitAndTargetBodyComeTogether) {
+  const LoadResult r = load_scenario_file(testing::kMsrPath,
+                                          {"target.body={mass_kg: 100, inertia_kgm2: [[1,0,0],[0,1,0],[0,0,1]], "
+                                           "gravity_gradient: false, spin_case: given, spin_rate_deg_s: 0, "
+                                           "grasp_point_target_m: [0,0,0], capture_point_target_m: [0,0,0]}"});
+  EXPECT_TRUE(has_error(r, "orbit.earth", "must be given with target.body"));
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+}  // namespace
+}  // namespace chaser::io

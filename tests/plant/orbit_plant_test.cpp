@@ -1,0 +1,75 @@
+#include "plant/orbit_plant.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "plant/plant.hpp"
+
+namespace chaser::plant {
+namespace {
+
+model::TargetParams spinning(model::SpinCase spin) {
+  model::TargetParams t;
+  t.body.emplace();
+  t.body->spin_case = spin;
+  t.body->spin_rate_radps = 2.5 * kDegToRad;
+  return t;
+}
+
+// COMRADE 2018, sec. 7.1, in MSR LVLH (x zenith, z along h; the ESA H-bar is -z, R-bar -x): the
+// spin axis where the paper puts it, the rate 2.5 deg/s about it, inertial. Exact up to rounding.
+TEST(OrbitPlant, SpinCasesPutTheAxisWhereThePaperSays) {
+  const double rate = 2.5 * kDegToRad;
+  const Vec3 h_bar = -Vec3::UnitZ();
+  const TargetSpin s1 = initial_target_spin(spinning(model::SpinCase::s1));
+  EXPECT_LT((s1.q_inertial_from_target * Vec3::UnitY() - h_bar).norm(), 1e-15);  // +Y along +H-bar
+  EXPECT_LT((s1.q_inertial_from_target * s1.omega_target_body_radps - rate * h_bar).norm(), 1e-17);
+
+  const TargetSpin s2 = initial_target_spin(spinning(model::SpinCase::s2));
+  const Vec3 axis_s2 = Vec3(0.0, 1.0, 1.0).normalized();  // 45 deg from +Y and +Z
+  EXPECT_LT((s2.q_inertial_from_target * axis_s2 - h_bar).norm(), 1e-15);
+  EXPECT_LT((s2.omega_target_body_radps - rate * axis_s2).norm(), 1e-17);
+
+  const TargetSpin s3 = initial_target_spin(spinning(model::SpinCase::s3));
+  const Vec3 axis_s3 = s3.q_inertial_from_target * Vec3::UnitZ();
+  EXPECT_NEAR(std::acos(axis_s3.dot(h_bar)), 0.25 * kPi, 1e-12);  // 45 deg from the orbit normal
+  EXPECT_NEAR(axis_s3.y(), 0.0, 1e-15);                          // in the normal / radial plane
+  EXPECT_LT(axis_s3.x(), 0.0);                                   // towards R-bar
+  EXPECT_LT((s3.omega_target_body_radps - rate * Vec3::UnitZ()).norm(), 1e-17);
+
+  model::TargetParams given;
+  given.q_inertial_from_target = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 3.0).normalized()));
+  given.omega_inertial_radps = Vec3(0.01, -0.02, 0.03);
+  const TargetSpin g = initial_target_spin(given);
+  EXPECT_LT((g.q_inertial_from_target * g.omega_target_body_radps - given.omega_inertial_radps).norm(), 1e-17);
+}
+
+// The Earth-orbit plant starts where the scenario says: the target on its circular orbit, the
+// chaser at the given LVLH position and rotating-frame velocity (read back through the ECI state).
+TEST(OrbitPlant, InitialStateReadsBackInLvlh) {
+  model::Scenario s;
+  s.orbit.mu_m3ps2 = 3.986004418e14;
+  s.orbit.body_radius_m = 6378137.0;
+  s.orbit.altitude_m = 765e3;
+  s.orbit.earth.emplace();
+  s.orbit.earth->inclination_rad = 98.4 * kDegToRad;
+  s.orbit.earth->argument_of_latitude_rad = 0.5;
+  s.target = spinning(model::SpinCase::s1);
+  RigidState initial;
+  initial.mass_kg = 1600.0;
+  initial.r_lvlh_m = Vec3(3.0, -100.0, 2.0);
+  initial.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
+  const Plant plant = make_plant(s, initial, 1);
+  ASSERT_TRUE(plant.params.earth.has_value());
+  EXPECT_NEAR(plant.state.orbit.r_t_eci_m.norm(), 6378137.0 + 765e3, 1e-6);
+  EXPECT_LT((plant.state.rigid.r_lvlh_m - initial.r_lvlh_m).norm(), 1e-12);
+  EXPECT_LT((plant.state.rigid.v_lvlh_mps - initial.v_lvlh_mps).norm(), 1e-15);
+  // The run's inertial axes are the target's LVLH at t = 0.
+  const Quat q0 = q_inertial_from_lvlh(plant, model::TargetOrbit(s.orbit), 0.0);
+  EXPECT_LT(q0.angularDistance(Quat::Identity()), 1e-15);
+}
+
+}  // namespace
+}  // namespace chaser::plant
