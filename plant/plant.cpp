@@ -70,6 +70,16 @@ Vec3 draw_vector(RandomStream& stream, double sigma) {
   return sigma * Vec3(x, y, z);
 }
 
+// One thrust piece with the period's disturbances added.
+PieceInput piece_input(const ThrustPiece& piece, const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N) {
+  return PieceInput{
+      .force_body_N = piece.force_body_N,
+      .torque_body_Nm = piece.torque_body_Nm + torque_dist_body_Nm,
+      .force_lvlh_N = force_dist_lvlh_N,
+      .mass_flow_kgps = piece.mass_flow_kgps,
+  };
+}
+
 // The perturbed orbit's period: the Sun and Moon held at the period start, each piece propagated,
 // then the LVLH view of the relative state refreshed for the sensors.
 void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const ThrustProfile& profile,
@@ -77,12 +87,7 @@ void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const Th
   const Ephemeris eph = ephemeris_at_run_time(earth, to_seconds(t_k));
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
-    const PieceInput input{
-        .force_body_N = piece.force_body_N,
-        .torque_body_Nm = piece.torque_body_Nm + torque_dist_body_Nm,
-        .force_lvlh_N = force_dist_lvlh_N,
-        .mass_flow_kgps = piece.mass_flow_kgps,
-    };
+    const PieceInput input = piece_input(piece, torque_dist_body_Nm, force_dist_lvlh_N);
     propagate_orbit_piece(earth.dynamics, eph, state.orbit, state.rigid, to_seconds(piece.t_end_ns - piece.t_begin_ns),
                           input);
   }
@@ -112,12 +117,7 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
   }
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
-    const PieceInput input{
-        .force_body_N = piece.force_body_N,
-        .torque_body_Nm = piece.torque_body_Nm + torque_dist_body_Nm,
-        .force_lvlh_N = force_dist_lvlh_N,
-        .mass_flow_kgps = piece.mass_flow_kgps,
-    };
+    const PieceInput input = piece_input(piece, torque_dist_body_Nm, force_dist_lvlh_N);
     propagate_piece(params.dynamics, state.rigid, to_seconds(piece.t_begin_ns),
                     to_seconds(piece.t_end_ns - piece.t_begin_ns), input);
   }
