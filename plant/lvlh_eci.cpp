@@ -2,17 +2,23 @@
 
 namespace chaser::plant {
 
-LvlhOfTarget lvlh_of_target(const Vec3& r_eci_m, const Vec3& v_eci_mps, const Vec3& a_eci_mps2) {
+Mat3 lvlh_axes_from_eci(const Vec3& r_eci_m, const Vec3& v_eci_mps) {
   const Vec3 h = r_eci_m.cross(v_eci_mps);
-  const double h_norm = h.norm();
+  const Vec3 x = r_eci_m / r_eci_m.norm();
+  const Vec3 z = h / h.norm();
+  Mat3 lvlh_from_eci;
+  lvlh_from_eci.row(0) = x.transpose();
+  lvlh_from_eci.row(1) = z.cross(x).transpose();
+  lvlh_from_eci.row(2) = z.transpose();
+  return lvlh_from_eci;
+}
+
+LvlhOfTarget lvlh_of_target(const Vec3& r_eci_m, const Vec3& v_eci_mps, const Vec3& a_eci_mps2) {
+  const double h_norm = r_eci_m.cross(v_eci_mps).norm();
   const double r_norm = r_eci_m.norm();
-  const Vec3 x = r_eci_m / r_norm;
-  const Vec3 z = h / h_norm;
-  const Vec3 y = z.cross(x);
   LvlhOfTarget f;
-  f.lvlh_from_eci.row(0) = x.transpose();
-  f.lvlh_from_eci.row(1) = y.transpose();
-  f.lvlh_from_eci.row(2) = z.transpose();
+  f.lvlh_from_eci = lvlh_axes_from_eci(r_eci_m, v_eci_mps);
+  const Vec3 z = f.lvlh_from_eci.row(2).transpose();
   f.omega_lvlh_radps = Vec3(r_norm / h_norm * a_eci_mps2.dot(z), 0.0, h_norm / (r_norm * r_norm));
   return f;
 }

@@ -20,8 +20,11 @@ struct LvlhOfTarget {
   Vec3 omega_lvlh_radps = Vec3::Zero();   // [rad/s] LVLH's angular velocity w.r.t. ECI, LVLH axes
 };
 
+// The axes alone (rows x, y, z of LVLH in ECI components): from the position and velocity.
+Mat3 lvlh_axes_from_eci(const Vec3& r_eci_m, const Vec3& v_eci_mps);
+
 // LVLH of a target at r_eci_m [m], v_eci_mps [m/s], with inertial acceleration a_eci_mps2 [m/s^2]
-// (its gravity and perturbations: only the component along h matters).
+// (its gravity and perturbations: only the component along h matters, for the rate).
 LvlhOfTarget lvlh_of_target(const Vec3& r_eci_m, const Vec3& v_eci_mps, const Vec3& a_eci_mps2);
 
 // The chaser's relative position and velocity as seen in the rotating LVLH frame

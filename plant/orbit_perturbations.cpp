@@ -35,37 +35,54 @@ Vec3 surface_acceleration(const OrbitPerturbationParams& p, const OrbitBodyParam
 
 Ephemeris ephemeris_at(double julian_date_tt) {
   // UT1 taken as TT, as magnetic_field.hpp does (0.3 deg of the Earth's turn in 2024).
-  const double gmst = earth::greenwich_mean_sidereal_time_rad(julian_date_tt);
   return {.sun_eci_m = earth::sun_position_eci_m(julian_date_tt),
           .moon_eci_m = earth::moon_position_eci_m(julian_date_tt),
-          .ecef_from_eci = Eigen::AngleAxisd(-gmst, Vec3::UnitZ()).toRotationMatrix()};
+          .ecef_from_eci = earth::ecef_from_eci(julian_date_tt)};
 }
 
-Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
-                             const Vec3& v_t_eci_mps) {
-  Vec3 a = earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) +
-           surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
+namespace {
+
+// The third bodies' pull on the target, added to a.
+void add_third_bodies(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m, Vec3& a) {
   if (p.sun_gravity)
     a += earth::third_body_acceleration_eci(earth::kSunGravitationalParameterM3ps2, r_t_eci_m, eph.sun_eci_m);
   if (p.moon_gravity)
     a += earth::third_body_acceleration_eci(earth::kMoonGravitationalParameterM3ps2, r_t_eci_m, eph.moon_eci_m);
-  return a;
 }
 
-Vec3 relative_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
-                               const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps) {
-  Vec3 a = earth::differential_gravity_eci(p.gravity, r_t_eci_m, dr_eci_m);
-  if (p.drag || p.solar_pressure) {
-    a += surface_acceleration(p, p.chaser, eph, r_t_eci_m + dr_eci_m, v_t_eci_mps + dv_eci_mps) -
-         surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
-  }
+// Its difference between the chaser and the target, without cancellation, added to a.
+void add_differential_third_bodies(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                   const Vec3& dr_eci_m, Vec3& a) {
   if (p.sun_gravity)
     a += earth::differential_third_body_eci(earth::kSunGravitationalParameterM3ps2, r_t_eci_m, dr_eci_m,
                                             eph.sun_eci_m);
   if (p.moon_gravity)
     a += earth::differential_third_body_eci(earth::kMoonGravitationalParameterM3ps2, r_t_eci_m, dr_eci_m,
                                             eph.moon_eci_m);
+}
+
+}  // namespace
+
+Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                             const Vec3& v_t_eci_mps) {
+  Vec3 a = earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) +
+           surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
+  add_third_bodies(p, eph, r_t_eci_m, a);
   return a;
+}
+
+OrbitAccelerations orbit_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                       const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps) {
+  const Vec3 surface_t = surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
+  OrbitAccelerations out;
+  out.target_eci_mps2 = earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) + surface_t;
+  add_third_bodies(p, eph, r_t_eci_m, out.target_eci_mps2);
+  out.relative_eci_mps2 = earth::differential_gravity_eci(p.gravity, r_t_eci_m, dr_eci_m);
+  if (p.drag || p.solar_pressure)
+    out.relative_eci_mps2 +=
+        surface_acceleration(p, p.chaser, eph, r_t_eci_m + dr_eci_m, v_t_eci_mps + dv_eci_mps) - surface_t;
+  add_differential_third_bodies(p, eph, r_t_eci_m, dr_eci_m, out.relative_eci_mps2);
+  return out;
 }
 
 }  // namespace chaser::plant

@@ -49,9 +49,14 @@ Ephemeris ephemeris_at(double julian_date_tt);
 Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
                              const Vec3& v_t_eci_mps);
 
-// The chaser's acceleration relative to the target without its own forces [m/s^2], ECI:
-// the environment's a_c - a_t at r_c = r_t + dr, v_c = v_t + dv.
-Vec3 relative_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
-                               const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps);
+// Both at once, as the propagator asks them at each RK4 stage (the target's drag and pressure are
+// needed by both and computed once): the target's inertial acceleration, and the chaser's relative
+// to it without its own forces, the environment's a_c - a_t at r_c = r_t + dr, v_c = v_t + dv.
+struct OrbitAccelerations {
+  Vec3 target_eci_mps2 = Vec3::Zero();    // [m/s^2]
+  Vec3 relative_eci_mps2 = Vec3::Zero();  // [m/s^2]
+};
+OrbitAccelerations orbit_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                       const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps);
 
 }  // namespace chaser::plant

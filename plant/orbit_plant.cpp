@@ -54,7 +54,7 @@ OrbitPlantParams make_orbit_plant_params(const model::Scenario& s) {
 
   p.dynamics.epoch_jd_tt = p.epoch_jd_tt;
   const earth::InertialState t0 = initial_target_orbit(s);
-  p.dynamics.run_from_eci = lvlh_of_target(t0.r_eci_m, t0.v_eci_mps, Vec3::Zero()).lvlh_from_eci;
+  p.dynamics.run_from_eci = lvlh_axes_from_eci(t0.r_eci_m, t0.v_eci_mps);
   p.dynamics.chaser = body_torques(s.chaser.inertia_kgm2, s.environment.gravity_gradient, e.magnetic_torque,
                                    e.chaser.residual_dipole_body_Am2);
   p.dynamics.target = body_torques(target.inertia_kgm2, target.gravity_gradient, e.magnetic_torque,
@@ -63,39 +63,33 @@ OrbitPlantParams make_orbit_plant_params(const model::Scenario& s) {
 }
 
 TargetSpin initial_target_spin(const model::TargetParams& target) {
-  const double rate = target.body ? target.body->spin_rate_radps : 0.0;
   const model::SpinCase spin = target.body ? target.body->spin_case : model::SpinCase::given;
-  const Vec3 h_bar = -Vec3::UnitZ();  // ESA H-bar in MSR LVLH
-  const Quat s1(Eigen::AngleAxisd(-0.5 * kPi, Vec3::UnitX()));  // target +Y -> -z
-  TargetSpin out;
+  if (spin == model::SpinCase::given)
+    return {target.q_inertial_from_target, target.q_inertial_from_target.conjugate() * target.omega_inertial_radps};
+
+  const Vec3 h_bar = -Vec3::UnitZ();                            // ESA H-bar in MSR LVLH
+  const Quat s1(Eigen::AngleAxisd(-0.5 * kPi, Vec3::UnitX()));  // target +Y -> H-bar
+  Quat q_inertial_from_target;
+  Vec3 spin_axis_target;
   switch (spin) {
-    case model::SpinCase::given:
-      out.q_inertial_from_target = target.q_inertial_from_target;
-      out.omega_target_body_radps = target.q_inertial_from_target.conjugate() * target.omega_inertial_radps;
-      return out;
     case model::SpinCase::s1:
-      out.q_inertial_from_target = s1;
+      spin_axis_target = Vec3::UnitY();
+      q_inertial_from_target = s1;
       break;
-    case model::SpinCase::s2: {
-      // Turn the spin axis (0, 1, 1)/sqrt(2) onto +Y about target x, then S1's attitude.
-      const Vec3 axis_target = Vec3(0.0, 1.0, 1.0).normalized();
-      out.q_inertial_from_target = s1 * Quat::FromTwoVectors(axis_target, Vec3::UnitY());
+    case model::SpinCase::s2:  // turn the axis onto +Y about target x, then S1's attitude
+      spin_axis_target = Vec3(0.0, 1.0, 1.0).normalized();
+      q_inertial_from_target = s1 * Quat::FromTwoVectors(spin_axis_target, Vec3::UnitY());
       break;
-    }
-    case model::SpinCase::s3: {
-      const Vec3 z_axis = (-Vec3::UnitX() + h_bar).normalized();  // (R-bar + H-bar) / sqrt(2)
+    default: {  // S3 (given returned above): +Z along (R-bar + H-bar) / sqrt(2), +X along-track
+      spin_axis_target = Vec3::UnitZ();
+      const Vec3 z_axis = (-Vec3::UnitX() + h_bar).normalized();
       const Vec3 x_axis = Vec3::UnitY();
       Mat3 lvlh_from_target;
       lvlh_from_target << x_axis, z_axis.cross(x_axis), z_axis;
-      out.q_inertial_from_target = Quat(lvlh_from_target);
-      break;
+      q_inertial_from_target = Quat(lvlh_from_target);
     }
   }
-  const Vec3 spin_axis_target = spin == model::SpinCase::s1   ? Vec3::UnitY()
-                                : spin == model::SpinCase::s2 ? Vec3(0.0, 1.0, 1.0).normalized()
-                                                              : Vec3::UnitZ();
-  out.omega_target_body_radps = rate * spin_axis_target;
-  return out;
+  return {q_inertial_from_target, target.body->spin_rate_radps * spin_axis_target};
 }
 
 OrbitState initial_orbit_state(const model::Scenario& s, const OrbitPlantParams& p, const Vec3& r_lvlh_m,

@@ -33,10 +33,15 @@ void unpack(const StateVec& y, OrbitState& o, RigidState& c) {
   o.omega_target_body_radps = y.segment<3>(kWt);
 }
 
-// The torques of the Earth's field on one body at r_eci_m (from the Earth's centre), body axes.
+// The torques of the Earth's field on one body at r_eci_m (from the Earth's centre), body axes;
+// q_inertial_from_body in the run's inertial axes. Zero, and no rotation formed, when both are off.
 Vec3 environment_torque_body(const BodyTorqueParams& b, double mu_m3ps2, const Ephemeris& eph,
-                             const Mat3& body_from_eci, const Vec3& r_eci_m) {
+                             const Mat3& eci_from_run, const Quat& q_inertial_from_body, const Vec3& r_eci_m) {
   Vec3 torque = Vec3::Zero();
+  if (!b.gravity_gradient && !b.magnetic) return torque;
+  // q may be slightly off the unit sphere inside a step; the rotation matrix is then a smooth
+  // extension, which keeps RK4 fourth order (propagator.cpp does the same).
+  const Mat3 body_from_eci = (eci_from_run * q_inertial_from_body.toRotationMatrix()).transpose();
   if (b.gravity_gradient) {
     // mu of the central field only: J2's share of the gradient is 1e-3 of it.
     const double gain = gravity_gradient_gain(mu_m3ps2, r_eci_m.squaredNorm());
@@ -70,24 +75,20 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
   const Vec3 w_t = y.segment<3>(kWt);
 
   const Vec3 thrust_eci_N = c.eci_from_run * (q_c * c.u.force_body_N);
+  const OrbitAccelerations a = orbit_accelerations(p.perturbations, c.eph, r_t, v_t, dr, dv);
   StateVec dy;
   dy.segment<3>(kRt) = v_t;
-  dy.segment<3>(kVt) = target_acceleration_eci(p.perturbations, c.eph, r_t, v_t);
+  dy.segment<3>(kVt) = a.target_eci_mps2;
   dy.segment<3>(kDr) = dv;
-  dy.segment<3>(kDv) = relative_acceleration_eci(p.perturbations, c.eph, r_t, v_t, dr, dv) +
-                       (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
+  dy.segment<3>(kDv) = a.relative_eci_mps2 + (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
 
-  // q may be slightly off the unit sphere inside a step; the rotation matrices below are then
-  // smooth extensions, which keeps RK4 fourth order (propagator.cpp does the same).
-  const Mat3 chaser_from_eci = (c.eci_from_run * q_c.toRotationMatrix()).transpose();
   const double mu = p.perturbations.gravity.mu_m3ps2;
-  const Vec3 torque_c = c.u.torque_body_Nm + environment_torque_body(p.chaser, mu, c.eph, chaser_from_eci, r_t + dr);
+  const Vec3 torque_c = c.u.torque_body_Nm + environment_torque_body(p.chaser, mu, c.eph, c.eci_from_run, q_c, r_t + dr);
   dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
   dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   dy[kM] = -c.u.mass_flow_kgps;
 
-  const Mat3 target_from_eci = (c.eci_from_run * q_t.toRotationMatrix()).transpose();
-  const Vec3 torque_t = environment_torque_body(p.target, mu, c.eph, target_from_eci, r_t);
+  const Vec3 torque_t = environment_torque_body(p.target, mu, c.eph, c.eci_from_run, q_t, r_t);
   dy.segment<4>(kQt) = quat_derivative(q_t, w_t);
   dy.segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
   return dy;
@@ -130,8 +131,8 @@ void update_lvlh_view(const OrbitDynamicsParams& p, const Ephemeris& eph, const 
   chaser.v_lvlh_mps = rel.v_lvlh_mps;
 }
 
-Quat q_inertial_from_lvlh(const OrbitDynamicsParams& p, const Ephemeris& eph, const OrbitState& orbit) {
-  const Mat3 run_from_lvlh = p.run_from_eci * target_lvlh(p, eph, orbit).lvlh_from_eci.transpose();
+Quat q_inertial_from_lvlh(const OrbitDynamicsParams& p, const OrbitState& orbit) {
+  const Mat3 run_from_lvlh = p.run_from_eci * lvlh_axes_from_eci(orbit.r_t_eci_m, orbit.v_t_eci_mps).transpose();
   return Quat(run_from_lvlh).normalized();
 }
 

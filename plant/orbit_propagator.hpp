@@ -62,6 +62,6 @@ void update_lvlh_view(const OrbitDynamicsParams& p, const Ephemeris& eph, const 
                       RigidState& chaser);
 
 // The rotation from the target's current LVLH axes to the run's inertial axes.
-Quat q_inertial_from_lvlh(const OrbitDynamicsParams& p, const Ephemeris& eph, const OrbitState& orbit);
+Quat q_inertial_from_lvlh(const OrbitDynamicsParams& p, const OrbitState& orbit);
 
 }  // namespace chaser::plant

@@ -49,8 +49,7 @@ Quat target_attitude(const Plant& plant, double t_s) {
 
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s) {
   if (!plant.params.earth) return circle.q_inertial_from_lvlh(t_s);
-  const OrbitPlantParams& e = *plant.params.earth;
-  return q_inertial_from_lvlh(e.dynamics, ephemeris_at_run_time(e, t_s), plant.state.orbit);
+  return q_inertial_from_lvlh(plant.params.earth->dynamics, plant.state.orbit);
 }
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t) {
@@ -80,7 +79,7 @@ PieceInput piece_input(const ThrustPiece& piece, const Vec3& torque_dist_body_Nm
   };
 }
 
-// The perturbed orbit's period: the Sun and Moon held at the period start, each piece propagated,
+// The perturbed orbit's period: the Sun, the Moon and the Earth's turn held at the period start, each piece propagated,
 // then the LVLH view of the relative state refreshed for the sensors.
 void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const ThrustProfile& profile,
                       const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k) {
@@ -110,9 +109,9 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
       env.torque_bias_body_Nm + draw_vector(state.streams.torque_noise, env.torque_noise_sigma_Nm);
 
   const ThrustProfile& profile = state.last_profile;
+  state.propellant_used_kg += profile.propellant_kg;
   if (params.earth) {
     step_orbit_plant(*params.earth, state, profile, torque_dist_body_Nm, force_dist_lvlh_N, t_k);
-    state.propellant_used_kg += profile.propellant_kg;
     return;
   }
   for (int i = 0; i < profile.count; ++i) {
@@ -121,7 +120,6 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
     propagate_piece(params.dynamics, state.rigid, to_seconds(piece.t_begin_ns),
                     to_seconds(piece.t_end_ns - piece.t_begin_ns), input);
   }
-  state.propellant_used_kg += profile.propellant_kg;
 }
 
 }  // namespace chaser::plant

@@ -28,27 +28,7 @@ SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_ma
   return fill;
 }
 
-std::vector<std::string> validate(std::span<const SloshTankParams> tanks) {
-  std::vector<std::string> problems;
-  if (tanks.size() > static_cast<std::size_t>(kMaxSloshTanks))
-    problems.push_back("slosh.tanks: at most 4 (kMaxSloshTanks)");
-  for (std::size_t i = 0; i < tanks.size(); ++i) {
-    const std::string key = "slosh.tanks[" + std::to_string(i) + "]";
-    const SloshTankParams& t = tanks[i];
-    if (!(t.mass_kg > 0.0 && std::isfinite(t.mass_kg))) problems.push_back(key + ".mass_kg: must be finite and > 0");
-    if (!(t.stiffness_Npm >= 0.0 && std::isfinite(t.stiffness_Npm)))
-      problems.push_back(key + ".stiffness_Npm: must be finite and >= 0");
-    if (!(t.damping_Nspm >= 0.0 && std::isfinite(t.damping_Nspm)))
-      problems.push_back(key + ".damping_Nspm: must be finite and >= 0");
-    if (!(std::abs(t.axis_body.norm() - 1.0) <= 1e-12)) problems.push_back(key + ".axis_body: must be a unit vector");
-    if (!t.anchor_body_m.allFinite()) problems.push_back(key + ".anchor_body_m: must be finite");
-  }
-  return problems;
-}
-
 namespace {
-
-using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 std::size_t tank_count(std::span<const SloshTankParams> tanks, std::span<const SloshState> states) {
   return std::min({tanks.size(), states.size(), static_cast<std::size_t>(kMaxSloshTanks)});
@@ -167,7 +147,7 @@ double total_kinetic_energy(const RigidBodyMassProps& body, std::span<const Slos
 
 double slosh_spring_energy(std::span<const SloshTankParams> tanks, std::span<const SloshState> states) {
   double twice = 0.0;
-  for (std::size_t i = 0; i < std::min(tanks.size(), states.size()); ++i)
+  for (std::size_t i = 0; i < tank_count(tanks, states); ++i)
     twice += tanks[i].stiffness_Npm * lateral(tanks[i].axis_body, states[i].s_body_m).squaredNorm();
   return 0.5 * twice;
 }

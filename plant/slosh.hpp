@@ -54,8 +54,6 @@
 // is left out. Like its source, the model is linear: small free-surface slopes.
 #include <array>
 #include <span>
-#include <string>
-#include <vector>
 
 #include "core/types.hpp"
 
@@ -104,9 +102,6 @@ struct RigidBodyMassProps {
   Vec3 com_body_m = Vec3::Zero();               // [m] c, from the body reference point
 };
 
-// Each tank's count, mass, axis, spring and damper; all problems at once (empty: valid).
-std::vector<std::string> validate(std::span<const SloshTankParams> tanks);
-
 struct SloshState {
   Vec3 s_body_m = Vec3::Zero();        // [m] displacement from the anchor, perpendicular to the axis
   Vec3 s_dot_body_mps = Vec3::Zero();  // [m/s] its rate in the body frame
@@ -121,8 +116,8 @@ struct SloshAccelerations {
 };
 static_assert(kMaxSloshTanks == 4, "SloshAccelerations::s_ddot_body_mps2 zeroes 4 entries");
 
-// The equations above. tanks and states have equal sizes <= kMaxSloshTanks (validate first; extra
-// entries are ignored). s and s' are projected onto the lateral plane before use. No allocation.
+// The equations above. tanks and states have equal sizes <= kMaxSloshTanks (extra entries are
+// ignored; the scenario's reader validates masses, axes, springs and dampers, as for every key). s and s' are projected onto the lateral plane before use. No allocation.
 SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, std::span<const SloshTankParams> tanks,
                                          std::span<const SloshState> states, const Vec3& omega_body_radps,
                                          const Vec3& force_body_N, const Vec3& torque_body_Nm);

@@ -39,10 +39,13 @@ Vec3 magnetic_field_ecef_T(const Vec3& r_ecef_m) {
   return kTeslaPerNanotesla * ratio * ratio * ratio * (3.0 * g.dot(unit) * unit - g);
 }
 
+Mat3 ecef_from_eci(double julian_date_ut1) {
+  return Eigen::AngleAxisd(-greenwich_mean_sidereal_time_rad(julian_date_ut1), Vec3::UnitZ()).toRotationMatrix();
+}
+
 Vec3 magnetic_field_eci_T(const Vec3& r_eci_m, double julian_date) {
-  // The Greenwich meridian lies at right ascension GMST: ECEF = Rz(-GMST) ECI.
-  const Eigen::AngleAxisd eci_from_ecef(greenwich_mean_sidereal_time_rad(julian_date), Vec3::UnitZ());
-  return eci_from_ecef * magnetic_field_ecef_T(eci_from_ecef.inverse() * r_eci_m);
+  const Mat3 to_ecef = ecef_from_eci(julian_date);
+  return to_ecef.transpose() * magnetic_field_ecef_T(to_ecef * r_eci_m);
 }
 
 Vec3 magnetic_torque_body_Nm(const Vec3& residual_dipole_body_Am2, const Vec3& field_body_T) {

@@ -32,6 +32,10 @@ inline constexpr double kIgrfReferenceRadiusM = 6371200.0;  // [m] a
 // T the Julian centuries of UT1 from J2000.
 double greenwich_mean_sidereal_time_rad(double julian_date_ut1);
 
+// The Earth-fixed axes from ECI: a turn of -GMST about z (the Greenwich meridian lies at right
+// ascension GMST).
+Mat3 ecef_from_eci(double julian_date_ut1);
+
 // The Earth's dipole moment m = (4 pi / mu0) a^3 (g11, h11, g10) [A m^2], ECEF; and its direction.
 Vec3 dipole_moment_ecef_Am2();
 Vec3 dipole_moment_direction_ecef();

@@ -362,16 +362,5 @@ TEST(Slosh, SameInputsGiveIdenticalBits) {
   for (std::size_t i = 0; i < x.slosh.size(); ++i) EXPECT_EQ(x.slosh[i].s_body_m, y.slosh[i].s_body_m);
 }
 
-// validate reports every problem at once, with its key.
-TEST(Slosh, ValidateListsEveryProblem) {
-  const System sys = two_tank_system(0.01);
-  EXPECT_TRUE(validate(sys.tanks).empty());
-  std::vector<SloshTankParams> bad(5, sys.tanks[0]);
-  bad[1].mass_kg = 0.0;
-  bad[2].axis_body = Vec3(0.0, 0.0, 2.0);
-  bad[3].damping_Nspm = -1.0;
-  EXPECT_EQ(validate(bad).size(), 4u);
-}
-
 }  // namespace
 }  // namespace chaser::plant
