@@ -44,11 +44,11 @@
 namespace chaser::flight {
 namespace {
 
-// The solver is a template on its width N (on-time columns): 8 for a set of up to eight thrusters,
-// the capacity model::kMaxThrusters above. Columns past the set's own are zero with both bounds 0,
-// so they never enter the basis and stay at 0: the same optimum as a solver of the exact width.
+// The solver is a template on its width N (on-time columns): the set's count rounded up to a
+// multiple of eight (allocate_thrusters at the end). Columns past the set's own are zero with both
+// bounds 0, so they never enter the basis and stay at 0: the same optimum as a solver of the exact
+// width.
 constexpr int kRows = 6;                          // wrench components [F; C]
-constexpr int kNarrowWidth = 8;                   // solver width for sets of up to eight thrusters
 template <int N>
 using TonN = Eigen::Matrix<double, N, 1>;
 template <int N>
@@ -331,21 +331,20 @@ bool attainable(const Lp<N>& lp, const TonN<N>& ton) { return attains(lp.a.templ
 
 // `config`: the set's columns at the solver's width (config_of), the only ones the solver reads.
 template <int N>
-bool valid_input(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand) {
-  return params.thrusters >= 1 && params.thrusters <= N && demand.allFinite() && config.allFinite() &&
-         params.error_weights.allFinite() && (params.error_weights.array() > 0.0).all();
+bool valid_problem(const AllocationParams& params, const ConfigMap<N>& config) {
+  return params.thrusters >= 1 && params.thrusters <= N && config.allFinite() && params.error_weights.allFinite() &&
+         (params.error_weights.array() > 0.0).all();
 }
 
-// The answers that need no LP: invalid input (ton = 0, converged = false) and a zero demand (ton = 0
-// is the unique zero-cost solution). True when `result` is final.
-template <int N>
-bool answered_without_lp(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand,
-                         AllocationResult& result) {
+// The answers that need no LP: an invalid problem or demand (ton = 0, converged = false) and a zero
+// demand (ton = 0 is the unique zero-cost solution). True when `result` is final.
+inline bool answered_without_lp(const AllocationParams& params, bool valid, const Vec6& demand,
+                                AllocationResult& result) {
   // `result` is fresh: its on-times are already zero.
   result.propellant = 0.0;
   result.residual = -demand;
   result.weighted_error = params.error_weights.cwiseProduct(demand.cwiseAbs()).sum();
-  if (!valid_input<N>(params, config, demand)) return true;
+  if (!valid || !demand.allFinite()) return true;
   if ((demand.array() == 0.0).all()) {
     result.feasible = result.converged = true;
     return true;
@@ -393,7 +392,7 @@ void solve(const AllocationParams& params, const ConfigMap<N>& config, const Vec
 // The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
 // solver's own Harris tolerance) and attain b, as a solved answer must.
 template <int N>
-bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigN<N>& m_scaled, const Vec6& b, TonN<N>& ton) {
+bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scaled, const Vec6& b, TonN<N>& ton) {
   Vec6 rhs = b;
   for (int i = 0; i < N; ++i)
     if ((slot.upper >> i) & 1U) rhs -= m_scaled.col(i);
@@ -429,7 +428,7 @@ template <int N>
 AllocationResult allocate_cold(const AllocationParams& params, const Vec6& demand_wrench) {
   AllocationResult result;
   const ConfigMap<N> config = config_of<N>(params);
-  if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
+  if (answered_without_lp(params, valid_problem<N>(params, config), demand_wrench, result)) return result;
   Lp<N> lp;
   solve<N>(params, config, demand_wrench, scaling_of<N>(params, config), lp, result);
   return result;
@@ -439,23 +438,27 @@ AllocationResult allocate_cold(const AllocationParams& params, const Vec6& deman
 // zero in both).
 template <int N>
 bool same_problem(const AllocationParams& params, const ConfigMap<N>& config, const AllocationWarmStart& warm) {
-  return warm.thrusters == params.thrusters && warm.config.template leftCols<N>() == config;
+  return warm.thrusters == params.thrusters && warm.error_weights == params.error_weights &&
+         warm.config.template leftCols<N>() == config;
 }
 
 template <int N>
 AllocationResult allocate_warm(const AllocationParams& params, const Vec6& demand_wrench, AllocationWarmStart& warm) {
   AllocationResult result;
   const ConfigMap<N> config = config_of<N>(params);
-  if (answered_without_lp<N>(params, config, demand_wrench, result)) return result;
   if (!same_problem<N>(params, config, warm)) {  // another problem: the kept bases do not belong to it
     warm.slots = {};
     warm.last_hit = warm.next_free = 0;
     warm.config = params.config;
     warm.thrusters = params.thrusters;
+    warm.error_weights = params.error_weights;
+    warm.valid = valid_problem<N>(params, config);  // a non-finite config is never the same problem
+    warm.wrench_scale = scaling_of<N>(params, config).wrench;
+    warm.config_scaled = params.config / warm.wrench_scale;
   }
-  const Scaling scale = scaling_of<N>(params, config);
-  const ConfigN<N> m_scaled = config / scale.wrench;
-  const Vec6 b = demand_wrench / scale.wrench;
+  if (answered_without_lp(params, warm.valid, demand_wrench, result)) return result;
+  const ConfigMap<N> m_scaled(warm.config_scaled.data());
+  const Vec6 b = demand_wrench / warm.wrench_scale;
   for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {
     const int s = (warm.last_hit + k) % AllocationWarmStart::kSlots;
     const AllocationWarmStart::Slot& slot = warm.slots[static_cast<std::size_t>(s)];
@@ -468,7 +471,7 @@ AllocationResult allocate_warm(const AllocationParams& params, const Vec6& deman
     return result;
   }
   Lp<N> lp;
-  solve<N>(params, config, demand_wrench, scale, lp, result);
+  solve<N>(params, config, demand_wrench, scaling_of<N>(params, config), lp, result);
   ++warm.solves;
   if (result.feasible && result.converged) remember(lp, warm);
   return result;
@@ -476,15 +479,22 @@ AllocationResult allocate_warm(const AllocationParams& params, const Vec6& deman
 
 }  // namespace
 
+// The solver's width: the set's count rounded up to a multiple of eight (8 for MSR, 24 for COMRADE),
+// so that the padding columns, which cost as much as real ones in every product, stay few.
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench) {
-  return params.thrusters <= kNarrowWidth ? allocate_cold<kNarrowWidth>(params, demand_wrench)
-                                          : allocate_cold<model::kMaxThrusters>(params, demand_wrench);
+  static_assert(model::kMaxThrusters == 32, "one solver width per multiple of eight up to the capacity");
+  if (params.thrusters <= 8) return allocate_cold<8>(params, demand_wrench);
+  if (params.thrusters <= 16) return allocate_cold<16>(params, demand_wrench);
+  if (params.thrusters <= 24) return allocate_cold<24>(params, demand_wrench);
+  return allocate_cold<32>(params, demand_wrench);
 }
 
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,
                                     AllocationWarmStart& warm) {
-  return params.thrusters <= kNarrowWidth ? allocate_warm<kNarrowWidth>(params, demand_wrench, warm)
-                                          : allocate_warm<model::kMaxThrusters>(params, demand_wrench, warm);
+  if (params.thrusters <= 8) return allocate_warm<8>(params, demand_wrench, warm);
+  if (params.thrusters <= 16) return allocate_warm<16>(params, demand_wrench, warm);
+  if (params.thrusters <= 24) return allocate_warm<24>(params, demand_wrench, warm);
+  return allocate_warm<32>(params, demand_wrench, warm);
 }
 
 }  // namespace chaser::flight

@@ -27,8 +27,8 @@ using AllocationTon = Eigen::Matrix<double, model::kMaxThrusters, 1>;
 
 struct AllocationParams {
   // M [N; N m]: column i is the force and torque of the set's thruster i open for a whole period
-  // (eq. 2); columns [0, thrusters) used. Sets of up to eight are solved at width 8, larger ones at
-  // the capacity (thruster_allocation.cpp): the optimum is the same, the narrow solve faster.
+  // (eq. 2); columns [0, thrusters) used. A set is solved at its count rounded up to a multiple of
+  // eight (thruster_allocation.cpp): the optimum is the same, the narrow solve faster.
   model::ConfigMatrix config = model::ConfigMatrix::Zero();
   int thrusters = 0;                  // 1..model::kMaxThrusters
   Vec6 error_weights = Vec6::Ones();  // [1/N; 1/(N m)] w_j of the best-effort problem (E), all > 0
@@ -66,6 +66,10 @@ struct AllocationWarmStart {
   int next_free = 0;                                 // slot replaced next (round robin)
   model::ConfigMatrix config = model::ConfigMatrix::Zero();  // the problem the slots belong to
   int thrusters = 0;
+  Vec6 error_weights = Vec6::Zero();
+  bool valid = false;                                // the problem's own check (finite, weights > 0)
+  model::ConfigMatrix config_scaled = model::ConfigMatrix::Zero();  // config / wrench_scale, formed once
+  double wrench_scale = 1.0;                         // [N or N m] power of two: the scaling is exact
   std::int64_t hits = 0;                             // answers from a slot (statistics)
   std::int64_t solves = 0;                           // answers from the simplex
 };

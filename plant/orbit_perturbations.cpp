@@ -71,18 +71,30 @@ Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& 
   return a;
 }
 
-OrbitAccelerations orbit_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
-                                       const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps) {
+OrbitAccelerations gravity_accelerations(const earth::GravityParams& gravity, const Vec3& r_t_eci_m,
+                                         const Vec3& dr_eci_m) {
+  return {.target_eci_mps2 = earth::gravity_acceleration_eci(gravity, r_t_eci_m),
+          .relative_eci_mps2 = earth::differential_gravity_eci(gravity, r_t_eci_m, dr_eci_m)};
+}
+
+OrbitAccelerations slow_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                      const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps) {
   const Vec3 surface_t = surface_acceleration(p, p.target, eph, r_t_eci_m, v_t_eci_mps);
   OrbitAccelerations out;
-  out.target_eci_mps2 = earth::gravity_acceleration_eci(p.gravity, r_t_eci_m) + surface_t;
+  out.target_eci_mps2 = surface_t;
   add_third_bodies(p, eph, r_t_eci_m, out.target_eci_mps2);
-  out.relative_eci_mps2 = earth::differential_gravity_eci(p.gravity, r_t_eci_m, dr_eci_m);
   if (p.drag || p.solar_pressure)
-    out.relative_eci_mps2 +=
-        surface_acceleration(p, p.chaser, eph, r_t_eci_m + dr_eci_m, v_t_eci_mps + dv_eci_mps) - surface_t;
+    out.relative_eci_mps2 = surface_acceleration(p, p.chaser, eph, r_t_eci_m + dr_eci_m, v_t_eci_mps + dv_eci_mps) - surface_t;
   add_differential_third_bodies(p, eph, r_t_eci_m, dr_eci_m, out.relative_eci_mps2);
   return out;
+}
+
+OrbitAccelerations orbit_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                       const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps) {
+  const OrbitAccelerations g = gravity_accelerations(p.gravity, r_t_eci_m, dr_eci_m);
+  const OrbitAccelerations s = slow_accelerations(p, eph, r_t_eci_m, v_t_eci_mps, dr_eci_m, dv_eci_mps);
+  return {.target_eci_mps2 = g.target_eci_mps2 + s.target_eci_mps2,
+          .relative_eci_mps2 = g.relative_eci_mps2 + s.relative_eci_mps2};
 }
 
 }  // namespace chaser::plant

@@ -49,14 +49,24 @@ Ephemeris ephemeris_at(double julian_date_tt);
 Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
                              const Vec3& v_t_eci_mps);
 
-// Both at once, as the propagator asks them at each RK4 stage (the target's drag and pressure are
-// needed by both and computed once): the target's inertial acceleration, and the chaser's relative
-// to it without its own forces, the environment's a_c - a_t at r_c = r_t + dr, v_c = v_t + dv.
+// Both at once, as the propagator asks them (the target's drag and pressure are needed by both and
+// computed once): the target's inertial acceleration, and the chaser's relative to it without its
+// own forces, the environment's a_c - a_t at r_c = r_t + dr, v_c = v_t + dv.
 struct OrbitAccelerations {
   Vec3 target_eci_mps2 = Vec3::Zero();    // [m/s^2]
   Vec3 relative_eci_mps2 = Vec3::Zero();  // [m/s^2]
 };
 OrbitAccelerations orbit_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
                                        const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps);
+
+// The same split in two, which orbit_accelerations sums: the Earth's gravity (central and J2: the
+// target's, and the differential one at dr), which changes at the orbit rate times the separation
+// and must be evaluated at every RK4 stage; and the slowly varying rest (drag, solar pressure, the
+// Sun and the Moon), which the propagator may hold over a control period
+// (OrbitDynamicsParams::hold_slow_environment).
+OrbitAccelerations gravity_accelerations(const earth::GravityParams& gravity, const Vec3& r_t_eci_m,
+                                         const Vec3& dr_eci_m);
+OrbitAccelerations slow_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,
+                                      const Vec3& v_t_eci_mps, const Vec3& dr_eci_m, const Vec3& dv_eci_mps);
 
 }  // namespace chaser::plant

@@ -4,6 +4,8 @@
 
 #include "core/constants.hpp"
 #include "plant/earth/inertial_orbit.hpp"
+#include "plant/earth/magnetic_field.hpp"
+#include "plant/earth/moon.hpp"
 #include "plant/earth/sun.hpp"
 #include "plant/lvlh_eci.hpp"
 
@@ -112,6 +114,24 @@ OrbitState initial_orbit_state(const model::Scenario& s, const OrbitPlantParams&
 
 Ephemeris ephemeris_at_run_time(const OrbitPlantParams& p, double t_s) {
   return ephemeris_at(p.epoch_jd_tt + t_s / kSecondsPerDay);
+}
+
+Ephemeris ephemeris_at_run_time(const OrbitPlantParams& p, double t_s, EphemerisSamples& samples) {
+  const auto index = static_cast<std::int64_t>(std::floor(t_s / kEphemerisSampleS));
+  if (index != samples.index) {
+    const double t0_s = static_cast<double>(index) * kEphemerisSampleS;
+    const double jd0 = p.epoch_jd_tt + t0_s / kSecondsPerDay;
+    const double jd1 = p.epoch_jd_tt + (t0_s + kEphemerisSampleS) / kSecondsPerDay;
+    samples = {.index = index,
+               .sun0_eci_m = earth::sun_position_eci_m(jd0),
+               .sun1_eci_m = earth::sun_position_eci_m(jd1),
+               .moon0_eci_m = earth::moon_position_eci_m(jd0),
+               .moon1_eci_m = earth::moon_position_eci_m(jd1)};
+  }
+  const double f = (t_s - static_cast<double>(index) * kEphemerisSampleS) / kEphemerisSampleS;
+  return {.sun_eci_m = samples.sun0_eci_m + f * (samples.sun1_eci_m - samples.sun0_eci_m),
+          .moon_eci_m = samples.moon0_eci_m + f * (samples.moon1_eci_m - samples.moon0_eci_m),
+          .ecef_from_eci = earth::ecef_from_eci(p.epoch_jd_tt + t_s / kSecondsPerDay)};
 }
 
 }  // namespace chaser::plant

@@ -35,7 +35,21 @@ TargetSpin initial_target_spin(const model::TargetParams& target);
 OrbitState initial_orbit_state(const model::Scenario& s, const OrbitPlantParams& p, const Vec3& r_lvlh_m,
                                const Vec3& v_lvlh_mps);
 
-// The Sun and the Moon at run time t_s.
+// The Sun, the Moon and the Earth's turn at run time t_s, each from its model (plant/earth/).
 Ephemeris ephemeris_at_run_time(const OrbitPlantParams& p, double t_s);
+
+// The same, as the plant asks it every period: the Earth's turn from its model, the Sun and the Moon
+// interpolated linearly between their positions at whole multiples of kEphemerisSampleS of run
+// time (so a period's answer depends on its time alone, not on the run's history). The chord of
+// an arc turned by w dt misses it by (w dt)^2 / 8 of the radius: the Moon (w = 2.7e-6 rad/s) by
+// 3e-9, 1.2 m of its 384,000 km, the Sun by 2e-11, where the Moon's own series is good to ~0.3 %
+// (moon.hpp). The two series cost ~2,500 instructions, more than the rest of a period's plant.
+inline constexpr double kEphemerisSampleS = 60.0;  // [s]
+struct EphemerisSamples {
+  std::int64_t index = -1;  // samples at index * kEphemerisSampleS and the next; -1: none yet
+  Vec3 sun0_eci_m = Vec3::Zero(), sun1_eci_m = Vec3::Zero();
+  Vec3 moon0_eci_m = Vec3::Zero(), moon1_eci_m = Vec3::Zero();
+};
+Ephemeris ephemeris_at_run_time(const OrbitPlantParams& p, double t_s, EphemerisSamples& samples);
 
 }  // namespace chaser::plant

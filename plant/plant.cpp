@@ -29,6 +29,7 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
   PlantState state{
       .rigid = initial,
       .orbit = OrbitState{},
+      .ephemeris = EphemerisSamples{},
       .thrusters = ThrusterState{},
       .sensors = make_sensor_state(scenario.sensors, period_ns),
       .streams = PlantStreams(seed),
@@ -37,7 +38,9 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
   if (scenario.orbit.earth) {
     params.earth = make_orbit_plant_params(scenario);
     state.orbit = initial_orbit_state(scenario, *params.earth, initial.r_lvlh_m, initial.v_lvlh_mps);
-    update_lvlh_view(params.earth->dynamics, ephemeris_at_run_time(*params.earth, 0.0), state.orbit, state.rigid);
+    const OrbitDynamicsParams& dynamics = params.earth->dynamics;
+    update_lvlh_view(dynamics, period_environment(dynamics, ephemeris_at_run_time(*params.earth, 0.0), state.orbit, 0.0),
+                     state.orbit, state.rigid);
   }
   return Plant{std::move(params), std::move(state)};
 }
@@ -79,18 +82,21 @@ PieceInput piece_input(const ThrustPiece& piece, const Vec3& torque_dist_body_Nm
   };
 }
 
-// The perturbed orbit's period: the Sun, the Moon and the Earth's turn held at the period start, each piece propagated,
-// then the LVLH view of the relative state refreshed for the sensors.
+// The perturbed orbit's period: the environment held at the period start (period_environment: the
+// Sun, the Moon, the Earth's turn and the slowly varying forces), each piece propagated, then the
+// LVLH view of the relative state refreshed for the sensors.
 void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const ThrustProfile& profile,
-                      const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k) {
-  const Ephemeris eph = ephemeris_at_run_time(earth, to_seconds(t_k));
+                      const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k, TimeNs period_ns) {
+  const double period_s = to_seconds(period_ns);
+  const Ephemeris eph_mid = ephemeris_at_run_time(earth, to_seconds(t_k) + 0.5 * period_s, state.ephemeris);
+  const PeriodEnvironment env = period_environment(earth.dynamics, eph_mid, state.orbit, period_s);
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
     const PieceInput input = piece_input(piece, torque_dist_body_Nm, force_dist_lvlh_N);
-    propagate_orbit_piece(earth.dynamics, eph, state.orbit, state.rigid, to_seconds(piece.t_end_ns - piece.t_begin_ns),
+    propagate_orbit_piece(earth.dynamics, env, state.orbit, state.rigid, to_seconds(piece.t_end_ns - piece.t_begin_ns),
                           input);
   }
-  update_lvlh_view(earth.dynamics, eph, state.orbit, state.rigid);
+  update_lvlh_view(earth.dynamics, env, state.orbit, state.rigid);
 }
 
 }  // namespace
@@ -111,7 +117,7 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
   const ThrustProfile& profile = state.last_profile;
   state.propellant_used_kg += profile.propellant_kg;
   if (params.earth) {
-    step_orbit_plant(*params.earth, state, profile, torque_dist_body_Nm, force_dist_lvlh_N, t_k);
+    step_orbit_plant(*params.earth, state, profile, torque_dist_body_Nm, force_dist_lvlh_N, t_k, params.period_ns);
     return;
   }
   for (int i = 0; i < profile.count; ++i) {

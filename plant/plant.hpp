@@ -38,6 +38,7 @@ struct PlantStreams {
 struct PlantState {
   RigidState rigid;  // the chaser; with an Earth orbit its r_lvlh_m, v_lvlh_mps are derived from `orbit`
   OrbitState orbit;  // Earth orbit only: both bodies in ECI, the target's attitude
+  EphemerisSamples ephemeris;  // Earth orbit only: the Sun's and the Moon's last samples
   ThrusterState thrusters;
   SensorState sensors;
   PlantStreams streams;
