@@ -46,6 +46,7 @@ void read_chaser(MapReader& r, model::SpacecraftParams& out) {
   r.mat3("inertia_kgm2", out.inertia_kgm2);
   r.vec3("com_body_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.com_body_m);
   r.number("isp_s", Range::positive(), out.isp_s);
+  read_optional_slosh(r, out.slosh);
 }
 
 void read_target(MapReader& r, model::TargetParams& out) {

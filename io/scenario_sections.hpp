@@ -31,6 +31,8 @@ void read_target(MapReader& r, model::TargetParams& out);
 // The optional COMRADE sections orbit.earth and target.body (io/earth_orbit_reader.cpp).
 void read_optional_earth_orbit(MapReader& r, std::optional<model::EarthOrbitParams>& out);
 void read_optional_target_body(MapReader& r, std::optional<model::TargetBodyParams>& out);
+// chaser.slosh, the propellant tanks' slosh (io/slosh_reader.cpp).
+void read_optional_slosh(MapReader& r, std::optional<model::SloshParams>& out);
 void read_environment(MapReader& r, model::EnvironmentParams& out);
 void read_sensors(MapReader& r, model::SensorParams& out);
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out);

@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
 #include "io/scenario_sections.hpp"
 
 namespace chaser::io {
@@ -175,12 +176,65 @@ void check_earth_platform(const model::Scenario& s, Diagnostics& d) {
   if (body) check_inertia(s.target.body->inertia_kgm2, "target.body.inertia_kgm2", d);
 }
 
+// chaser.slosh: with the Earth-orbit plant only; each tank's liquid fits it; and what the plant
+// takes out of the chaser's mass properties for the slosh masses (plant/orbit_plant.cpp) leaves a
+// body of positive mass and inertia. That last is checked with a bound that needs no slosh model:
+// a slosh mass m1 is at most its liquid and sits on its tank's axis between bottom and top, so the
+// inertia taken out about the CoM c is at most sum m_i d_i^2 + (sum m_i d_i)^2 / M in every
+// direction (the masses themselves, then the rest of the body's shift towards them), d_i the
+// tank axis's farthest point from c, M the chaser's mass less its liquid.
+void check_slosh(const model::Scenario& s, Diagnostics& d) {
+  if (!s.chaser.slosh || !d.clean("chaser.slosh")) return;
+  if (!s.orbit.earth) {
+    if (d.clean("orbit")) d.add("chaser.slosh", "only with orbit.earth (the slosh model is part of the Earth-orbit plant)");
+    return;
+  }
+  const model::SloshParams& slosh = *s.chaser.slosh;
+  double liquid_kg = 0.0, moment_kgm = 0.0, inertia_kgm2 = 0.0;
+  bool overfull = false;  // then the sums below are not the liquid the user meant
+  for (std::size_t i = 0; i < slosh.tanks.size(); ++i) {
+    const model::SloshTankSpec& t = slosh.tanks[i];
+    const std::string path = fmt::format("chaser.slosh.tanks.{}", i);
+    const double fill_m = t.liquid_mass_kg / (t.density_kgpm3 * kPi * t.radius_m * t.radius_m);
+    if (fill_m > t.height_m) {
+      overfull = true;
+      d.add(path + ".liquid_mass_kg",
+            fmt::format("fills {} m of the tank, more than its height_m {} (radius_m {}, density_kgpm3 {})",
+                        format_number(fill_m), format_number(t.height_m), format_number(t.radius_m),
+                        format_number(t.density_kgpm3)));
+    }
+    const Vec3 top = t.bottom_centre_body_m + t.height_m * t.axis_body;
+    const double farthest_m =
+        std::max((t.bottom_centre_body_m - s.chaser.com_body_m).norm(), (top - s.chaser.com_body_m).norm());
+    liquid_kg += t.liquid_mass_kg;
+    moment_kgm += t.liquid_mass_kg * farthest_m;
+    inertia_kgm2 += t.liquid_mass_kg * farthest_m * farthest_m;
+  }
+  if (overfull || !d.clean("chaser.mass_kg") || !d.clean("chaser.inertia_kgm2") || !d.clean("chaser.com_body_m"))
+    return;
+  if (!(liquid_kg < s.chaser.mass_kg)) {
+    d.add("chaser.slosh.tanks", fmt::format("hold {} kg of liquid: must be less than chaser.mass_kg {} (the "
+                                            "liquid is part of it)", format_number(liquid_kg),
+                                            format_number(s.chaser.mass_kg)));
+    return;
+  }
+  const double taken_kgm2 = inertia_kgm2 + moment_kgm * moment_kgm / (s.chaser.mass_kg - liquid_kg);
+  const double smallest_kgm2 =
+      Eigen::SelfAdjointEigenSolver<Mat3>(s.chaser.inertia_kgm2, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (!(taken_kgm2 < smallest_kgm2))
+    d.add("chaser.slosh.tanks",
+          fmt::format("their liquid may carry up to {} kg m^2 of the chaser's inertia, more than the smallest "
+                      "principal moment of chaser.inertia_kgm2 ({}), which includes it: move the tanks nearer "
+                      "chaser.com_body_m or check the inertia", format_number(taken_kgm2), format_number(smallest_kgm2)));
+}
+
 }  // namespace
 
 void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   check_timing(s, diag);
   check_inertia(s.chaser.inertia_kgm2, "chaser.inertia_kgm2", diag);
   check_earth_platform(s, diag);
+  check_slosh(s, diag);
   validate_thruster_set(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);

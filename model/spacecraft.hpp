@@ -1,9 +1,28 @@
 #pragma once
 #include <optional>
+#include <vector>
 
 #include "core/types.hpp"
 
 namespace chaser::model {
+
+// A propellant tank whose first lateral slosh mode the Earth-orbit plant models (issue 17;
+// plant/slosh.hpp): an upright flat-bottomed cylinder fixed in the chaser, the liquid's fill height
+// from its mass and density. Its liquid is part of the chaser's mass_kg, com_body_m and inertia_kgm2
+// (the whole spacecraft at rest); the plant takes the slosh mass back out of them.
+struct SloshTankSpec {
+  Vec3 bottom_centre_body_m = Vec3::Zero();  // [m] centre of the tank's bottom, from the reference point
+  Vec3 axis_body = Vec3::UnitZ();            // unit, bottom to top: the way the settling acceleration points
+  double radius_m = 0.4;                     // [m] R
+  double height_m = 1.0;                     // [m] the cylinder's height: the liquid must fit
+  double liquid_mass_kg = 100.0;             // [kg]
+  double density_kgpm3 = 1004.0;             // [kg/m^3] hydrazine at 25 C
+  double damping_ratio = 0.005;              // [-] zeta of the first mode (a bare tank: 0.001-0.01)
+};
+struct SloshParams {
+  double g_eff_mps2 = 0.01;  // [m/s^2] the axial acceleration that settles the liquid (sets omega1)
+  std::vector<SloshTankSpec> tanks;  // 1 to plant::kMaxSloshTanks (4)
+};
 
 // Rigid chaser body. Positions in the body frame are measured from the geometric reference point
 // (the origin of the thruster layout); the centre of mass sits at com_body_m from it.
@@ -12,6 +31,7 @@ struct SpacecraftParams {
   Mat3 inertia_kgm2 = Mat3::Identity();      // [kg m^2] about the centre of mass, body axes
   Vec3 com_body_m = Vec3::Zero();            // [m] centre of mass from the reference point
   double isp_s = 220.0;                      // [s] specific impulse of the thrusters
+  std::optional<SloshParams> slosh;          // propellant slosh (with orbit.earth only)
 };
 
 // COMRADE 2018, sec. 7.1: the ENVISAT-like target's spin cases at 2.5 deg/s (docs/scenario.md

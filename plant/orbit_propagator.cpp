@@ -10,14 +10,21 @@ namespace {
 
 // The integrated state in one fixed-size vector, so the RK4 combinations are plain vector
 // arithmetic: target r, v (0..5); relative dr, dv (6..11); chaser q (x, y, z, w), omega, m
-// (12..19); target q, omega (20..26).
-using StateVec = Eigen::Matrix<double, 27, 1>;
+// (12..19); target q, omega (20..26); slosh s, s_dot per tank (27..50, unused tanks zero).
+constexpr int kBase = 27;
+using StateVec = Eigen::Matrix<double, kBase + 6 * kMaxSloshTanks, 1>;
 constexpr int kRt = 0, kVt = 3, kDr = 6, kDv = 9, kQc = 12, kWc = 16, kM = 19, kQt = 20, kWt = 24;
+constexpr int slosh_s(int i) { return kBase + 6 * i; }
+constexpr int slosh_s_dot(int i) { return kBase + 6 * i + 3; }
 
 StateVec pack(const OrbitState& o, const RigidState& c) {
   StateVec y;
-  y << o.r_t_eci_m, o.v_t_eci_mps, o.dr_eci_m, o.dv_eci_mps, c.q_inertial_from_body.coeffs(), c.omega_body_radps,
-      c.mass_kg, o.q_inertial_from_target.coeffs(), o.omega_target_body_radps;
+  y.head<kBase>() << o.r_t_eci_m, o.v_t_eci_mps, o.dr_eci_m, o.dv_eci_mps, c.q_inertial_from_body.coeffs(),
+      c.omega_body_radps, c.mass_kg, o.q_inertial_from_target.coeffs(), o.omega_target_body_radps;
+  for (int i = 0; i < kMaxSloshTanks; ++i) {
+    y.segment<3>(slosh_s(i)) = o.slosh[static_cast<std::size_t>(i)].s_body_m;
+    y.segment<3>(slosh_s_dot(i)) = o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps;
+  }
   return y;
 }
 
@@ -31,6 +38,10 @@ void unpack(const StateVec& y, OrbitState& o, RigidState& c) {
   c.mass_kg = y[kM];
   o.q_inertial_from_target = Quat(Eigen::Vector4d(y.segment<4>(kQt))).normalized();
   o.omega_target_body_radps = y.segment<3>(kWt);
+  for (int i = 0; i < kMaxSloshTanks; ++i) {
+    o.slosh[static_cast<std::size_t>(i)].s_body_m = y.segment<3>(slosh_s(i));
+    o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps = y.segment<3>(slosh_s_dot(i));
+  }
 }
 
 // The Earth's magnetic field at r_eci_m, ECI.
@@ -77,6 +88,30 @@ OrbitAccelerations accelerations(const OrbitDynamicsParams& p, const PeriodEnvir
           .relative_eci_mps2 = g.relative_eci_mps2 + env.slow.relative_eci_mps2};
 }
 
+// The chaser's rotation and its slosh masses, coupled (slosh.hpp): the thrust and the disturbance
+// force act on the body (the chaser less its slosh masses), the torques, given about the whole
+// chaser's CoM at rest, are moved to the body's own.
+void slosh_derivative(const ChaserSloshParams& slosh, const PieceContext& c, const StateVec& y, const Quat& q_c,
+                      const Vec3& w_c, double mass_kg, const Vec3& torque_c_Nm, StateVec& dy) {
+  std::array<SloshState, kMaxSloshTanks> states;
+  for (int i = 0; i < slosh.count; ++i)
+    states[static_cast<std::size_t>(i)] = {y.segment<3>(slosh_s(i)), y.segment<3>(slosh_s_dot(i))};
+  const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
+                                .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
+                                .com_body_m = slosh.body_com_body_m};
+  const Vec3 force_body_N = c.u.force_body_N + q_c.conjugate() * (c.p.run_from_eci * c.force_dist_eci_N);
+  const Vec3 torque_body_Nm = torque_c_Nm + (slosh.com_body_m - slosh.body_com_body_m).cross(force_body_N);
+  const auto n = static_cast<std::size_t>(slosh.count);
+  const SloshAccelerations a = coupled_accelerations(body, std::span(slosh.tanks.data(), n),
+                                                     std::span<const SloshState>(states.data(), n), w_c,
+                                                     force_body_N, torque_body_Nm);
+  dy.segment<3>(kWc) = a.omega_dot_body_radps2;
+  for (int i = 0; i < slosh.count; ++i) {
+    dy.segment<3>(slosh_s(i)) = states[static_cast<std::size_t>(i)].s_dot_body_mps;
+    dy.segment<3>(slosh_s_dot(i)) = a.s_ddot_body_mps2[static_cast<std::size_t>(i)];
+  }
+}
+
 StateVec derivative(const PieceContext& c, const StateVec& y) {
   const OrbitDynamicsParams& p = c.p;
   const PeriodEnvironment& env = c.env;
@@ -103,8 +138,13 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
         return env.held ? env.field_chaser_eci_T : field_eci_T(env.eph, r_c);
       });
   dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
-  dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   dy[kM] = -c.u.mass_flow_kgps;
+  dy.tail<6 * kMaxSloshTanks>().setZero();
+  if (p.slosh.count == 0) {
+    dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
+  } else {
+    slosh_derivative(p.slosh, c, y, q_c, w_c, m, torque_c, dy);
+  }
 
   const Vec3 torque_t = environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
     return env.held ? env.field_target_eci_T : field_eci_T(env.eph, r_t);

@@ -9,6 +9,8 @@
 //   chaser:   dr' = dv,     dv' = a_rel(r_t, v_t, dr, dv) + F_eci / m      ECI, relative to the target
 //             q' = 1/2 q (x) (0, omega),  omega' = I^-1 (C - omega x I omega),  m' = -mass_flow
 //             C = thrusters + disturbances + gravity gradient + magnetic
+//             with slosh (ChaserSloshParams): omega' and each tank's s'' from the coupled equations
+//             of slosh.hpp instead, s' = s_dot; dv' unchanged (the whole chaser's CoM)
 //   target attitude: the same rigid-body equations with the target's inertia, gravity gradient and
 //             magnetic torque (torque-free when both are off): it tumbles, it does not turn at a
 //             constant rate.
@@ -20,6 +22,7 @@
 #include "plant/orbit_perturbations.hpp"
 #include "plant/propagator.hpp"
 #include "plant/rigid_body.hpp"
+#include "plant/slosh.hpp"
 
 namespace chaser::plant {
 
@@ -31,11 +34,26 @@ struct BodyTorqueParams {
   Vec3 residual_dipole_body_Am2 = Vec3::Zero();   // [A m^2] body axes
 };
 
+// The chaser's propellant slosh (plant/slosh.hpp): the tanks' first lateral modes as spring-masses
+// coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
+// centre of mass (slosh masses included), which internal forces do not move: F / m as without
+// slosh. The thrusters' torque comes about com_body_m, the whole chaser's CoM at rest, and is moved
+// to the body's (the chaser less its slosh masses) for the coupled equations.
+struct ChaserSloshParams {
+  int count = 0;  // tanks, 0..kMaxSloshTanks; 0: a rigid chaser
+  std::array<SloshTankParams, kMaxSloshTanks> tanks{};
+  double mass_kg = 0.0;                        // [kg] the slosh masses together
+  Mat3 body_inertia_kgm2 = Mat3::Identity();   // [kg m^2] the chaser less them, about body_com_body_m
+  Vec3 body_com_body_m = Vec3::Zero();         // [m] its centre of mass, from the reference point
+  Vec3 com_body_m = Vec3::Zero();              // [m] the whole chaser's at rest
+};
+
 struct OrbitDynamicsParams {
   OrbitPerturbationParams perturbations;
   double epoch_jd_tt = 2451545.0;         // [d] Julian date (TT) of t = 0
   Mat3 run_from_eci = Mat3::Identity();   // the run's inertial axes (target LVLH at t = 0) from ECI
   BodyTorqueParams chaser, target;
+  ChaserSloshParams slosh;
   double max_substep_s = kDefaultMaxSubstepS;  // [s] RK4 substep bound (> 0)
   // Hold drag, solar pressure, the third bodies and the magnetic field over a control period
   // (period_environment below); false evaluates them at every RK4 stage, the reference the test
@@ -52,6 +70,7 @@ struct OrbitState {
   Vec3 dv_eci_mps = Vec3::Zero();   // [m/s]
   Quat q_inertial_from_target = Quat::Identity();  // run inertial axes
   Vec3 omega_target_body_radps = Vec3::Zero();     // [rad/s] target's inertial rate, target axes
+  std::array<SloshState, kMaxSloshTanks> slosh{};  // the chaser's slosh masses, [0, slosh.count) used
 };
 
 // The environment of one control period. The ephemeris (the Sun, the Moon, the Earth's turn) is

@@ -78,6 +78,14 @@ const BadCase kBadCases[] = {
   {"target_mass", {"target.body.mass_kg=0"}, "target.body.mass_kg", "must be > 0 (got 0)"},
   {"target_inertia", {"target.body.inertia_kgm2=[[1,0,0],[0,1,0],[0,0,3]]"}, "target.body.inertia_kgm2", "triangle inequality"},
   {"unknown_key", {"orbit.earth.j3=1e-6"}, "orbit.earth.j3", "unknown key"},
+  {"g_eff", {"chaser.slosh.g_eff_mps2=0"}, "chaser.slosh.g_eff_mps2", "must be in (0, 10] (got 0)"},
+  {"no_tanks", {"chaser.slosh.tanks=[]"}, "chaser.slosh.tanks", "must be a list of 1 to 4 tanks"},
+  {"tank_radius", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: -0.4, height_m: 0.9, liquid_mass_kg: 150, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks.0.radius_m", "must be in (0, 10] (got -0.4)"},
+  {"tank_damping", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: 0.4, height_m: 0.9, liquid_mass_kg: 150, density_kgpm3: 1004, damping_ratio: 1}]"}, "chaser.slosh.tanks.0.damping_ratio", "must be in [0, 1) (got 1)"},
+  {"tank_axis", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,0], radius_m: 0.4, height_m: 0.9, liquid_mass_kg: 150, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks.0.axis_body", "must be a nonzero direction [x, y, z] (got [0, 0, 0])"},
+  {"overfull", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 1000, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks.0.liquid_mass_kg", "m of the tank, more than its height_m 0.9"},
+  {"liquid_heavier_than_chaser", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: 1.0, height_m: 1.0, liquid_mass_kg: 1700, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks", "hold 1700 kg of liquid: must be less than chaser.mass_kg 1600"},
+  {"tanks_too_far", {"chaser.slosh.tanks=[{bottom_centre_body_m: [5,0,0], axis_body: [0,0,1], radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 150, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks", "more than the smallest principal moment of chaser.inertia_kgm2 (1300)"},
 };
 // clang-format on
 
@@ -102,6 +110,28 @@ TEST(ComradeScenario, EarthOrbitAndTargetBodyComeTogether) {
                                            "grasp_point_target_m: [0,0,0], capture_point_target_m: [0,0,0]}"});
   EXPECT_TRUE(has_error(r, "orbit.earth", "must be given with target.body"));
   EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+// Slosh is part of the Earth-orbit plant: a circular-orbit file with chaser.slosh is told so.
+TEST(ComradeScenario, SloshNeedsTheEarthOrbit) {
+  const LoadResult r = load_scenario_file(testing::kMsrPath,
+                                          {"chaser.slosh={g_eff_mps2: 0.01, tanks: [{bottom_centre_body_m: [0,0,0], "
+                                           "axis_body: [0,0,1], radius_m: 0.4, height_m: 0.9, liquid_mass_kg: 100, "
+                                           "density_kgpm3: 1004, damping_ratio: 0.005}]}"});
+  EXPECT_TRUE(has_error(r, "chaser.slosh", "only with orbit.earth"));
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+// The shipped ENVISAT servicer's two tanks read as written.
+TEST(ComradeScenario, EnvisatChaserHasTwoSloshingTanks) {
+  const LoadResult r = load_scenario_file(kEnvisat, {});
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  ASSERT_TRUE(r.scenario->chaser.slosh.has_value());
+  const model::SloshParams& slosh = *r.scenario->chaser.slosh;
+  ASSERT_EQ(slosh.tanks.size(), 2u);
+  EXPECT_EQ(slosh.g_eff_mps2, 0.005);
+  EXPECT_EQ(slosh.tanks[1].bottom_centre_body_m, Vec3(-0.5, 0.0, -0.45));
+  EXPECT_EQ(slosh.tanks[0].liquid_mass_kg, 150.0);
 }
 
 }  // namespace

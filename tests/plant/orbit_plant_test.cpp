@@ -97,5 +97,40 @@ TEST(OrbitPlant, InterpolatedEphemerisFollowsTheModels) {
   EXPECT_LT(sun_m, 10.0);
 }
 
+// The slosh masses taken out of the chaser (chaser_slosh) and put back at rest give the scenario's
+// mass, centre of mass and inertia again, to rounding (1e-12 relative).
+TEST(OrbitPlant, SloshMassesAndTheBodyMakeTheWholeChaser) {
+  model::SpacecraftParams chaser;
+  chaser.mass_kg = 1600.0;
+  chaser.inertia_kgm2 << 1500.0, 12.0, -8.0, 12.0, 1700.0, 5.0, -8.0, 5.0, 1300.0;
+  chaser.com_body_m = Vec3(0.02, -0.01, 0.05);
+  chaser.slosh.emplace();
+  chaser.slosh->tanks.resize(2);
+  chaser.slosh->tanks[0].bottom_centre_body_m = Vec3(0.5, 0.1, -0.45);
+  chaser.slosh->tanks[1].bottom_centre_body_m = Vec3(-0.5, 0.0, -0.40);
+  chaser.slosh->tanks[1].axis_body = Vec3(0.0, 0.6, 0.8);
+  chaser.slosh->tanks[1].liquid_mass_kg = 220.0;
+  const ChaserSloshParams s = chaser_slosh(chaser);
+  ASSERT_EQ(s.count, 2);
+  const double body_kg = chaser.mass_kg - s.mass_kg;
+  double mass_kg = body_kg;
+  Vec3 moment_kgm = body_kg * s.body_com_body_m;
+  for (int i = 0; i < s.count; ++i) {
+    mass_kg += s.tanks[i].mass_kg;
+    moment_kgm += s.tanks[i].mass_kg * s.tanks[i].anchor_body_m;
+  }
+  const Vec3 com_m = moment_kgm / mass_kg;
+  const auto about_com = [&](double m, const Vec3& at) {
+    const Vec3 d = at - com_m;
+    return Mat3(m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
+  };
+  Mat3 inertia = s.body_inertia_kgm2 + about_com(body_kg, s.body_com_body_m);
+  for (int i = 0; i < s.count; ++i) inertia += about_com(s.tanks[i].mass_kg, s.tanks[i].anchor_body_m);
+  EXPECT_GT(s.mass_kg, 100.0);
+  EXPECT_NEAR(mass_kg, chaser.mass_kg, 1e-12 * chaser.mass_kg);
+  EXPECT_LT((com_m - chaser.com_body_m).norm(), 1e-12);
+  EXPECT_LT((inertia - chaser.inertia_kgm2).cwiseAbs().maxCoeff(), 1e-12 * 1700.0);
+}
+
 }  // namespace
 }  // namespace chaser::plant
