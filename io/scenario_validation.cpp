@@ -7,7 +7,6 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include "core/constants.hpp"
 #include "io/scenario_sections.hpp"
 
 namespace chaser::io {
@@ -195,7 +194,7 @@ void check_slosh(const model::Scenario& s, Diagnostics& d) {
   for (std::size_t i = 0; i < slosh.tanks.size(); ++i) {
     const model::SloshTankSpec& t = slosh.tanks[i];
     const std::string path = fmt::format("chaser.slosh.tanks.{}", i);
-    const double fill_m = t.liquid_mass_kg / (t.density_kgpm3 * kPi * t.radius_m * t.radius_m);
+    const double fill_m = model::fill_height_m(t);
     if (fill_m > t.height_m) {
       overfull = true;
       d.add(path + ".liquid_mass_kg",

@@ -2,6 +2,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "core/types.hpp"
 
 namespace chaser::model {
@@ -19,6 +20,11 @@ struct SloshTankSpec {
   double density_kgpm3 = 1004.0;             // [kg/m^3] hydrazine at 25 C
   double damping_ratio = 0.005;              // [-] zeta of the first mode (a bare tank: 0.001-0.01)
 };
+// The liquid's height in its tank, h = m / (rho pi R^2) [m].
+inline double fill_height_m(const SloshTankSpec& t) {
+  return t.liquid_mass_kg / (t.density_kgpm3 * kPi * t.radius_m * t.radius_m);
+}
+
 struct SloshParams {
   double g_eff_mps2 = 0.01;  // [m/s^2] the axial acceleration that settles the liquid (sets omega1)
   std::vector<SloshTankSpec> tanks;  // 1 to plant::kMaxSloshTanks (4)

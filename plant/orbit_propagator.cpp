@@ -91,8 +91,9 @@ OrbitAccelerations accelerations(const OrbitDynamicsParams& p, const PeriodEnvir
 // The chaser's rotation and its slosh masses, coupled (slosh.hpp): the thrust and the disturbance
 // force act on the body (the chaser less its slosh masses), the torques, given about the whole
 // chaser's CoM at rest, are moved to the body's own.
-void slosh_derivative(const ChaserSloshParams& slosh, const PieceContext& c, const StateVec& y, const Quat& q_c,
-                      const Vec3& w_c, double mass_kg, const Vec3& torque_c_Nm, StateVec& dy) {
+void slosh_derivative(const PieceContext& c, const StateVec& y, const Quat& q_c, const Vec3& w_c, double mass_kg,
+                      const Vec3& torque_c_Nm, StateVec& dy) {
+  const ChaserSloshParams& slosh = c.p.slosh;
   std::array<SloshState, kMaxSloshTanks> states;
   for (int i = 0; i < slosh.count; ++i)
     states[static_cast<std::size_t>(i)] = {y.segment<3>(slosh_s(i)), y.segment<3>(slosh_s_dot(i))};
@@ -143,7 +144,7 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
   if (p.slosh.count == 0) {
     dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   } else {
-    slosh_derivative(p.slosh, c, y, q_c, w_c, m, torque_c, dy);
+    slosh_derivative(c, y, q_c, w_c, m, torque_c, dy);
   }
 
   const Vec3 torque_t = environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
