@@ -1,6 +1,7 @@
 #include "plant/slosh.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -29,6 +30,9 @@ SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_ma
 }
 
 namespace {
+
+using Mat4 = Eigen::Matrix4d;
+using Vec4 = Eigen::Vector4d;
 
 std::size_t tank_count(std::span<const SloshTankParams> tanks, std::span<const SloshState> states) {
   return std::min({tanks.size(), states.size(), static_cast<std::size_t>(kMaxSloshTanks)});
@@ -61,42 +65,64 @@ Vec3 velocity_from_com(const MassTerms& t, const Vec3& omega) { return omega.cro
 SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, std::span<const SloshTankParams> tanks,
                                          std::span<const SloshState> states, const Vec3& omega,
                                          const Vec3& force, const Vec3& torque) {
+  // The header's 6x6 system A (a_c, omega') = rhs, A = diag(M, I) + sum m_i J_i J_i^T, solved through
+  // the axial forces instead (the Woodbury identity, read physically): with lambda known, the body's
+  // accelerations are explicit, and lambda solves a k x k system (k tanks). Per call this is a 3x3
+  // inverse and a 4x4 Cholesky instead of a 6x6 one; tests/plant/slosh_test.cpp holds it to the 6x6
+  // form to round-off.
   const std::size_t count = tank_count(tanks, states);
+  const Mat3 inertia_inv = body.inertia_com_body_kgm2.inverse();  // closed form (cofactors)
   std::array<MassTerms, kMaxSloshTanks> terms;
   std::array<Vec3, kMaxSloshTanks> centripetal_coriolis;  // w x (w x r_i) + 2 w x s_i'
+  std::array<Vec3, kMaxSloshTanks> turn;                  // I^-1 (r_i x n_i): omega' per unit lambda_i
 
-  // Body Newton-Euler with each mass's lambda_i eliminated (header): A (a_c, omega') = rhs, with
-  // A = diag(M, I) + sum m_i J_i J_i^T, J_i = (n_i, r_i x n_i), symmetric positive definite.
-  Mat6 a = Mat6::Zero();
-  a.topLeftCorner<3, 3>() = body.mass_kg * Mat3::Identity();
-  a.bottomRightCorner<3, 3>() = body.inertia_com_body_kgm2;
-  Vec6 rhs;
-  rhs.head<3>() = force;
-  rhs.tail<3>() = torque - omega.cross(body.inertia_com_body_kgm2 * omega);
+  // The springs alone (lambda = 0): a0 = (F - sum f_i) / M, w0' = I^-1 (T - w x I w - sum r_i x f_i).
+  Vec3 net_force = force;
+  Vec3 net_torque = torque - omega.cross(body.inertia_com_body_kgm2 * omega);
   for (std::size_t i = 0; i < count; ++i) {
-    const SloshTankParams& tank = tanks[i];
-    const MassTerms& t = terms[i] = mass_terms(body, tank, states[i]);
+    const MassTerms& t = terms[i] = mass_terms(body, tanks[i], states[i]);
     centripetal_coriolis[i] = omega.cross(omega.cross(t.r)) + 2.0 * omega.cross(t.s_dot);
-    Vec6 j;
-    j.head<3>() = tank.axis_body;
-    j.tail<3>() = t.r.cross(tank.axis_body);
-    const double b = tank.axis_body.dot(centripetal_coriolis[i]);
-    a.noalias() += tank.mass_kg * j * j.transpose();
-    rhs.head<3>() -= t.f + tank.mass_kg * b * tank.axis_body;
-    rhs.tail<3>() -= t.r.cross(t.f) + tank.mass_kg * b * j.tail<3>();
+    turn[i] = inertia_inv * t.r.cross(tanks[i].axis_body);
+    net_force -= t.f;
+    net_torque -= t.r.cross(t.f);
   }
-  const Vec6 x = Eigen::LLT<Mat6>(a).solve(rhs);
+  const double inv_mass = 1.0 / body.mass_kg;
+  const Vec3 a0 = inv_mass * net_force;
+  const Vec3 w0 = inertia_inv * net_torque;
+
+  // lambda_i / m_i = n_i . a_c + (r_i x n_i) . omega' + n_i . cc_i, with a_c = a0 - sum lambda_j n_j / M
+  // and omega' = w0' - sum lambda_j I^-1 (r_j x n_j):  (diag(1/m) + G) lambda = c, G symmetric positive
+  // semi-definite (G_ij = n_i . n_j / M + (r_i x n_i) . I^-1 (r_j x n_j)). Unused rows stay identity.
+  Mat4 g = Mat4::Identity();
+  Vec4 c = Vec4::Zero();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3& n_i = tanks[i].axis_body;
+    const Vec3 u_i = terms[i].r.cross(n_i);
+    const auto ii = static_cast<Eigen::Index>(i);
+    c[ii] = n_i.dot(a0 + centripetal_coriolis[i]) + u_i.dot(w0);
+    g(ii, ii) = 1.0 / tanks[i].mass_kg + inv_mass + u_i.dot(turn[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      g(ii, jj) = g(jj, ii) = inv_mass * n_i.dot(tanks[j].axis_body) + u_i.dot(turn[j]);
+    }
+  }
+  const Vec4 lambda = Eigen::LLT<Mat4>(g).solve(c);
 
   SloshAccelerations out;
-  out.a_com_body_mps2 = x.head<3>();
-  out.omega_dot_body_radps2 = x.tail<3>();
+  out.a_com_body_mps2 = a0;
+  out.omega_dot_body_radps2 = w0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double l = lambda[static_cast<Eigen::Index>(i)];
+    out.a_com_body_mps2 -= (l * inv_mass) * tanks[i].axis_body;
+    out.omega_dot_body_radps2 -= l * turn[i];
+  }
   for (std::size_t i = 0; i < count; ++i) {
     const SloshTankParams& tank = tanks[i];
     // The tank point under the mass, inertial acceleration: a_ref + w' x p + w x (w x p) + 2 w x s'
     // = a_c + w' x r + w x (w x r) + 2 w x s' (a_ref = a_c - w' x c - w x (w x c)).
     const Vec3 frame = out.a_com_body_mps2 + out.omega_dot_body_radps2.cross(terms[i].r) + centripetal_coriolis[i];
     out.s_ddot_body_mps2[i] = lateral(tank.axis_body, terms[i].f / tank.mass_kg - frame);
-    out.axial_force_N[i] = tank.mass_kg * tank.axis_body.dot(frame);
+    out.axial_force_N[i] = lambda[static_cast<Eigen::Index>(i)];  // = m_i n_i . frame
   }
   return out;
 }
