@@ -29,7 +29,7 @@ int run_command(const RunArgs& args) {
   model::Scenario scenario = *loaded->scenario;
   if (args.seed) scenario.seed = *args.seed;
   const std::vector<std::string> unmatched =
-      sim::unmatched_patterns(sim::telemetry_channels(scenario.thrusters.count), args.channels);
+      sim::unmatched_patterns(sim::telemetry_channels(sim::telemetry_shape(scenario)), args.channels);
   if (!unmatched.empty()) {
     std::cerr << fmt::format("chaser: --channels: {} match no telemetry channel (names as in telemetry.csv's "
                              "header, e.g. r_lvlh_*, ton_cmd_?, glr_*)\n",

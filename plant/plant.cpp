@@ -50,6 +50,11 @@ Quat target_attitude(const Plant& plant, double t_s) {
   return target_attitude(plant.params.target, t_s);
 }
 
+Vec3 target_rate_body(const Plant& plant, double t_s) {
+  if (plant.params.earth) return plant.state.orbit.omega_target_body_radps;
+  return target_attitude(plant.params.target, t_s).conjugate() * plant.params.target.omega_inertial_radps;
+}
+
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s) {
   if (!plant.params.earth) return circle.q_inertial_from_lvlh(t_s);
   return q_inertial_from_lvlh(plant.params.earth->dynamics, plant.state.orbit);

@@ -3,7 +3,8 @@
 
 Usage: /usr/bin/python3 python/plot_run.py RUN_DIR
 Reads RUN_DIR/telemetry.csv or telemetry.npy and RUN_DIR/summary.json; writes trajectory.png, attitude.png and
-thrusters.png into RUN_DIR.
+thrusters.png into RUN_DIR, and target.png (the target's body rates, and each tank's slosh displacement where
+the chaser has sloshing tanks) where the telemetry has the target's rates.
 """
 import json
 import sys
@@ -108,6 +109,31 @@ def plot_thrusters(t, summary, run_dir):
     plt.close(fig)
 
 
+def plot_target_and_slosh(t, summary, run_dir):
+    """The target's inertial rate in its body axes; below it, each slosh mass's lateral swing."""
+    tanks = sorted({int(name[5:name.index("_")]) for name in t.dtype.names
+                    if name.startswith("slosh") and name.endswith("_s_body_x_m")})
+    fig, axes = plt.subplots(2 if tanks else 1, 1, figsize=(10, 6 if tanks else 3.5), sharex=True, squeeze=False,
+                             constrained_layout=True)
+    axes = axes[:, 0]
+    for c in "xyz":
+        axes[0].plot(t["t_s"], np.degrees(t[f"omega_target_body_{c}_radps"]), lw=0.8, label=f"body {c}")
+    axes[0].set_ylabel("target rate [deg/s]")
+    for i in tanks:
+        for c in "xyz":
+            axes[1].plot(t["t_s"], 1e3 * t[f"slosh{i}_s_body_{c}_m"], lw=0.8, label=f"tank {i}, body {c}")
+    if tanks:
+        axes[1].set_ylabel("slosh mass displacement [mm]")
+    axes[-1].set_xlabel("time [s]")
+    for ax in axes:
+        fault_lines(ax, summary)
+        ax.grid(True, lw=0.3)
+        ax.legend(loc="best", fontsize=7, ncol=2)
+    fig.suptitle(f"{summary['scenario']}: the target's rotation" + (" and the propellant's slosh" if tanks else ""))
+    fig.savefig(run_dir / "target.png", dpi=110)
+    plt.close(fig)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -116,7 +142,11 @@ def main():
     plot_trajectory(telemetry, summary, run_dir)
     plot_attitude(telemetry, summary, run_dir)
     plot_thrusters(telemetry, summary, run_dir)
-    print(f"  plots: {run_dir / 'trajectory.png'}, {run_dir / 'attitude.png'}, {run_dir / 'thrusters.png'}")
+    written = [run_dir / name for name in ("trajectory.png", "attitude.png", "thrusters.png")]
+    if "omega_target_body_x_radps" in telemetry.dtype.names:
+        plot_target_and_slosh(telemetry, summary, run_dir)
+        written.append(run_dir / "target.png")
+    print("  plots: " + ", ".join(str(p) for p in written))
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 #include "sim/run.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -122,8 +123,9 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   std::unique_ptr<TelemetryWriter> telemetry;
   std::vector<TelemetryChannel> channels;
   const bool every_channel = options.telemetry_channels.empty();  // the whole table, record_every_channel
+  const TelemetryShape shape = telemetry_shape(scenario);
   if (!options.telemetry_path.empty()) {
-    channels = select_channels(telemetry_channels(scenario.thrusters.count), options.telemetry_channels);
+    channels = select_channels(telemetry_channels(shape), options.telemetry_channels);
     telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
   }
 
@@ -145,8 +147,11 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
     const MonitorSample sample =
         monitor_sample(t_s, plant::q_inertial_from_lvlh(plant, orbit, t_s), truth, out.reference);
-    // The target's attitude at t_k, for telemetry, before the plant steps past it.
+    // The target's attitude and rate and the slosh at t_k, for telemetry, before the plant steps past them.
     const Quat q_inertial_from_target = telemetry ? plant::target_attitude(plant, t_s) : Quat::Identity();
+    const Vec3 omega_target_body_radps = telemetry ? plant::target_rate_body(plant, t_s) : Vec3::Zero();
+    std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
+    if (shape.slosh_tanks > 0 && telemetry) slosh = plant.state.orbit.slosh;
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
@@ -166,8 +171,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
           .flight_state = &flight_state,
           .watched = &watched,
           .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
-          .q_inertial_from_target = q_inertial_from_target};
-      if (every_channel) record_every_channel(record, scenario.thrusters.count, telemetry->new_row().data());
+          .q_inertial_from_target = q_inertial_from_target,
+          .omega_target_body_radps = omega_target_body_radps,
+          .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape.slosh_tanks))};
+      if (every_channel) record_every_channel(record, shape, telemetry->new_row().data());
       else record_period(*telemetry, channels, record);
     }
   }

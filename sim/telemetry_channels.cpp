@@ -56,7 +56,13 @@ void fdi_scheme(Channels& t, const char* name, int s) {
 
 }  // namespace
 
-std::vector<TelemetryChannel> telemetry_channels(int thrusters) {
+TelemetryShape telemetry_shape(const model::Scenario& scenario) {
+  const auto& slosh = scenario.chaser.slosh;
+  return {.thrusters = scenario.thrusters.count, .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0};
+}
+
+std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
+  const int thrusters = shape.thrusters;
   Channels t;
   scalar(t, "t", "s", [](const PeriodRecord& r, int) { return r.t_s; });
   vec3(t, "r_lvlh", "m", [](const PeriodRecord& r, int i) { return r.truth->r_lvlh_m[i]; });
@@ -64,6 +70,7 @@ std::vector<TelemetryChannel> telemetry_channels(int thrusters) {
   quat(t, "q_inertial_from_body", [](const PeriodRecord& r, int i) { return component(r.truth->q_inertial_from_body, i); });
   vec3(t, "omega_body", "radps", [](const PeriodRecord& r, int i) { return r.truth->omega_body_radps[i]; });
   quat(t, "q_inertial_from_target", [](const PeriodRecord& r, int i) { return component(r.q_inertial_from_target, i); });
+  vec3(t, "omega_target_body", "radps", [](const PeriodRecord& r, int i) { return r.omega_target_body_radps[i]; });
   vec3(t, "r_est_lvlh", "m", [](const PeriodRecord& r, int i) { return r.flight->estimate.r_lvlh_m[i]; });
   vec3(t, "v_est_lvlh", "mps", [](const PeriodRecord& r, int i) { return r.flight->estimate.v_lvlh_mps[i]; });
   quat(t, "q_est_inertial_from_body",
@@ -92,6 +99,19 @@ std::vector<TelemetryChannel> telemetry_channels(int thrusters) {
   scalar(t, "delay", "s", [](const PeriodRecord& r, int) { return to_seconds(r.plant->last_delay_ns); });
   scalar(t, "mass", "kg", [](const PeriodRecord& r, int) { return r.truth->mass_kg; });
   scalar(t, "propellant_used", "kg", [](const PeriodRecord& r, int) { return r.plant->propellant_used_kg; });
+  // Per tank: the index packs the tank and the axis, 3 tank + axis.
+  for (int tank = 0; tank < shape.slosh_tanks; ++tank) {
+    for (int i = 0; i < 3; ++i)
+      t.push_back({fmt::format("slosh{}_s_body_{}_m", tank + 1, "xyz"[i]), "m",
+                   [](const PeriodRecord& r, int k) { return r.slosh[static_cast<std::size_t>(k / 3)].s_body_m[k % 3]; },
+                   3 * tank + i});
+    for (int i = 0; i < 3; ++i)
+      t.push_back({fmt::format("slosh{}_s_dot_body_{}_mps", tank + 1, "xyz"[i]), "mps",
+                   [](const PeriodRecord& r, int k) {
+                     return r.slosh[static_cast<std::size_t>(k / 3)].s_dot_body_mps[k % 3];
+                   },
+                   3 * tank + i});
+  }
   return t;
 }
 
@@ -145,7 +165,8 @@ void record_period(TelemetryWriter& w, const std::vector<TelemetryChannel>& chan
   for (std::size_t i = 0; i < channels.size(); ++i) row[i] = channels[i].value(r, channels[i].index);
 }
 
-void record_every_channel(const PeriodRecord& r, int thrusters, double* row) {
+void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, double* row) {
+  const int thrusters = shape.thrusters;
   const auto put3 = [&row](const Vec3& v) { row[0] = v.x(), row[1] = v.y(), row[2] = v.z(), row += 3; };
   const auto put4 = [&row](const Quat& q) { row[0] = q.w(), row[1] = q.x(), row[2] = q.y(), row[3] = q.z(), row += 4; };
   const flight::FlightOutput& f = *r.flight;
@@ -155,6 +176,7 @@ void record_every_channel(const PeriodRecord& r, int thrusters, double* row) {
   put4(r.truth->q_inertial_from_body);
   put3(r.truth->omega_body_radps);
   put4(r.q_inertial_from_target);
+  put3(r.omega_target_body_radps);
   put3(f.estimate.r_lvlh_m);
   put3(f.estimate.v_lvlh_mps);
   put4(f.estimate.q_inertial_from_body);
@@ -181,6 +203,10 @@ void record_every_channel(const PeriodRecord& r, int thrusters, double* row) {
   *row++ = to_seconds(r.plant->last_delay_ns);
   *row++ = r.truth->mass_kg;
   *row++ = r.plant->propellant_used_kg;
+  for (int tank = 0; tank < shape.slosh_tanks; ++tank) {
+    put3(r.slosh[static_cast<std::size_t>(tank)].s_body_m);
+    put3(r.slosh[static_cast<std::size_t>(tank)].s_dot_body_mps);
+  }
 }
 
 }  // namespace chaser::sim

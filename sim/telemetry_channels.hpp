@@ -2,12 +2,14 @@
 // The channels of telemetry.csv as one table: each channel's name, unit and how its value is read
 // from a period's record, so the header and every row come from the same list and cannot drift
 // apart. The table is built once per run for the scenario's thruster count.
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/types.hpp"
 #include "flight/flight_software.hpp"
+#include "model/scenario.hpp"
 #include "plant/plant.hpp"
 #include "sim/telemetry.hpp"
 
@@ -24,8 +26,17 @@ struct PeriodRecord {
   const flight::FlightState* flight_state = nullptr;
   const flight::fdi::WatchedSet* watched = nullptr;
   Vec3 attitude_error_body_rad = Vec3::Zero();    // [rad] truth against the reference
-  Quat q_inertial_from_target = Quat::Identity();
+  Quat q_inertial_from_target = Quat::Identity();   // at the period start
+  Vec3 omega_target_body_radps = Vec3::Zero();      // [rad/s] the target's inertial rate, its body axes
+  std::span<const plant::SloshState> slosh;         // each tank's slosh state at the period start
 };
+
+// What the table has channels for, from the scenario: its thrusters and its slosh tanks.
+struct TelemetryShape {
+  int thrusters = 0;    // ton_cmd_1..N, ton_real_1..N
+  int slosh_tanks = 0;  // slosh1_s_body_x_m .. per tank of chaser.slosh (none without it)
+};
+TelemetryShape telemetry_shape(const model::Scenario& scenario);
 
 struct TelemetryChannel {
   std::string name;  // the CSV column: quantity, then axis or thruster number, then unit ("r_lvlh_x_m")
@@ -34,10 +45,12 @@ struct TelemetryChannel {
   int index = 0;     // vector component, or thruster index 0..N-1, passed to value
 };
 
-// Every channel for a set of `thrusters` thrusters, in column order. Thruster channels are numbered
+// Every channel for a scenario of that shape, in column order. Thruster channels are numbered
 // T1..TN (ton_cmd_1 .. ton_cmd_N); the FDI's candidate and confirmed thrusters are numbers 1..N,
-// 0 for none; active_thrusters is the active set's mask (bit i: T(i+1)).
-std::vector<TelemetryChannel> telemetry_channels(int thrusters);
+// 0 for none; active_thrusters is the active set's mask (bit i: T(i+1)). Slosh channels follow the
+// tanks' order in chaser.slosh.tanks: slosh1_s_body_x_m (the mass's displacement from its rest
+// point, chaser body axes) and slosh1_s_dot_body_x_mps (its rate in the body frame).
+std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape);
 
 std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);
 
@@ -54,9 +67,9 @@ std::vector<std::string> unmatched_patterns(const std::vector<TelemetryChannel>&
 // One row: every channel's value, in table order.
 void record_period(TelemetryWriter& writer, const std::vector<TelemetryChannel>& channels, const PeriodRecord& record);
 
-// The same row for the whole table of telemetry_channels(thrusters), the usual case, written in
+// The same row for the whole table of telemetry_channels(shape), the usual case, written in
 // straight-line code: the table's call per channel cost 2,500 instructions a period, a sixth of
 // the loop. `row` holds the table's size. Its reference and test is the table, channel by channel.
-void record_every_channel(const PeriodRecord& record, int thrusters, double* row);
+void record_every_channel(const PeriodRecord& record, const TelemetryShape& shape, double* row);
 
 }  // namespace chaser::sim

@@ -16,7 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "io/scenario_loader.hpp"
+#include "plant/orbit_plant.hpp"
 #include "sim/run.hpp"
 #include "sim/telemetry_channels.hpp"
 #include "tests/sim/thruster_layouts.hpp"
@@ -60,7 +62,7 @@ TEST_P(TelemetryTable, EveryChannelHasAFiniteValueInEveryRow) {
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
   const std::vector<std::string> header = split(line);
-  EXPECT_EQ(header, channel_names(telemetry_channels(count)));
+  EXPECT_EQ(header, channel_names(telemetry_channels({.thrusters = count})));
   EXPECT_EQ(std::set<std::string>(header.begin(), header.end()).size(), header.size()) << "duplicate channel names";
   EXPECT_EQ(header.front(), "t_s");
   EXPECT_NE(std::find(header.begin(), header.end(), fmt::format("ton_cmd_{}", count)), header.end());
@@ -108,9 +110,64 @@ TEST_P(TelemetryTable, EveryChannelRowIsTheTablesRow) {
   std::filesystem::remove_all(dir);
 }
 
+// The COMRADE chaser's channels (24 thrusters, two sloshing tanks, a tumbling target): the
+// straight-line row against the table, byte for byte, and what the new channels hold. Row 0's target
+// rate is the spin case's initial condition, bit for bit (S1: 2.5 deg/s about body +Y); the slosh
+// masses move only across their tanks' axes (+z here: the constraint holds s_z and s'_z at
+// round-off), and the run's thrusting sets them swinging.
+TEST(TelemetryTable, ComradeRowsCarryTargetRatesAndSlosh) {
+  const io::LoadResult loaded = io::load_scenario_file("scenarios/comrade_envisat.yaml", {"duration_s=30"});
+  ASSERT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
+  const model::Scenario& s = *loaded.scenario;
+  const TelemetryShape shape = telemetry_shape(s);
+  ASSERT_EQ(shape.thrusters, 24);
+  ASSERT_EQ(shape.slosh_tanks, 2);
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_every_channel_comrade";
+  std::filesystem::create_directories(dir);
+  const RunResult fast = run_scenario(s, {.telemetry_path = (dir / "fast.csv").string(), .telemetry_channels = {}});
+  const RunResult table = run_scenario(s, {.telemetry_path = (dir / "table.csv").string(), .telemetry_channels = {"*"}});
+  ASSERT_TRUE(fast.telemetry_ok && table.telemetry_ok);
+  std::ifstream fast_in(dir / "fast.csv"), table_in(dir / "table.csv");
+  const std::string fast_text((std::istreambuf_iterator<char>(fast_in)), std::istreambuf_iterator<char>());
+  const std::string table_text((std::istreambuf_iterator<char>(table_in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(fast_text, table_text);
+
+  std::stringstream lines(fast_text);
+  std::string line;
+  ASSERT_TRUE(std::getline(lines, line));
+  const std::vector<std::string> header = split(line);
+  EXPECT_EQ(header, channel_names(telemetry_channels(shape)));
+  const auto column = [&header](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(it, header.end()) << name;
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  std::vector<std::vector<double>> rows;
+  while (std::getline(lines, line)) {
+    std::vector<double> row;
+    for (const std::string& f : split(line)) row.push_back(std::strtod(f.c_str(), nullptr));
+    rows.push_back(row);
+  }
+  ASSERT_EQ(static_cast<std::int64_t>(rows.size()), fast.periods);
+  const Vec3 spin = plant::initial_target_spin(s.target).omega_target_body_radps;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(rows.front()[column(fmt::format("omega_target_body_{}_radps", "xyz"[i]))], spin[i]);
+  EXPECT_NEAR(spin.norm(), 2.5 * kPi / 180.0, 1e-15);
+  double swing_m = 0.0;
+  for (const std::vector<double>& row : rows)
+    for (int tank = 1; tank <= 2; ++tank) {
+      EXPECT_LT(std::abs(row[column(fmt::format("slosh{}_s_body_z_m", tank))]), 1e-12);
+      EXPECT_LT(std::abs(row[column(fmt::format("slosh{}_s_dot_body_z_mps", tank))]), 1e-12);
+      swing_m = std::max({swing_m, std::abs(row[column(fmt::format("slosh{}_s_body_x_m", tank))]),
+                          std::abs(row[column(fmt::format("slosh{}_s_body_y_m", tank))])});
+    }
+  EXPECT_GT(swing_m, 1e-6);
+  std::filesystem::remove_all(dir);
+}
+
 // Units: every name ends with its unit (or has none), so a reader can take the unit from the name.
 TEST(TelemetryTable, NamesEndWithTheirUnit) {
-  for (const TelemetryChannel& c : telemetry_channels(16)) {
+  for (const TelemetryChannel& c : telemetry_channels({.thrusters = 16, .slosh_tanks = 2})) {
     if (c.unit.empty()) continue;
     const std::string suffix = "_" + c.unit;
     ASSERT_GE(c.name.size(), suffix.size());
@@ -161,7 +218,7 @@ TEST(TelemetryFile, CsvAndNpyOfARunHoldTheSameDoublesAsTheRun) {
 
 // --channels: the chosen channels and t_s, in table order.
 TEST(TelemetryFile, ChannelSelectionKeepsTableOrderAndTime) {
-  const std::vector<TelemetryChannel> all = telemetry_channels(16);
+  const std::vector<TelemetryChannel> all = telemetry_channels({.thrusters = 16});
   const std::vector<TelemetryChannel> some = select_channels(all, {"ton_cmd_1?", "r_lvlh_*"});
   std::vector<std::string> names = channel_names(some);
   EXPECT_EQ(names, (std::vector<std::string>{"t_s", "r_lvlh_x_m", "r_lvlh_y_m", "r_lvlh_z_m", "ton_cmd_10",
