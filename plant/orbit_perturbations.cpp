@@ -73,8 +73,8 @@ Vec3 target_acceleration_eci(const OrbitPerturbationParams& p, const Ephemeris& 
 
 OrbitAccelerations gravity_accelerations(const earth::GravityParams& gravity, const Vec3& r_t_eci_m,
                                          const Vec3& dr_eci_m) {
-  return {.target_eci_mps2 = earth::gravity_acceleration_eci(gravity, r_t_eci_m),
-          .relative_eci_mps2 = earth::differential_gravity_eci(gravity, r_t_eci_m, dr_eci_m)};
+  const earth::GravityPair g = earth::gravity_pair_eci(gravity, r_t_eci_m, dr_eci_m);
+  return {.target_eci_mps2 = g.target_eci_mps2, .relative_eci_mps2 = g.relative_eci_mps2};
 }
 
 OrbitAccelerations slow_accelerations(const OrbitPerturbationParams& p, const Ephemeris& eph, const Vec3& r_t_eci_m,

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "core/constants.hpp"
 #include "plant/earth/inertial_orbit.hpp"
 #include "plant/earth/magnetic_field.hpp"
@@ -96,6 +98,7 @@ ChaserSloshParams chaser_slosh(const model::SpacecraftParams& chaser) {
     const SloshTankParams& t = out.tanks[static_cast<std::size_t>(i)];
     out.body_inertia_kgm2 -= point_inertia(t.mass_kg, t.anchor_body_m - chaser.com_body_m);
   }
+  out.body_inertia_inv_kgm2 = out.body_inertia_kgm2.inverse();
   return out;
 }
 

@@ -103,7 +103,7 @@ void slosh_derivative(const PieceContext& c, const StateVec& y, const Quat& q_c,
   const Vec3 force_body_N = c.u.force_body_N + q_c.conjugate() * (c.p.run_from_eci * c.force_dist_eci_N);
   const Vec3 torque_body_Nm = torque_c_Nm + (slosh.com_body_m - slosh.body_com_body_m).cross(force_body_N);
   const auto n = static_cast<std::size_t>(slosh.count);
-  const SloshAccelerations a = coupled_accelerations(body, std::span(slosh.tanks.data(), n),
+  const SloshAccelerations a = coupled_accelerations(body, slosh.body_inertia_inv_kgm2, std::span(slosh.tanks.data(), n),
                                                      std::span<const SloshState>(states.data(), n), w_c,
                                                      force_body_N, torque_body_Nm);
   dy.segment<3>(kWc) = a.omega_dot_body_radps2;

@@ -44,6 +44,7 @@ struct ChaserSloshParams {
   std::array<SloshTankParams, kMaxSloshTanks> tanks{};
   double mass_kg = 0.0;                        // [kg] the slosh masses together
   Mat3 body_inertia_kgm2 = Mat3::Identity();   // [kg m^2] the chaser less them, about body_com_body_m
+  Mat3 body_inertia_inv_kgm2 = Mat3::Identity();  // [1/(kg m^2)] its inverse
   Vec3 body_com_body_m = Vec3::Zero();         // [m] its centre of mass, from the reference point
   Vec3 com_body_m = Vec3::Zero();              // [m] the whole chaser's at rest
 };

@@ -22,14 +22,25 @@ struct RigidState {
   double mass_kg = 0.0;                            // [kg] must be set (> 0) before propagating
 };
 
+// Both are defined here, inline: every Runge-Kutta stage of both plants calls them, and a call
+// into another translation unit cost more than their dozen multiplications.
+
 // Euler's equations (Fonod 2015, eq. 13). Returns omega' [rad/s^2], body axes.
-Vec3 euler_angular_acceleration_body(const Mat3& inertia_kgm2, const Mat3& inertia_inv, const Vec3& omega_body_radps,
-                                     const Vec3& torque_body_Nm);
+inline Vec3 euler_angular_acceleration_body(const Mat3& inertia_kgm2, const Mat3& inertia_inv,
+                                            const Vec3& omega_body_radps, const Vec3& torque_body_Nm) {
+  return inertia_inv * (torque_body_Nm - omega_body_radps.cross(inertia_kgm2 * omega_body_radps));
+}
 
 // Quaternion kinematics q' = 1/2 q (x) (0, omega), returned in Quat::coeffs() order (x, y, z, w).
 // Valid for a non-unit q as well (it is then the same linear map), which keeps a Runge-Kutta stage
 // that leaves the unit sphere smooth; the norm of the exact solution is preserved.
-Eigen::Vector4d quat_derivative(const Quat& q_inertial_from_body, const Vec3& omega_body_radps);
+inline Eigen::Vector4d quat_derivative(const Quat& q_inertial_from_body, const Vec3& omega_body_radps) {
+  // q (x) (0, w) = (-q.vec . w, q.w w + q.vec x w)
+  const Quat& q = q_inertial_from_body;
+  const Vec3& w = omega_body_radps;
+  const Vec3 dvec = 0.5 * (q.w() * w + q.vec().cross(w));
+  return Eigen::Vector4d(dvec.x(), dvec.y(), dvec.z(), -0.5 * q.vec().dot(w));
+}
 
 // Invariants of torque-free motion, for tests and telemetry.
 Vec3 angular_momentum_inertial(const Mat3& inertia_kgm2, const Quat& q_inertial_from_body,

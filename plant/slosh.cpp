@@ -57,6 +57,17 @@ MassTerms mass_terms(const RigidBodyMassProps& body, const SloshTankParams& tank
   return t;
 }
 
+// lambda from (diag(1/m) + G) lambda = c, symmetric positive definite: Cramer's rule for one or
+// two tanks (the common case), Cholesky for more (unused rows are identity and zero).
+Vec4 solve_axial_forces(const Mat4& g, const Vec4& c, std::size_t count) {
+  if (count == 1) return Vec4(c[0] / g(0, 0), 0.0, 0.0, 0.0);
+  if (count == 2) {
+    const double det = g(0, 0) * g(1, 1) - g(0, 1) * g(0, 1);  // > 0: positive definite
+    return Vec4((g(1, 1) * c[0] - g(0, 1) * c[1]) / det, (g(0, 0) * c[1] - g(0, 1) * c[0]) / det, 0.0, 0.0);
+  }
+  return Eigen::LLT<Mat4>(g).solve(c);
+}
+
 // The mass's inertial velocity less the body CoM's, body axes: omega x r + s'.
 Vec3 velocity_from_com(const MassTerms& t, const Vec3& omega) { return omega.cross(t.r) + t.s_dot; }
 
@@ -65,13 +76,18 @@ Vec3 velocity_from_com(const MassTerms& t, const Vec3& omega) { return omega.cro
 SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, std::span<const SloshTankParams> tanks,
                                          std::span<const SloshState> states, const Vec3& omega,
                                          const Vec3& force, const Vec3& torque) {
+  return coupled_accelerations(body, body.inertia_com_body_kgm2.inverse(), tanks, states, omega, force, torque);
+}
+
+SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const Mat3& inertia_inv,
+                                         std::span<const SloshTankParams> tanks, std::span<const SloshState> states,
+                                         const Vec3& omega, const Vec3& force, const Vec3& torque) {
   // The header's 6x6 system A (a_c, omega') = rhs, A = diag(M, I) + sum m_i J_i J_i^T, solved through
   // the axial forces instead (the Woodbury identity, read physically): with lambda known, the body's
-  // accelerations are explicit, and lambda solves a k x k system (k tanks). Per call this is a 3x3
-  // inverse and a 4x4 Cholesky instead of a 6x6 one; tests/plant/slosh_test.cpp holds it to the 6x6
-  // form to round-off.
+  // accelerations are explicit, and lambda solves a k x k system (k tanks): one or two tanks in
+  // closed form, more by a 4x4 Cholesky, instead of a 6x6 one; tests/plant/slosh_test.cpp holds it
+  // to the 6x6 form to round-off.
   const std::size_t count = tank_count(tanks, states);
-  const Mat3 inertia_inv = body.inertia_com_body_kgm2.inverse();  // closed form (cofactors)
   std::array<MassTerms, kMaxSloshTanks> terms;
   std::array<Vec3, kMaxSloshTanks> centripetal_coriolis;  // w x (w x r_i) + 2 w x s_i'
   std::array<Vec3, kMaxSloshTanks> turn;                  // I^-1 (r_i x n_i): omega' per unit lambda_i
@@ -106,7 +122,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, std::sp
       g(ii, jj) = g(jj, ii) = inv_mass * n_i.dot(tanks[j].axis_body) + u_i.dot(turn[j]);
     }
   }
-  const Vec4 lambda = Eigen::LLT<Mat4>(g).solve(c);
+  const Vec4 lambda = solve_axial_forces(g, c, count);
 
   SloshAccelerations out;
   out.a_com_body_mps2 = a0;

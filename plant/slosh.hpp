@@ -121,6 +121,11 @@ static_assert(kMaxSloshTanks == 4, "SloshAccelerations::s_ddot_body_mps2 zeroes 
 SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, std::span<const SloshTankParams> tanks,
                                          std::span<const SloshState> states, const Vec3& omega_body_radps,
                                          const Vec3& force_body_N, const Vec3& torque_body_Nm);
+// The same, with the body's inverse inertia given (the plant forms it once per run, not per call).
+SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const Mat3& inertia_inv_com_body,
+                                         std::span<const SloshTankParams> tanks, std::span<const SloshState> states,
+                                         const Vec3& omega_body_radps, const Vec3& force_body_N,
+                                         const Vec3& torque_body_Nm);
 
 // Invariants of the free system (tests, telemetry). v_com_inertial_mps: the body's CoM velocity,
 // inertial axes. The angular momentum is about the system's centre of mass, inertial axes.

@@ -47,9 +47,11 @@ void drop_finished(ValveSchedule& valve, TimeNs t_k) {
 TimeNs pulse_length_ns(const ThrusterHardware& hw, const ThrusterFaultEffect& effect, double ton) {
   const double period = static_cast<double>(hw.period_ns);
   const double ton_clamped = ton > 0.0 ? std::min(ton, 1.0) : 0.0;  // also maps NaN to 0
-  TimeNs on_ns = std::llround(ton_clamped * period);
+  // Most thrusters are off in most periods and have no leak: no rounding for them (llround(0) = 0).
+  TimeNs on_ns = ton_clamped > 0.0 ? std::llround(ton_clamped * period) : 0;
   if (on_ns < hw.min_on_ns) on_ns = 0;
-  return std::max(on_ns, static_cast<TimeNs>(std::llround(effect.ton_floor * period)));
+  if (effect.ton_floor > 0.0) on_ns = std::max(on_ns, static_cast<TimeNs>(std::llround(effect.ton_floor * period)));
+  return on_ns;
 }
 
 // Adds the open interval [open, open + length) to the valve's union; returns the open time added.

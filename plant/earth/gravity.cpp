@@ -17,11 +17,26 @@ Vec3 j2_acceleration(const GravityParams& g, const Vec3& r) {
   return k * Vec3(r.x() * (1.0 - 5.0 * z2_r2), r.y() * (1.0 - 5.0 * z2_r2), r.z() * (3.0 - 5.0 * z2_r2));
 }
 
+// The central terms alone: -mu r / |r|^3, and a(r + d) - a(r) as below.
+Vec3 central_acceleration(const GravityParams& g, const Vec3& r_eci_m) {
+  const double rn = r_eci_m.norm();
+  return -g.mu_m3ps2 / (rn * rn * rn) * r_eci_m;
+}
+
+Vec3 central_difference(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
+  // Central: -mu (r + d) / |r + d|^3 + mu r / |r|^3 = -mu / |r + d|^3 [d - f(q) r], since
+  // |r + d|^3 / |r|^3 = (1 + q)^(3/2) with q = (2 r.d + d.d) / |r|^2 (Battin 1999, sec. 8.4): a
+  // sum of small terms, no two nearly equal accelerations subtracted.
+  const double r2 = r_eci_m.squaredNorm();
+  const double q = (2.0 * r_eci_m.dot(dr_eci_m) + dr_eci_m.squaredNorm()) / r2;
+  const double rd = (r_eci_m + dr_eci_m).norm();
+  return -g.mu_m3ps2 / (rd * rd * rd) * (dr_eci_m - battin_f(q) * r_eci_m);
+}
+
 }  // namespace
 
 Vec3 gravity_acceleration_eci(const GravityParams& g, const Vec3& r_eci_m) {
-  const double rn = r_eci_m.norm();
-  return -g.mu_m3ps2 / (rn * rn * rn) * r_eci_m + j2_acceleration(g, r_eci_m);
+  return central_acceleration(g, r_eci_m) + j2_acceleration(g, r_eci_m);
 }
 
 double gravity_potential_energy(const GravityParams& g, const Vec3& r_eci_m) {
@@ -32,14 +47,13 @@ double gravity_potential_energy(const GravityParams& g, const Vec3& r_eci_m) {
 }
 
 Vec3 differential_gravity_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
-  // Central: -mu (r + d) / |r + d|^3 + mu r / |r|^3 = -mu / |r + d|^3 [d - f(q) r], since
-  // |r + d|^3 / |r|^3 = (1 + q)^(3/2) with q = (2 r.d + d.d) / |r|^2 (Battin 1999, sec. 8.4): a
-  // sum of small terms, no two nearly equal accelerations subtracted.
-  const double r2 = r_eci_m.squaredNorm();
-  const double q = (2.0 * r_eci_m.dot(dr_eci_m) + dr_eci_m.squaredNorm()) / r2;
-  const double rd = (r_eci_m + dr_eci_m).norm();
-  const Vec3 central = -g.mu_m3ps2 / (rd * rd * rd) * (dr_eci_m - battin_f(q) * r_eci_m);
-  return central + (j2_acceleration(g, r_eci_m + dr_eci_m) - j2_acceleration(g, r_eci_m));
+  return central_difference(g, r_eci_m, dr_eci_m) + (j2_acceleration(g, r_eci_m + dr_eci_m) - j2_acceleration(g, r_eci_m));
+}
+
+GravityPair gravity_pair_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
+  const Vec3 j2_target = j2_acceleration(g, r_eci_m);
+  return {.target_eci_mps2 = central_acceleration(g, r_eci_m) + j2_target,
+          .relative_eci_mps2 = central_difference(g, r_eci_m, dr_eci_m) + (j2_acceleration(g, r_eci_m + dr_eci_m) - j2_target)};
 }
 
 double nodal_regression_radps(const GravityParams& g, double semi_major_axis_m, double inclination_rad) {

@@ -28,6 +28,14 @@ double gravity_potential_energy(const GravityParams& g, const Vec3& r_eci_m);  /
 // thousandth of it, by plain difference. What a chaser metres from its target feels.
 Vec3 differential_gravity_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m);
 
+// Both at once, the target's J2 term formed once (what the propagator asks at every RK4 stage):
+// the same bits as gravity_acceleration_eci(r) and differential_gravity_eci(r, dr).
+struct GravityPair {
+  Vec3 target_eci_mps2;    // a(r)
+  Vec3 relative_eci_mps2;  // a(r + dr) - a(r)
+};
+GravityPair gravity_pair_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m);
+
 // Secular drift of the ascending node from J2 for a near-circular orbit of semi-major axis a and
 // inclination i (Vallado 2013, eq. 9-41 with e = 0): -3/2 n J2 (R / a)^2 cos i [rad/s].
 double nodal_regression_radps(const GravityParams& g, double semi_major_axis_m, double inclination_rad);

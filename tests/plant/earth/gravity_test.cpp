@@ -120,5 +120,15 @@ TEST(EarthGravity, SunSynchronousNodeRegressesAsTheClosedForm) {
   EXPECT_NEAR(drift / span_s / wanted_radps, 1.0, 0.01);
 }
 
+// gravity_pair_eci forms the target's J2 term once for both; it must be the two functions' bits.
+TEST(EarthGravity, PairIsBothAccelerationsBitForBit) {
+  const Vec3 r(6.9e6, -1.2e6, 2.3e6);
+  for (const Vec3& d : {Vec3(30.0, -12.0, 4.0), Vec3(1e-3, 2e-3, -5e-4), Vec3(-800.0, 250.0, 90.0)}) {
+    const GravityPair pair = gravity_pair_eci(kEarth, r, d);
+    EXPECT_EQ(pair.target_eci_mps2, gravity_acceleration_eci(kEarth, r));
+    EXPECT_EQ(pair.relative_eci_mps2, differential_gravity_eci(kEarth, r, d));
+  }
+}
+
 }  // namespace
 }  // namespace chaser::plant::earth
