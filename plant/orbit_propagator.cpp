@@ -133,11 +133,11 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
   dy.segment<3>(kDv) = a.relative_eci_mps2 + (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
 
   const double mu = p.perturbations.gravity.mu_m3ps2;
-  const Vec3 r_c = r_t + dr;
   const Vec3 torque_c =
-      c.u.torque_body_Nm + environment_torque_body(p.chaser, mu, p.run_from_eci, q_c, r_c, [&] {
-        return env.held ? env.field_chaser_eci_T : field_eci_T(env.eph, r_c);
-      });
+      c.u.torque_body_Nm +
+      (env.held ? env.torque_chaser_body_Nm : environment_torque_body(p.chaser, mu, p.run_from_eci, q_c, r_t + dr, [&] {
+        return field_eci_T(env.eph, r_t + dr);
+      }));
   dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
   dy[kM] = -c.u.mass_flow_kgps;
   dy.tail<6 * kMaxSloshTanks>().setZero();
@@ -147,8 +147,8 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
     slosh_derivative(c, y, q_c, w_c, m, torque_c, dy);
   }
 
-  const Vec3 torque_t = environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
-    return env.held ? env.field_target_eci_T : field_eci_T(env.eph, r_t);
+  const Vec3 torque_t = env.held ? env.torque_target_body_Nm : environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
+    return field_eci_T(env.eph, r_t);
   });
   dy.segment<4>(kQt) = quat_derivative(q_t, w_t);
   dy.segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
@@ -165,7 +165,7 @@ LvlhOfTarget target_lvlh(const OrbitDynamicsParams& p, const PeriodEnvironment& 
 }  // namespace
 
 PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
-                                     double period_s) {
+                                     const RigidState& chaser, double period_s) {
   PeriodEnvironment env;
   env.eph = eph_mid;
   if (!p.hold_slow_environment) return env;
@@ -180,6 +180,22 @@ PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemer
   env.slow = slow_accelerations(p.perturbations, eph_mid, r_t, v_t, dr, orbit.dv_eci_mps);
   if (p.target.magnetic) env.field_target_eci_T = field_eci_T(eph_mid, r_t);
   if (p.chaser.magnetic) env.field_chaser_eci_T = field_eci_T(eph_mid, r_t + dr);
+  // Each body's attitude at the midpoint, to first order (its error, (w dt)^2 / 8, is the held
+  // torque's own order).
+  const auto attitude_at_midpoint = [half_s](const Quat& q, const Vec3& omega_body_radps) {
+    Quat mid;
+    mid.coeffs() = q.coeffs() + half_s * quat_derivative(q, omega_body_radps);
+    return mid.normalized();
+  };
+  const double mu = p.perturbations.gravity.mu_m3ps2;
+  env.torque_target_body_Nm =
+      environment_torque_body(p.target, mu, p.run_from_eci,
+                              attitude_at_midpoint(orbit.q_inertial_from_target, orbit.omega_target_body_radps), r_t,
+                              [&] { return env.field_target_eci_T; });
+  env.torque_chaser_body_Nm =
+      environment_torque_body(p.chaser, mu, p.run_from_eci,
+                              attitude_at_midpoint(chaser.q_inertial_from_body, chaser.omega_body_radps), r_t + dr,
+                              [&] { return env.field_chaser_eci_T; });
   return env;
 }
 

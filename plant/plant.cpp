@@ -39,7 +39,8 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
     params.earth = make_orbit_plant_params(scenario);
     state.orbit = initial_orbit_state(scenario, *params.earth, initial.r_lvlh_m, initial.v_lvlh_mps);
     const OrbitDynamicsParams& dynamics = params.earth->dynamics;
-    update_lvlh_view(dynamics, period_environment(dynamics, ephemeris_at_run_time(*params.earth, 0.0), state.orbit, 0.0),
+    update_lvlh_view(dynamics,
+                     period_environment(dynamics, ephemeris_at_run_time(*params.earth, 0.0), state.orbit, state.rigid, 0.0),
                      state.orbit, state.rigid);
   }
   return Plant{std::move(params), std::move(state)};
@@ -94,7 +95,7 @@ void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const Th
                       const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k, TimeNs period_ns) {
   const double period_s = to_seconds(period_ns);
   const Ephemeris eph_mid = ephemeris_at_run_time(earth, to_seconds(t_k) + 0.5 * period_s, state.ephemeris);
-  const PeriodEnvironment env = period_environment(earth.dynamics, eph_mid, state.orbit, period_s);
+  const PeriodEnvironment env = period_environment(earth.dynamics, eph_mid, state.orbit, state.rigid, period_s);
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
     const PieceInput input = piece_input(piece, torque_dist_body_Nm, force_dist_lvlh_N);

@@ -231,9 +231,9 @@ TEST(OrbitPropagator, TorqueFreeTargetConservesMomentumAndEnergy) {
   EXPECT_LT(std::abs(E - E0) / E0, 1e-10);
 }
 
-// Holding drag, solar pressure, the third bodies and the field over a 0.1 s period at its midpoint
-// (hold_slow_environment, what the plant does) against evaluating them at every RK4 stage (the
-// reference), one orbit with every model on: ENVISAT tumbling at 2.5 deg/s, the chaser 100 m
+// Holding drag, solar pressure, the third bodies, the field and the environment's torques over a
+// 0.1 s period at its midpoint (hold_slow_environment, what the plant does) against evaluating them
+// at every RK4 stage (the reference), one orbit with every model on: ENVISAT tumbling at 2.5 deg/s, the chaser 100 m
 // behind with half its ballistic coefficient and more area per mass, so that differential drag
 // and pressure move it (1.6-1.9 m over the orbit), both with residual dipoles.
 struct HoldComparison {
@@ -265,8 +265,8 @@ HoldComparison compare_hold_with_every_stage(bool eclipses) {
   const int periods = static_cast<int>(orbit_s / 0.1);
   for (int k = 0; k < periods; ++k) {
     const Ephemeris eph_mid = ephemeris_at(epoch_jd + 0.1 * (k + 0.5) / 86400.0);
-    const PeriodEnvironment env_held = period_environment(held, eph_mid, o_held, 0.1);
-    const PeriodEnvironment env_ref = period_environment(reference, eph_mid, o_ref, 0.1);
+    const PeriodEnvironment env_held = period_environment(held, eph_mid, o_held, c_held, 0.1);
+    const PeriodEnvironment env_ref = period_environment(reference, eph_mid, o_ref, c_ref, 0.1);
     EXPECT_TRUE(env_held.held && !env_ref.held);
     propagate_orbit_piece(held, env_held, o_held, c_held, 0.1, PieceInput{});
     propagate_orbit_piece(reference, env_ref, o_ref, c_ref, 0.1, PieceInput{});
@@ -284,15 +284,19 @@ HoldComparison compare_hold_with_every_stage(bool eclipses) {
 }
 
 // Without the Earth's shadow every held term is smooth and the midpoint rule's error is second
-// order, ~(3 n dt)^2 / 8 ~ 1e-8 of the terms: the chaser's relative motion agrees to 1.6e-8 m of
-// 1.6 m, the target's orbit to 4e-9 m, the attitudes to 3e-10 rad (the torques' own lag: the
-// field's direction is held, the attitude that turns it is not). Bounds 1e-6 m, 1e-6 m, 1e-8 rad.
+// order, ~(3 n dt)^2 / 8 ~ 1e-8 of the forces: the chaser's relative motion agrees to 1.6e-8 m of
+// 1.6 m, the target's orbit to 4e-9 m. The torques turn with the bodies, ~(w dt)^2 / 8 ~ 2e-6 of
+// themselves for the target at 2.5 deg/s, an impulse error that cancels over each turn: the
+// target's attitude after the orbit (about 15 turns, and a flip about its intermediate axis)
+// agrees to 1.7e-7 rad, the slowly turning chaser's to 2.7e-9 rad. Both are far inside what the
+// torque model leaves out (J2's part of the gradient, 1e-3 of it). Bounds 1e-6 m, 1e-6 m, 1e-6 rad
+// (target), 1e-8 rad (chaser).
 TEST(OrbitPropagator, HeldSlowEnvironmentMatchesEveryStageToSecondOrder) {
   const HoldComparison c = compare_hold_with_every_stage(false);
   EXPECT_GT(c.moved_m, 1.0);
   EXPECT_LT(c.dr_m, 1e-6);
   EXPECT_LT(c.target_m, 1e-6);
-  EXPECT_LT(c.target_rad, 1e-8);
+  EXPECT_LT(c.target_rad, 1e-6);
   EXPECT_LT(c.chaser_rad, 1e-8);
 }
 
@@ -300,12 +304,13 @@ TEST(OrbitPropagator, HeldSlowEnvironmentMatchesEveryStageToSecondOrder) {
 // crossing; evaluated every stage, within the RK4 step (neither resolves the instant, and the
 // cylindrical shadow itself puts it ~4 s early or late: the real penumbra takes ~8 s to cross in
 // LEO). The difference, 2.8e-5 m of 1.9 m after two crossings, is the period's resolution of the
-// switch, 40 x finer than the shadow model's. Bounds 1e-4 m and 1e-4 m (the target's orbit, 1e-5 m).
+// switch, 40 x finer than the shadow model's. Bounds 1e-4 m and 1e-4 m (the target's orbit, 1e-5 m);
+// the attitudes as above.
 TEST(OrbitPropagator, HeldSlowEnvironmentResolvesTheShadowToThePeriod) {
   const HoldComparison c = compare_hold_with_every_stage(true);
   EXPECT_LT(c.dr_m, 1e-4);
   EXPECT_LT(c.target_m, 1e-4);
-  EXPECT_LT(c.target_rad, 1e-8);
+  EXPECT_LT(c.target_rad, 1e-6);
   EXPECT_LT(c.chaser_rad, 1e-8);
 }
 
