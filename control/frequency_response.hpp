@@ -3,7 +3,8 @@
 // independent of SLICOT: the check on what hinf_synthesis reports.
 //
 //   G(j omega) = C (j omega I - A)^-1 B + D,   sigma_max(omega) = largest singular value of G(j omega)
-//   ||G||_inf = sup_omega sigma_max(omega)        (for a stable G; Zhou, Doyle, Glover 1996, sec. 4.3)
+//   ||G||_inf = sup_omega sigma_max(omega)        (for a stable G; Zhou, Doyle, Glover, "Robust and
+//                                                 Optimal Control", 1996, on H2 and H-inf spaces)
 //
 // The norm estimate is a sweep, not Bruinsma & Steinbuch's Hamiltonian bisection: a log grid over a
 // range taken from the pole magnitudes, with the frequency of every pole added to the grid (so a

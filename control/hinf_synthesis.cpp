@@ -192,7 +192,8 @@ HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_
                   "SB10AD returned INFO = " + std::to_string(info) + " (a validation gap in synthesise)", info);
   if (info > 0) {
     const HinfStatus status = kStatusOfInfo[static_cast<std::size_t>(info - 1)];
-    HinfResult r = refuse(status, std::string("SB10AD INFO = ") + std::to_string(info) + ": " + to_string(status), info);
+    HinfResult r =
+        refuse(status, std::string("SB10AD INFO = ") + std::to_string(info) + ": " + to_string(status), info);
     r.rcond = rcond;
     return r;
   }

@@ -3,10 +3,10 @@
 //
 //   x' = a x + b u,   y = c x + d u                                            (StateSpace)
 //
-// Lower LFT (Zhou, Doyle, Glover, "Robust and Optimal Control", 1996, sec. 10.1; Skogestad &
-// Postlethwaite, "Multivariable Feedback Control", 2nd ed., 2005, sec. 3.8.1, eq. 3.111): the
-// generalised plant P has inputs [w; u] and outputs [z; y], where u (n_ctrl) is the control input
-// and y (n_meas) the measurement. Partitioned conformally,
+// Lower LFT (Skogestad & Postlethwaite, "Multivariable Feedback Control", 2nd ed., 2005, sec. 3.8;
+// Zhou, Doyle, Glover, "Robust and Optimal Control", 1996, the chapter on linear fractional
+// transformations): the generalised plant P has inputs [w; u] and outputs [z; y], where u
+// (n_ctrl) is the control input and y (n_meas) the measurement. Partitioned conformally,
 //
 //   P = [ A  | B1  B2  ]      K = [ Ak | Bk ]      u = K y,
 //       [ C1 | D11 D12 ]          [ Ck | Dk ]
@@ -14,7 +14,7 @@
 //
 // and F_l(P, K) is the closed loop from w to z. D22 != 0 is handled: with
 // R = (I - D22 Dk)^-1 (n_meas x n_meas) and R~ = (I - Dk D22)^-1 (n_ctrl x n_ctrl), the closed loop
-// on the state [x; xk] is (Zhou, Doyle, Glover, Lemma 10.1 written out):
+// on the state [x; xk] is (the loop equations solved for u and y; derivation in state_space.cpp):
 //
 //   Acl = [ A + B2 R~ Dk C2     B2 R~ Ck            ]   Bcl = [ B1 + B2 R~ Dk D21 ]
 //         [ Bk R C2             Ak + Bk R D22 Ck    ]         [ Bk R D21          ]

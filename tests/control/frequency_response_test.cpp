@@ -70,7 +70,8 @@ TEST(FrequencyResponse, NormOfLightlyDampedSecondOrderIsItsResonancePeak) {
     const HinfNormEstimate est = hinf_norm_estimate(second_order(omega_n, zeta));
     const double expected = 1.0 / (2.0 * zeta * std::sqrt(1.0 - zeta * zeta));
     const double relative = std::abs(est.norm - expected) / expected;
-    std::printf("zeta %.0e: norm %.15g, closed form %.15g, relative %.1e, omega %.12g (expected %.12g), %d evaluations\n",
+    std::printf("zeta %.0e: norm %.15g, closed form %.15g, relative %.1e, omega %.12g (expected %.12g), "
+                "%d evaluations\n",
                 zeta, est.norm, expected, relative, est.omega_peak_radps, omega_n * std::sqrt(1.0 - 2.0 * zeta * zeta),
                 est.evaluations);
     EXPECT_LE(relative, 1e-12) << "zeta = " << zeta;

@@ -64,7 +64,8 @@ TEST(MixedSensitivity, LftOfThePlantIsTheWeightedSensitivityStack) {
 
 TEST(MixedSensitivity, AbsentWeightsLeaveTheirRowsOut) {
   const StateSpace g = testing::skogestad_siso_plant();
-  const GeneralisedPlant gp = mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}});
+  const GeneralisedPlant gp =
+      mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}});
   EXPECT_EQ(gp.p.states(), 4);   // G's 3 + W_S's 1
   EXPECT_EQ(gp.p.outputs(), 3);  // z = [W_S e; W_KS u], then e
   EXPECT_EQ(gp.p.inputs(), 2);   // [r; u]
