@@ -10,37 +10,42 @@ namespace {
 
 // The integrated state in one fixed-size vector, so the RK4 combinations are plain vector
 // arithmetic: target r, v (0..5); relative dr, dv (6..11); chaser q (x, y, z, w), omega, m
-// (12..19); target q, omega (20..26); slosh s, s_dot per tank (27..50, unused tanks zero).
+// (12..19); target q, omega (20..26); slosh s, s_dot per tank (27.., Tanks of them: the tanks
+// flown rounded up to 0, 2 or 4, a padding tank zero). Sized by the tanks so that a rigid chaser
+// does not carry 24 zeros through every RK4 combination.
 constexpr int kBase = 27;
-using StateVec = Eigen::Matrix<double, kBase + 6 * kMaxSloshTanks, 1>;
+template <int Tanks>
+using StateVec = Eigen::Matrix<double, kBase + 6 * Tanks, 1>;
 constexpr int kRt = 0, kVt = 3, kDr = 6, kDv = 9, kQc = 12, kWc = 16, kM = 19, kQt = 20, kWt = 24;
 constexpr int slosh_s(int i) { return kBase + 6 * i; }
 constexpr int slosh_s_dot(int i) { return kBase + 6 * i + 3; }
 
-StateVec pack(const OrbitState& o, const RigidState& c) {
-  StateVec y;
-  y.head<kBase>() << o.r_t_eci_m, o.v_t_eci_mps, o.dr_eci_m, o.dv_eci_mps, c.q_inertial_from_body.coeffs(),
+template <int Tanks>
+StateVec<Tanks> pack(const OrbitState& o, const RigidState& c) {
+  StateVec<Tanks> y;
+  y.template head<kBase>() << o.r_t_eci_m, o.v_t_eci_mps, o.dr_eci_m, o.dv_eci_mps, c.q_inertial_from_body.coeffs(),
       c.omega_body_radps, c.mass_kg, o.q_inertial_from_target.coeffs(), o.omega_target_body_radps;
-  for (int i = 0; i < kMaxSloshTanks; ++i) {
-    y.segment<3>(slosh_s(i)) = o.slosh[static_cast<std::size_t>(i)].s_body_m;
-    y.segment<3>(slosh_s_dot(i)) = o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps;
+  for (int i = 0; i < Tanks; ++i) {
+    y.template segment<3>(slosh_s(i)) = o.slosh[static_cast<std::size_t>(i)].s_body_m;
+    y.template segment<3>(slosh_s_dot(i)) = o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps;
   }
   return y;
 }
 
-void unpack(const StateVec& y, OrbitState& o, RigidState& c) {
-  o.r_t_eci_m = y.segment<3>(kRt);
-  o.v_t_eci_mps = y.segment<3>(kVt);
-  o.dr_eci_m = y.segment<3>(kDr);
-  o.dv_eci_mps = y.segment<3>(kDv);
-  c.q_inertial_from_body = Quat(Eigen::Vector4d(y.segment<4>(kQc))).normalized();
-  c.omega_body_radps = y.segment<3>(kWc);
+template <int Tanks>
+void unpack(const StateVec<Tanks>& y, OrbitState& o, RigidState& c) {
+  o.r_t_eci_m = y.template segment<3>(kRt);
+  o.v_t_eci_mps = y.template segment<3>(kVt);
+  o.dr_eci_m = y.template segment<3>(kDr);
+  o.dv_eci_mps = y.template segment<3>(kDv);
+  c.q_inertial_from_body = Quat(Eigen::Vector4d(y.template segment<4>(kQc))).normalized();
+  c.omega_body_radps = y.template segment<3>(kWc);
   c.mass_kg = y[kM];
-  o.q_inertial_from_target = Quat(Eigen::Vector4d(y.segment<4>(kQt))).normalized();
-  o.omega_target_body_radps = y.segment<3>(kWt);
-  for (int i = 0; i < kMaxSloshTanks; ++i) {
-    o.slosh[static_cast<std::size_t>(i)].s_body_m = y.segment<3>(slosh_s(i));
-    o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps = y.segment<3>(slosh_s_dot(i));
+  o.q_inertial_from_target = Quat(Eigen::Vector4d(y.template segment<4>(kQt))).normalized();
+  o.omega_target_body_radps = y.template segment<3>(kWt);
+  for (int i = 0; i < Tanks; ++i) {
+    o.slosh[static_cast<std::size_t>(i)].s_body_m = y.template segment<3>(slosh_s(i));
+    o.slosh[static_cast<std::size_t>(i)].s_dot_body_mps = y.template segment<3>(slosh_s_dot(i));
   }
 }
 
@@ -91,12 +96,13 @@ OrbitAccelerations accelerations(const OrbitDynamicsParams& p, const PeriodEnvir
 // The chaser's rotation and its slosh masses, coupled (slosh.hpp): the thrust and the disturbance
 // force act on the body (the chaser less its slosh masses), the torques, given about the whole
 // chaser's CoM at rest, are moved to the body's own.
-void slosh_derivative(const PieceContext& c, const StateVec& y, const Quat& q_c, const Vec3& w_c, double mass_kg,
-                      const Vec3& torque_c_Nm, StateVec& dy) {
+template <int Tanks>
+void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Quat& q_c, const Vec3& w_c,
+                      double mass_kg, const Vec3& torque_c_Nm, StateVec<Tanks>& dy) {
   const ChaserSloshParams& slosh = c.p.slosh;
   std::array<SloshState, kMaxSloshTanks> states;
   for (int i = 0; i < slosh.count; ++i)
-    states[static_cast<std::size_t>(i)] = {y.segment<3>(slosh_s(i)), y.segment<3>(slosh_s_dot(i))};
+    states[static_cast<std::size_t>(i)] = {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))};
   const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
                                 .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
                                 .com_body_m = slosh.body_com_body_m};
@@ -106,31 +112,32 @@ void slosh_derivative(const PieceContext& c, const StateVec& y, const Quat& q_c,
   const SloshAccelerations a = coupled_accelerations(body, slosh.body_inertia_inv_kgm2, std::span(slosh.tanks.data(), n),
                                                      std::span<const SloshState>(states.data(), n), w_c,
                                                      force_body_N, torque_body_Nm);
-  dy.segment<3>(kWc) = a.omega_dot_body_radps2;
+  dy.template segment<3>(kWc) = a.omega_dot_body_radps2;
   for (int i = 0; i < slosh.count; ++i) {
-    dy.segment<3>(slosh_s(i)) = states[static_cast<std::size_t>(i)].s_dot_body_mps;
-    dy.segment<3>(slosh_s_dot(i)) = a.s_ddot_body_mps2[static_cast<std::size_t>(i)];
+    dy.template segment<3>(slosh_s(i)) = states[static_cast<std::size_t>(i)].s_dot_body_mps;
+    dy.template segment<3>(slosh_s_dot(i)) = a.s_ddot_body_mps2[static_cast<std::size_t>(i)];
   }
 }
 
-StateVec derivative(const PieceContext& c, const StateVec& y) {
+template <int Tanks>
+StateVec<Tanks> derivative(const PieceContext& c, const StateVec<Tanks>& y) {
   const OrbitDynamicsParams& p = c.p;
   const PeriodEnvironment& env = c.env;
-  const Vec3 r_t = y.segment<3>(kRt), v_t = y.segment<3>(kVt);
-  const Vec3 dr = y.segment<3>(kDr), dv = y.segment<3>(kDv);
-  const Quat q_c(Eigen::Vector4d(y.segment<4>(kQc)));
-  const Vec3 w_c = y.segment<3>(kWc);
+  const Vec3 r_t = y.template segment<3>(kRt), v_t = y.template segment<3>(kVt);
+  const Vec3 dr = y.template segment<3>(kDr), dv = y.template segment<3>(kDv);
+  const Quat q_c(Eigen::Vector4d(y.template segment<4>(kQc)));
+  const Vec3 w_c = y.template segment<3>(kWc);
   const double m = y[kM];
-  const Quat q_t(Eigen::Vector4d(y.segment<4>(kQt)));
-  const Vec3 w_t = y.segment<3>(kWt);
+  const Quat q_t(Eigen::Vector4d(y.template segment<4>(kQt)));
+  const Vec3 w_t = y.template segment<3>(kWt);
 
   const Vec3 thrust_eci_N = c.eci_from_run * (q_c * c.u.force_body_N);
   const OrbitAccelerations a = accelerations(p, env, r_t, v_t, dr, dv);
-  StateVec dy;
-  dy.segment<3>(kRt) = v_t;
-  dy.segment<3>(kVt) = a.target_eci_mps2;
-  dy.segment<3>(kDr) = dv;
-  dy.segment<3>(kDv) = a.relative_eci_mps2 + (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
+  StateVec<Tanks> dy;
+  dy.template segment<3>(kRt) = v_t;
+  dy.template segment<3>(kVt) = a.target_eci_mps2;
+  dy.template segment<3>(kDr) = dv;
+  dy.template segment<3>(kDv) = a.relative_eci_mps2 + (thrust_eci_N + c.force_dist_eci_N) * (1.0 / m);
 
   const double mu = p.perturbations.gravity.mu_m3ps2;
   const Vec3 torque_c =
@@ -138,21 +145,36 @@ StateVec derivative(const PieceContext& c, const StateVec& y) {
       (env.held ? env.torque_chaser_body_Nm : environment_torque_body(p.chaser, mu, p.run_from_eci, q_c, r_t + dr, [&] {
         return field_eci_T(env.eph, r_t + dr);
       }));
-  dy.segment<4>(kQc) = quat_derivative(q_c, w_c);
+  dy.template segment<4>(kQc) = quat_derivative(q_c, w_c);
   dy[kM] = -c.u.mass_flow_kgps;
-  dy.tail<6 * kMaxSloshTanks>().setZero();
+  if constexpr (Tanks > 0) dy.template tail<6 * Tanks>().setZero();
   if (p.slosh.count == 0) {
-    dy.segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
+    dy.template segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   } else {
-    slosh_derivative(c, y, q_c, w_c, m, torque_c, dy);
+    slosh_derivative<Tanks>(c, y, q_c, w_c, m, torque_c, dy);
   }
 
   const Vec3 torque_t = env.held ? env.torque_target_body_Nm : environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
     return field_eci_T(env.eph, r_t);
   });
-  dy.segment<4>(kQt) = quat_derivative(q_t, w_t);
-  dy.segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
+  dy.template segment<4>(kQt) = quat_derivative(q_t, w_t);
+  dy.template segment<3>(kWt) = euler_angular_acceleration_body(p.target.inertia_kgm2, p.target.inertia_inv, w_t, torque_t);
   return dy;
+}
+
+// steps classical RK4 steps of h [s] each.
+template <int Tanks>
+void rk4_steps(const PieceContext& ctx, OrbitState& orbit, RigidState& chaser, int steps, double h) {
+  using State = StateVec<Tanks>;
+  State y = pack<Tanks>(orbit, chaser);
+  for (int i = 0; i < steps; ++i) {
+    const State k1 = derivative<Tanks>(ctx, y);
+    const State k2 = derivative<Tanks>(ctx, y + (0.5 * h) * k1);
+    const State k3 = derivative<Tanks>(ctx, y + (0.5 * h) * k2);
+    const State k4 = derivative<Tanks>(ctx, y + h * k3);
+    y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+  unpack<Tanks>(y, orbit, chaser);
 }
 
 LvlhOfTarget target_lvlh(const OrbitDynamicsParams& p, const PeriodEnvironment& env, const OrbitState& o) {
@@ -210,16 +232,15 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
     force_dist_eci_N = target_lvlh(p, env, orbit).lvlh_from_eci.transpose() * u.force_lvlh_N;
   }
   const PieceContext ctx{p, env, u, eci_from_run, force_dist_eci_N};
-
-  StateVec y = pack(orbit, chaser);
-  for (int i = 0; i < steps; ++i) {  // classical RK4
-    const StateVec k1 = derivative(ctx, y);
-    const StateVec k2 = derivative(ctx, y + (0.5 * h) * k1);
-    const StateVec k3 = derivative(ctx, y + (0.5 * h) * k2);
-    const StateVec k4 = derivative(ctx, y + h * k3);
-    y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  // The state's size: the tanks flown rounded up to 0, 2 or 4 (kMaxSloshTanks).
+  static_assert(kMaxSloshTanks == 4);
+  if (p.slosh.count == 0) {
+    rk4_steps<0>(ctx, orbit, chaser, steps, h);
+  } else if (p.slosh.count <= 2) {
+    rk4_steps<2>(ctx, orbit, chaser, steps, h);
+  } else {
+    rk4_steps<4>(ctx, orbit, chaser, steps, h);
   }
-  unpack(y, orbit, chaser);
 }
 
 void update_lvlh_view(const OrbitDynamicsParams& p, const PeriodEnvironment& env, const OrbitState& orbit,

@@ -38,8 +38,9 @@ std::size_t tank_count(std::span<const SloshTankParams> tanks, std::span<const S
   return std::min({tanks.size(), states.size(), static_cast<std::size_t>(kMaxSloshTanks)});
 }
 
-// The lateral part of v: P v = v - n (n . v).
-Vec3 lateral(const Vec3& n, const Vec3& v) { return v - n * n.dot(v); }
+// The lateral part of v: P v = v - n (n . v). Forced inline, like mass_terms: GCC kept both as
+// calls, a tenth of the kernel's time.
+[[gnu::always_inline]] inline Vec3 lateral(const Vec3& n, const Vec3& v) { return v - n * n.dot(v); }
 
 // One mass's kinematics and spring-damper force, with s and s' on the constraint.
 struct MassTerms {
@@ -48,7 +49,8 @@ struct MassTerms {
   Vec3 f;         // [N] spring-damper force on the mass
 };
 
-MassTerms mass_terms(const RigidBodyMassProps& body, const SloshTankParams& tank, const SloshState& state) {
+[[gnu::always_inline]] inline MassTerms mass_terms(const RigidBodyMassProps& body, const SloshTankParams& tank,
+                                                  const SloshState& state) {
   MassTerms t;
   t.s = lateral(tank.axis_body, state.s_body_m);
   t.s_dot = lateral(tank.axis_body, state.s_dot_body_mps);
