@@ -162,17 +162,26 @@ StateVec<Tanks> derivative(const PieceContext& c, const StateVec<Tanks>& y) {
   return dy;
 }
 
-// steps classical RK4 steps of h [s] each.
+// steps classical RK4 steps of h [s] each; or, for one short step (third_order), Kutta's
+// third-order method: k2 at h/2, k3 at h from y - h k1 + 2 h k2, weights 1/6, 4/6, 1/6.
 template <int Tanks>
-void rk4_steps(const PieceContext& ctx, OrbitState& orbit, RigidState& chaser, int steps, double h) {
+void integrate_piece(const PieceContext& ctx, OrbitState& orbit, RigidState& chaser, int steps, double h,
+                     bool third_order) {
   using State = StateVec<Tanks>;
   State y = pack<Tanks>(orbit, chaser);
-  for (int i = 0; i < steps; ++i) {
+  if (third_order) {
     const State k1 = derivative<Tanks>(ctx, y);
     const State k2 = derivative<Tanks>(ctx, y + (0.5 * h) * k1);
-    const State k3 = derivative<Tanks>(ctx, y + (0.5 * h) * k2);
-    const State k4 = derivative<Tanks>(ctx, y + h * k3);
-    y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    const State k3 = derivative<Tanks>(ctx, y + h * (2.0 * k2 - k1));
+    y += (h / 6.0) * (k1 + 4.0 * k2 + k3);
+  } else {
+    for (int i = 0; i < steps; ++i) {
+      const State k1 = derivative<Tanks>(ctx, y);
+      const State k2 = derivative<Tanks>(ctx, y + (0.5 * h) * k1);
+      const State k3 = derivative<Tanks>(ctx, y + (0.5 * h) * k2);
+      const State k4 = derivative<Tanks>(ctx, y + h * k3);
+      y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    }
   }
   unpack<Tanks>(y, orbit, chaser);
 }
@@ -234,12 +243,13 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
   const PieceContext ctx{p, env, u, eci_from_run, force_dist_eci_N};
   // The state's size: the tanks flown rounded up to 0, 2 or 4 (kMaxSloshTanks).
   static_assert(kMaxSloshTanks == 4);
+  const bool third_order = steps == 1 && dt_s <= p.third_order_max_piece_s;
   if (p.slosh.count == 0) {
-    rk4_steps<0>(ctx, orbit, chaser, steps, h);
+    integrate_piece<0>(ctx, orbit, chaser, steps, h, third_order);
   } else if (p.slosh.count <= 2) {
-    rk4_steps<2>(ctx, orbit, chaser, steps, h);
+    integrate_piece<2>(ctx, orbit, chaser, steps, h, third_order);
   } else {
-    rk4_steps<4>(ctx, orbit, chaser, steps, h);
+    integrate_piece<4>(ctx, orbit, chaser, steps, h, third_order);
   }
 }
 

@@ -34,6 +34,10 @@ struct BodyTorqueParams {
   Vec3 residual_dipole_body_Am2 = Vec3::Zero();   // [A m^2] body axes
 };
 
+// [s] RK3 for pieces up to 25 ms: for the slosh's 0.12 rad/s (the fastest mode COMRADE flies),
+// (w 0.025)^4 / 24 = 3.4e-12 against RK4's (w 0.1)^5 / 120 = 2.1e-12 over the period.
+inline constexpr double kThirdOrderMaxPieceS = 0.025;
+
 // The chaser's propellant slosh (plant/slosh.hpp): the tanks' first lateral modes as spring-masses
 // coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
 // centre of mass (slosh masses included), which internal forces do not move: F / m as without
@@ -56,6 +60,11 @@ struct OrbitDynamicsParams {
   BodyTorqueParams chaser, target;
   ChaserSloshParams slosh;
   double max_substep_s = kDefaultMaxSubstepS;  // [s] RK4 substep bound (> 0)
+  // Pieces up to this long take one step of Kutta's third-order method (3 stages) instead of RK4:
+  // the short pieces of a thrusting period (valve delay and the pulses themselves, 2.5-25 ms),
+  // where its local error, (w dt)^4 / 24 for the fastest mode w, is no larger than RK4's over a
+  // whole 0.1 s period, (w T)^5 / 120 (docs/dynamics.md). 0: RK4 for every piece.
+  double third_order_max_piece_s = kThirdOrderMaxPieceS;
   // Hold drag, solar pressure, the third bodies, the magnetic field and the environment's torques
   // over a control period (period_environment below); false evaluates them at every RK4 stage,
   // the reference the test orbit_propagator_test.cpp compares against.
