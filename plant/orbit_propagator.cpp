@@ -83,6 +83,7 @@ struct PieceContext {
   const PieceInput& u;
   Mat3 eci_from_run;
   Vec3 force_dist_eci_N;
+  Vec3 force_dist_run_N;  // the same in the run's inertial axes (the slosh kernel's body force)
 };
 
 OrbitAccelerations accelerations(const OrbitDynamicsParams& p, const PeriodEnvironment& env, const Vec3& r_t,
@@ -100,13 +101,13 @@ template <int Tanks>
 void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Quat& q_c, const Vec3& w_c,
                       double mass_kg, const Vec3& torque_c_Nm, StateVec<Tanks>& dy) {
   const ChaserSloshParams& slosh = c.p.slosh;
-  std::array<SloshState, kMaxSloshTanks> states;
+  std::array<SloshState, Tanks> states;  // count <= Tanks
   for (int i = 0; i < slosh.count; ++i)
     states[static_cast<std::size_t>(i)] = {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))};
   const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
                                 .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
                                 .com_body_m = slosh.body_com_body_m};
-  const Vec3 force_body_N = c.u.force_body_N + q_c.conjugate() * (c.p.run_from_eci * c.force_dist_eci_N);
+  const Vec3 force_body_N = c.u.force_body_N + q_c.conjugate() * c.force_dist_run_N;
   const Vec3 torque_body_Nm = torque_c_Nm + (slosh.com_body_m - slosh.body_com_body_m).cross(force_body_N);
   const auto n = static_cast<std::size_t>(slosh.count);
   const SloshAccelerations a = coupled_accelerations(body, slosh.body_inertia_inv_kgm2, std::span(slosh.tanks.data(), n),
@@ -151,7 +152,7 @@ StateVec<Tanks> derivative(const PieceContext& c, const StateVec<Tanks>& y) {
   if (p.slosh.count == 0) {
     dy.template segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   } else {
-    slosh_derivative<Tanks>(c, y, q_c, w_c, m, torque_c, dy);
+    if constexpr (Tanks > 0) slosh_derivative<Tanks>(c, y, q_c, w_c, m, torque_c, dy);
   }
 
   const Vec3 torque_t = env.held ? env.torque_target_body_Nm : environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {
@@ -240,7 +241,7 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
   if (!u.force_lvlh_N.isZero(0.0)) {
     force_dist_eci_N = target_lvlh(p, env, orbit).lvlh_from_eci.transpose() * u.force_lvlh_N;
   }
-  const PieceContext ctx{p, env, u, eci_from_run, force_dist_eci_N};
+  const PieceContext ctx{p, env, u, eci_from_run, force_dist_eci_N, p.run_from_eci * force_dist_eci_N};
   // The state's size: the tanks flown rounded up to 0, 2 or 4 (kMaxSloshTanks).
   static_assert(kMaxSloshTanks == 4);
   const bool third_order = steps == 1 && dt_s <= p.third_order_max_piece_s;

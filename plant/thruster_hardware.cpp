@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 #include "core/constants.hpp"
 #include "core/rotation.hpp"
@@ -172,7 +173,11 @@ void schedule_period(const ThrusterHardware& hardware, std::span<const model::Fa
                      ThrusterState& state, const model::ThrusterCommand& command, TimeNs t_k, TimeNs delay_ns,
                      ThrustProfile& out) {
   assert(delay_ns >= 0 && delay_ns < hardware.period_ns);
-  const FaultEffects effects = evaluate_faults(faults, t_k);
+  // Without faults every effect is the default: no 32-entry table to fill each period.
+  static const FaultEffects kNoFaults{};
+  std::optional<FaultEffects> evaluated;
+  if (!faults.empty()) evaluated.emplace(evaluate_faults(faults, t_k));
+  const FaultEffects& effects = evaluated ? *evaluated : kNoFaults;
   const TimeNs open_ns = t_k + delay_ns + hardware.rise_delay_ns;  // eq. 1: same delay for all thrusters
   const double period = static_cast<double>(hardware.period_ns);
   for (int i = 0; i < hardware.count; ++i) {
