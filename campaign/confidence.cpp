@@ -50,8 +50,9 @@ std::int64_t zero_failure_runs(double p_max, double confidence) {
   const double n_real = std::log1p(-confidence) / std::log1p(-p_max);
   if (!(n_real <= static_cast<double>(kMaxDemonstrationRuns))) return -1;
   // The closed form rounded up, then moved to the smallest n that the bound itself accepts, so
-  // that a campaign of exactly this many clean runs is reported as demonstrating the target (the
-  // two differ only where ln(1 - C) / ln(1 - p) is within rounding of an integer).
+  // that a campaign of exactly this many clean runs is reported as demonstrating the target. The
+  // two differ only at ties, where ln(1 - C) / ln(1 - p) is an integer and rounding decides: p = C
+  // gives 1 run by the formula, but Boost's bound for it is 1 - (1 - C), a hair above C.
   std::int64_t n = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(n_real)));
   while (n > 1 && clopper_pearson_upper(0, n - 1, confidence) <= p_max) --n;
   while (clopper_pearson_upper(0, n, confidence) > p_max) ++n;

@@ -166,6 +166,17 @@ TEST(ZeroFailureRuns, IsTheClosedFormAndAgreesWithTheBound) {
       }
     }
   }
+  // p = C: one clean run bounds p by exactly C (Beta(1, 1) is uniform), a tie that rounding
+  // decides: Boost forms 1 - (1 - C) and gets C (1 + 1e-15) for C = 0.01. The count then follows
+  // the bound, not the closed form's 1, so that the count and the verdict never disagree.
+  for (double p : {0.001, 0.01, 0.3}) {
+    const std::int64_t n = zero_failure_runs(p, p);
+    EXPECT_LE(clopper_pearson_upper(0, n, p), p) << p;
+    if (n > 1) {
+      EXPECT_GT(clopper_pearson_upper(0, n - 1, p), p) << p;
+    }
+    EXPECT_LE(n, 2) << p;
+  }
   EXPECT_EQ(zero_failure_runs(0.0, 0.95), -1);
   EXPECT_EQ(zero_failure_runs(1e-18, 0.95), -1);  // 3e18 runs: beyond kMaxDemonstrationRuns
   EXPECT_EQ(zero_failure_runs(0.5, 1.0), -1);
