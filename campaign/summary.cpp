@@ -12,6 +12,7 @@
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
 #include "campaign/run_row.hpp"
+#include "campaign/target_report.hpp"
 
 namespace chaser::campaign {
 
@@ -219,6 +220,7 @@ std::string summary_markdown(const CampaignStats& stats, const SummaryContext& c
   for (std::size_t k = 0; k < kSchemes.size(); ++k) markdown_scheme(out, stats, k);
   markdown_mission(out, stats);
   if (envelope && !envelope->empty()) markdown_threshold(out, context, *envelope);
+  out += targets_markdown(stats, context.targets);
   return out;
 }
 
