@@ -76,8 +76,10 @@ std::string targets_markdown(const CampaignStats& stats, const std::vector<Targe
     const std::size_t rows = is_mission(t.index) ? 1 : kSchemes.size();
     for (std::size_t k = 0; k < rows; ++k) {
       fmt::format_to(std::back_inserter(out), "| {} |", is_mission(t.index) ? "all schemes" : kSchemes[k]);
-      for (std::size_t c = 0; c < stats.cases().size(); ++c)
-        fmt::format_to(std::back_inserter(out), " {} |", verdict(t, stats.at(c, k), stats.cases()[c], true).value_or("-"));
+      for (std::size_t c = 0; c < stats.cases().size(); ++c) {
+        const auto v = verdict(t, stats.at(c, k), stats.cases()[c], true);
+        fmt::format_to(std::back_inserter(out), " {} |", v.value_or("-"));
+      }
       out += '\n';
     }
   }
@@ -92,8 +94,8 @@ std::string targets_text(const CampaignStats& stats, const std::vector<Target>& 
     for (std::size_t k = 0; k < rows; ++k)
       for (std::size_t c = 0; c < stats.cases().size(); ++c)
         if (const auto v = verdict(t, stats.at(c, k), stats.cases()[c], false))
-          fmt::format_to(std::back_inserter(out), "  {}{}: {}\n", is_mission(t.index) ? "" : std::string(kSchemes[k]) + " ",
-                         to_string(stats.cases()[c]), *v);
+          fmt::format_to(std::back_inserter(out), "  {}{}: {}\n",
+                         is_mission(t.index) ? "" : std::string(kSchemes[k]) + " ", to_string(stats.cases()[c]), *v);
   }
   return out;
 }
