@@ -78,8 +78,10 @@ CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& op
   if (!outcome.executed.io_ok) return failure(fmt::format("cannot write the rows files in {}", options.out_dir));
   std::vector<FaultCase> cases;
   for (const CaseRuns& c : plan.layout.cases()) cases.push_back(c.fault_case);
-  const std::string summary_error = write_summaries(
-      options.out_dir, cases, {plan.nominal.name, plan.nominal.campaign.threshold_margin, plan.nominal.fdi.glr_threshold});
+  const std::string summary_error =
+      write_summaries(options.out_dir, cases,
+                      {plan.nominal.name, plan.nominal.campaign.threshold_margin, plan.nominal.fdi.glr_threshold,
+                       options.targets});
   if (!summary_error.empty()) {
     CampaignOutcome failed = failure(summary_error);
     failed.executed = outcome.executed;

@@ -9,6 +9,7 @@
 #include "campaign/cases.hpp"
 #include "campaign/executor.hpp"
 #include "campaign/plan.hpp"
+#include "campaign/target.hpp"
 
 namespace chaser::campaign {
 
@@ -19,6 +20,9 @@ struct CampaignOptions {
   bool resume = false;
   std::int64_t keep_telemetry = 0;  // runs with index < K keep DIR/runs/<run>/telemetry.csv, summary.json
   bool progress = false;
+  // --target: judged in summary.md. Not part of what the campaign is (campaign.json): a resume or a
+  // merge may ask other questions of the same runs.
+  std::vector<Target> targets;
 };
 
 enum class CampaignStatus { kOk, kBadInput, kFailure };

@@ -63,7 +63,7 @@ std::optional<CampaignInfo> campaign_info(const nlohmann::ordered_json& j, std::
     info.shard = Shard{j.at("shard").at(0).get<int>(), j.at("shard").at(1).get<int>()};
     info.range = RunRange{j.at("shard_runs").at(0).get<std::int64_t>(), j.at("shard_runs").at(1).get<std::int64_t>()};
     info.summary = SummaryContext{j.at("scenario").get<std::string>(), j.at("threshold_margin").get<double>(),
-                                  j.at("glr_threshold").get<double>()};
+                                  j.at("glr_threshold").get<double>(), {}};  // no --target: merge sets its own
     return info;
   } catch (const std::exception& e) {
     error = fmt::format("campaign.json lacks a field or has a wrong one ({})", e.what());

@@ -85,7 +85,8 @@ bool concatenate(const std::vector<ShardDir>& shards, const fs::path& out_dir, c
 
 }  // namespace
 
-CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::string>& shard_dirs) {
+CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::string>& shard_dirs,
+                             const std::vector<Target>& targets) {
   if (shard_dirs.empty()) return bad_input("merge: give the shard directories to merge");
   std::vector<ShardDir> shards;
   for (const std::string& dir : shard_dirs) {
@@ -114,7 +115,9 @@ CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::
     return CampaignOutcome::failure(fmt::format("cannot write the rows files in {}", out_dir));
   std::vector<FaultCase> cases;
   for (const CaseRuns& c : shards.front().info.cases) cases.push_back(c.fault_case);
-  const std::string error = write_summaries(out_dir, cases, shards.front().info.summary);
+  SummaryContext context = shards.front().info.summary;
+  context.targets = targets;
+  const std::string error = write_summaries(out_dir, cases, context);
   if (!error.empty()) return CampaignOutcome::failure(error);
   CampaignOutcome outcome;
   outcome.shard_runs = total;

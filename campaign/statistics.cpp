@@ -49,4 +49,18 @@ void CampaignStats::add(const RowFacts& row) {
   }
 }
 
+std::string_view to_string(RateIndex index) { return kRateNames[static_cast<std::size_t>(index)]; }
+
+std::optional<Proportion> proportion_of(const SchemeCaseStats& s, RateIndex index, FaultCase fault_case) {
+  const bool fault = fault_case != FaultCase::kNone;
+  switch (index) {
+    case RateIndex::kPNd: return fault ? std::optional(Proportion{s.missed, s.runs}) : std::nullopt;
+    case RateIndex::kPF: return Proportion{s.false_alarms, s.runs};
+    case RateIndex::kPI: return fault ? std::optional(Proportion{s.right_isolations, s.runs}) : std::nullopt;
+    case RateIndex::kCaptureRate: return Proportion{s.captures, s.runs};
+    case RateIndex::kCorridorRate: return Proportion{s.corridors_kept, s.runs};
+  }
+  return std::nullopt;
+}
+
 }  // namespace chaser::campaign

@@ -5,6 +5,7 @@
 // Fed in run-index order, the result is bit-identical however the runs were executed.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -68,5 +69,23 @@ class CampaignStats {
   std::vector<std::array<SchemeCaseStats, kSchemes.size()>> stats_;
   std::vector<std::int64_t> diverged_, errors_;
 };
+
+// The proportions a campaign reports, in the order of summary.csv's columns: the FDI indices of
+// Fonod 2015, section V (P_nd = missed / runs, P_f = false alarms / runs, P_i = right isolations /
+// runs) and the mission rates (captures / runs, corridors kept / runs).
+enum class RateIndex { kPNd, kPF, kPI, kCaptureRate, kCorridorRate };
+inline constexpr std::array<std::string_view, 5> kRateNames = {"P_nd", "P_f", "P_i", "capture_rate", "corridor_rate"};
+inline constexpr std::array<RateIndex, 5> kRateIndices = {RateIndex::kPNd, RateIndex::kPF, RateIndex::kPI,
+                                                          RateIndex::kCaptureRate, RateIndex::kCorridorRate};
+std::string_view to_string(RateIndex index);
+
+// events of runs; the proportion is events / runs.
+struct Proportion {
+  std::int64_t events = 0, runs = 0;
+};
+
+// The counts behind one index; nullopt where the index means nothing: P_nd and P_i of case none
+// (there is no fault to miss or isolate).
+std::optional<Proportion> proportion_of(const SchemeCaseStats& stats, RateIndex index, FaultCase fault_case);
 
 }  // namespace chaser::campaign

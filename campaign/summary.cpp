@@ -8,8 +8,11 @@
 
 #include <fmt/format.h>
 
+#include "campaign/confidence.hpp"
 #include "campaign/csv.hpp"
+#include "campaign/proportion_text.hpp"
 #include "campaign/run_row.hpp"
+#include "campaign/target_report.hpp"
 
 namespace chaser::campaign {
 
@@ -83,22 +86,47 @@ std::string cell(double v, const char* spec) {
   return std::isnan(v) ? std::string("-") : fmt::format(fmt::runtime(spec), v);
 }
 
+// A proportion of summary.md with its 95 % bounds (proportion_text.hpp); "-" where it means nothing.
+std::string rate_cell(const SchemeCaseStats& s, RateIndex index, FaultCase fault_case) {
+  const auto p = proportion_of(s, index, fault_case);
+  return p ? proportion_cell(*p) : std::string("-");
+}
+
+// summary.csv's last columns: the two-sided 95 % Clopper-Pearson interval of each proportion, in
+// kRateNames order, appended after the older columns so that readers by name or position still work.
+void append_intervals(std::string& out, const SchemeCaseStats& s, FaultCase fault_case) {
+  for (RateIndex index : kRateIndices) {
+    const auto p = proportion_of(s, index, fault_case);
+    const ProportionInterval ci =
+        p ? clopper_pearson(p->events, p->runs, kSummaryConfidence) : ProportionInterval{kNaN, kNaN};
+    out += ',';
+    append_number(out, ci.lower);
+    out += ',';
+    append_number(out, ci.upper);
+  }
+}
+
 void markdown_scheme(std::string& out, const CampaignStats& stats, std::size_t k) {
   fmt::format_to(std::back_inserter(out), "\n### Scheme: {}\n\n| criterion |", kSchemes[k]);
   for (FaultCase c : stats.cases()) fmt::format_to(std::back_inserter(out), " {} |", to_string(c));
   out += "\n|---|";
   for (std::size_t i = 0; i < stats.cases().size(); ++i) out += "---|";
   out += '\n';
-  static constexpr std::array<const char*, 9> kRows = {"runs", "detected", "mean t_d [s]", "std t_d [s]",
-                                                       "mean t_i [s]", "std t_i [s]", "P_nd", "P_f", "P_i"};
-  static constexpr std::array<const char*, 9> kSpecs = {"{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:.2f}",
-                                                        "{:.2f}", "{:.4f}", "{:.4f}", "{:.4f}"};
+  static constexpr std::array<const char*, 6> kRows = {"runs", "detected", "mean t_d [s]", "std t_d [s]",
+                                                       "mean t_i [s]", "std t_i [s]"};
+  static constexpr std::array<const char*, 6> kSpecs = {"{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:.2f}", "{:.2f}"};
   for (std::size_t row = 0; row < kRows.size(); ++row) {
     fmt::format_to(std::back_inserter(out), "| {} |", kRows[row]);
     for (std::size_t c = 0; c < stats.cases().size(); ++c) {
       const std::vector<double> v = row_values(stats.at(c, k), stats.cases()[c] != FaultCase::kNone);
       fmt::format_to(std::back_inserter(out), " {} |", cell(v[row], kSpecs[row]));
     }
+    out += '\n';
+  }
+  for (RateIndex index : {RateIndex::kPNd, RateIndex::kPF, RateIndex::kPI}) {
+    fmt::format_to(std::back_inserter(out), "| {} |", to_string(index));
+    for (std::size_t c = 0; c < stats.cases().size(); ++c)
+      fmt::format_to(std::back_inserter(out), " {} |", rate_cell(stats.at(c, k), index, stats.cases()[c]));
     out += '\n';
   }
 }
@@ -114,8 +142,11 @@ void markdown_mission(std::string& out, const CampaignStats& stats) {
     for (std::size_t c = 0; c < stats.cases().size(); ++c) fmt::format_to(std::back_inserter(out), " {} |", value(c));
     out += '\n';
   };
-  line("capture rate", [&](std::size_t c) { return cell(row_values(stats.at(c, 0), true)[9], "{:.4f}"); });
-  line("corridor kept", [&](std::size_t c) { return cell(row_values(stats.at(c, 0), true)[10], "{:.4f}"); });
+  const auto rate = [&](RateIndex index) {
+    return [&stats, index](std::size_t c) { return rate_cell(stats.at(c, 0), index, stats.cases()[c]); };
+  };
+  line("capture rate", rate(RateIndex::kCaptureRate));
+  line("corridor kept", rate(RateIndex::kCorridorRate));
   line("mean propellant [kg]", [&](std::size_t c) { return cell(stats.at(c, 0).propellant_kg.mean(), "{:.4f}"); });
   line("diverged runs", [&](std::size_t c) { return fmt::format("{}", stats.diverged(c)); });
   line("error runs", [&](std::size_t c) { return fmt::format("{}", stats.errors(c)); });
@@ -156,7 +187,9 @@ StatsRead read_campaign_stats(const std::string& runs_path, const std::vector<Fa
 std::string summary_csv(const CampaignStats& stats) {
   std::string out =
       "scheme,case,runs,detected,mean_td_s,std_td_s,mean_ti_s,std_ti_s,P_nd,P_f,P_i,capture_rate,corridor_rate,"
-      "mean_propellant_kg\n";
+      "mean_propellant_kg";
+  for (std::string_view name : kRateNames) fmt::format_to(std::back_inserter(out), ",{0}_lo95,{0}_hi95", name);
+  out += '\n';
   for (std::size_t k = 0; k < kSchemes.size(); ++k)
     for (std::size_t c = 0; c < stats.cases().size(); ++c) {
       const std::vector<double> v = row_values(stats.at(c, k), stats.cases()[c] != FaultCase::kNone);
@@ -166,6 +199,7 @@ std::string summary_csv(const CampaignStats& stats) {
         out += ',';
         append_number(out, v[i]);
       }
+      append_intervals(out, stats.at(c, k), stats.cases()[c]);
       out += '\n';
     }
   return out;
@@ -176,11 +210,17 @@ std::string summary_markdown(const CampaignStats& stats, const SummaryContext& c
   std::string out = fmt::format(
       "# Campaign summary: {}\n\nFonod 2015, Table 2 layout. t_d, t_i: detection and isolation time from the "
       "onset (t_i over right isolations only); P_nd = missed / runs, P_f = false alarms / runs, P_i = right "
-      "isolations / runs. Runs with status error are left out of every figure.\n",
+      "isolations / runs. Runs with status error are left out of every figure.\n\n"
+      "Each proportion is given with its exact (Clopper-Pearson) 95 % confidence bounds: as value [lower, upper], "
+      "the two-sided 95 % interval; with no event in n runs as '0 of n (<= u)', u = 1 - 0.05^(1/n) the one-sided "
+      "95 % upper bound; with an event in every run as 'n of n (>= l)', l = 0.05^(1/n) the one-sided 95 % lower "
+      "bound. Bounds are rounded outward. summary.csv has the two-sided interval of each (columns `*_lo95`, "
+      "`*_hi95`).\n",
       context.scenario);
   for (std::size_t k = 0; k < kSchemes.size(); ++k) markdown_scheme(out, stats, k);
   markdown_mission(out, stats);
   if (envelope && !envelope->empty()) markdown_threshold(out, context, *envelope);
+  out += targets_markdown(stats, context.targets);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "campaign/cases.hpp"
 #include "campaign/glr_envelope.hpp"
 #include "campaign/statistics.hpp"
+#include "campaign/target.hpp"
 
 namespace chaser::campaign {
 
@@ -25,6 +26,7 @@ struct SummaryContext {
   std::string scenario;          // scenario name
   double threshold_margin = 1.5; // [-] campaign.threshold_margin
   double glr_threshold = 20.0;   // [-] fdi.glr_threshold the campaign flew
+  std::vector<Target> targets;   // --target: judged in summary.md's "Targets" section
 };
 
 std::string summary_csv(const CampaignStats& stats);

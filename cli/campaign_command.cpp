@@ -11,6 +11,8 @@
 #include "campaign/merge.hpp"
 #include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
+#include "campaign/summary.hpp"
+#include "campaign/target_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_input.hpp"
 
@@ -21,6 +23,27 @@ namespace {
 constexpr const char* kPresetTable2 = "fonod2015-table2";
 // Fonod 2015, section V: 200 fault-free runs, 1600 runs per fault case, each scheme judged alone.
 constexpr const char* kTable2Runs = "none=200,stuck_open=1600,stuck_closed=1600,leak=1600,loss=1600";
+
+// --target, every one checked: nullopt after printing what is wrong with each bad one.
+std::optional<std::vector<campaign::Target>> parse_targets(const std::vector<std::string>& texts) {
+  std::vector<campaign::Target> targets;
+  bool ok = true;
+  for (const std::string& text : texts) {
+    const campaign::TargetParse parsed = campaign::parse_target(text);
+    if (parsed.target) targets.push_back(*parsed.target);
+    ok = ok && parsed.target.has_value();
+    if (!parsed.target) std::cerr << ("chaser campaign: " + parsed.error + '\n');
+  }
+  return ok ? std::optional(targets) : std::nullopt;
+}
+
+// The targets' verdicts on the terminal, from the runs file just summarised (as in summary.md).
+void print_targets(const std::string& out_dir, const std::vector<campaign::FaultCase>& cases,
+                   const std::vector<campaign::Target>& targets) {
+  if (targets.empty()) return;
+  const campaign::StatsRead read = campaign::read_campaign_stats(out_dir + "/runs.csv", cases);
+  if (read.stats) std::cout << campaign::targets_text(*read.stats, targets);
+}
 
 int report(const campaign::CampaignOutcome& o, const std::string& out_dir) {
   if (o.status == campaign::CampaignStatus::kBadInput) {
@@ -47,6 +70,11 @@ int report(const campaign::CampaignOutcome& o, const std::string& out_dir) {
 struct Prepared {
   campaign::CampaignPlan plan;
   campaign::CampaignOptions options;
+  std::vector<campaign::FaultCase> cases() const {
+    std::vector<campaign::FaultCase> out;
+    for (const campaign::CaseRuns& c : plan.layout.cases()) out.push_back(c.fault_case);
+    return out;
+  }
 };
 
 std::optional<Prepared> prepare(const CampaignArgs& args) {
@@ -74,6 +102,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
     std::cerr << ("chaser campaign: " + error + '\n');
     return std::nullopt;
   }
+  const auto targets = parse_targets(args.targets);
+  if (!targets) return std::nullopt;
   const auto loaded = load_or_report(args.scenario_path, overrides);
   if (!loaded) return std::nullopt;
   const auto layout = campaign::parse_layout(args.cases, runs_text,
@@ -90,7 +120,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
                                             .threads = args.threads.value_or(default_threads),
                                             .resume = args.resume,
                                             .keep_telemetry = args.keep_telemetry,
-                                            .progress = campaign::stderr_is_terminal()}};
+                                            .progress = campaign::stderr_is_terminal(),
+                                            .targets = *targets}};
 }
 
 // --mpi: every rank prepares; all go on only when all prepared the same campaign (none left waiting).
@@ -106,7 +137,10 @@ int campaign_mpi(const CampaignArgs& args) {
   Prepared p = *prepared;
   p.options.progress = p.options.progress && rank == 0;
   const campaign::CampaignOutcome outcome = campaign::run_campaign_mpi(p.plan, p.options, rank);
-  return rank == 0 ? report(outcome, args.out_dir) : kExitOk;
+  if (rank != 0) return kExitOk;
+  const int code = report(outcome, args.out_dir);
+  if (code == kExitOk) print_targets(args.out_dir, p.cases(), p.options.targets);
+  return code;
 }
 
 }  // namespace
@@ -119,11 +153,25 @@ int campaign_command(const CampaignArgs& args) {
   if (args.mpi) return campaign_mpi(args);
   const std::optional<Prepared> prepared = prepare(args);
   if (!prepared) return kExitBadInput;
-  return report(campaign::run_campaign(prepared->plan, prepared->options), args.out_dir);
+  const int code = report(campaign::run_campaign(prepared->plan, prepared->options), args.out_dir);
+  if (code == kExitOk) print_targets(args.out_dir, prepared->cases(), prepared->options.targets);
+  return code;
 }
 
 int campaign_merge_command(const CampaignMergeArgs& args) {
-  return report(campaign::merge_shards(args.out_dir, args.shard_dirs), args.out_dir);
+  const auto targets = parse_targets(args.targets);
+  if (!targets) return kExitBadInput;
+  const int code = report(campaign::merge_shards(args.out_dir, args.shard_dirs, *targets), args.out_dir);
+  if (code == kExitOk && !targets->empty()) {
+    std::string error;
+    const auto json = campaign::read_campaign_json(args.out_dir, error);
+    const auto info = json ? campaign::campaign_info(*json, error) : std::nullopt;
+    std::vector<campaign::FaultCase> cases;
+    if (info)
+      for (const campaign::CaseRuns& c : info->cases) cases.push_back(c.fault_case);
+    print_targets(args.out_dir, cases, *targets);
+  }
+  return code;
 }
 
 }  // namespace chaser::cli

@@ -42,6 +42,7 @@ struct CampaignArgs {
   std::vector<std::string> overrides;
   std::string preset;
   bool mpi = false;            // spread the runs over MPI ranks (main.cpp started MPI)
+  std::vector<std::string> targets;  // --target 'P_nd<=1e-3@0.95' (campaign/target.hpp)
 };
 
 // chaser fmea (docs/invsim.md, "chaser fmea").
@@ -65,6 +66,7 @@ struct ThrustersArgs {
 struct CampaignMergeArgs {
   std::string out_dir;
   std::vector<std::string> shard_dirs;
+  std::vector<std::string> targets;  // --target, as for chaser campaign
 };
 
 int run_command(const RunArgs& args);

@@ -105,10 +105,16 @@ int main(int argc, char** argv) {
   campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
   campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign");
   campaign_cmd->add_flag("--mpi", campaign.mpi, "Spread the runs over the ranks of mpirun/srun; rank 0 writes");
+  constexpr const char* kTargetHelp =
+      "Requirement to judge, e.g. 'P_nd<=1e-3@0.95' (repeatable): INDEX<=P@C for P_nd, P_f; INDEX>=Q@C for P_i, "
+      "capture_rate, corridor_rate";
+  // One value per --target, so that `--target T SCENARIO` leaves SCENARIO to the positional.
+  campaign_cmd->add_option("--target", campaign.targets, kTargetHelp)->allow_extra_args(false);
   CampaignMergeArgs merge;
   CLI::App* merge_cmd = campaign_cmd->add_subcommand("merge", "Merge the complete shards of one campaign");
   merge_cmd->add_option("--out", merge.out_dir, "Merged campaign directory")->required();
   merge_cmd->add_option("shards", merge.shard_dirs, "Shard directories")->required();
+  merge_cmd->add_option("--target", merge.targets, kTargetHelp)->allow_extra_args(false);
 
   FmeaArgs fmea;
   CLI::App* fmea_cmd = app.add_subcommand("fmea", "Thruster failure-mode analysis and reconfiguration by inverse simulation (Zhou 2018): fmea.csv, fmea.md");

@@ -6,7 +6,9 @@ Usage: /usr/bin/python3 python/plot_campaign.py DIR [--out OUTDIR] [--margin M] 
 Reads DIR/runs.csv (required; format in docs/campaigns.md, "runs.csv") and, when present, DIR/summary.csv,
 DIR/summary.md, DIR/glr_envelope.csv and DIR/campaign.json. Writes into OUTDIR (default DIR):
 detection_times.png (Fig. 11) and isolation_times.png (Fig. 12) when a fault case ran, outcome.png
-(Table 2 as bars) and, when DIR/glr_envelope.csv exists, glr_envelope.png (Fig. 8). A last line
+(Table 2 as bars, each with its exact 95 % Clopper-Pearson interval as an error bar: from
+summary.csv's *_lo95/*_hi95 columns, or computed here from the counts when an older summary.csv
+lacks them) and, when DIR/glr_envelope.csv exists, glr_envelope.png (Fig. 8). A last line
 without its newline, or a row with the wrong number of fields or an unreadable number (a campaign
 killed mid-write), is skipped with a warning on stderr. Exit status 2 if DIR/runs.csv is missing or
 its header is not the spec's.
@@ -41,6 +43,8 @@ SCHEMES = ("position", "attitude", "deficit", "fdir")
 GLR_SCHEMES = ("position", "attitude")  # the two with a GLR statistic S (eq. 41)
 COLORS = {"position": "tab:blue", "attitude": "tab:orange", "deficit": "tab:purple", "fdir": "tab:green"}
 RATES = ("P_nd", "P_f", "P_i", "capture_rate", "corridor_rate")
+BOUNDS = tuple(f"{r}_{side}95" for r in RATES for side in ("lo", "hi"))  # summary.csv's last columns
+CONFIDENCE = 0.95  # of every interval Chaser writes (campaign/confidence.hpp)
 
 
 def warn(text):
@@ -160,15 +164,57 @@ def plot_times(runs, cases, what, path):
     plt.close(fig)
 
 
+def binomial_tail(x, n, p, at_least):
+    """P(X <= x), or P(X >= x) when at_least, for X ~ Binomial(n, p): the pmf summed in logs."""
+    k = np.arange(x, n + 1) if at_least else np.arange(0, x + 1)
+    log_fact = np.concatenate(([0.0], np.cumsum(np.log(np.arange(1, n + 1)))))
+    log_pmf = log_fact[n] - log_fact[k] - log_fact[n - k] + k * np.log(p) + (n - k) * np.log1p(-p)
+    return float(np.exp(log_pmf).sum())
+
+
+def clopper_pearson(x, n, confidence=CONFIDENCE):
+    """Two-sided exact interval of x events in n runs (Clopper and Pearson 1934), by bisection on its
+    defining equations P(X >= x; l) = alpha/2 and P(X <= x; u) = alpha/2; the same interval as
+    summary.csv's (Chaser takes Beta quantiles through Boost.Math), without scipy."""
+    if n <= 0 or not 0 <= x <= n:
+        return np.nan, np.nan
+    tail = (1 - confidence) / 2
+
+    def solve(f):  # f increasing in p on (0, 1); 60 halvings: 1e-18
+        lo, hi = 0.0, 1.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if f(mid) > 0 else (mid, hi)
+        return 0.5 * (lo + hi)
+
+    lower = 0.0 if x == 0 else solve(lambda p: binomial_tail(x, n, p, True) - tail)
+    upper = 1.0 if x == n else solve(lambda p: tail - binomial_tail(x, n, p, False))
+    return lower, upper
+
+
+def add_intervals(entry):
+    """Fills in the *_lo95/*_hi95 bounds of one summary entry from its rates and run count."""
+    n = entry.get("runs", np.nan)
+    for r in RATES:
+        if f"{r}_lo95" in entry:
+            continue
+        value = entry.get(r, np.nan)
+        x = round(value * n) if np.isfinite(value) and np.isfinite(n) else -1
+        entry[f"{r}_lo95"], entry[f"{r}_hi95"] = clopper_pearson(int(x), int(n)) if x >= 0 else (np.nan, np.nan)
+    return entry
+
+
 def load_summary(path):
-    """DIR/summary.csv as {(scheme, case): {rate: value, "runs": n}}; None when absent or unusable."""
+    """DIR/summary.csv as {(scheme, case): {rate: value, bound: value, "runs": n}}; None when absent or
+    unusable. Without the bound columns (written before they were added) the bounds are computed."""
     if not path.is_file():
         return None
     header, rows = read_csv(path)
     if not {"scheme", "case", "runs", *RATES} <= set(header):
         warn(f"{path}: columns missing, outcome recomputed from runs.csv")
         return None
-    return {(r["scheme"], r["case"]): {k: to_float(r[k]) for k in (*RATES, "runs")}
+    columns = (*RATES, "runs", *(b for b in BOUNDS if b in header))
+    return {(r["scheme"], r["case"]): add_intervals({k: to_float(r[k]) for k in columns})
             for r in (dict(zip(header, row)) for row in rows)}
 
 
@@ -185,20 +231,31 @@ def recompute_outcome(runs, cases):
                       runs["corridor_kept"][m])
             table[(s, case)] = {r: np.mean(v) if m.any() else np.nan for r, v in zip(RATES, values)}
             table[(s, case)]["runs"] = m.sum()
+            if case == "none":  # no fault to miss or isolate (as summary.csv)
+                table[(s, case)].update(P_nd=np.nan, P_i=np.nan)
+            add_intervals(table[(s, case)])
     return table
 
 
 def plot_outcome(table, source, cases, path):
     """Fonod 2015, Table 2 as bars: per case, P_nd, P_f and P_i of each scheme, and the mission
-    outcome of the closed-loop FDIR (capture and corridor rates, the same whatever the scheme)."""
-    fig, axes = case_grid(len(cases), f"FDI and mission outcome per case (Fonod 2015, Table 2; {source})")
+    outcome of the closed-loop FDIR (capture and corridor rates, the same whatever the scheme); each
+    bar with its two-sided 95 % Clopper-Pearson interval as an error bar."""
+    fig, axes = case_grid(len(cases), f"FDI and mission outcome per case (Fonod 2015, Table 2; {source}; "
+                                      "bars: 95 % Clopper-Pearson intervals)")
     for ax, case in zip(axes, cases):
         mission = next((table[(s, case)] for s in ("fdir", *GLR_SCHEMES) if (s, case) in table), {})
         rows = [table.get((s, case), {}) for s in SCHEMES] + [mission]
         for k, (row, color, label) in enumerate(zip(rows, [*COLORS.values(), "0.6"], [*SCHEMES, "mission"])):
-            rates, x = (RATES[:3], np.arange(3) + (k - 1) * 0.27) if k < 3 else (RATES[3:], np.array([3, 4]))
+            # One bar per scheme (all four, fdir included) for the FDI indices; mission rates once.
+            fdi = k < len(SCHEMES)
+            rates, x = (RATES[:3], np.arange(3) + (k - 1.5) * 0.2) if fdi else (RATES[3:], np.array([3, 4]))
             values = np.array([row.get(r, np.nan) for r in rates], float)
-            bars = ax.bar(x, np.nan_to_num(values), 0.27 if k < 3 else 0.5, color=color, label=label)
+            lo = np.array([row.get(f"{r}_lo95", np.nan) for r in rates], float)
+            hi = np.array([row.get(f"{r}_hi95", np.nan) for r in rates], float)
+            yerr = np.nan_to_num(np.vstack([values - lo, hi - values]))  # none where a value is n/a
+            bars = ax.bar(x, np.nan_to_num(values), 0.2 if fdi else 0.5, color=color, label=label,
+                          yerr=yerr, capsize=2, error_kw={"elinewidth": 0.8, "ecolor": "k"})
             ax.bar_label(bars, ["n/a" if np.isnan(v) else f"{v:.3g}" for v in values], fontsize=6)
         ax.set_xticks(range(5), ["P_nd", "P_f", "P_i", "capture", "corridor"])
         ax.set_ylim(0, 1.2)

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "campaign/confidence.hpp"
 #include "campaign/csv.hpp"
 #include "campaign/merge.hpp"
 #include "campaign/run_one.hpp"
@@ -134,7 +135,8 @@ TEST(Campaign, ResumeOfAnotherCampaignAndOverwriteAreRefused) {
 }
 
 // The summary re-derived here from runs.csv by a naive two-pass computation: detection time mean
-// and (n - 1) std over detected runs, P_nd, P_f, P_i per scheme and case.
+// and (n - 1) std over detected runs, P_nd, P_f, P_i per scheme and case, and the 95 % interval of
+// each proportion from its counts (summary.csv read by column name: the intervals are appended).
 TEST(Campaign, SummaryIsWhatRunsCsvSays) {
   const CampaignPlan plan = short_plan(kCases);
   const auto dir = fresh_dir("summary");
@@ -154,12 +156,20 @@ TEST(Campaign, SummaryIsWhatRunsCsvSays) {
   const auto col = [&](const std::string& name) { return static_cast<std::size_t>(column_index(header, name)); };
   std::ifstream summary(dir / "summary.csv");
   std::getline(summary, line);
+  const std::string summary_header_text = line;
+  const auto summary_header = split_fields(summary_header_text);
   int checked = 0;
   while (std::getline(summary, line)) {
     const auto f = split_fields(line);
+    ASSERT_EQ(f.size(), summary_header.size());
+    const auto field = [&](const std::string& name) {
+      const int i = column_index(summary_header, name);
+      EXPECT_GE(i, 0) << name;
+      return *parse_number(f[static_cast<std::size_t>(std::max(i, 0))]);
+    };
     const std::string scheme(f[0]), fault_case(f[1]);
     std::vector<double> td;
-    int n = 0, missed = 0, false_alarms = 0, right = 0;
+    int n = 0, missed = 0, false_alarms = 0, right = 0, captures = 0, corridors = 0;
     for (const auto& r : rows) {
       if (r[col("case")] != fault_case) continue;
       ++n;
@@ -168,19 +178,34 @@ TEST(Campaign, SummaryIsWhatRunsCsvSays) {
       missed += r[col(scheme + "_missed")] == "1";
       false_alarms += r[col(scheme + "_false_alarm")] == "1";
       right += r[col(scheme + "_isolated")] == r[col("fault_thruster")] && r[col(scheme + "_isolation_s")] != "nan";
+      captures += r[col("capture")] == "1";
+      corridors += r[col("corridor_kept")] == "1";
     }
-    EXPECT_EQ(*parse_integer(f[2]), n);
-    EXPECT_EQ(*parse_integer(f[3]), static_cast<std::int64_t>(td.size()));
-    EXPECT_DOUBLE_EQ(*parse_number(f[9]), static_cast<double>(false_alarms) / n);
-    if (fault_case == "none") continue;
-    EXPECT_DOUBLE_EQ(*parse_number(f[8]), static_cast<double>(missed) / n);
-    EXPECT_DOUBLE_EQ(*parse_number(f[10]), static_cast<double>(right) / n);
+    EXPECT_EQ(field("runs"), n);
+    EXPECT_EQ(field("detected"), static_cast<double>(td.size()));
+    // The bounds are written with 17 digits, so they read back to the very double computed.
+    const auto expect_interval = [&](const std::string& name, int events) {
+      const ProportionInterval ci = clopper_pearson(events, n, 0.95);
+      EXPECT_EQ(field(name + "_lo95"), ci.lower) << scheme << " " << fault_case << " " << name;
+      EXPECT_EQ(field(name + "_hi95"), ci.upper) << scheme << " " << fault_case << " " << name;
+      EXPECT_DOUBLE_EQ(field(name), static_cast<double>(events) / n) << name;
+    };
+    expect_interval("P_f", false_alarms);
+    expect_interval("capture_rate", captures);
+    expect_interval("corridor_rate", corridors);
+    if (fault_case == "none") {
+      for (const char* name : {"P_nd", "P_nd_lo95", "P_nd_hi95", "P_i", "P_i_lo95", "P_i_hi95"})
+        EXPECT_TRUE(std::isnan(field(name))) << name;
+      continue;
+    }
+    expect_interval("P_nd", missed);
+    expect_interval("P_i", right);
     if (td.size() >= 2) {
       double mean = 0, ss = 0;
       for (double t : td) mean += t / static_cast<double>(td.size());
       for (double t : td) ss += (t - mean) * (t - mean);
-      EXPECT_NEAR(*parse_number(f[4]), mean, 1e-12 * std::abs(mean) + 1e-15);
-      EXPECT_NEAR(*parse_number(f[5]), std::sqrt(ss / static_cast<double>(td.size() - 1)), 1e-9 * (1 + mean));
+      EXPECT_NEAR(field("mean_td_s"), mean, 1e-12 * std::abs(mean) + 1e-15);
+      EXPECT_NEAR(field("std_td_s"), std::sqrt(ss / static_cast<double>(td.size() - 1)), 1e-9 * (1 + mean));
       ++checked;
     }
   }
