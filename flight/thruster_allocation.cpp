@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -394,13 +395,15 @@ void solve(const AllocationParams& params, const ConfigMap<N>& config, const Vec
 // solver's own Harris tolerance) and attain b, as a solved answer must.
 template <int N>
 bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scaled, const Vec6& b, TonN<N>& ton) {
+  // The nonbasic on-times at their upper bound, lowest index first (the order of the sums), by
+  // their set bits: most slots have none or a few of the N.
   Vec6 rhs = b;
-  for (int i = 0; i < N; ++i)
-    if ((slot.upper >> i) & 1U) rhs -= m_scaled.col(i);
+  for (model::ThrusterMask m = slot.upper; m != 0; m &= m - 1) rhs -= m_scaled.col(std::countr_zero(m));
   const Vec6 x = refined_basics(slot.binv, m_scaled, slot.basis, rhs);
   const double tol = kPrimalTol * b.cwiseAbs().maxCoeff();
   if ((x.array() < -tol).any() || (x.array() > 1.0 + tol).any()) return false;
-  for (int i = 0; i < N; ++i) ton[i] = ((slot.upper >> i) & 1U) ? 1.0 : 0.0;
+  ton.setZero();
+  for (model::ThrusterMask m = slot.upper; m != 0; m &= m - 1) ton[std::countr_zero(m)] = 1.0;
   for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
   return attains(m_scaled, b, ton);
 }

@@ -99,7 +99,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
   Vec3 net_torque = torque - omega.cross(body.inertia_com_body_kgm2 * omega);
   for (std::size_t i = 0; i < count; ++i) {
     const MassTerms& t = terms[i] = mass_terms(body, tanks[i], states[i]);
-    centripetal_coriolis[i] = omega.cross(omega.cross(t.r)) + 2.0 * omega.cross(t.s_dot);
+    centripetal_coriolis[i] = omega.cross(omega.cross(t.r) + 2.0 * t.s_dot);  // one cross product fewer
     turn[i] = inertia_inv * t.r.cross(tanks[i].axis_body);
     net_force -= t.f;
     net_torque -= t.r.cross(t.f);
