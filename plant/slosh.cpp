@@ -113,12 +113,14 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
   // semi-definite (G_ij = n_i . n_j / M + (r_i x n_i) . I^-1 (r_j x n_j)). Unused rows stay identity.
   Mat4 g = Mat4::Identity();
   Vec4 c = Vec4::Zero();
+  std::array<double, kMaxSloshTanks> inv_m{};  // 1 / m_i: one division per tank, not four
   for (std::size_t i = 0; i < count; ++i) {
+    inv_m[i] = 1.0 / tanks[i].mass_kg;
     const Vec3& n_i = tanks[i].axis_body;
     const Vec3 u_i = terms[i].r.cross(n_i);
     const auto ii = static_cast<Eigen::Index>(i);
     c[ii] = n_i.dot(a0 + centripetal_coriolis[i]) + u_i.dot(w0);
-    g(ii, ii) = 1.0 / tanks[i].mass_kg + inv_mass + u_i.dot(turn[i]);
+    g(ii, ii) = inv_m[i] + inv_mass + u_i.dot(turn[i]);
     for (std::size_t j = 0; j < i; ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
       g(ii, jj) = g(jj, ii) = inv_mass * n_i.dot(tanks[j].axis_body) + u_i.dot(turn[j]);
@@ -139,7 +141,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
     // The tank point under the mass, inertial acceleration: a_ref + w' x p + w x (w x p) + 2 w x s'
     // = a_c + w' x r + w x (w x r) + 2 w x s' (a_ref = a_c - w' x c - w x (w x c)).
     const Vec3 frame = out.a_com_body_mps2 + out.omega_dot_body_radps2.cross(terms[i].r) + centripetal_coriolis[i];
-    out.s_ddot_body_mps2[i] = lateral(tank.axis_body, terms[i].f / tank.mass_kg - frame);
+    out.s_ddot_body_mps2[i] = lateral(tank.axis_body, inv_m[i] * terms[i].f - frame);
     out.axial_force_N[i] = lambda[static_cast<Eigen::Index>(i)];  // = m_i n_i . frame
   }
   return out;

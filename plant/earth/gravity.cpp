@@ -12,8 +12,10 @@ namespace {
 Vec3 j2_acceleration(const GravityParams& g, const Vec3& r) {
   const double r2 = r.squaredNorm();
   const double rn = std::sqrt(r2);
-  const double k = -1.5 * g.j2 * g.mu_m3ps2 * g.radius_m * g.radius_m / (r2 * r2 * rn);
-  const double z2_r2 = r.z() * r.z() / r2;
+  // One division (each RK4 stage forms two J2 terms): 1 / r^5 = (1 / r^2)^2 (r / r^2).
+  const double inv_r2 = 1.0 / r2;
+  const double k = -1.5 * g.j2 * g.mu_m3ps2 * g.radius_m * g.radius_m * (inv_r2 * inv_r2) * (rn * inv_r2);
+  const double z2_r2 = r.z() * r.z() * inv_r2;
   return k * Vec3(r.x() * (1.0 - 5.0 * z2_r2), r.y() * (1.0 - 5.0 * z2_r2), r.z() * (3.0 - 5.0 * z2_r2));
 }
 
