@@ -135,9 +135,9 @@ QuadVec quad(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // Issue 17: the separation kept to < 1e-6 m over the run; this shows how: the relative state is
 // integrated directly (orbit_perturbations.hpp). Two orbits with J2, 1 m apart, one orbit in 1 s
-// steps. Measured: 1.3e-12 m from the __float128 reference. The same two orbits stepped as two
-// absolute double states drift 4.6e-7 m from it (rounding of 7e6 m positions, ~1e-9 m a step):
-// already half the issue's bound after one orbit, 350,000 times worse, and growing with the run.
+// steps. Measured: 1.4e-12 m from the __float128 reference. The same two orbits stepped as two
+// absolute double states drift 3.8e-7 m from it (rounding of 7e6 m positions, ~1e-9 m a step):
+// already a third of the issue's bound after one orbit, 270,000 times worse, and growing with the run.
 TEST(OrbitPropagator, RelativeIntegrationKeepsTheSeparationToRounding) {
   OrbitDynamicsParams p = keplerian();
   p.perturbations.gravity.j2 = earth::GravityParams{}.j2;
