@@ -149,10 +149,10 @@ StateVec<Tanks> derivative(const PieceContext& c, const StateVec<Tanks>& y) {
   dy.template segment<4>(kQc) = quat_derivative(q_c, w_c);
   dy[kM] = -c.u.mass_flow_kgps;
   if constexpr (Tanks > 0) dy.template tail<6 * Tanks>().setZero();
-  if (p.slosh.count == 0) {
+  if constexpr (Tanks == 0) {  // a rigid chaser (propagate_orbit_piece sizes the state by the tanks)
     dy.template segment<3>(kWc) = euler_angular_acceleration_body(p.chaser.inertia_kgm2, p.chaser.inertia_inv, w_c, torque_c);
   } else {
-    if constexpr (Tanks > 0) slosh_derivative<Tanks>(c, y, q_c, w_c, m, torque_c, dy);
+    slosh_derivative<Tanks>(c, y, q_c, w_c, m, torque_c, dy);
   }
 
   const Vec3 torque_t = env.held ? env.torque_target_body_Nm : environment_torque_body(p.target, mu, p.run_from_eci, q_t, r_t, [&] {

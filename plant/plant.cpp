@@ -46,14 +46,9 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
   return Plant{std::move(params), std::move(state)};
 }
 
-Quat target_attitude(const Plant& plant, double t_s) {
-  if (plant.params.earth) return plant.state.orbit.q_inertial_from_target;
-  return target_attitude(plant.params.target, t_s);
-}
-
-Vec3 target_rate_body(const Plant& plant, double t_s) {
-  if (plant.params.earth) return plant.state.orbit.omega_target_body_radps;
-  return target_attitude(plant.params.target, t_s).conjugate() * plant.params.target.omega_inertial_radps;
+TargetRotation target_rotation(const Plant& plant, double t_s) {
+  if (plant.params.earth) return {plant.state.orbit.q_inertial_from_target, plant.state.orbit.omega_target_body_radps};
+  return target_rotation(plant.params.target, t_s);
 }
 
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s) {

@@ -12,6 +12,7 @@
 #include "plant/orbit_plant.hpp"
 #include "plant/propagator.hpp"
 #include "plant/sensors.hpp"
+#include "plant/target.hpp"
 #include "plant/thruster_hardware.hpp"
 
 namespace chaser::plant {
@@ -56,9 +57,7 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
 
 // The target's attitude and the target's LVLH at run time t_s (the period start the state is at):
 // integrated or from the circle's constant-rate model, as the plant flies it.
-Quat target_attitude(const Plant& plant, double t_s);
-// [rad/s] the target's inertial angular velocity in its body axes at t_s (the state's, as above).
-Vec3 target_rate_body(const Plant& plant, double t_s);
+TargetRotation target_rotation(const Plant& plant, double t_s);
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s);
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t);

@@ -148,8 +148,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     const MonitorSample sample =
         monitor_sample(t_s, plant::q_inertial_from_lvlh(plant, orbit, t_s), truth, out.reference);
     // The target's attitude and rate and the slosh at t_k, for telemetry, before the plant steps past them.
-    const Quat q_inertial_from_target = telemetry ? plant::target_attitude(plant, t_s) : Quat::Identity();
-    const Vec3 omega_target_body_radps = telemetry ? plant::target_rate_body(plant, t_s) : Vec3::Zero();
+    const plant::TargetRotation target = telemetry ? plant::target_rotation(plant, t_s) : plant::TargetRotation{};
     std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
     if (shape.slosh_tanks > 0 && telemetry) slosh = plant.state.orbit.slosh;
     if (!monitor_period(scenario, sample, result.figures)) break;
@@ -171,8 +170,8 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
           .flight_state = &flight_state,
           .watched = &watched,
           .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth.q_inertial_from_body),
-          .q_inertial_from_target = q_inertial_from_target,
-          .omega_target_body_radps = omega_target_body_radps,
+          .q_inertial_from_target = target.q_inertial_from_target,
+          .omega_target_body_radps = target.omega_body_radps,
           .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape.slosh_tanks))};
       if (every_channel) record_every_channel(record, shape, telemetry->new_row().data());
       else record_period(*telemetry, channels, record);

@@ -12,12 +12,10 @@ namespace {
 // propagator asks for the target's and the chaser's, and square roots and divisions are what
 // these few lines cost (one of each per point, 1 / r^3 = (1 / r^2)(r / r^2)).
 struct Radius {
-  const Vec3& r;
+  Vec3 r;
   double r2, rn, inv_r2;
-  explicit Radius(const Vec3& position) : r(position), r2(position.squaredNorm()) {
-    rn = std::sqrt(r2);
-    inv_r2 = 1.0 / r2;
-  }
+  explicit Radius(const Vec3& position)
+      : r(position), r2(position.squaredNorm()), rn(std::sqrt(r2)), inv_r2(1.0 / r2) {}
   double inv_r3() const { return inv_r2 * (rn * inv_r2); }
 };
 
@@ -55,14 +53,12 @@ double gravity_potential_energy(const GravityParams& g, const Vec3& r_eci_m) {
 }
 
 Vec3 differential_gravity_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
-  const Vec3 r_c = r_eci_m + dr_eci_m;
-  const Radius target(r_eci_m), chaser(r_c);
+  const Radius target(r_eci_m), chaser(r_eci_m + dr_eci_m);
   return central_difference(g, target, chaser, dr_eci_m) + (j2_acceleration(g, chaser) - j2_acceleration(g, target));
 }
 
 GravityPair gravity_pair_eci(const GravityParams& g, const Vec3& r_eci_m, const Vec3& dr_eci_m) {
-  const Vec3 r_c = r_eci_m + dr_eci_m;
-  const Radius target(r_eci_m), chaser(r_c);
+  const Radius target(r_eci_m), chaser(r_eci_m + dr_eci_m);
   const Vec3 j2_target = j2_acceleration(g, target);
   return {.target_eci_mps2 = central_acceleration(g, target) + j2_target,
           .relative_eci_mps2 = central_difference(g, target, chaser, dr_eci_m) + (j2_acceleration(g, chaser) - j2_target)};

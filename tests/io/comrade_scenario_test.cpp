@@ -102,24 +102,27 @@ TEST_P(BadComrade, ReportsOneErrorAtKeyPathWithAllowedRange) {
 INSTANTIATE_TEST_SUITE_P(Rules, BadComrade, ::testing::ValuesIn(kBadCases),
                          [](const auto& info) { return std::string(info.param.label); });
 
+// MSR's circular-orbit file with one Earth-orbit key added: that one error and no other.
+void expect_only_error_on_msr(const std::string& override_text, const std::string& key, const std::string& text) {
+  const LoadResult r = load_scenario_file(testing::kMsrPath, {override_text});
+  EXPECT_TRUE(has_error(r, key, text)) << format_errors(r.errors);
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
 // orbit.earth and target.body come together: a file with one alone is told which one is missing.
 TEST(ComradeScenario, EarthOrbitAndTargetBodyComeTogether) {
-  const LoadResult r = load_scenario_file(testing::kMsrPath,
-                                          {"target.body={mass_kg: 100, inertia_kgm2: [[1,0,0],[0,1,0],[0,0,1]], "
-                                           "gravity_gradient: false, spin_case: given, spin_rate_deg_s: 0, "
-                                           "grasp_point_target_m: [0,0,0], capture_point_target_m: [0,0,0]}"});
-  EXPECT_TRUE(has_error(r, "orbit.earth", "must be given with target.body"));
-  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+  expect_only_error_on_msr("target.body={mass_kg: 100, inertia_kgm2: [[1,0,0],[0,1,0],[0,0,1]], "
+                           "gravity_gradient: false, spin_case: given, spin_rate_deg_s: 0, "
+                           "grasp_point_target_m: [0,0,0], capture_point_target_m: [0,0,0]}",
+                           "orbit.earth", "must be given with target.body");
 }
 
 // Slosh is part of the Earth-orbit plant: a circular-orbit file with chaser.slosh is told so.
 TEST(ComradeScenario, SloshNeedsTheEarthOrbit) {
-  const LoadResult r = load_scenario_file(testing::kMsrPath,
-                                          {"chaser.slosh={g_eff_mps2: 0.01, tanks: [{bottom_centre_body_m: [0,0,0], "
-                                           "axis_body: [0,0,1], radius_m: 0.4, height_m: 0.9, liquid_mass_kg: 100, "
-                                           "density_kgpm3: 1004, damping_ratio: 0.005}]}"});
-  EXPECT_TRUE(has_error(r, "chaser.slosh", "only with orbit.earth"));
-  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+  expect_only_error_on_msr("chaser.slosh={g_eff_mps2: 0.01, tanks: [{bottom_centre_body_m: [0,0,0], "
+                           "axis_body: [0,0,1], radius_m: 0.4, height_m: 0.9, liquid_mass_kg: 100, "
+                           "density_kgpm3: 1004, damping_ratio: 0.005}]}",
+                           "chaser.slosh", "only with orbit.earth");
 }
 
 // The shipped ENVISAT servicer's two tanks read as written.
