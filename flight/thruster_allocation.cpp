@@ -312,21 +312,31 @@ TonN<N> ton_of(const Lp<N>& lp) {
   return ton;
 }
 
+// `achieved`: the wrench the on-times give, config * ton.
 template <int N>
-void fill_result(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand, const TonN<N>& ton,
+void fill_result(const AllocationParams& params, const Vec6& achieved, const Vec6& demand, const TonN<N>& ton,
                  AllocationResult& result) {
   result.ton.template head<N>() = ton;  // the rest is zero: `result` is fresh
   result.propellant = ton.sum();
-  result.residual = config * ton - demand;
+  result.residual = achieved - demand;
   result.weighted_error = params.error_weights.cwiseProduct(result.residual.cwiseAbs()).sum();
 }
+template <int N>
+void fill_result(const AllocationParams& params, const ConfigMap<N>& config, const Vec6& demand, const TonN<N>& ton,
+                 AllocationResult& result) {
+  fill_result<N>(params, Vec6(config * ton), demand, ton, result);
+}
 
-// Phase-1 verdict: M ton = b up to rounding of the terms that form it (M, b scaled).
+// Phase-1 verdict: M ton = b up to rounding of the terms that form it (M, b scaled), from
+// achieved = M ton and magnitudes = |M| ton.
+inline bool attains(const Vec6& achieved, const Vec6& magnitudes, const Vec6& b) {
+  const double residual = (achieved - b).cwiseAbs().maxCoeff();
+  const double terms = b.cwiseAbs().maxCoeff() + magnitudes.maxCoeff();
+  return residual <= kFeasibilityTol * terms;
+}
 template <class Config, class Ton>
 bool attains(const Config& m, const Vec6& b, const Ton& ton) {
-  const double residual = (m * ton - b).cwiseAbs().maxCoeff();
-  const double terms = b.cwiseAbs().maxCoeff() + (m.cwiseAbs() * ton).maxCoeff();
-  return residual <= kFeasibilityTol * terms;
+  return attains(Vec6(m * ton), Vec6(m.cwiseAbs() * ton), b);
 }
 template <int N>
 bool attainable(const Lp<N>& lp, const TonN<N>& ton) { return attains(lp.a.template leftCols<N>(), lp.b, ton); }
@@ -392,9 +402,11 @@ void solve(const AllocationParams& params, const ConfigMap<N>& config, const Vec
 }
 
 // The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
-// solver's own Harris tolerance) and attain b, as a solved answer must.
+// solver's own Harris tolerance) and attain b, as a solved answer must; `achieved`: M ton then
+// (m_abs = |M|, formed once per problem).
 template <int N>
-bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scaled, const Vec6& b, TonN<N>& ton) {
+bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scaled, const ConfigMap<N>& m_abs,
+              const Vec6& b, TonN<N>& ton, Vec6& achieved) {
   // The nonbasic on-times at their upper bound, lowest index first (the order of the sums), by
   // their set bits: most slots have none or a few of the N.
   Vec6 rhs = b;
@@ -405,7 +417,8 @@ bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scale
   ton.setZero();
   for (model::ThrusterMask m = slot.upper; m != 0; m &= m - 1) ton[std::countr_zero(m)] = 1.0;
   for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
-  return attains(m_scaled, b, ton);
+  achieved = m_scaled * ton;
+  return attains(achieved, Vec6(m_abs * ton), b);
 }
 
 // Keeps the optimal basis of a solved attainable demand when its basic variables are on-times.
@@ -463,19 +476,23 @@ AllocationResult allocate_warm(const AllocationParams& params, const Vec6& deman
     warm.valid = valid_problem<N>(params, config);  // checked once per problem, like the scaling
     warm.wrench_scale = scaling_of<N>(params, config).wrench;
     warm.config_scaled = params.config / warm.wrench_scale;
+    warm.config_scaled_abs = warm.config_scaled.cwiseAbs();
   }
   if (answered_without_lp(params, warm.valid, demand_wrench, result)) return result;
   const ConfigMap<N> m_scaled(warm.config_scaled.data());
+  const ConfigMap<N> m_abs(warm.config_scaled_abs.data());
   const Vec6 b = demand_wrench / warm.wrench_scale;
   for (int k = 0; k < AllocationWarmStart::kSlots; ++k) {
     const int s = (warm.last_hit + k) % AllocationWarmStart::kSlots;
     const AllocationWarmStart::Slot& slot = warm.slots[static_cast<std::size_t>(s)];
     TonN<N> ton;
-    if (!slot.valid || !try_slot<N>(slot, m_scaled, b, ton)) continue;
+    Vec6 achieved_scaled;
+    if (!slot.valid || !try_slot<N>(slot, m_scaled, m_abs, b, ton, achieved_scaled)) continue;
     warm.last_hit = s;
     ++warm.hits;
     result.feasible = result.converged = true;
-    fill_result<N>(params, config, demand_wrench, ton, result);
+    // config * ton exactly: the scale is a power of two, so scaling back is exact.
+    fill_result<N>(params, Vec6(achieved_scaled * warm.wrench_scale), demand_wrench, ton, result);
     return result;
   }
   Lp<N> lp;

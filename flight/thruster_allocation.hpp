@@ -69,6 +69,7 @@ struct AllocationWarmStart {
   Vec6 error_weights = Vec6::Zero();
   bool valid = false;                                // the problem's own check (finite, weights > 0)
   model::ConfigMatrix config_scaled = model::ConfigMatrix::Zero();  // config / wrench_scale, formed once
+  model::ConfigMatrix config_scaled_abs = model::ConfigMatrix::Zero();  // |config_scaled|, the same
   double wrench_scale = 1.0;                         // [N or N m] power of two: the scaling is exact
   std::int64_t hits = 0;                             // answers from a slot (statistics)
   std::int64_t solves = 0;                           // answers from the simplex

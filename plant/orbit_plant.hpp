@@ -57,4 +57,11 @@ struct EphemerisSamples {
 };
 Ephemeris ephemeris_at_run_time(const OrbitPlantParams& p, double t_s, EphemerisSamples& samples);
 
+// The slow terms of the current window of whole control periods (OrbitDynamicsParams::
+// environment_step_s): window w covers periods [w n, (w + 1) n), n = environment_periods.
+struct SlowEnvironmentSample {
+  std::int64_t window = -1;  // -1: none yet
+  SlowEnvironment env;
+};
+
 }  // namespace chaser::plant

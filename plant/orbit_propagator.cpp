@@ -1,5 +1,9 @@
 #include "plant/orbit_propagator.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
 #include "plant/earth/magnetic_field.hpp"
 #include "plant/gravity_gradient.hpp"
 #include "plant/lvlh_eci.hpp"
@@ -196,24 +200,40 @@ LvlhOfTarget target_lvlh(const OrbitDynamicsParams& p, const PeriodEnvironment& 
 
 }  // namespace
 
-PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
-                                     const RigidState& chaser, double period_s) {
+SlowEnvironment slow_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
+                                 double lead_s) {
+  SlowEnvironment out;
+  out.eph = eph_mid;
+  // Central gravity and J2 over the lead (up to half a window, 0.5 s): without the a t^2 / 2 term
+  // the target's position would be g t^2 / 2 = 1 m off; with it, ~ n^3 r t^3 / 6 = 4e-7 m. The
+  // relative state's own drift over it is the relative velocity's (its change, ~1e-5 m/s, is left
+  // out: drag sees 7.5 km/s).
+  const Vec3 g_t = earth::gravity_acceleration_eci(p.perturbations.gravity, orbit.r_t_eci_m);
+  const Vec3 r_t = orbit.r_t_eci_m + lead_s * orbit.v_t_eci_mps + (0.5 * lead_s * lead_s) * g_t;
+  const Vec3 v_t = orbit.v_t_eci_mps + lead_s * g_t;
+  const Vec3 dr = orbit.dr_eci_m + lead_s * orbit.dv_eci_mps;
+  out.slow = slow_accelerations(p.perturbations, eph_mid, r_t, v_t, dr, orbit.dv_eci_mps);
+  if (p.target.magnetic) out.field_target_eci_T = field_eci_T(eph_mid, r_t);
+  if (p.chaser.magnetic) out.field_chaser_eci_T = field_eci_T(eph_mid, r_t + dr);
+  return out;
+}
+
+std::int64_t environment_periods(const OrbitDynamicsParams& p, double period_s) {
+  return std::max<std::int64_t>(1, std::llround(p.environment_step_s / period_s));
+}
+
+PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const SlowEnvironment& slow,
+                                     const OrbitState& orbit, const RigidState& chaser, double period_s) {
   PeriodEnvironment env;
-  env.eph = eph_mid;
-  if (!p.hold_slow_environment) return env;
+  env.eph = slow.eph;
   env.held = true;
-  // The midpoint rule: a value held over the period is right to second order in it where it is
-  // the value at the midpoint, which half a period of drift predicts to g dt^2 / 8 (1 cm at 0.1 s;
-  // the relative velocity's change, ~1e-5 m/s, is left out: drag sees 7.5 km/s).
+  env.slow = slow.slow;
+  // The midpoint rule for the torques: positions half a period on (the gradient's direction turns
+  // at n, 5e-5 rad in half a period: its drift alone is enough), and each body's attitude there to
+  // first order (its error, (w dt)^2 / 8, is the held torque's own order).
   const double half_s = 0.5 * period_s;
   const Vec3 r_t = orbit.r_t_eci_m + half_s * orbit.v_t_eci_mps;
-  const Vec3 v_t = orbit.v_t_eci_mps + half_s * earth::gravity_acceleration_eci(p.perturbations.gravity, orbit.r_t_eci_m);
-  const Vec3 dr = orbit.dr_eci_m + half_s * orbit.dv_eci_mps;
-  env.slow = slow_accelerations(p.perturbations, eph_mid, r_t, v_t, dr, orbit.dv_eci_mps);
-  if (p.target.magnetic) env.field_target_eci_T = field_eci_T(eph_mid, r_t);
-  if (p.chaser.magnetic) env.field_chaser_eci_T = field_eci_T(eph_mid, r_t + dr);
-  // Each body's attitude at the midpoint, to first order (its error, (w dt)^2 / 8, is the held
-  // torque's own order).
+  const Vec3 r_c = r_t + orbit.dr_eci_m + half_s * orbit.dv_eci_mps;
   const auto attitude_at_midpoint = [half_s](const Quat& q, const Vec3& omega_body_radps) {
     Quat mid;
     mid.coeffs() = q.coeffs() + half_s * quat_derivative(q, omega_body_radps);
@@ -223,12 +243,22 @@ PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemer
   env.torque_target_body_Nm =
       environment_torque_body(p.target, mu, p.run_from_eci,
                               attitude_at_midpoint(orbit.q_inertial_from_target, orbit.omega_target_body_radps), r_t,
-                              [&] { return env.field_target_eci_T; });
+                              [&] { return slow.field_target_eci_T; });
   env.torque_chaser_body_Nm =
       environment_torque_body(p.chaser, mu, p.run_from_eci,
-                              attitude_at_midpoint(chaser.q_inertial_from_body, chaser.omega_body_radps), r_t + dr,
-                              [&] { return env.field_chaser_eci_T; });
+                              attitude_at_midpoint(chaser.q_inertial_from_body, chaser.omega_body_radps), r_c,
+                              [&] { return slow.field_chaser_eci_T; });
   return env;
+}
+
+PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
+                                     const RigidState& chaser, double period_s) {
+  if (!p.hold_slow_environment) {
+    PeriodEnvironment env;
+    env.eph = eph_mid;
+    return env;
+  }
+  return period_environment(p, slow_environment(p, eph_mid, orbit, 0.5 * period_s), orbit, chaser, period_s);
 }
 
 void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment& env, OrbitState& orbit,

@@ -38,6 +38,13 @@ struct BodyTorqueParams {
 // (w 0.025)^4 / 24 = 3.4e-12 against RK4's (w 0.1)^5 / 120 = 2.1e-12 over the period.
 inline constexpr double kThirdOrderMaxPieceS = 0.025;
 
+// [s] The slowly varying environment (drag, solar pressure, the third bodies, the Earth's field and
+// its turn) is sampled once per this much run time, a whole number of control periods, at the
+// window's midpoint (slow_environment below): each turns with the orbit, (3 n dt)^2 / 8 ~ 1e-6 of
+// itself over 1 s in LEO, and the shadow's edge is then resolved to 1 s where the cylindrical
+// shadow itself is ~4 s early or late (docs/dynamics.md, "Held environment").
+inline constexpr double kEnvironmentStepS = 1.0;
+
 // The chaser's propellant slosh (plant/slosh.hpp): the tanks' first lateral modes as spring-masses
 // coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
 // centre of mass (slosh masses included), which internal forces do not move: F / m as without
@@ -66,9 +73,12 @@ struct OrbitDynamicsParams {
   // whole 0.1 s period, (w T)^5 / 120 (docs/dynamics.md). 0: RK4 for every piece.
   double third_order_max_piece_s = kThirdOrderMaxPieceS;
   // Hold drag, solar pressure, the third bodies, the magnetic field and the environment's torques
-  // over a control period (period_environment below); false evaluates them at every RK4 stage,
-  // the reference the test orbit_propagator_test.cpp compares against.
+  // (slow_environment and period_environment below); false evaluates them at every RK4 stage, the
+  // reference the test orbit_propagator_test.cpp compares against.
   bool hold_slow_environment = true;
+  // [s] the slow terms' window (kEnvironmentStepS), rounded to whole control periods (at least one):
+  // environment_periods.
+  double environment_step_s = kEnvironmentStepS;
 };
 
 // The translational and target parts of the truth; the chaser's attitude and mass stay in
@@ -83,29 +93,46 @@ struct OrbitState {
   std::array<SloshState, kMaxSloshTanks> slosh{};  // the chaser's slosh masses, [0, slosh.count) used
 };
 
-// The environment of one control period. The ephemeris (the Sun, the Moon, the Earth's turn) is
-// always held: it moves by 1e-6 of itself in 0.1 s. With hold_slow_environment, so are the slowly
-// varying accelerations and the field, evaluated at the period's midpoint (eph_mid is for that
-// time; the state there is predicted from the period start by half a period of drift), where a
-// held value is right to second order: each turns with the orbit (n dt = 1e-4 rad in 0.1 s in
-// LEO; the field at 3 n), so the held value misses the stages' by ~(3 n dt)^2 / 8 ~ 1e-8 of itself
-// on average. The gravity-gradient and magnetic torques are held the same way, in body axes, at
-// each body's attitude predicted to the midpoint: they turn with the body (2.5 deg/s: 4.4e-3 rad
-// a period for the tumbling target), so they miss the stages' by ~(w dt)^2 / 8 ~ 2e-6 of
-// themselves, an impulse error that cancels over each turn. What must follow every stage (gravity
-// and J2 at the target and their difference at dr) still does. The gain: 4 stages per piece, up
-// to a few tens of pieces per period with 24 thrusters, each with two drags (an exp), two
-// pressures and shadows, four third-body terms, two field evaluations and four torques, against
-// once per period.
+// The environment of one control period. With hold_slow_environment, the slowly varying
+// accelerations, the Earth's field and the ephemeris (the Sun, the Moon, the Earth's turn) are
+// held over a window of whole periods (environment_step_s, 1 s), evaluated at the window's
+// midpoint (SlowEnvironment; the state there predicted from the window's start), where a held
+// value is right to second order: each turns with the orbit (n dt = 1e-3 rad in 1 s in LEO; the
+// field at 3 n), so the held value misses the stages' by ~(3 n dt)^2 / 8 ~ 1e-6 of itself on
+// average. The gravity-gradient and magnetic torques are held over each period, in body axes, at
+// each body's attitude predicted to the period's midpoint: they turn with the body (2.5 deg/s:
+// 4.4e-3 rad a period for the tumbling target), so they miss the stages' by ~(w dt)^2 / 8 ~ 2e-6
+// of themselves, an impulse error that cancels over each turn. What must follow every stage
+// (gravity and J2 at the target and their difference at dr) still does. The gain: 4 stages per
+// piece, a few pieces per period with 24 thrusters, each with two drags (an exp), two pressures
+// and shadows, four third-body terms, two field evaluations and four torques, against once per
+// window for the forces and once per period for the torques.
+struct SlowEnvironment {
+  Ephemeris eph;                           // at the window's midpoint
+  OrbitAccelerations slow;                 // slow_accelerations there
+  Vec3 field_target_eci_T = Vec3::Zero();  // [T] the Earth's field at the target
+  Vec3 field_chaser_eci_T = Vec3::Zero();  // [T] and at the chaser
+};
+// The slow terms lead_s [s] after `orbit`'s time (the window's midpoint; eph_mid is for then): the
+// bodies' positions predicted by r + v t + a t^2 / 2 (central gravity and J2; the rest is 1e-5 of
+// it), their velocities by v + a t.
+SlowEnvironment slow_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
+                                 double lead_s);
+// The control periods in one window of the slow terms: environment_step_s / period_s rounded, >= 1.
+std::int64_t environment_periods(const OrbitDynamicsParams& p, double period_s);
+
 struct PeriodEnvironment {
   Ephemeris eph;
   bool held = false;                    // false: the terms below are evaluated at every stage
-  OrbitAccelerations slow;              // slow_accelerations at the period's midpoint
-  Vec3 field_target_eci_T = Vec3::Zero();  // [T] the Earth's field at the target
-  Vec3 field_chaser_eci_T = Vec3::Zero();  // [T] and at the chaser
+  OrbitAccelerations slow;              // slow_accelerations at the window's midpoint
   Vec3 torque_target_body_Nm = Vec3::Zero();  // [N m] gravity gradient + magnetic, target axes
   Vec3 torque_chaser_body_Nm = Vec3::Zero();  // [N m] the same on the chaser (about its CoM at rest)
 };
+// One period's environment from the window's slow terms: the torques at the period's midpoint.
+PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const SlowEnvironment& slow,
+                                     const OrbitState& orbit, const RigidState& chaser, double period_s);
+// The same with a window of one period (eph_mid at its midpoint); without hold_slow_environment
+// only the ephemeris, for the stages to evaluate the rest.
 PeriodEnvironment period_environment(const OrbitDynamicsParams& p, const Ephemeris& eph_mid, const OrbitState& orbit,
                                      const RigidState& chaser, double period_s);
 

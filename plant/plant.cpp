@@ -30,6 +30,7 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
       .rigid = initial,
       .orbit = OrbitState{},
       .ephemeris = EphemerisSamples{},
+      .slow_environment = SlowEnvironmentSample{},
       .thrusters = ThrusterState{},
       .sensors = make_sensor_state(scenario.sensors, period_ns),
       .streams = PlantStreams(seed),
@@ -83,14 +84,32 @@ PieceInput piece_input(const ThrustPiece& piece, const Vec3& torque_dist_body_Nm
   };
 }
 
-// The perturbed orbit's period: the environment held at the period start (period_environment: the
-// Sun, the Moon, the Earth's turn and the slowly varying forces), each piece propagated, then the
-// LVLH view of the relative state refreshed for the sensors.
+// The perturbed orbit's environment for the period at t_k: the slow terms of its window (sampled
+// when the window begins, at the window's midpoint), the torques at the period's own midpoint.
+PeriodEnvironment orbit_period_environment(const OrbitPlantParams& earth, PlantState& state, TimeNs t_k,
+                                           TimeNs period_ns) {
+  const OrbitDynamicsParams& dynamics = earth.dynamics;
+  const double period_s = to_seconds(period_ns);
+  if (!dynamics.hold_slow_environment) {
+    return period_environment(dynamics, ephemeris_at_run_time(earth, to_seconds(t_k) + 0.5 * period_s, state.ephemeris),
+                              state.orbit, state.rigid, period_s);
+  }
+  const std::int64_t periods = environment_periods(dynamics, period_s);
+  const std::int64_t window = t_k / period_ns / periods;
+  if (window != state.slow_environment.window) {
+    const double mid_s = period_s * (static_cast<double>(window * periods) + 0.5 * static_cast<double>(periods));
+    const Ephemeris eph_mid = ephemeris_at_run_time(earth, mid_s, state.ephemeris);
+    state.slow_environment = {.window = window,
+                              .env = slow_environment(dynamics, eph_mid, state.orbit, mid_s - to_seconds(t_k))};
+  }
+  return period_environment(dynamics, state.slow_environment.env, state.orbit, state.rigid, period_s);
+}
+
+// The perturbed orbit's period: the environment (orbit_period_environment), each piece
+// propagated, then the LVLH view of the relative state refreshed for the sensors.
 void step_orbit_plant(const OrbitPlantParams& earth, PlantState& state, const ThrustProfile& profile,
                       const Vec3& torque_dist_body_Nm, const Vec3& force_dist_lvlh_N, TimeNs t_k, TimeNs period_ns) {
-  const double period_s = to_seconds(period_ns);
-  const Ephemeris eph_mid = ephemeris_at_run_time(earth, to_seconds(t_k) + 0.5 * period_s, state.ephemeris);
-  const PeriodEnvironment env = period_environment(earth.dynamics, eph_mid, state.orbit, state.rigid, period_s);
+  const PeriodEnvironment env = orbit_period_environment(earth, state, t_k, period_ns);
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
     const PieceInput input = piece_input(piece, torque_dist_body_Nm, force_dist_lvlh_N);

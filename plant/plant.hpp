@@ -40,6 +40,7 @@ struct PlantState {
   RigidState rigid;  // the chaser; with an Earth orbit its r_lvlh_m, v_lvlh_mps are derived from `orbit`
   OrbitState orbit;  // Earth orbit only: both bodies in ECI, the target's attitude
   EphemerisSamples ephemeris;  // Earth orbit only: the Sun's and the Moon's last samples
+  SlowEnvironmentSample slow_environment;  // Earth orbit only: the slow terms of the current window
   ThrusterState thrusters;
   SensorState sensors;
   PlantStreams streams;
