@@ -84,6 +84,7 @@ struct Lp {
   Vec6 b;                                 // scaled demand
   Eigen::Matrix<double, kCols, 1> cost;  // objective of the current phase
   std::array<double, kCols> lower{}, upper{}, x{};
+  TonN<N> ton_upper = TonN<N>::Ones();    // the on-times' upper bounds (1, or 1 - a floor)
   std::array<At, Lp<N>::kCols> at{};
   std::array<int, kRows> basis{};  // variable basic in each row
   Mat6 binv;                       // B^-1
@@ -109,7 +110,7 @@ void init_phase1(Lp<N>& lp, const ConfigN<N>& m_scaled, const Vec6& w_scaled, co
   lp.binv.setZero();
   for (int j = 0; j < Lp<N>::kCols; ++j) {
     lp.lower[j] = 0.0;
-    lp.upper[j] = j < lp.thrusters ? 1.0 : j < N ? 0.0 : kInf;  // padding columns are fixed at 0
+    lp.upper[j] = j < lp.thrusters ? lp.ton_upper[j] : j < N ? 0.0 : kInf;  // padding columns are fixed at 0
     lp.cost[j] = j < N ? 0.0 : w_scaled[(j - N) % kRows];
     lp.x[j] = 0.0;
     lp.at[j] = At::kLower;
@@ -308,7 +309,7 @@ void start_phase2(Lp<N>& lp, bool feasible) {
 template <int N>
 TonN<N> ton_of(const Lp<N>& lp) {
   TonN<N> ton;
-  for (int i = 0; i < N; ++i) ton[i] = std::clamp(lp.x[i], 0.0, 1.0);  // clears Harris overruns
+  for (int i = 0; i < N; ++i) ton[i] = std::clamp(lp.x[i], 0.0, lp.ton_upper[i]);  // clears Harris overruns
   return ton;
 }
 
@@ -451,6 +452,37 @@ AllocationResult allocate_cold(const AllocationParams& params, const Vec6& deman
   return result;
 }
 
+// Floors: the problem in t = ton - floor, 0 <= t <= 1 - floor, demand w_d - M floor (the header).
+template <int N>
+AllocationResult allocate_floored(const AllocationParams& params, const Vec6& demand_wrench, const AllocationTon& floor) {
+  AllocationResult result;
+  const ConfigMap<N> config = config_of<N>(params);
+  const bool floors_valid = floor.allFinite() && (floor.array() >= 0.0).all() && (floor.array() <= 1.0).all() &&
+                            (params.thrusters >= model::kMaxThrusters ||
+                             floor.tail(model::kMaxThrusters - params.thrusters).isZero(0.0));
+  if (!floors_valid || !valid_problem<N>(params, config) || !demand_wrench.allFinite()) {
+    answered_without_lp(params, false, demand_wrench, result);  // ton = 0, converged = false
+    return result;
+  }
+  const TonN<N> lower = floor.template head<N>();
+  const Vec6 shifted = demand_wrench - config * lower;
+  TonN<N> t = TonN<N>::Zero();
+  result.feasible = result.converged = true;  // a zero shifted demand: t = 0 is the unique optimum
+  if (!shifted.isZero(0.0)) {
+    Lp<N> lp;
+    lp.ton_upper = TonN<N>::Ones() - lower;
+    AllocationResult shifted_result;
+    solve<N>(params, config, shifted, scaling_of<N>(params, config), lp, shifted_result);
+    t = shifted_result.ton.template head<N>();
+    result.feasible = shifted_result.feasible;
+    result.converged = shifted_result.converged;
+    result.iterations = shifted_result.iterations;
+  }
+  const TonN<N> ton = (lower + t).cwiseMin(1.0);  // t <= 1 - floor up to rounding
+  fill_result<N>(params, config, demand_wrench, ton, result);
+  return result;
+}
+
 // The slots belong to the same set: the solver's columns compared at its width (the padding is
 // zero in both).
 template <int N>
@@ -512,6 +544,14 @@ AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& 
   if (params.thrusters <= 16) return allocate_cold<16>(params, demand_wrench);
   if (params.thrusters <= 24) return allocate_cold<24>(params, demand_wrench);
   return allocate_cold<32>(params, demand_wrench);
+}
+
+AllocationResult allocate_thrusters_floored(const AllocationParams& params, const Vec6& demand_wrench,
+                                            const AllocationTon& floor) {
+  if (params.thrusters <= 8) return allocate_floored<8>(params, demand_wrench, floor);
+  if (params.thrusters <= 16) return allocate_floored<16>(params, demand_wrench, floor);
+  if (params.thrusters <= 24) return allocate_floored<24>(params, demand_wrench, floor);
+  return allocate_floored<32>(params, demand_wrench, floor);
 }
 
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,

@@ -137,14 +137,15 @@ struct Reference {
   bool ok = false;            // CLP reached a proven verdict in every stage
 };
 
-Reference clp_reference(const AllocationParams& p, const Vec6& d) {
+// floor: the on-times' lower bounds (allocate_thrusters_floored), zero for allocate_thrusters.
+Reference clp_reference(const AllocationParams& p, const Vec6& d, const AllocationTon& floor = AllocationTon::Zero()) {
   const int n = p.thrusters;
   const Eigen::MatrixXd m = p.config.leftCols(n);
   const Vec6& w = p.error_weights;
   Reference ref;
   const std::vector<double> rhs(d.data(), d.data() + 6);
-  const ClpOutcome eq = solve_clp(m, std::vector<double>(n, 0.0), std::vector<double>(n, 1.0),
-                                  std::vector<double>(n, 1.0), rhs, rhs, false);
+  const std::vector<double> ton_lb(floor.data(), floor.data() + n);
+  const ClpOutcome eq = solve_clp(m, ton_lb, std::vector<double>(n, 1.0), std::vector<double>(n, 1.0), rhs, rhs, false);
   if (eq.optimal) {
     ref.feasible = ref.ok = true;
     ref.propellant = eq.objective;
@@ -157,7 +158,7 @@ Reference clp_reference(const AllocationParams& p, const Vec6& d) {
   a.block(0, n, 6, 6) = Eigen::MatrixXd::Identity(6, 6);
   a.block(0, n + 6, 6, 6) = -Eigen::MatrixXd::Identity(6, 6);
   std::vector<double> lb(n + 12, 0.0), ub(n + 12, COIN_DBL_MAX), obj(n + 12, 0.0);
-  for (int i = 0; i < n; ++i) ub[i] = 1.0;
+  for (int i = 0; i < n; ++i) lb[i] = floor[i], ub[i] = 1.0;
   for (int j = 0; j < 6; ++j) obj[n + j] = obj[n + 6 + j] = w[j];
   const ClpOutcome err = solve_clp(a.topRows(6), lb, ub, obj, rhs, rhs, true);
   if (!err.optimal) return ref;
@@ -181,15 +182,17 @@ struct Tally {
   int max_iterations = 0;
 };
 
-// One demand: our result against CLP's, every property the brief lists.
-void check_against_clp(const AllocationParams& params, const Vec6& d, Tally& tally) {
-  const AllocationResult res = allocate_thrusters(params, d);
-  const Reference ref = clp_reference(params, d);
+// One demand: our result against CLP's, every property the brief lists; with a floor (not null),
+// allocate_thrusters_floored against CLP with those lower bounds.
+void check_against_clp(const AllocationParams& params, const Vec6& d, Tally& tally,
+                       const AllocationTon* floor = nullptr) {
+  const AllocationResult res = floor ? allocate_thrusters_floored(params, d, *floor) : allocate_thrusters(params, d);
+  const Reference ref = floor ? clp_reference(params, d, *floor) : clp_reference(params, d);
   ASSERT_TRUE(ref.ok) << "CLP gave no proven verdict for d = " << d.transpose();
   ASSERT_TRUE(res.converged);
   tally.max_iterations = std::max(tally.max_iterations, res.iterations);
   for (int i = 0; i < params.thrusters; ++i) {
-    EXPECT_GE(res.ton[i], -1e-12);
+    EXPECT_GE(res.ton[i], (floor ? (*floor)[i] : 0.0) - 1e-12);
     EXPECT_LE(res.ton[i], 1.0 + 1e-12);
   }
   for (int i = params.thrusters; i < model::kMaxThrusters; ++i) EXPECT_EQ(res.ton[i], 0.0);  // padding
@@ -443,6 +446,71 @@ TEST(ThrusterAllocation, WarmStartGivesTheColdOptimum) {
   EXPECT_EQ(warm.config, other.config);  // the slots were dropped at the switch
   EXPECT_GT(warm.hits, slow_steps / 2) << "hits " << warm.hits << " of " << slow_steps << " slow steps";
   std::printf("warm start: %lld of 4000 answered from a kept basis\n", static_cast<long long>(warm.hits));
+}
+
+// Floors (an active check's test pulse): one or two random thrusters held to at least a random
+// on-time in [0.05, 0.5], MSR's 8 and COMRADE-like 24-thruster random geometries, random weights:
+// the same verdict and optimal values as CLP with those lower bounds, every on-time at or above its
+// floor. Where the demand stays attainable the floored thrusters' force and torque are cancelled by
+// the others (residual at rounding) and the answer costs at least the unfloored one.
+TEST(ThrusterAllocation, FlooredOnTimesMatchClp) {
+  for (const int n : {8, 24}) {
+    RandomStream rng(2020, "test/allocation/floored/" + std::to_string(n));
+    Tally tally;
+    int cancelled = 0;
+    for (int g = 0; g < 20; ++g) {
+      AllocationParams params = n == kMsr && g == 0 ? msr_params() : random_params(rng, n);
+      for (int j = 0; j < 6; ++j) params.error_weights[j] = std::exp(rng.uniform(std::log(0.2), std::log(5.0)));
+      for (int k = 0; k < 20; ++k) {
+        AllocationTon floor = AllocationTon::Zero();
+        for (int c = 0; c < 1 + k % 2; ++c)
+          floor[static_cast<int>(rng.uniform() * n) % n] = rng.uniform(0.05, 0.5);
+        const Vec6 d = random_demand(rng, params, k % 4);
+        check_against_clp(params, d, tally, &floor);
+        if (HasFatalFailure()) return;
+        const AllocationResult floored = allocate_thrusters_floored(params, d, floor);
+        const AllocationResult free = allocate_thrusters(params, d);
+        if (floored.feasible) {
+          ++cancelled;
+          EXPECT_GE(floored.propellant, free.propellant - 1e-12);
+        }
+      }
+    }
+    report(("floored, " + std::to_string(n) + " thrusters").c_str(), tally);
+    EXPECT_GE(tally.feasible, 60);  // both verdicts in numbers
+    EXPECT_GE(tally.infeasible, 60);
+    EXPECT_EQ(cancelled, tally.feasible);
+  }
+}
+
+// A zero floor is the unfloored problem, bit for bit; bad floors are flagged like bad input.
+TEST(ThrusterAllocation, ZeroFloorIsTheUnflooredAnswerAndBadFloorsAreFlagged) {
+  AllocationParams params = msr_params();
+  RandomStream rng(7, "test/allocation/zero-floor");
+  for (int k = 0; k < 200; ++k) {
+    const Vec6 d = random_demand(rng, params, k % 4);
+    const AllocationResult a = allocate_thrusters(params, d);
+    const AllocationResult b = allocate_thrusters_floored(params, d, AllocationTon::Zero());
+    EXPECT_EQ(std::memcmp(a.ton.data(), b.ton.data(), sizeof(double) * model::kMaxThrusters), 0) << k;
+    EXPECT_EQ(a.feasible, b.feasible);
+  }
+  AllocationTon floor = AllocationTon::Zero();
+  for (const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    floor[3] = bad;
+    const AllocationResult r = allocate_thrusters_floored(params, Vec6::Constant(0.1), floor);
+    EXPECT_FALSE(r.converged) << bad;
+    EXPECT_TRUE((r.ton.array() == 0.0).all());
+  }
+  floor.setZero();
+  floor[kMsr] = 0.2;  // beyond the set
+  EXPECT_FALSE(allocate_thrusters_floored(params, Vec6::Constant(0.1), floor).converged);
+  // A floor alone under a zero demand: the others cancel it.
+  floor.setZero();
+  floor[0] = 0.1;
+  const AllocationResult pulse = allocate_thrusters_floored(params, Vec6::Zero(), floor);
+  EXPECT_TRUE(pulse.converged && pulse.feasible);
+  EXPECT_GE(pulse.ton[0], 0.1);
+  EXPECT_LT(pulse.residual.cwiseAbs().maxCoeff(), 1e-12 * params.config.cwiseAbs().maxCoeff());
 }
 
 // Invalid input never hangs or throws: it returns ton = 0 and says it did not converge.
