@@ -402,6 +402,18 @@ void solve(const AllocationParams& params, const ConfigMap<N>& config, const Vec
   result.iterations = lp.iterations;
 }
 
+// M ton over the columns of `support` (the on-times outside it are zero), lowest index first: for
+// the wide sets, where a basic solution has at most 6 + |upper| nonzero on-times of 24 or 32.
+template <int N>
+Vec6 support_product(const ConfigMap<N>& m, const TonN<N>& ton, model::ThrusterMask support) {
+  Vec6 sum = Vec6::Zero();
+  for (; support != 0; support &= support - 1) {
+    const int i = std::countr_zero(support);
+    sum += ton[i] * m.col(i);
+  }
+  return sum;
+}
+
 // The on-times of a cached basis at the scaled demand b, if they are within bounds (up to the
 // solver's own Harris tolerance) and attain b, as a solved answer must; `achieved`: M ton then
 // (m_abs = |M|, formed once per problem).
@@ -416,10 +428,21 @@ bool try_slot(const AllocationWarmStart::Slot& slot, const ConfigMap<N>& m_scale
   const double tol = kPrimalTol * b.cwiseAbs().maxCoeff();
   if ((x.array() < -tol).any() || (x.array() > 1.0 + tol).any()) return false;
   ton.setZero();
+  model::ThrusterMask support = slot.upper;
   for (model::ThrusterMask m = slot.upper; m != 0; m &= m - 1) ton[std::countr_zero(m)] = 1.0;
-  for (int r = 0; r < kRows; ++r) ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
-  achieved = m_scaled * ton;
-  return attains(achieved, Vec6(m_abs * ton), b);
+  for (int r = 0; r < kRows; ++r) {
+    ton[slot.basis[r]] = std::clamp(x[r], 0.0, 1.0);
+    support |= model::thruster_bit(slot.basis[r]);
+  }
+  if constexpr (N <= 8) {  // MSR's width: the dense products, whose sums its pinned results depend on
+    achieved = m_scaled * ton;
+    return attains(achieved, Vec6(m_abs * ton), b);
+  } else {  // at most 6 basic and the upper on-times are nonzero: a few columns of the N
+    Vec6 magnitudes;
+    achieved = support_product<N>(m_scaled, ton, support);
+    magnitudes = support_product<N>(m_abs, ton, support);
+    return attains(achieved, magnitudes, b);
+  }
 }
 
 // Keeps the optimal basis of a solved attainable demand when its basic variables are on-times.

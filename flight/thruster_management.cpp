@@ -33,9 +33,13 @@ ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params
   for (int k = 0; k < n; ++k)
     if (ton[k] < params.min_on_fraction) ton[k] = 0.0;
   out.feasible = result.feasible;
-  out.commanded_wrench = n == 8  // fixed-size product for eight (MSR's branch): same sums, no dynamic loop
-                             ? Vec6(state.allocation.config.leftCols<8>() * ton.head<8>())
-                             : Vec6(state.allocation.config.leftCols(n) * ton.head(n));
+  if (n == 8) {  // fixed-size product for eight (MSR's branch): same sums, no dynamic loop
+    out.commanded_wrench = state.allocation.config.leftCols<8>() * ton.head<8>();
+  } else {  // any other set: the columns of the thrusters that fire (a few of 24), lowest first
+    out.commanded_wrench.setZero();
+    for (int k = 0; k < n; ++k)
+      if (ton[k] != 0.0) out.commanded_wrench += ton[k] * state.allocation.config.col(k);
+  }
   std::fill_n(ton_by_thruster.begin(), params.thrusters.count, 0.0);
   for (int k = 0; k < n; ++k)
     ton_by_thruster[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = ton[k];
