@@ -63,6 +63,13 @@ struct ThrustersArgs {
   std::vector<std::string> overrides;
 };
 
+// chaser control design (docs/control.md, "Six-axis design").
+struct ControlDesignArgs {
+  std::string scenario_path;
+  std::string json_path;  // empty: print only
+  std::vector<std::string> overrides;
+};
+
 struct CampaignMergeArgs {
   std::string out_dir;
   std::vector<std::string> shard_dirs;
@@ -75,6 +82,7 @@ int campaign_merge_command(const CampaignMergeArgs& args);
 int fdi_design_command(const FdiDesignArgs& args);
 int fmea_command(const FmeaArgs& args);
 int thrusters_command(const ThrustersArgs& args);
+int control_design_command(const ControlDesignArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 
 }  // namespace chaser::cli

@@ -79,6 +79,16 @@ int main(int argc, char** argv) {
   thrusters_cmd->add_option("--json", thrusters.json_path, "Also write the analysis as JSON");
   thrusters_cmd->add_option("--set", thrusters.overrides, "Override a scenario key: key.path=value (repeatable)");
 
+  ControlDesignArgs control_design;
+  CLI::App* control_cmd = app.add_subcommand("control", "Controller design tools");
+  control_cmd->require_subcommand(1);
+  CLI::App* control_design_cmd = control_cmd->add_subcommand(
+      "design", "H-infinity design of the six loops in control.hinf: gamma, margins, peaks (docs/control.md)");
+  control_design_cmd->add_option("scenario", control_design.scenario_path, "Scenario file (YAML)")->required();
+  control_design_cmd->add_option("--out", control_design.json_path,
+                                 "Write the design, controllers and frequency responses as JSON");
+  control_design_cmd->add_option("--set", control_design.overrides, "Override a scenario key: key.path=value (repeatable)");
+
   FdiDesignArgs fdi_design;
   CLI::App* fdi_cmd = app.add_subcommand("fdi", "Fault detection and isolation tools");
   fdi_cmd->require_subcommand(1);
@@ -135,6 +145,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_command(run);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
   if (*design_cmd) return fdi_design_command(fdi_design);
+  if (*control_design_cmd) return control_design_command(control_design);
   if (*thrusters_cmd) return thrusters_command(thrusters);
   if (*fmea_cmd) return fmea_command(fmea);
   if (*merge_cmd) return campaign_merge_command(merge);

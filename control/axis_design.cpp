@@ -36,12 +36,16 @@ void check_spec(const AxisDesignSpec& s) {
   throw std::invalid_argument(text);
 }
 
-// Coarse then fine gamma bisection (the header).
-HinfResult synthesise_two_pass(const GeneralisedPlant& gp) {
+// Coarse then fine gamma bisection, then the central controller at kAxisGammaBackoff times the
+// threshold found (the header); `threshold` gets the fine bisection's gamma.
+HinfResult synthesise_three_pass(const GeneralisedPlant& gp, double& threshold) {
   const HinfResult coarse = synthesise(gp.p, gp.n_meas, gp.n_ctrl, kAxisGammaMax, kAxisGammaMax * 1e-4);
   if (!coarse.ok()) return coarse;
-  const double gamma_max = 2.0 * coarse.gamma;
-  return synthesise(gp.p, gp.n_meas, gp.n_ctrl, gamma_max, kAxisGammaRelTol * coarse.gamma);
+  const HinfResult fine =
+      synthesise(gp.p, gp.n_meas, gp.n_ctrl, 2.0 * coarse.gamma, kAxisGammaRelTol * coarse.gamma);
+  if (!fine.ok()) return fine;
+  threshold = fine.gamma;
+  return synthesise_at(gp.p, gp.n_meas, gp.n_ctrl, kAxisGammaBackoff * fine.gamma);
 }
 
 }  // namespace
@@ -84,7 +88,7 @@ AxisDesign design_axis(const AxisDesignSpec& spec) {
   d.weights.w_s = performance_weight(spec.peak_sensitivity, spec.bandwidth_radps, spec.low_frequency_gain);
   d.weights.w_ks = static_gain(MatrixXd::Constant(1, 1, spec.error_scale / spec.authority));
   const GeneralisedPlant design = mixed_sensitivity_plant(d.design_plant, d.weights);
-  d.synthesis = synthesise_two_pass(design);
+  d.synthesis = synthesise_three_pass(design, d.gamma_threshold);
   if (!d.synthesis.ok()) return d;
 
   const StateSpace closed_design = lower_lft(design.p, design.n_meas, design.n_ctrl, d.synthesis.controller);

@@ -51,7 +51,8 @@ struct AxisDesign {
   StateSpace design_plant;  // G with the shifted poles (what SB10AD saw)
   StateSpace plant;         // G: the double integrator with the Pade delay
   MixedSensitivityWeights weights;
-  HinfResult synthesis;                 // gamma, K
+  double gamma_threshold = 0.0;         // where SB10AD's fine bisection stopped (~ the optimum)
+  HinfResult synthesis;                 // K at gamma = kAxisGammaBackoff gamma_threshold
   double closed_loop_norm = 0.0;        // ||F_l(P_design, K)||_inf by sweep (the independent check)
   double closed_loop_norm_radps = 0.0;  // where
   double max_real_pole_design = 0.0;    // of F_l(P_design, K)
@@ -61,10 +62,16 @@ struct AxisDesign {
 };
 
 // Refuses (std::invalid_argument, naming every problem) a spec outside the ranges above. The
-// synthesis is two SB10AD calls: a coarse bisection from gamma_max = kAxisGammaMax, then a fine one
-// from twice the coarse gamma with tol = kAxisGammaRelTol gamma (docs/control.md: keep tol >= 1e-5 gamma).
+// synthesis is three SB10AD calls: a coarse bisection from gamma_max = kAxisGammaMax, a fine one
+// from twice the coarse gamma with tol = kAxisGammaRelTol gamma, then the central controller at
+// kAxisGammaBackoff times the fine threshold (synthesise_at). SB10AD's bisection keeps a gamma
+// while its central controller stabilises, which can be a little below the optimum, where that
+// controller does not meet its gamma (measured on the rz loop of comrade_envisat: norm 6e-4
+// relative above the threshold). One percent above it the existence conditions hold and the
+// controller meets gamma: threshold - tol <= optimum <= achieved norm <= gamma.
 inline constexpr double kAxisGammaMax = 1e3;
 inline constexpr double kAxisGammaRelTol = 1e-4;
+inline constexpr double kAxisGammaBackoff = 1.01;
 AxisDesign design_axis(const AxisDesignSpec& spec);
 
 }  // namespace chaser::control

@@ -25,7 +25,8 @@ using Eigen::MatrixXd;
 
 namespace {
 
-constexpr int kJobBisection = 1;  // JOB = 1: bisection from GAMMA down (see the header)
+constexpr int kJobBisection = 1;   // JOB = 1: bisection from GAMMA down (see the header)
+constexpr int kJobSuboptimal = 4;  // JOB = 4: the central controller at GAMMA itself
 // ACTOL: a gamma is kept only if every closed-loop pole has real part below this. Zero: stable.
 constexpr double kClosedLoopPoleBound = 0.0;
 
@@ -147,7 +148,9 @@ const char* to_string(HinfStatus status) {
   return "unknown";
 }
 
-HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_max, double tol) {
+namespace {
+
+HinfResult run_sb10ad(int job, const StateSpace& p, int n_meas, int n_ctrl, double gamma_max, double tol) {
   const std::vector<std::string> problems = validate_inputs(p, n_meas, n_ctrl, gamma_max, tol);
   if (!problems.empty()) {
     std::string all = "synthesise: invalid input:";
@@ -168,7 +171,6 @@ HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_
     return refuse(HinfStatus::kInvalidInput, "synthesise: plant P too large for SB10AD's 32-bit workspace sizes (n = " +
                                                  std::to_string(s.n) + ")");
 
-  const int job = kJobBisection;
   const int n = static_cast<int>(s.n), m = static_cast<int>(s.m), np = static_cast<int>(s.np);
   const int ldwork = static_cast<int>(ldwork64), liwork = static_cast<int>(liwork64), lbwork = 2 * n;
   const int n2 = 2 * n, np1 = static_cast<int>(s.np1), m1 = static_cast<int>(s.m1);
@@ -204,6 +206,16 @@ HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_
   r.controller = StateSpace{ak, bk, ck, dk};
   r.closed_loop = StateSpace{ac, bc, cc.topRows(np1), dc.topRows(np1)};
   return r;
+}
+
+}  // namespace
+
+HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_max, double tol) {
+  return run_sb10ad(kJobBisection, p, n_meas, n_ctrl, gamma_max, tol);
+}
+
+HinfResult synthesise_at(const StateSpace& p, int n_meas, int n_ctrl, double gamma) {
+  return run_sb10ad(kJobSuboptimal, p, n_meas, n_ctrl, gamma, gamma);  // GTOL unused by JOB = 4
 }
 
 }  // namespace chaser::control

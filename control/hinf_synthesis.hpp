@@ -76,4 +76,9 @@ struct HinfResult {
 // gamma_max > 0: the starting (largest) gamma; tol > 0: the absolute tolerance on gamma (GTOL).
 HinfResult synthesise(const StateSpace& p, int n_meas, int n_ctrl, double gamma_max, double tol);
 
+// The central (suboptimal) controller at `gamma` itself (SB10AD JOB = 4): no iteration. Where the
+// existence conditions hold at gamma, it achieves ||F_l(P, K)||_inf < gamma; pick gamma a little
+// above what synthesise's bisection found, whose own controller may not meet its gamma (above).
+HinfResult synthesise_at(const StateSpace& p, int n_meas, int n_ctrl, double gamma);
+
 }  // namespace chaser::control

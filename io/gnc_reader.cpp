@@ -26,6 +26,28 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
 // LQR weights (model/gnc.hpp): input weights r > 0 so that the input cost is positive definite;
 // position and angle weights > 0 too, for without them the Riccati equation has no stabilising
 // solution; rate weights >= 0. Modulation thresholds and the anti-windup clamp > 0.
+namespace {
+
+// One loop family of control.hinf (model::HinfLoopWeights). The bandwidth is bounded by the period
+// in validate_scenario (it must lie below the Nyquist frequency pi / T).
+void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWeights& out) {
+  r.number("bandwidth_radps", Range::positive(), out.bandwidth_radps);
+  r.number("peak_sensitivity", Range::left_open(1.0, 10.0), out.peak_sensitivity);
+  r.number("low_frequency_gain", Range::open(0.0, 1.0), out.low_frequency_gain);
+  r.number(error_scale_key, Range::positive(), out.error_scale);
+}
+
+void read_optional_hinf(MapReader& r, std::optional<model::HinfDesignParams>& out) {
+  if (!r.has("hinf")) return;
+  out.emplace();
+  read_section(r, "hinf", [&](MapReader& h) {
+    read_section(h, "translation", [&](MapReader& t) { read_hinf_loop(t, "error_scale_m", out->translation); });
+    read_section(h, "rotation", [&](MapReader& t) { read_hinf_loop(t, "error_scale_rad", out->rotation); });
+  });
+}
+
+}  // namespace
+
 void read_control(MapReader& r, model::ControlParams& out) {
   r.number("position_q_pos", Range::positive(), out.position_q_pos);
   r.number("position_q_vel", Range::non_negative(), out.position_q_vel);
@@ -36,6 +58,7 @@ void read_control(MapReader& r, model::ControlParams& out) {
   r.number("tmu_force_threshold_Ns", Range::positive(), out.tmu_force_threshold_Ns);
   r.number("tmu_torque_threshold_Nms", Range::positive(), out.tmu_torque_threshold_Nms);
   r.number("tmu_windup_periods", Range::positive(), out.tmu_windup_periods);
+  read_optional_hinf(r, out.hinf);
 }
 
 void read_initial(MapReader& r, model::InitialState& out) {

@@ -1,7 +1,10 @@
 // Checks between keys: timing against the control period, inertia as a whole, the thruster set
-// (io/thruster_set_validation.cpp), fault onsets, guidance geometry. Each check runs only if the keys it uses
-// were read cleanly, so one bad value gives one error rather than a cascade.
+// (io/thruster_set_validation.cpp), fault onsets, guidance geometry, H-infinity bandwidths against
+// the period. Each check runs only if the keys it uses were read cleanly, so one bad value gives
+// one error rather than a cascade.
+
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include <Eigen/Eigenvalues>
@@ -227,6 +230,20 @@ void check_slosh(const model::Scenario& s, Diagnostics& d) {
                       "chaser.com_body_m or check the inertia", format_number(taken_kgm2), format_number(smallest_kgm2)));
 }
 
+// A loop cannot be faster than the period that samples it: each H-infinity bandwidth below the
+// Nyquist frequency pi / T (a sampled loop needs more than that; the design's margins tell).
+void check_hinf(const model::Scenario& s, Diagnostics& d) {
+  if (!s.control.hinf || !d.clean("control_period_s")) return;
+  const double nyquist = std::numbers::pi / s.control_period_s;
+  const auto check = [&](const char* key, double bandwidth) {
+    if (d.clean(key) && !(bandwidth < nyquist))
+      d.add(key, fmt::format("must be < pi / control_period_s = {} rad/s (got {})", format_number(nyquist),
+                             format_number(bandwidth)));
+  };
+  check("control.hinf.translation.bandwidth_radps", s.control.hinf->translation.bandwidth_radps);
+  check("control.hinf.rotation.bandwidth_radps", s.control.hinf->rotation.bandwidth_radps);
+}
+
 }  // namespace
 
 void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
@@ -237,6 +254,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   validate_thruster_set(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);
+  check_hinf(s, diag);
   validate_campaign(s, diag);
 }
 

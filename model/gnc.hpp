@@ -1,5 +1,7 @@
 #pragma once
 // Parameters of the flight software: navigation, guidance, control, modulation and management.
+#include <optional>
+
 #include "core/types.hpp"
 
 namespace chaser::model {
@@ -26,6 +28,23 @@ struct GuidanceParams {
   double capture_attitude_tol_rad = 0.0349;  // [rad] capture: attitude error at the end
 };
 
+// The H-infinity mixed-sensitivity design of one family of loops, translation or rotation
+// (control/axis_design.hpp; COMRADE 2018, sec. 5; docs/control.md, "Six-axis design"): after the
+// computed-torque precompensation each axis is a double integrator in commanded acceleration, with
+// W_S = (s / M + omega_B) / (s + omega_B A) on the error and W_KS = error_scale / authority on the
+// commanded acceleration.
+struct HinfLoopWeights {
+  double bandwidth_radps = 0.05;     // [rad/s] omega_B: |S| crosses 1 near it
+  double peak_sensitivity = 2.0;     // [-] M: |S| below M gamma at high frequency
+  double low_frequency_gain = 1e-3;  // [-] A: |S| below A gamma at low frequency (A > 0: SB10AD's A3)
+  double error_scale = 1.0;          // [m | rad] an error this large may ask for the axis's authority
+};
+
+struct HinfDesignParams {
+  HinfLoopWeights translation;                          // the relative position, per body axis
+  HinfLoopWeights rotation{0.3, 2.0, 1e-3, 0.05};       // the attitude, per body axis
+};
+
 struct ControlParams {
   // LQR weights: state cost diag(q_pos * I, q_vel * I), input cost r_force * I (position), and the
   // same shape for attitude. Gains are computed from these and the scenario's mass and inertia.
@@ -45,6 +64,8 @@ struct ControlParams {
   double tmu_torque_threshold_Nms = 0.1;   // [N m s]
   // Accumulator clamp (anti-windup) in periods of full per-axis thruster authority.
   double tmu_windup_periods = 3.0;         // [-]
+  // The H-infinity design (`chaser control design`); absent: the scenario has none.
+  std::optional<HinfDesignParams> hinf;
 };
 
 }  // namespace chaser::model

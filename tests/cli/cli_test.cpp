@@ -213,6 +213,46 @@ TEST(Cli, ThrustersAnalysesTheStartAndRecoverySets) {
   std::filesystem::remove(json);
 }
 
+// chaser control design on ENVISAT: six loops, each stable on the true plant, its achieved norm (the
+// sweep) at or below the gamma its controller was formed at, and its authority the smaller of the
+// +/- pure force of `chaser thrusters` divided by the mass (an independent path to the same LP).
+TEST(Cli, ControlDesignChecksSixLoops) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto json = dir / "chaser_control_design_test.json", thrusters = dir / "chaser_control_thrusters.json";
+  const CommandResult r = run_chaser("control design scenarios/comrade_envisat.yaml --out " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rz"), std::string::npos) << r.output;
+  ASSERT_EQ(run_chaser("thrusters scenarios/comrade_envisat.yaml --json " + thrusters.string()).exit_code, 0);
+  std::ifstream in(json), tin(thrusters);
+  const nlohmann::json j = nlohmann::json::parse(in), t = nlohmann::json::parse(tin);
+  ASSERT_EQ(j["axes"].size(), 6u);
+  EXPECT_TRUE(j["ok"].get<bool>());
+  for (const auto& axis : j["axes"]) {
+    EXPECT_EQ(axis["status"], "ok") << axis["axis"];
+    EXPECT_TRUE(axis["stable"].get<bool>()) << axis["axis"];
+    EXPECT_LE(axis["closed_loop_norm"].get<double>(), axis["gamma"].get<double>() * (1.0 + 1e-9)) << axis["axis"];
+    EXPECT_GT(axis["margins"]["phase_margin_deg"].get<double>(), 30.0) << axis["axis"];
+    EXPECT_GT(axis["frequency_response"]["omega_radps"].size(), 100u);
+  }
+  const auto& attainable = t["sets"][0]["attainable"];
+  const double fx = std::min(attainable[0].get<double>(), attainable[1].get<double>());
+  EXPECT_NEAR(j["axes"][0]["authority"].get<double>(), fx / 1600.0, 1e-9 * fx);
+  std::filesystem::remove(json);
+  std::filesystem::remove(thrusters);
+}
+
+// A scenario without control.hinf has nothing to design (exit 2, the section named); a bandwidth
+// past the period's Nyquist frequency is refused by the loader with its key path.
+TEST(Cli, ControlDesignRefusesWhatItCannotDesign) {
+  const CommandResult msr = run_chaser("control design scenarios/msr_terminal.yaml");
+  EXPECT_EQ(msr.exit_code, 2) << msr.output;
+  EXPECT_NE(msr.output.find("control.hinf"), std::string::npos) << msr.output;
+  const CommandResult fast =
+      run_chaser("control design scenarios/comrade_envisat.yaml --set control.hinf.rotation.bandwidth_radps=40");
+  EXPECT_EQ(fast.exit_code, 2) << fast.output;
+  EXPECT_NE(fast.output.find("control.hinf.rotation.bandwidth_radps"), std::string::npos) << fast.output;
+}
+
 // A set that cannot span is refused by the loader before any analysis: exit 2, the key named.
 TEST(Cli, ThrustersRefusesABadScenarioWithExitCode2) {
   const CommandResult r = run_chaser(

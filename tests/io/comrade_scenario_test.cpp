@@ -86,6 +86,11 @@ const BadCase kBadCases[] = {
   {"overfull", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 1000, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks.0.liquid_mass_kg", "m of the tank, more than its height_m 0.9"},
   {"liquid_heavier_than_chaser", {"chaser.slosh.tanks=[{bottom_centre_body_m: [0,0,0], axis_body: [0,0,1], radius_m: 1.0, height_m: 1.0, liquid_mass_kg: 1700, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks", "hold 1700 kg of liquid: must be less than chaser.mass_kg 1600"},
   {"tanks_too_far", {"chaser.slosh.tanks=[{bottom_centre_body_m: [5,0,0], axis_body: [0,0,1], radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 150, density_kgpm3: 1004, damping_ratio: 0.005}]"}, "chaser.slosh.tanks", "more than the smallest principal moment of chaser.inertia_kgm2 (1300)"},
+  {"hinf_bandwidth", {"control.hinf.translation.bandwidth_radps=0"}, "control.hinf.translation.bandwidth_radps", "must be > 0 (got 0)"},
+  {"hinf_nyquist", {"control.hinf.rotation.bandwidth_radps=40"}, "control.hinf.rotation.bandwidth_radps", "must be < pi / control_period_s = 31.41592653589793 rad/s (got 40)"},
+  {"hinf_peak", {"control.hinf.translation.peak_sensitivity=1"}, "control.hinf.translation.peak_sensitivity", "must be in (1, 10] (got 1)"},
+  {"hinf_low_gain", {"control.hinf.rotation.low_frequency_gain=0"}, "control.hinf.rotation.low_frequency_gain", "must be in (0, 1) (got 0)"},
+  {"hinf_scale", {"control.hinf.rotation.error_scale_rad=-1"}, "control.hinf.rotation.error_scale_rad", "must be > 0 (got -1)"},
 };
 // clang-format on
 
@@ -135,6 +140,20 @@ TEST(ComradeScenario, EnvisatChaserHasTwoSloshingTanks) {
   EXPECT_EQ(slosh.g_eff_mps2, 0.005);
   EXPECT_EQ(slosh.tanks[1].bottom_centre_body_m, Vec3(-0.5, 0.0, -0.45));
   EXPECT_EQ(slosh.tanks[0].liquid_mass_kg, 150.0);
+}
+
+// control.hinf reads as written; a scenario without it has none.
+TEST(ComradeScenario, EnvisatHasAnHinfDesign) {
+  const LoadResult r = load_scenario_file(kEnvisat, {});
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  ASSERT_TRUE(r.scenario->control.hinf.has_value());
+  const model::HinfDesignParams& h = *r.scenario->control.hinf;
+  EXPECT_EQ(h.translation.bandwidth_radps, 0.04);
+  EXPECT_EQ(h.translation.error_scale, 0.5);
+  EXPECT_EQ(h.rotation.bandwidth_radps, 0.2);
+  EXPECT_EQ(h.rotation.error_scale, 0.035);
+  EXPECT_EQ(h.rotation.low_frequency_gain, 1e-3);
+  EXPECT_FALSE(testing::load_msr().scenario->control.hinf.has_value());
 }
 
 }  // namespace

@@ -1,0 +1,174 @@
+// chaser control design: the scenario's H-infinity design (control.hinf), six loops after the
+// computed-torque precompensation (control/six_axis_design.hpp), each checked independently of
+// SLICOT: the closed loop's norm by sweep, its poles on the true plant, the classical margins with
+// the exact delay. Prints a table; --out writes every figure, the controllers and the frequency
+// responses as JSON for python/plot_control.py.
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/output_file.hpp"
+#include "cli/scenario_input.hpp"
+#include "control/frequency_response.hpp"
+#include "control/six_axis_design.hpp"
+
+namespace chaser::cli {
+
+namespace {
+
+constexpr int kResponsePointsPerDecade = 50;
+
+double db(double gain) { return 20.0 * std::log10(gain); }
+
+std::string unit_of(std::size_t axis, const char* translation, const char* rotation) {
+  return axis < 3 ? translation : rotation;
+}
+
+nlohmann::json matrix_json(const Eigen::MatrixXd& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    std::vector<double> row(static_cast<std::size_t>(m.cols()));
+    for (Eigen::Index c = 0; c < m.cols(); ++c) row[static_cast<std::size_t>(c)] = m(r, c);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// JSON cannot hold inf or NaN: an unbounded margin is null.
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+// |S|, |T|, |K S|, |L|, arg L and the bounds gamma / |W_S|, gamma / |W_KS| on a log grid, for the plots.
+nlohmann::json response_json(const control::AxisDesign& d) {
+  const double w_lo = 1e-4 * d.spec.bandwidth_radps;
+  const double w_hi = d.spec.delay_s > 0.0 ? std::max(1e3 * d.spec.bandwidth_radps, 20.0 / d.spec.delay_s)
+                                           : 1e3 * d.spec.bandwidth_radps;
+  const int count = static_cast<int>(std::ceil(std::log10(w_hi / w_lo) * kResponsePointsPerDecade)) + 1;
+  const control::SisoLoop loop{control::delayed_double_integrator(0.0, 0.0), d.synthesis.controller, d.spec.delay_s};
+  const double gamma = d.synthesis.gamma;
+  const double w_ks = d.weights.w_ks->d(0, 0);
+  nlohmann::json r;
+  for (const double w : control::log_grid(w_lo, w_hi, count)) {
+    const std::complex<double> l = control::loop_response(loop, w);
+    const std::complex<double> k = control::frequency_response(d.synthesis.controller, w)(0, 0);
+    const std::complex<double> s = 1.0 / (1.0 + l);
+    r["omega_radps"].push_back(w);
+    r["L_mag"].push_back(std::abs(l));
+    r["L_phase_deg"].push_back(std::arg(l) * 180.0 / std::numbers::pi);
+    r["S_mag"].push_back(std::abs(s));
+    r["T_mag"].push_back(std::abs(l * s));
+    r["KS_mag"].push_back(std::abs(k * s));
+    r["S_bound"].push_back(gamma / std::abs(control::frequency_response(*d.weights.w_s, w)(0, 0)));
+    r["KS_bound"].push_back(gamma / w_ks);
+  }
+  return r;
+}
+
+nlohmann::json axis_json(std::size_t axis, const control::AxisDesign& d) {
+  const control::LoopMargins& m = d.margins;
+  nlohmann::json j{
+      {"axis", d.spec.name},
+      {"authority", d.spec.authority},
+      {"authority_unit", unit_of(axis, "m/s^2", "rad/s^2")},
+      {"weights",
+       {{"bandwidth_radps", d.spec.bandwidth_radps},
+        {"peak_sensitivity", d.spec.peak_sensitivity},
+        {"low_frequency_gain", d.spec.low_frequency_gain},
+        {"error_scale", d.spec.error_scale},
+        {"error_scale_unit", unit_of(axis, "m", "rad")},
+        {"w_ks", d.weights.w_ks->d(0, 0)},
+        {"design_pole_shift_radps", d.spec.pole_shift_fraction * d.spec.bandwidth_radps}}},
+      {"status", control::to_string(d.synthesis.status)},
+      {"message", d.synthesis.message},
+  };
+  if (!d.synthesis.ok()) return j;
+  j["gamma"] = d.synthesis.gamma;
+  j["closed_loop_norm"] = d.closed_loop_norm;
+  j["closed_loop_norm_radps"] = finite_or_null(d.closed_loop_norm_radps);
+  j["max_real_pole_design"] = d.max_real_pole_design;
+  j["max_real_pole"] = d.max_real_pole;
+  j["stable"] = d.max_real_pole < 0.0;
+  j["margins"] = {{"gain_margin_up", finite_or_null(m.gain_margin_up)},
+                  {"gain_margin_up_db", finite_or_null(db(m.gain_margin_up))},
+                  {"phase_crossover_radps", finite_or_null(m.phase_crossover_radps)},
+                  {"gain_margin_down", m.gain_margin_down},
+                  {"phase_margin_deg", finite_or_null(m.phase_margin_deg)},
+                  {"gain_crossover_radps", finite_or_null(m.gain_crossover_radps)},
+                  {"delay_margin_s", finite_or_null(m.delay_margin_s)},
+                  {"sensitivity_peak", m.sensitivity_peak},
+                  {"sensitivity_peak_radps", m.sensitivity_peak_radps},
+                  {"complementary_peak", m.complementary_peak},
+                  {"complementary_peak_radps", m.complementary_peak_radps},
+                  {"bandwidth_radps", finite_or_null(m.bandwidth_radps)}};
+  const control::StateSpace& k = d.synthesis.controller;
+  j["controller"] = {{"a", matrix_json(k.a)}, {"b", matrix_json(k.b)}, {"c", matrix_json(k.c)}, {"d", matrix_json(k.d)}};
+  j["frequency_response"] = response_json(d);
+  return j;
+}
+
+std::string margin_text(double gain) { return std::isfinite(gain) ? fmt::format("{:.1f} dB", db(gain)) : "inf"; }
+
+std::string axis_row(std::size_t axis, const control::AxisDesign& d) {
+  const std::string head = fmt::format("{:<4} {:>9.4g} {:<7} {:>7.3g} {:>4.2g} {:>7.1e} {:>6.3g} {:<3}", d.spec.name,
+                                       d.spec.authority, unit_of(axis, "m/s^2", "rad/s^2"), d.spec.bandwidth_radps,
+                                       d.spec.peak_sensitivity, d.spec.low_frequency_gain, d.spec.error_scale,
+                                       unit_of(axis, "m", "rad"));
+  if (!d.synthesis.ok()) return head + "  " + control::to_string(d.synthesis.status) + ": " + d.synthesis.message;
+  const control::LoopMargins& m = d.margins;
+  return head + fmt::format(" {:>8.5f} {:>8.5f} {:>8.3g} {:>6.3f} {:>6.3f} {:>9} {:>9} {:>7.1f} {:>8.3g} {:>10.2e}",
+                            d.synthesis.gamma, d.closed_loop_norm, m.bandwidth_radps, m.sensitivity_peak,
+                            m.complementary_peak, margin_text(m.gain_margin_up),
+                            m.gain_margin_down > 0.0 ? margin_text(m.gain_margin_down) : "-", m.phase_margin_deg,
+                            m.delay_margin_s, d.max_real_pole);
+}
+
+}  // namespace
+
+int control_design_command(const ControlDesignArgs& args) {
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  const model::Scenario& s = *loaded->scenario;
+  control::SixAxisDesign design;
+  try {
+    design = control::design_six_axes(s);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << fmt::format("chaser control design: {}: {}\n", args.scenario_path, e.what());
+    return kExitBadInput;
+  }
+  std::cout << fmt::format(
+      "{}: H-infinity S/KS design of the six loops after the computed-torque precompensation (SLICOT SB10AD;\n"
+      "docs/control.md). Plant per axis e^(-s tau)/s^2 in commanded acceleration, tau = T/2 + delay_max/2 + "
+      "rise/2 = {:.4g} s.\n"
+      "gamma: SB10AD's; norm: ||F_l(P, K)||_inf by an independent sweep; margins on the true double integrator "
+      "with the exact delay.\n\n",
+      s.name, design.delay_s);
+  std::cout << fmt::format("{:<4} {:>9} {:<7} {:>7} {:>4} {:>7} {:>6} {:<3} {:>8} {:>8} {:>8} {:>6} {:>6} {:>9} {:>9} "
+                           "{:>7} {:>8} {:>10}\n",
+                           "loop", "authority", "", "w_B", "M", "A", "scale", "", "gamma", "norm", "bw rad/s", "|S|pk",
+                           "|T|pk", "GM up", "GM down", "PM deg", "DM s", "max Re(p)");
+  nlohmann::json report{{"scenario", s.name}, {"delay_s", design.delay_s}, {"axes", nlohmann::json::array()}};
+  for (std::size_t k = 0; k < design.axes.size(); ++k) {
+    std::cout << axis_row(k, design.axes[k]) << "\n";
+    report["axes"].push_back(axis_json(k, design.axes[k]));
+  }
+  report["ok"] = design.ok();
+  if (!args.json_path.empty()) {
+    if (!write_output_file(args.json_path, report.dump(1) + "\n")) return kExitFailure;
+    std::cout << fmt::format("\nwrote {} (plots: /usr/bin/python3 python/plot_control.py {})\n", args.json_path,
+                             args.json_path);
+  }
+  if (!design.ok()) {
+    std::cerr << "chaser control design: a loop has no stabilising design (see its row): change its weights in "
+                 "control.hinf\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace chaser::cli
