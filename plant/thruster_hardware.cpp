@@ -100,6 +100,7 @@ int collect_events(const ThrusterHardware& hw, const ThrusterState& state, const
   int n = 0;
   *open_at_start = 0;
   for (int i = 0; i < hw.count; ++i) {
+    if (state.valves[i].count == 0 && !effects[i].stuck_open) continue;  // no event, not open at t_k
     if (!latch_open_for(hw, state, i)) continue;
     const Mask bit = Mask{1} << i;
     if (effects[i].stuck_open) {
@@ -183,6 +184,10 @@ void schedule_period(const ThrusterHardware& hardware, std::span<const model::Fa
   for (int i = 0; i < hardware.count; ++i) {
     ValveSchedule& valve = state.valves[i];
     const ThrusterFaultEffect& effect = effects[i];
+    if (valve.count == 0 && !(command.ton[i] > 0.0) && !effect.stuck_open && !(effect.ton_floor > 0.0)) {
+      out.ton_realised[i] = 0.0;  // idle (most of 24, most periods): nothing pending, commanded or leaking
+      continue;
+    }
     drop_finished(valve, t_k);
     double realised = 0.0;
     if (effect.stuck_open || effect.blocked) {  // case 1: open throughout; case 2: closed from t_k
