@@ -112,6 +112,33 @@ nlohmann::json axis_json(std::size_t axis, const control::AxisDesign& d) {
   return j;
 }
 
+nlohmann::json grid_point_json(const control::GridPoint& p, const control::AxisUncertainty& box) {
+  nlohmann::json j{{"gain", p.gain}, {"delay_s", p.delay_s}, {"modes", nlohmann::json::object()}};
+  for (std::size_t i = 0; i < box.modes.size(); ++i) j["modes"][box.modes[i].name] = p.mode_frequency_radps[i];
+  return j;
+}
+
+nlohmann::json robustness_json(const control::AxisUncertainty& box, const control::RobustnessResult& r) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const control::UncertainMode& m : box.modes)
+    modes.push_back({{"name", m.name},
+                     {"frequency_radps", {m.frequency_lo_radps, m.frequency_hi_radps}},
+                     {"modal_fraction", m.modal_fraction},
+                     {"damping", m.damping}});
+  return {{"box",
+           {{"gain", {box.gain_lo, box.gain_hi}}, {"delay_s", {box.delay_lo_s, box.delay_hi_s}}, {"modes", modes},
+            {"points_per_range", box.points_per_range}}},
+          {"points", r.points},
+          {"unstable", r.unstable},
+          {"robustly_stable", r.robustly_stable()},
+          {"worst_max_real_pole", r.worst_max_real_pole},
+          {"worst_pole_point", grid_point_json(r.worst_pole_point, box)},
+          {"min_phase_margin_deg", finite_or_null(r.min_phase_margin_deg)},
+          {"min_phase_margin_point", grid_point_json(r.min_phase_margin_point, box)},
+          {"min_gain_margin_up", finite_or_null(r.min_gain_margin_up)},
+          {"max_gain_margin_down", r.max_gain_margin_down}};
+}
+
 std::string margin_text(double gain) { return std::isfinite(gain) ? fmt::format("{:.1f} dB", db(gain)) : "inf"; }
 
 std::string axis_row(std::size_t axis, const control::AxisDesign& d) {
@@ -158,6 +185,26 @@ int control_design_command(const ControlDesignArgs& args) {
     report["axes"].push_back(axis_json(k, design.axes[k]));
   }
   report["ok"] = design.ok();
+  if (design.checked_robustness) {
+    std::cout << "\nRobust stability over control.hinf.robustness (closed-loop poles at every grid point, Pade "
+                 "delay; margins with the exact delay):\n";
+    std::cout << fmt::format("{:<4} {:>15} {:>17} {:<28} {:>7} {:>8} {:>12} {:>9} {:>9}\n", "loop", "gain", "delay s",
+                             "modes", "points", "unstable", "max Re(p)", "min PM", "min GM");
+    for (std::size_t k = 0; k < design.axes.size(); ++k) {
+      const control::AxisUncertainty& box = design.boxes[k];
+      const control::RobustnessResult& r = design.robustness[k];
+      std::string modes;
+      for (const control::UncertainMode& m : box.modes)
+        modes += fmt::format("{}{} {:.3g}-{:.3g}", modes.empty() ? "" : ", ", m.name, m.frequency_lo_radps,
+                             m.frequency_hi_radps);
+      std::cout << fmt::format("{:<4} {:>6.3f} - {:<6.3f} {:>7.4f} - {:<7.4f} {:<28} {:>7} {:>8} {:>12.3e} {:>9.1f} {:>9}\n",
+                               design.axes[k].spec.name, box.gain_lo, box.gain_hi, box.delay_lo_s, box.delay_hi_s,
+                               modes.empty() ? "-" : modes, r.points, r.unstable, r.worst_max_real_pole,
+                               r.min_phase_margin_deg, margin_text(r.min_gain_margin_up));
+      report["axes"][k]["robustness"] = robustness_json(box, r);
+    }
+    report["robust"] = design.robust();
+  }
   if (!args.json_path.empty()) {
     if (!write_output_file(args.json_path, report.dump(1) + "\n")) return kExitFailure;
     std::cout << fmt::format("\nwrote {} (plots: /usr/bin/python3 python/plot_control.py {})\n", args.json_path,
@@ -166,6 +213,11 @@ int control_design_command(const ControlDesignArgs& args) {
   if (!design.ok()) {
     std::cerr << "chaser control design: a loop has no stabilising design (see its row): change its weights in "
                  "control.hinf\n";
+    return kExitFailure;
+  }
+  if (!design.robust()) {
+    std::cerr << "chaser control design: a loop loses stability inside control.hinf.robustness (see its row): "
+                 "lower its bandwidth or raise its peak_sensitivity\n";
     return kExitFailure;
   }
   return kExitOk;

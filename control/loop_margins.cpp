@@ -85,6 +85,29 @@ Peak peak_of(const ScalarOfLogOmega& f, const std::vector<double>& grid, const s
   return peak;
 }
 
+// Around each lightly damped pole of G and K (damping ratio below kResonanceDamping), points
+// spaced by a fraction of its half-power width, so that a resonance narrower than the log grid's
+// spacing is not stepped over; the grid is then sorted.
+void add_resonance_points(const SisoLoop& loop, double omega_min, double omega_max, std::vector<double>& grid) {
+  constexpr double kResonanceDamping = 0.2;
+  for (const StateSpace* sys : {&loop.plant, &loop.controller}) {
+    if (sys->states() == 0) continue;
+    for (const Complex& p : poles(*sys)) {
+      const double magnitude = std::abs(p);
+      if (!(magnitude > 0.0) || magnitude < omega_min || magnitude > omega_max) continue;
+      const double zeta = -p.real() / magnitude;
+      if (!(std::abs(zeta) < kResonanceDamping)) continue;
+      const double width = std::max(std::abs(zeta), 1e-4);
+      for (int k = -16; k <= 16; ++k) {
+        const double w = magnitude * (1.0 + 0.5 * k * width);
+        if (w > omega_min && w < omega_max) grid.push_back(std::log(w));
+      }
+    }
+  }
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+}
+
 }  // namespace
 
 Complex loop_response(const SisoLoop& loop, double omega_radps) {
@@ -93,8 +116,9 @@ Complex loop_response(const SisoLoop& loop, double omega_radps) {
   return g * k * std::polar(1.0, -omega_radps * loop.delay_s);
 }
 
-LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double omega_max_radps) {
+LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double omega_max_radps, int points_per_decade) {
   check_loop(loop, omega_min_radps, omega_max_radps);
+  if (points_per_decade < 2) throw std::invalid_argument("loop_margins: points_per_decade must be >= 2");
   const auto l_at = [&loop](double log_omega) { return loop_response(loop, std::exp(log_omega)); };
   const ScalarOfLogOmega log_gain = [&](double x) { return std::log(std::abs(l_at(x))); };
   const ScalarOfLogOmega imag = [&](double x) { return l_at(x).imag(); };
@@ -107,9 +131,10 @@ LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double om
   const ScalarOfLogOmega s_above_half_power = [&](double x) { return s_mag(x) - half_power; };
 
   const double decades = std::log10(omega_max_radps / omega_min_radps);
-  const int count = std::max(2, static_cast<int>(std::ceil(decades * kMarginPointsPerDecade)) + 1);
+  const int count = std::max(2, static_cast<int>(std::ceil(decades * points_per_decade)) + 1);
   std::vector<double> grid;
   for (const double w : log_grid(omega_min_radps, omega_max_radps, count)) grid.push_back(std::log(w));
+  add_resonance_points(loop, omega_min_radps, omega_max_radps, grid);
   std::vector<Complex> l(grid.size());
   std::vector<double> s(grid.size()), t(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) {
@@ -124,14 +149,16 @@ LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double om
     if ((std::abs(l[i]) < 1.0) != (std::abs(l[i + 1]) < 1.0)) {  // gain crossover
       const double x = bisect(log_gain, a, b);
       const Complex lc = l_at(x);
-      const double pm_rad = std::numbers::pi + std::arg(lc);  // arg in (-pi, pi]: PM in (0, 2 pi]
-      const double pm = pm_rad > std::numbers::pi ? pm_rad - 2.0 * std::numbers::pi : pm_rad;  // (-pi, pi]
-      const double pm_deg = pm * 180.0 / std::numbers::pi;
+      // The phase margin is L's angular distance from -1 on the unit circle, either way round:
+      // 180 deg - |arg L| (a lightly damped mode can carry the phase past 0). A delay only turns L
+      // clockwise, so the delay margin is the clockwise angle to -1, pi + arg L in (0, 2 pi].
+      const double arg = std::arg(lc);
+      const double pm_deg = (std::numbers::pi - std::abs(arg)) * 180.0 / std::numbers::pi;
       if (pm_deg < m.phase_margin_deg) {
         m.phase_margin_deg = pm_deg;
         m.gain_crossover_radps = std::exp(x);
       }
-      m.delay_margin_s = std::min(m.delay_margin_s, std::max(pm, 0.0) / std::exp(x));
+      m.delay_margin_s = std::min(m.delay_margin_s, (std::numbers::pi + arg) / std::exp(x));
     }
     if ((l[i].imag() < 0.0) != (l[i + 1].imag() < 0.0)) {  // L crosses the real axis
       const double x = bisect(imag, a, b);

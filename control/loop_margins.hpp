@@ -12,8 +12,10 @@
 //   increase of the gain (gain_margin_up = min 1/|L|); one with |L| > 1 bounds a decrease
 //   (gain_margin_down = max 1/|L|): a double integrator under lead control has such a low-frequency
 //   crossover. The loop stays stable for gains k in (gain_margin_down, gain_margin_up).
-// - Phase margin: at every gain crossover (|L| = 1), 180 deg + arg L(j w_c), with arg in (-180, 180];
-//   the smallest over the crossovers. Delay margin: PM [rad] / w_c, the least over the crossovers.
+// - Phase margin: at every gain crossover (|L| = 1), L's angle from -1 either way round,
+//   180 deg - |arg L(j w_c)| with arg in (-180, 180]; the smallest over the crossovers (a lightly
+//   damped mode can make several). Delay margin: the clockwise angle to -1, (180 deg + arg L) [rad]
+//   / w_c, the least over the crossovers.
 // - Peaks and bandwidth: M_S = max |S|, M_T = max |T|; the bandwidth is where |S| first crosses
 //   1/sqrt(2) from below (Skogestad & Postlethwaite, "Multivariable Feedback Control", 2nd ed.,
 //   sec. 2.4.5, omega_B).
@@ -22,7 +24,9 @@
 // means nothing). S&P eqs. 2.40-2.41 tie them to the peak: GM >= M_S / (M_S - 1) and
 // PM >= 2 arcsin(1 / (2 M_S)); the tests use that as an independent check.
 //
-// Method: a log grid of kMarginPointsPerDecade points per decade over [omega_min, omega_max]; each
+// Method: a log grid of points_per_decade points per decade over [omega_min, omega_max], with points
+// added around every lightly damped pole of G and K (damping ratio < 0.2: 33 points across 16 of
+// its half-power widths, so a sharp resonance is not stepped over); each
 // sign change (of |L| - 1 for gain crossovers, of Im L with Re L < 0 for phase crossovers, of
 // |S| - 1/sqrt(2) for the bandwidth) is refined by bisection in ln w to kMarginLogTolerance, and
 // each peak by golden section on the grid intervals beside the largest point. A crossing or peak
@@ -64,6 +68,7 @@ constexpr double kMarginLogTolerance = 1e-12;
 
 // Throws std::invalid_argument if G or K is not SISO, tau < 0 or not finite, or the range is not
 // 0 < omega_min < omega_max (finite).
-LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double omega_max_radps);
+LoopMargins loop_margins(const SisoLoop& loop, double omega_min_radps, double omega_max_radps,
+                         int points_per_decade = kMarginPointsPerDecade);
 
 }  // namespace chaser::control

@@ -44,8 +44,26 @@ std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario) {
   return specs;
 }
 
+AxisUncertainty axis_uncertainty(const model::Scenario& scenario, const model::HinfRobustnessParams& box, int axis) {
+  AxisUncertainty u;
+  u.gain_lo = (1.0 - box.thrust_uncertainty) / (1.0 + box.mass_uncertainty);
+  u.gain_hi = (1.0 + box.thrust_uncertainty) / (1.0 - box.mass_uncertainty);
+  const double fixed = 0.5 * scenario.control_period_s + 0.5 * scenario.thrusters.rise_time_s;
+  u.delay_lo_s = fixed;
+  u.delay_hi_s = fixed + scenario.thrusters.delay_max_s;
+  for (const model::UncertainModeSpec& m : axis < 3 ? box.translation_modes : box.rotation_modes)
+    u.modes.push_back({m.name, m.frequency_lo_radps, m.frequency_hi_radps, m.modal_fraction, m.damping});
+  u.points_per_range = box.points_per_range;
+  return u;
+}
+
 bool SixAxisDesign::ok() const {
   return std::all_of(axes.begin(), axes.end(), [](const AxisDesign& a) { return a.ok(); });
+}
+
+bool SixAxisDesign::robust() const {
+  return ok() && (!checked_robustness || std::all_of(robustness.begin(), robustness.end(),
+                                                     [](const RobustnessResult& r) { return r.robustly_stable(); }));
 }
 
 SixAxisDesign design_six_axes(const model::Scenario& scenario) {
@@ -53,6 +71,13 @@ SixAxisDesign design_six_axes(const model::Scenario& scenario) {
   design.delay_s = loop_delay_s(scenario);
   const std::array<AxisDesignSpec, 6> specs = six_axis_specs(scenario);
   for (std::size_t k = 0; k < specs.size(); ++k) design.axes[k] = design_axis(specs[k]);
+  const auto& box = scenario.control.hinf->robustness;
+  if (!box || !design.ok()) return design;
+  design.checked_robustness = true;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    design.boxes[k] = axis_uncertainty(scenario, *box, static_cast<int>(k));
+    design.robustness[k] = robust_stability_grid(design.axes[k], design.boxes[k]);
+  }
   return design;
 }
 

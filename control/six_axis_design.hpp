@@ -12,11 +12,13 @@
 //    period (the zero-order hold of a sampled command), the valve electronics' mean delay
 //    (delay_max / 2: uniform in [0, delay_max), Fonod 2015 eq. 1) and the rise's equivalent delay
 //    (rise_time / 2, plant/thruster_hardware.hpp);
-//  - weights: control.hinf.translation for x, y, z, control.hinf.rotation for rx, ry, rz.
+//  - weights: control.hinf.translation for x, y, z, control.hinf.rotation for rx, ry, rz;
+//  - with control.hinf.robustness, each loop is then checked over its box (robust_stability_grid).
 // Design-time code: allocates.
 #include <array>
 
 #include "control/axis_design.hpp"
+#include "control/robustness.hpp"
 #include "model/scenario.hpp"
 
 namespace chaser::control {
@@ -30,10 +32,19 @@ double loop_delay_s(const model::Scenario& scenario);
 // control.hinf section or an axis has no authority (the set cannot push along it).
 std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario);
 
+// The box of control.hinf.robustness for axis k (0-2 translation, 3-5 rotation): the gain range
+// [(1 - d_F) / (1 + d_m), (1 + d_F) / (1 - d_m)] (control/robustness.hpp), the delay over the valves'
+// range T/2 + [0, delay_max] + rise/2, and the family's modes.
+AxisUncertainty axis_uncertainty(const model::Scenario& scenario, const model::HinfRobustnessParams& box, int axis);
+
 struct SixAxisDesign {
   double delay_s = 0.0;
   std::array<AxisDesign, 6> axes;
-  bool ok() const;  // every axis synthesised and stable on the true plant
+  bool checked_robustness = false;          // control.hinf.robustness was given
+  std::array<AxisUncertainty, 6> boxes;     // when checked
+  std::array<RobustnessResult, 6> robustness;
+  bool ok() const;      // every axis synthesised and stable on the true plant
+  bool robust() const;  // and, where checked, stable at every grid point
 };
 
 SixAxisDesign design_six_axes(const model::Scenario& scenario);

@@ -1,4 +1,6 @@
 // Flight-software sections: navigation, guidance, control (model/gnc.hpp) and the initial state.
+#include <fmt/format.h>
+
 #include "io/scenario_sections.hpp"
 
 namespace chaser::io {
@@ -37,12 +39,62 @@ void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWe
   r.number(error_scale_key, Range::positive(), out.error_scale);
 }
 
+constexpr int kMaxModesPerFamily = 4;
+constexpr int kMaxGridPoints = 20;
+
+void read_mode(const YAML::Node& node, const std::string& path, model::UncertainModeSpec& out, Diagnostics& diag) {
+  MapReader m(node, path, diag);
+  m.text("name", out.name);
+  m.number("frequency_lo_radps", Range::positive(), out.frequency_lo_radps);
+  m.number("frequency_hi_radps", Range::positive(), out.frequency_hi_radps);
+  m.number("modal_fraction", Range::right_open(0.0, 1.0), out.modal_fraction);
+  m.number("damping", Range::right_open(0.0, 1.0), out.damping);
+  m.finish();
+  if (m.valid() && diag.clean(join_path(path, "frequency_lo_radps")) && diag.clean(join_path(path, "frequency_hi_radps")) &&
+      !(out.frequency_lo_radps <= out.frequency_hi_radps))
+    diag.add(join_path(path, "frequency_hi_radps"),
+             fmt::format("must be >= frequency_lo_radps = {} (got {})", format_number(out.frequency_lo_radps),
+                         format_number(out.frequency_hi_radps)));
+}
+
+void read_modes(MapReader& r, const char* key, std::vector<model::UncertainModeSpec>& out) {
+  const auto list = r.child(key, fmt::format("a list of 0 to {} modes", kMaxModesPerFamily));
+  if (!list) return;
+  if (!(list->IsSequence() && list->size() <= static_cast<std::size_t>(kMaxModesPerFamily))) {
+    r.diagnostics().add(r.path_of(key), fmt::format("must be a list of 0 to {} modes (got {})", kMaxModesPerFamily,
+                                                    describe_node(*list)));
+    return;
+  }
+  out.assign(list->size(), model::UncertainModeSpec{});
+  for (std::size_t i = 0; i < list->size(); ++i)
+    read_mode((*list)[i], join_path(r.path_of(key), std::to_string(i)), out[i], r.diagnostics());
+}
+
+void read_robustness(MapReader& r, model::HinfRobustnessParams& out) {
+  r.number("mass_uncertainty", Range::right_open(0.0, 0.5), out.mass_uncertainty);
+  r.number("thrust_uncertainty", Range::right_open(0.0, 0.5), out.thrust_uncertainty);
+  std::uint64_t points = 0;
+  if (r.count("points_per_range", points)) {
+    if (points < 2 || points > static_cast<std::uint64_t>(kMaxGridPoints))
+      r.diagnostics().add(r.path_of("points_per_range"),
+                          fmt::format("must be in [2, {}] (got {})", kMaxGridPoints, points));
+    else
+      out.points_per_range = static_cast<int>(points);
+  }
+  read_modes(r, "translation_modes", out.translation_modes);
+  read_modes(r, "rotation_modes", out.rotation_modes);
+}
+
 void read_optional_hinf(MapReader& r, std::optional<model::HinfDesignParams>& out) {
   if (!r.has("hinf")) return;
   out.emplace();
   read_section(r, "hinf", [&](MapReader& h) {
     read_section(h, "translation", [&](MapReader& t) { read_hinf_loop(t, "error_scale_m", out->translation); });
     read_section(h, "rotation", [&](MapReader& t) { read_hinf_loop(t, "error_scale_rad", out->rotation); });
+    if (h.has("robustness")) {
+      out->robustness.emplace();
+      read_section(h, "robustness", [&](MapReader& b) { read_robustness(b, *out->robustness); });
+    }
   });
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Parameters of the flight software: navigation, guidance, control, modulation and management.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/types.hpp"
 
@@ -40,9 +42,30 @@ struct HinfLoopWeights {
   double error_scale = 1.0;          // [m | rad] an error this large may ask for the axis's authority
 };
 
+// A mode the rigid design model leaves out (propellant slosh, a flexible appendage), as the loops
+// see it: a zero-pole pair at omega_z and omega_z / sqrt(1 - modal_fraction) (control/robustness.hpp).
+struct UncertainModeSpec {
+  std::string name;
+  double frequency_lo_radps = 0.1;  // [rad/s] omega_z range: the mode's frequency with the body held
+  double frequency_hi_radps = 0.1;  // [rad/s]
+  double modal_fraction = 0.0;      // [-] the share of the mass (inertia) in the mode, [0, 1)
+  double damping = 0.005;           // [-] the mode's damping ratio, [0, 1)
+};
+
+// The box `chaser control design` checks each loop over, point by point (docs/control.md,
+// "Robustness"); the delay range comes from the thrusters (T/2 + [0, delay_max] + rise/2).
+struct HinfRobustnessParams {
+  double mass_uncertainty = 0.05;    // [-] relative error of the mass and inertia the precompensation uses
+  double thrust_uncertainty = 0.01;  // [-] relative error of the thrust level
+  int points_per_range = 5;          // [-] grid points along each range, [2, 20]
+  std::vector<UncertainModeSpec> translation_modes;  // seen by x, y, z
+  std::vector<UncertainModeSpec> rotation_modes;     // seen by rx, ry, rz
+};
+
 struct HinfDesignParams {
   HinfLoopWeights translation;                          // the relative position, per body axis
   HinfLoopWeights rotation{0.3, 2.0, 1e-3, 0.05};       // the attitude, per body axis
+  std::optional<HinfRobustnessParams> robustness;       // absent: no robustness check
 };
 
 struct ControlParams {

@@ -234,6 +234,12 @@ TEST(Cli, ControlDesignChecksSixLoops) {
     EXPECT_GT(axis["margins"]["phase_margin_deg"].get<double>(), 30.0) << axis["axis"];
     EXPECT_GT(axis["frequency_response"]["omega_radps"].size(), 100u);
   }
+  // control.hinf.robustness: 5 points per range; x, y, z see the slosh (5^3 points), the rotations the
+  // slosh and the stowed arm (5^4); all stable.
+  EXPECT_TRUE(j["robust"].get<bool>());
+  EXPECT_EQ(j["axes"][0]["robustness"]["points"], 125);
+  EXPECT_EQ(j["axes"][5]["robustness"]["points"], 625);
+  for (const auto& axis : j["axes"]) EXPECT_EQ(axis["robustness"]["unstable"], 0) << axis["axis"];
   const auto& attainable = t["sets"][0]["attainable"];
   const double fx = std::min(attainable[0].get<double>(), attainable[1].get<double>());
   EXPECT_NEAR(j["axes"][0]["authority"].get<double>(), fx / 1600.0, 1e-9 * fx);

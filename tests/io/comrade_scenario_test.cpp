@@ -91,6 +91,10 @@ const BadCase kBadCases[] = {
   {"hinf_peak", {"control.hinf.translation.peak_sensitivity=1"}, "control.hinf.translation.peak_sensitivity", "must be in (1, 10] (got 1)"},
   {"hinf_low_gain", {"control.hinf.rotation.low_frequency_gain=0"}, "control.hinf.rotation.low_frequency_gain", "must be in (0, 1) (got 0)"},
   {"hinf_scale", {"control.hinf.rotation.error_scale_rad=-1"}, "control.hinf.rotation.error_scale_rad", "must be > 0 (got -1)"},
+  {"robust_points", {"control.hinf.robustness.points_per_range=1"}, "control.hinf.robustness.points_per_range", "must be in [2, 20] (got 1)"},
+  {"robust_mass", {"control.hinf.robustness.mass_uncertainty=0.5"}, "control.hinf.robustness.mass_uncertainty", "must be in [0, 0.5) (got 0.5)"},
+  {"robust_fraction", {"control.hinf.robustness.translation_modes=[{name: slosh, frequency_lo_radps: 0.05, frequency_hi_radps: 0.16, modal_fraction: 1, damping: 0.005}]"}, "control.hinf.robustness.translation_modes.0.modal_fraction", "must be in [0, 1) (got 1)"},
+  {"robust_range", {"control.hinf.robustness.rotation_modes=[{name: arm, frequency_lo_radps: 12, frequency_hi_radps: 6, modal_fraction: 0.05, damping: 0.005}]"}, "control.hinf.robustness.rotation_modes.0.frequency_hi_radps", "must be >= frequency_lo_radps = 12 (got 6)"},
 };
 // clang-format on
 
@@ -153,6 +157,11 @@ TEST(ComradeScenario, EnvisatHasAnHinfDesign) {
   EXPECT_EQ(h.rotation.bandwidth_radps, 0.2);
   EXPECT_EQ(h.rotation.error_scale, 0.035);
   EXPECT_EQ(h.rotation.low_frequency_gain, 1e-3);
+  ASSERT_TRUE(h.robustness.has_value());
+  EXPECT_EQ(h.robustness->points_per_range, 5);
+  ASSERT_EQ(h.robustness->rotation_modes.size(), 2u);
+  EXPECT_EQ(h.robustness->rotation_modes[1].name, "stowed_arm");
+  EXPECT_EQ(h.robustness->translation_modes[0].modal_fraction, 0.12);
   EXPECT_FALSE(testing::load_msr().scenario->control.hinf.has_value());
 }
 
