@@ -10,6 +10,7 @@ ActiveCheckParams make_active_check_params(const model::Scenario& scenario) {
       .enabled = s.enabled,
       .max_unverified_s = s.max_unverified_s,
       .pulse_fraction = s.pulse_s / scenario.control_period_s,
+      .informative_fraction = s.informative_on_time_s / scenario.control_period_s,
       .keep_quiet_range_m = s.keep_quiet_range_m,
   };
 }
@@ -20,6 +21,9 @@ std::vector<std::string> validate(const ActiveCheckParams& p) {
     problems.push_back(fmt::format("max_unverified_s must be > 0 (got {})", p.max_unverified_s));
   if (!(p.pulse_fraction > 0 && p.pulse_fraction <= 1))
     problems.push_back(fmt::format("pulse_fraction must be in (0, 1] (got {})", p.pulse_fraction));
+  if (!(p.informative_fraction > 0 && p.informative_fraction <= p.pulse_fraction))
+    problems.push_back(fmt::format("informative_fraction must be in (0, pulse_fraction = {}] (got {})",
+                                   p.pulse_fraction, p.informative_fraction));
   if (!(p.keep_quiet_range_m >= 0))
     problems.push_back(fmt::format("keep_quiet_range_m must be >= 0 (got {})", p.keep_quiet_range_m));
   return problems;
@@ -58,7 +62,7 @@ int step_active_check(const ActiveCheckParams& p, ActiveCheckState& state, const
   if (!p.enabled) return state.next;
   follow_active_set(state, in.active, in.t_s);
   for (int i = 0; i < model::kMaxThrusters; ++i)
-    if (model::has_thruster(state.active, i) && ton[static_cast<std::size_t>(i)] >= p.pulse_fraction)
+    if (model::has_thruster(state.active, i) && ton[static_cast<std::size_t>(i)] >= p.informative_fraction)
       state.verified_s[static_cast<std::size_t>(i)] = in.t_s;
   if (in.range_m < p.keep_quiet_range_m) return state.next;  // the keep-quiet zone: no check
   state.next = stalest_unverified(p, state, in.t_s);

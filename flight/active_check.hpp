@@ -4,14 +4,15 @@
 // A thruster the manoeuvre does not command cannot be diagnosed from its effects: a stuck-closed or
 // weakened thruster waits, unseen, until it is needed. The flight software therefore keeps, per
 // active thruster, the time of its last informative pulse (a commanded on-time of at least
-// pulse_s, or the time it joined the active set):
+// informative_on_time_s, or the time it joined the active set):
 //
 //   stale_i(t) = t - verified_i,   i in the active mask.
 //
 // When the stalest exceeds max_unverified_s, and the estimated range to the target is at least
 // keep_quiet_range_m, the next period's allocation gives that one thruster the floor
-// pulse_s / T on its on-time (allocate_thrusters_floored): the others cancel its force and torque,
-// so the commanded wrench is unchanged and the check costs only propellant. The FDI sees the pulse
+// pulse_s / T >= informative_on_time_s / T on its on-time (allocate_thrusters_floored): the others
+// cancel its force and torque, so the commanded wrench is unchanged and the check costs only
+// propellant. The FDI sees the pulse
 // through the ordinary on-time command; a thruster that does not deliver it leaves a deficit.
 // One thruster at a time; checking resets its clock, so the stale ones take turns, stalest first.
 #include <array>
@@ -26,7 +27,8 @@ namespace chaser::flight {
 struct ActiveCheckParams {
   bool enabled = false;
   double max_unverified_s = 25.0;   // [s] longest time without an informative pulse before a check
-  double pulse_fraction = 0.05;     // [-] pulse_s / T: least informative on-time, and a check's floor
+  double pulse_fraction = 0.05;     // [-] pulse_s / T: a check's floor on the on-time
+  double informative_fraction = 0.05;  // [-] informative_on_time_s / T, at most pulse_fraction
   double keep_quiet_range_m = 2.0;  // [m] no check closer to the target than this (estimated range)
 };
 

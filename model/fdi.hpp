@@ -53,7 +53,8 @@ inline constexpr int kFdiWatchedThrusters = 8;
 struct ActiveCheckParams {
   bool enabled = false;
   double max_unverified_s = 25.0;   // [s] longest time an active thruster may go without an informative pulse
-  double pulse_s = 0.005;           // [s] a pulse this long or longer is informative; a check fires this long
+  double informative_on_time_s = 0.005;  // [s] a commanded on-time this long or longer is informative
+  double pulse_s = 0.0075;          // [s] a check's on-time (at least informative_on_time_s)
   double keep_quiet_range_m = 2.0;  // [m] no check while the estimated range to the target is below this
 };
 

@@ -12,7 +12,8 @@ constexpr model::ThrusterMask kBranchB = 0xFF00U;  // T9..T16
 constexpr double kFar_m = 10.0;                    // outside the keep-quiet zone
 
 ActiveCheckParams params() {
-  return ActiveCheckParams{.enabled = true, .max_unverified_s = 10.0, .pulse_fraction = 0.05, .keep_quiet_range_m = 2.0};
+  return ActiveCheckParams{.enabled = true, .max_unverified_s = 10.0, .pulse_fraction = 0.075,
+                           .informative_fraction = 0.05, .keep_quiet_range_m = 2.0};
 }
 
 // One period's command firing `fired` (thruster indices) at on-time `ton`.
@@ -94,8 +95,12 @@ TEST(ActiveCheck, DisabledChecksNothing) {
 
 TEST(ActiveCheck, ValidateNamesEveryBadParameter) {
   EXPECT_TRUE(validate(params()).empty());
-  const ActiveCheckParams bad{.enabled = true, .max_unverified_s = 0, .pulse_fraction = 1.5, .keep_quiet_range_m = -1};
-  EXPECT_EQ(validate(bad).size(), 3U);
+  const ActiveCheckParams bad{
+      .enabled = true, .max_unverified_s = 0, .pulse_fraction = 1.5, .informative_fraction = 0, .keep_quiet_range_m = -1};
+  EXPECT_EQ(validate(bad).size(), 4U);
+  ActiveCheckParams uninformative = params();
+  uninformative.informative_fraction = 0.08;  // a check's pulse would not verify the thruster it checks
+  EXPECT_EQ(validate(uninformative).size(), 1U);
 }
 
 }  // namespace
