@@ -108,6 +108,7 @@ const BadCase kBadCases[] = {
   {"active_check_pulse_beyond_period", {"fdi.active_check.pulse_s=0.2"}, "fdi.active_check.pulse_s", "must be in [informative_on_time_s = 0.005, control_period_s = 0.1] (got 0.2)"},
   {"active_check_keep_quiet_negative", {"fdi.active_check.keep_quiet_range_m=-1"}, "fdi.active_check.keep_quiet_range_m", "must be >= 0 (got -1)"},
   {"active_check_missing_key", {"fdi.active_check={enabled: true, max_unverified_s: 25, informative_on_time_s: 0.005, pulse_s: 0.005}"}, "fdi.active_check.keep_quiet_range_m", "missing key (expected a number >= 0)"},
+  {"active_check_without_fdi", {"fdi.active_check.enabled=true", "fdi.position.enabled=false", "fdi.attitude.enabled=false", "fdi.deficit.detection=false"}, "fdi.active_check.enabled", "no FDI scheme watches the checks"},
   {"active_check_typo", {"fdi.active_check.pulse_ms=5"}, "fdi.active_check.pulse_ms", "did you mean 'pulse_s'?"},
   {"recovery_unknown", {"fdi.recovery=branch"}, "fdi.recovery", "must be one of none, switch_group (got 'branch')"},
   {"fdi_on_sixteen_active", {"thrusters.standby_groups=[]", "fdi.recovery=none"}, "fdi", "watch exactly 8 active thrusters; the set that flies at the start, groups A, B (T1..T16), has 16"},
