@@ -1,5 +1,7 @@
 #include "flight/active_check.hpp"
 
+#include <bit>
+
 #include <fmt/format.h>
 
 namespace chaser::flight {
@@ -33,39 +35,32 @@ namespace {
 
 // A thruster that joins the active set (at the start, or by a recovery) is unverified from then on.
 void follow_active_set(ActiveCheckState& state, model::ThrusterMask active, double t_s) {
-  const model::ThrusterMask joined = active & ~state.active;
-  for (int i = 0; i < model::kMaxThrusters; ++i)
-    if (model::has_thruster(joined, i)) state.verified_s[static_cast<std::size_t>(i)] = t_s;
+  for (model::ThrusterMask joined = active & ~state.active; joined != 0; joined &= joined - 1)
+    state.verified_s[static_cast<std::size_t>(std::countr_zero(joined))] = t_s;
   state.active = active;
-}
-
-// The stalest active thruster past the bound; the lowest index among equals.
-int stalest_unverified(const ActiveCheckParams& p, const ActiveCheckState& state, double t_s) {
-  int chosen = model::kNoThruster;
-  double stalest_s = p.max_unverified_s;
-  for (int i = 0; i < model::kMaxThrusters; ++i) {
-    if (!model::has_thruster(state.active, i)) continue;
-    const double stale_s = t_s - state.verified_s[static_cast<std::size_t>(i)];
-    if (stale_s > stalest_s || (chosen == model::kNoThruster && stale_s >= stalest_s)) {
-      chosen = i;
-      stalest_s = stale_s;
-    }
-  }
-  return chosen;
 }
 
 }  // namespace
 
+// One pass over the active set's bits (every period, so no loop over the whole capacity): record
+// this period's informative pulses, and find the stalest thruster, the lowest index among equals.
 int step_active_check(const ActiveCheckParams& p, ActiveCheckState& state, const ActiveCheckInput& in,
                       const model::ThrusterOnTimes& ton) {
   state.next = model::kNoThruster;
   if (!p.enabled) return state.next;
-  follow_active_set(state, in.active, in.t_s);
-  for (int i = 0; i < model::kMaxThrusters; ++i)
-    if (model::has_thruster(state.active, i) && ton[static_cast<std::size_t>(i)] >= p.informative_fraction)
-      state.verified_s[static_cast<std::size_t>(i)] = in.t_s;
+  if (in.active != state.active) follow_active_set(state, in.active, in.t_s);
+  int stalest = model::kNoThruster;
+  double stalest_verified_s = 0;
+  for (model::ThrusterMask left = state.active; left != 0; left &= left - 1) {
+    const auto i = static_cast<std::size_t>(std::countr_zero(left));
+    if (ton[i] >= p.informative_fraction) state.verified_s[i] = in.t_s;
+    if (stalest == model::kNoThruster || state.verified_s[i] < stalest_verified_s) {
+      stalest = static_cast<int>(i);
+      stalest_verified_s = state.verified_s[i];
+    }
+  }
   if (in.range_m < p.keep_quiet_range_m) return state.next;  // the keep-quiet zone: no check
-  state.next = stalest_unverified(p, state, in.t_s);
+  if (stalest != model::kNoThruster && in.t_s - stalest_verified_s >= p.max_unverified_s) state.next = stalest;
   return state.next;
 }
 
