@@ -15,6 +15,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
+      .active_check = make_active_check_params(scenario),
       .recovery = scenario.fdi.recovery,
   };
 }
@@ -40,8 +41,10 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
+  // The check chosen last period, if any: its pulse rides on this period's allocation.
+  const TestPulse pulse{.thruster = state.active_check.next, .on_fraction = params.active_check.pulse_fraction};
   ThrusterManagementOutput managed =
-      manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton);
+      manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
 
   // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
   const FdirInput fdir_in{.t_s = t_s,
@@ -58,15 +61,19 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
       state.thrusters = *next;
       set_active_thrusters(params.management, state.management, state.thrusters.active);
       rearm_fdir(params.fdir, state.fdir, state.thrusters.active, t_s, out.fdir.confirmed_now);
-      managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton);
+      managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
       out.recovered_now = true;
     }
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
+  step_active_check(params.active_check, state.active_check,
+                    {.t_s = t_s, .range_m = out.estimate.r_lvlh_m.norm(), .active = state.thrusters.active},
+                    out.command.ton);
 
   out.command.latch_closed_groups = state.thrusters.closed_groups;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;
+  out.checked_thruster = managed.pulsed;
   state.force_cmd_lvlh_N_prev = q_body_from_lvlh.conjugate() * managed.commanded_wrench.head<3>();
   return out;
 }

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "core/time.hpp"
+#include "flight/active_check.hpp"
 #include "flight/attitude_control.hpp"
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
@@ -29,6 +30,7 @@ struct FlightParams {
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
+  ActiveCheckParams active_check;
   model::RecoveryPolicy recovery = model::RecoveryPolicy::kNone;
 };
 
@@ -43,6 +45,7 @@ struct FlightState {
   model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting
                                              // set, every latch open, until a recovery changes them
   ThrusterManagementState management;        // the active set's allocation problem
+  ActiveCheckState active_check;              // when each active thruster last proved itself
   bool initialised = false;
 };
 
@@ -58,6 +61,7 @@ struct FlightOutput {
   bool allocation_feasible = true;
   FdirOutput fdir;                           // both FDI schemes, event resolution
   bool recovered_now = false;                // a recovery changed the active set this period
+  int checked_thruster = model::kNoThruster; // index of the thruster whose test pulse the command carries
 };
 
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas);

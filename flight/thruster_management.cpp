@@ -1,6 +1,7 @@
 #include "flight/thruster_management.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "model/thruster_geometry.hpp"
 
@@ -23,10 +24,37 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
   state.warm = AllocationWarmStart{};
 }
 
+namespace {
+
+// The compact index of a thruster in the active list, -1 if it is not active.
+int compact_index(const ThrusterManagementState& state, int thruster) {
+  for (int k = 0; k < state.active_list.count; ++k)
+    if (state.active_list.index[static_cast<std::size_t>(k)] == thruster) return k;
+  return -1;
+}
+
+// The test pulse's allocation (cold: the floor changes the problem), if the demand stays attainable.
+std::optional<AllocationResult> allocate_with_pulse(const ThrusterManagementState& state, const Vec6& demand_wrench,
+                                                    const TestPulse& pulse) {
+  if (pulse.thruster == model::kNoThruster) return std::nullopt;
+  const int k = compact_index(state, pulse.thruster);
+  if (k < 0) return std::nullopt;
+  AllocationTon floor = AllocationTon::Zero();
+  floor[k] = pulse.on_fraction;
+  AllocationResult result = allocate_thrusters_floored(state.allocation, demand_wrench, floor);
+  if (!result.feasible || !result.converged) return std::nullopt;
+  return result;
+}
+
+}  // namespace
+
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
-                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton_by_thruster) {
+                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton_by_thruster,
+                                          const TestPulse& pulse) {
   ThrusterManagementOutput out;
-  AllocationResult result = allocate_thrusters(state.allocation, demand_wrench, state.warm);
+  std::optional<AllocationResult> pulsed = allocate_with_pulse(state, demand_wrench, pulse);
+  if (pulsed) out.pulsed = pulse.thruster;
+  AllocationResult result = pulsed ? *pulsed : allocate_thrusters(state.allocation, demand_wrench, state.warm);
   const int n = state.active_list.count;
   AllocationTon& ton = result.ton;  // compact order: the k-th active thruster
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.

@@ -30,15 +30,25 @@ struct ThrusterManagementState {
 void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
                           model::ThrusterMask active);
 
+// An active check's test pulse (flight/active_check.hpp): a floor on one thruster's on-time.
+struct TestPulse {
+  int thruster = model::kNoThruster;  // index; kNoThruster or an inactive thruster: no pulse
+  double on_fraction = 0;             // [-] the floor, at least min_on_fraction (validated)
+};
+
 struct ThrusterManagementOutput {
   Vec6 commanded_wrench = Vec6::Zero();  // [N; N m] M ton: what the command realises if healthy
   bool feasible = true;                  // the allocator reached the demand exactly
+  int pulsed = model::kNoThruster;       // the thruster whose test pulse the command carries
 };
 
 // Writes the on-times of thrusters [0, N) into `ton` by thruster index, inactive ones zero (entries
 // from N on are left as they are). In place, because the command is the flight software's output and
 // a copy of the whole capacity-wide array every period is measurable (docs/performance.md).
+// With a test pulse on an active thruster, the allocation floors its on-time and the others cancel
+// its wrench; where the demand would then be unattainable, the period allocates without the pulse.
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
-                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton);
+                                          const Vec6& demand_wrench, model::ThrusterOnTimes& ton,
+                                          const TestPulse& pulse = {});
 
 }  // namespace chaser::flight

@@ -80,6 +80,16 @@ void read_deficit(MapReader& r, model::DeficitParams& out) {
   r.number("detection_min_proportional", Range::closed(0.0, 1.0), out.detection_min_proportional);
 }
 
+// The on-times against the valve's minimum on-time, the control period and each other, and
+// max_unverified_s against the period, are checked in validate_scenario.
+void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
+  r.boolean("enabled", out.enabled);
+  r.number("max_unverified_s", Range::positive(), out.max_unverified_s);
+  r.number("informative_on_time_s", Range::positive(), out.informative_on_time_s);
+  r.number("pulse_s", Range::positive(), out.pulse_s);
+  r.number("keep_quiet_range_m", Range::non_negative(), out.keep_quiet_range_m);
+}
+
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {
   r.boolean("enabled", out.enabled);
   read_count_in(r, "residual_dimension", 1, 3, out.residual_dimension);
@@ -104,6 +114,7 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
   read_recovery(r, out.recovery);
   r.number("rearm_after_recovery_s", Range::non_negative(), out.rearm_after_recovery_s);
+  read_section(r, "active_check", [&](MapReader& m) { read_active_check(m, out.active_check); });
   read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });
   read_section(r, "attitude", [&](MapReader& m) { read_scheme(m, out.attitude); });
 }

@@ -78,6 +78,29 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
                                  format_number(longest_s), format_number(w.detection_window_s)));
 }
 
+// An active check's on-times open the valve (a shorter command is dropped) and fit in one period,
+// and a check's pulse is informative (else the thruster would be checked every period); its bound
+// is at least one period, the cadence at which the flight software can check.
+void check_active_check(Diagnostics& d, const model::Scenario& s, double period) {
+  const model::ActiveCheckParams& a = s.fdi.active_check;
+  const char* informative = "fdi.active_check.informative_on_time_s";
+  const char* pulse = "fdi.active_check.pulse_s";
+  const double min_on_s = s.thrusters.min_on_time_s;
+  const bool informative_ok = d.clean(informative) && d.clean("thrusters.min_on_time_s") &&
+                              a.informative_on_time_s >= min_on_s && a.informative_on_time_s <= period;
+  if (d.clean(informative) && d.clean("thrusters.min_on_time_s") && !informative_ok)
+    d.add(informative, fmt::format("must be in [thrusters.min_on_time_s = {}, control_period_s = {}] (got {})",
+                                   format_number(min_on_s), format_number(period),
+                                   format_number(a.informative_on_time_s)));
+  if (informative_ok && d.clean(pulse) && (a.pulse_s < a.informative_on_time_s || a.pulse_s > period))
+    d.add(pulse, fmt::format("must be in [informative_on_time_s = {}, control_period_s = {}] (got {})",
+                             format_number(a.informative_on_time_s), format_number(period), format_number(a.pulse_s)));
+  const char* bound = "fdi.active_check.max_unverified_s";
+  if (d.clean(bound) && a.max_unverified_s < period)
+    d.add(bound, fmt::format("must be >= control_period_s = {} (got {})", format_number(period),
+                             format_number(a.max_unverified_s)));
+}
+
 void check_timing(const model::Scenario& s, Diagnostics& d) {
   if (!d.clean("control_period_s")) return;
   const double period = s.control_period_s;
@@ -106,6 +129,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
     d.add("fdi.design_delay_max_s", fmt::format("must be in (0, control_period_s = {}] (got {})", format_number(period),
                                                 format_number(s.fdi.design_delay_max_s)));
   check_deficit_windows(d, s.fdi.deficit, period);
+  check_active_check(d, s, period);
 }
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy

@@ -81,6 +81,10 @@ void check_configurations(const model::Scenario& s, Diagnostics& d) {
                                model::kFdiWatchedThrusters, flies, set, model::thruster_count(active),
                                model::kFdiWatchedThrusters));
   }
+  // A check only costs propellant unless a scheme watches the pulse it fires.
+  if (s.fdi.active_check.enabled && !fdi)
+    d.add("fdi.active_check.enabled", "is true, but no FDI scheme watches the checks: enable fdi.position, "
+                                      "fdi.attitude or fdi.deficit.detection, or set it false");
   if (s.fdi.recovery == model::RecoveryPolicy::kSwitchGroup &&
       std::none_of(s.thrusters.groups.begin(), s.thrusters.groups.end(), [](const auto& g) { return g.standby; }))
     d.add("fdi.recovery", "switch_group needs a standby group to switch to (thrusters.standby_groups), "

@@ -47,6 +47,17 @@ inline constexpr int kMaxDeficitDetectorWindowPeriods = 256;
 // enables them on an active set of another size.
 inline constexpr int kFdiWatchedThrusters = 8;
 
+// Active checks of dormant thrusters (flight/active_check.hpp, issue 20): a thruster the approach
+// does not command cannot be diagnosed from its effects, so when one has not fired an informative
+// pulse for max_unverified_s, the allocation gives it a test pulse that the others cancel.
+struct ActiveCheckParams {
+  bool enabled = false;
+  double max_unverified_s = 25.0;   // [s] longest time an active thruster may go without an informative pulse
+  double informative_on_time_s = 0.005;  // [s] a commanded on-time this long or longer is informative
+  double pulse_s = 0.0075;          // [s] a check's on-time (at least informative_on_time_s)
+  double keep_quiet_range_m = 2.0;  // [m] no check while the estimated range to the target is below this
+};
+
 enum class RecoveryPolicy {
   kNone,         // diagnose only
   kSwitchGroup,  // close the faulty thruster's group latch, fly on with the next standby group
@@ -74,6 +85,7 @@ struct FdiParams {
   // generators' state at the rate of their eigenvalues).
   RecoveryPolicy recovery = RecoveryPolicy::kSwitchGroup;
   double rearm_after_recovery_s = 10.0;  // [s]
+  ActiveCheckParams active_check;
   FdiSchemeParams position;
   FdiSchemeParams attitude;
 };

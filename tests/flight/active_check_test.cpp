@@ -1,0 +1,107 @@
+// The bookkeeping of active checks (flight/active_check.hpp): which thruster is checked, when, and
+// never one outside the active mask or inside the keep-quiet zone.
+#include "flight/active_check.hpp"
+
+#include <gtest/gtest.h>
+
+namespace chaser::flight {
+namespace {
+
+constexpr model::ThrusterMask kBranchA = 0x00FFU;  // T1..T8
+constexpr model::ThrusterMask kBranchB = 0xFF00U;  // T9..T16
+constexpr double kFar_m = 10.0;                    // outside the keep-quiet zone
+
+ActiveCheckParams params() {
+  return ActiveCheckParams{.enabled = true, .max_unverified_s = 10.0, .pulse_fraction = 0.075,
+                           .informative_fraction = 0.05, .keep_quiet_range_m = 2.0};
+}
+
+// One period's command firing `fired` (thruster indices) at on-time `ton`.
+model::ThrusterOnTimes command(std::initializer_list<int> fired, double ton = 0.05) {
+  model::ThrusterOnTimes c{};
+  for (const int i : fired) c[static_cast<std::size_t>(i)] = ton;
+  return c;
+}
+
+int step(const ActiveCheckParams& p, ActiveCheckState& s, double t_s, const model::ThrusterOnTimes& ton,
+         model::ThrusterMask active = kBranchA, double range_m = kFar_m) {
+  return step_active_check(p, s, {.t_s = t_s, .range_m = range_m, .active = active}, ton);
+}
+
+// T4 and T6 (indices 3, 5) dormant as on MSR's approach: the stalest past the bound is checked first;
+// a pulse shorter than pulse_s proves nothing; once checked a thruster's clock restarts, so the
+// stale ones take turns, stalest first and the lowest index among equals.
+TEST(ActiveCheck, ChecksTheStalestThrusterPastTheBoundInTurn) {
+  const ActiveCheckParams p = params();
+  ActiveCheckState s;
+  EXPECT_EQ(step(p, s, 0.0, command({})), model::kNoThruster);  // all join the set at 0
+  EXPECT_EQ(step(p, s, 5.0, command({0, 1, 2, 4, 6, 7})), model::kNoThruster);
+  EXPECT_EQ(step(p, s, 5.1, command({5}, 0.049)), model::kNoThruster);  // below pulse_s: not informative
+  EXPECT_EQ(step(p, s, 8.0, command({3})), model::kNoThruster);
+  EXPECT_EQ(step(p, s, 9.9, command({})), model::kNoThruster);
+  EXPECT_EQ(step(p, s, 10.0, command({})), 5);  // T6: 10 s without an informative pulse
+  EXPECT_EQ(s.next, 5);
+  EXPECT_EQ(step(p, s, 10.1, command({5})), model::kNoThruster);  // its check fired: verified
+  EXPECT_EQ(step(p, s, 15.0, command({})), 0);  // T1, T2, T3, T5, T7, T8 all 10 s stale: T1 first
+  EXPECT_EQ(step(p, s, 15.1, command({0})), 1);
+  EXPECT_EQ(step(p, s, 15.2, command({1})), 2);
+  EXPECT_EQ(step(p, s, 18.0, command({2, 4, 6, 7})), 3);  // T4, verified at 8, now 10 s stale
+  EXPECT_EQ(step(p, s, 18.1, command({3}, 0.3)), model::kNoThruster);
+}
+
+// A thruster outside the active mask is never checked, however stale: not one the mask leaves out,
+// not the faulty branch after a recovery; the new branch is unverified from the time it joins.
+TEST(ActiveCheck, NeverChecksAThrusterOutsideTheMask) {
+  const ActiveCheckParams p = params();
+  ActiveCheckState s;
+  const model::ThrusterMask without_t6 = kBranchA & ~model::thruster_bit(5);
+  for (int k = 0; k <= 300; ++k) {
+    const double t_s = 0.1 * k;
+    const int checked = step(p, s, t_s, command(k < 10 ? std::initializer_list<int>{5} : std::initializer_list<int>{}),
+                             without_t6);
+    if (checked != model::kNoThruster) EXPECT_TRUE(model::has_thruster(without_t6, checked)) << t_s;
+    if (t_s >= 10.0) EXPECT_NE(checked, model::kNoThruster) << t_s;  // the others are stale by then
+  }
+  // A recovery to branch B at 30 s: B joins then, A is never checked again.
+  for (int k = 301; k <= 500; ++k) {
+    const double t_s = 0.1 * k;
+    const int checked = step(p, s, t_s, command({}), kBranchB);
+    if (checked != model::kNoThruster) {
+      EXPECT_TRUE(model::has_thruster(kBranchB, checked)) << t_s;
+      EXPECT_GE(t_s, 30.1 + p.max_unverified_s - 1e-9) << t_s;
+    }
+  }
+  EXPECT_EQ(s.next, 8);  // T9 first among B's eight, all stale since 30.1 s
+}
+
+// Inside the keep-quiet zone nothing is checked, however stale; at its edge checks resume.
+TEST(ActiveCheck, NoCheckInTheKeepQuietZone) {
+  const ActiveCheckParams p = params();
+  ActiveCheckState s;
+  step(p, s, 0.0, command({}));
+  EXPECT_EQ(step(p, s, 50.0, command({}), kBranchA, 1.999), model::kNoThruster);
+  EXPECT_EQ(s.next, model::kNoThruster);
+  EXPECT_EQ(step(p, s, 50.1, command({}), kBranchA, 0.0), model::kNoThruster);
+  EXPECT_EQ(step(p, s, 50.2, command({}), kBranchA, 2.0), 0);
+}
+
+// Disabled, nothing is ever chosen.
+TEST(ActiveCheck, DisabledChecksNothing) {
+  ActiveCheckParams p = params();
+  p.enabled = false;
+  ActiveCheckState s;
+  for (int k = 0; k <= 1000; ++k) EXPECT_EQ(step(p, s, 0.1 * k, command({})), model::kNoThruster);
+}
+
+TEST(ActiveCheck, ValidateNamesEveryBadParameter) {
+  EXPECT_TRUE(validate(params()).empty());
+  const ActiveCheckParams bad{
+      .enabled = true, .max_unverified_s = 0, .pulse_fraction = 1.5, .informative_fraction = 0, .keep_quiet_range_m = -1};
+  EXPECT_EQ(validate(bad).size(), 4U);
+  ActiveCheckParams uninformative = params();
+  uninformative.informative_fraction = 0.08;  // a check's pulse would not verify the thruster it checks
+  EXPECT_EQ(validate(uninformative).size(), 1U);
+}
+
+}  // namespace
+}  // namespace chaser::flight

@@ -1,0 +1,90 @@
+// The thruster management function (flight/thruster_management.hpp) with an active check's test
+// pulse: the pulse rides on the allocation without changing the commanded wrench.
+#include "flight/thruster_management.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "core/random.hpp"
+#include "model/thruster_geometry.hpp"
+#include "tests/support/msr_branch_a.hpp"
+
+namespace chaser::flight {
+namespace {
+
+constexpr model::ThrusterMask kBranchA = 0x00FFU;
+
+// MSR's branch A with no valve minimum (min_on_fraction 0), so that the allocation's answer is the
+// command: the pulse's cancellation is then exact up to rounding.
+ThrusterManagementParams msr_management() {
+  ThrusterManagementParams p;
+  p.thrusters = testing::msr_branch_a_thrusters();
+  p.min_on_fraction = 0.0;
+  return p;
+}
+
+// Attainable demands: M t for on-times t in [0, 0.4], so that a 0.05 floor leaves room.
+Vec6 attainable_demand(RandomStream& rng, const ThrusterManagementState& s) {
+  AllocationTon t = AllocationTon::Zero();
+  for (int i = 0; i < 8; ++i) t[i] = rng.uniform(0.0, 0.4);
+  return s.allocation.config.leftCols<8>() * t.head<8>();
+}
+
+// For every thruster as the one checked and 100 random attainable demands (the zero demand among
+// them): the command carries the pulse (on-time >= its floor), its wrench M ton equals the unchecked
+// command's to rounding (1e-12 of the largest column entry, ~5e-11 N), and it costs at least as much.
+TEST(ThrusterManagement, TestPulseLeavesTheCommandedWrenchUnchanged) {
+  const ThrusterManagementParams p = msr_management();
+  ThrusterManagementState checked, unchecked;
+  set_active_thrusters(p, checked, kBranchA);
+  set_active_thrusters(p, unchecked, kBranchA);
+  const double scale = checked.allocation.config.cwiseAbs().maxCoeff();
+  RandomStream rng(20, "test/management/test-pulse");
+  for (int k = 0; k < 100; ++k) {
+    const Vec6 demand = k == 0 ? Vec6::Zero() : attainable_demand(rng, checked);
+    for (int thruster = 0; thruster < 8; ++thruster) {
+      model::ThrusterOnTimes ton_checked{}, ton_unchecked{};
+      const ThrusterManagementOutput a =
+          manage_thrusters(p, checked, demand, ton_checked, {.thruster = thruster, .on_fraction = 0.05});
+      const ThrusterManagementOutput b = manage_thrusters(p, unchecked, demand, ton_unchecked);
+      ASSERT_EQ(a.pulsed, thruster) << k;
+      EXPECT_EQ(b.pulsed, model::kNoThruster);
+      EXPECT_GE(ton_checked[static_cast<std::size_t>(thruster)], 0.05) << k;
+      EXPECT_LE((a.commanded_wrench - b.commanded_wrench).cwiseAbs().maxCoeff(), 1e-12 * scale) << k << " T" << thruster + 1;
+      double sum_checked = 0, sum_unchecked = 0;
+      for (int i = 0; i < 8; ++i) sum_checked += ton_checked[static_cast<std::size_t>(i)], sum_unchecked += ton_unchecked[static_cast<std::size_t>(i)];
+      EXPECT_GE(sum_checked, sum_unchecked - 1e-12) << k;
+    }
+  }
+}
+
+// A pulse on a thruster outside the active set, or one that would make the demand unattainable, is
+// not fired: the command is then the unchecked one, bit for bit.
+TEST(ThrusterManagement, TestPulseIsSkippedOutsideTheSetAndWhenTheDemandIsAtTheLimit) {
+  const ThrusterManagementParams p = msr_management();
+  ThrusterManagementState s, t;  // two states, so that both calls solve cold
+  set_active_thrusters(p, s, kBranchA & ~model::thruster_bit(3));  // T4 removed by a recovery
+  set_active_thrusters(p, t, kBranchA & ~model::thruster_bit(3));
+  const Vec6 demand = s.allocation.config.col(0) * 0.3;
+  model::ThrusterOnTimes with{}, without{};
+  EXPECT_EQ(manage_thrusters(p, s, demand, with, {.thruster = 3, .on_fraction = 0.05}).pulsed, model::kNoThruster);
+  manage_thrusters(p, t, demand, without);
+  EXPECT_EQ(with[3], 0.0);
+  EXPECT_EQ(std::memcmp(with.data(), without.data(), sizeof(double) * 8), 0);
+
+  // Beyond what the set can do, the allocation is a best effort (not the demand): no pulse then.
+  ThrusterManagementState a, b;
+  set_active_thrusters(p, a, kBranchA);
+  set_active_thrusters(p, b, kBranchA);
+  const Vec6 beyond = a.allocation.config.col(0) * 1000.0;
+  model::ThrusterOnTimes checked{}, unchecked{};
+  const ThrusterManagementOutput out = manage_thrusters(p, a, beyond, checked, {.thruster = 4, .on_fraction = 0.05});
+  manage_thrusters(p, b, beyond, unchecked);
+  EXPECT_FALSE(out.feasible);
+  EXPECT_EQ(out.pulsed, model::kNoThruster);
+  EXPECT_EQ(std::memcmp(checked.data(), unchecked.data(), sizeof(double) * 8), 0);
+}
+
+}  // namespace
+}  // namespace chaser::flight
