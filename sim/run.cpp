@@ -121,20 +121,20 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   flight::FlightState flight_state;
 
   std::unique_ptr<TelemetryWriter> telemetry;
-  TelemetryTable* const table = options.telemetry_table;
+  TelemetryRows* const memory = options.telemetry_rows;
   std::vector<TelemetryChannel> channels;
   const bool every_channel = options.telemetry_channels.empty();  // the whole table, record_every_channel
   const TelemetryShape shape = telemetry_shape(scenario);
-  if (!options.telemetry_path.empty() || table) {
+  if (!options.telemetry_path.empty() || memory) {
     channels = select_channels(telemetry_channels(shape), options.telemetry_channels);
     if (!options.telemetry_path.empty())
       telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
-    if (table) {  // room for every row now: the loop allocates nothing
-      *table = TelemetryTable{.channels = channel_names(channels), .values = {}};
-      table->values.reserve(static_cast<std::size_t>(periods) * channels.size());
+    if (memory) {  // room for every row now: the loop allocates nothing
+      *memory = TelemetryRows{.channels = channel_names(channels), .values = {}};
+      memory->values.reserve(static_cast<std::size_t>(periods) * channels.size());
     }
   }
-  const bool recording = telemetry || table;
+  const bool recording = telemetry || memory;
 
   RunResult result;
   const auto loop_start = std::chrono::steady_clock::now();
@@ -168,7 +168,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
       second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
       second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
-    if (table || (telemetry && telemetry->ok())) {
+    if (memory || (telemetry && telemetry->ok())) {
       const PeriodRecord record{
           .t_s = t_s,
           .truth = &truth,
@@ -180,10 +180,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
           .q_inertial_from_target = target.q_inertial_from_target,
           .omega_target_body_radps = target.omega_body_radps,
           .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape.slosh_tanks))};
-      double* const row = table ? table->new_row().data() : telemetry->new_row().data();
+      double* const row = memory ? memory->new_row().data() : telemetry->new_row().data();
       if (every_channel) record_every_channel(record, shape, row);
       else record_period(channels, record, row);
-      if (table && telemetry && telemetry->ok()) std::copy_n(row, channels.size(), telemetry->new_row().data());
+      if (memory && telemetry && telemetry->ok()) std::copy_n(row, channels.size(), telemetry->new_row().data());
     }
   }
 

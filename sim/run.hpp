@@ -18,7 +18,7 @@ struct RunOptions {
   std::vector<std::string> telemetry_channels;  // name patterns ('*' and '?'); empty: every channel
   // Telemetry in memory as well as (or instead of) the file, with the same channels: filled with
   // one row per period when set (the Python module). Its channels are set by the run.
-  TelemetryTable* telemetry_table = nullptr;
+  TelemetryRows* telemetry_rows = nullptr;
   bool record_glr_per_second = false;  // fill RunResult::glr_max_per_s (threshold selection)
 };
 

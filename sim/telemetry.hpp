@@ -30,7 +30,7 @@ enum class TelemetryFormat { kCsv, kNpy };
 
 // Telemetry kept in memory (the Python module's RunResult.telemetry): the same rows as the file's,
 // row-major, channels() values per row. It grows by one row per period; nothing is written.
-struct TelemetryTable {
+struct TelemetryRows {
   std::vector<std::string> channels;
   std::vector<double> values;  // row r, channel c at values[r * channels.size() + c]
 
