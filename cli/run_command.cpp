@@ -10,6 +10,7 @@
 #include "cli/scenario_input.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
+#include "sim/run_directory.hpp"
 #include "sim/summary.hpp"
 #include "sim/telemetry_channels.hpp"
 
@@ -37,20 +38,12 @@ int run_command(const RunArgs& args) {
     return kExitBadInput;
   }
 
-  std::error_code ec;
-  std::filesystem::create_directories(args.out_dir, ec);
-  if (ec) {
-    std::cerr << fmt::format("chaser: cannot create output directory {}: {}\n", args.out_dir, ec.message());
+  const std::filesystem::path out(args.out_dir);
+  if (const std::string problem = sim::prepare_run_directory(out); !problem.empty()) {
+    std::cerr << "chaser: " << problem << "\n";
     return kExitFailure;
   }
-  const std::filesystem::path out(args.out_dir);
-  // A previous run's files go first: a run that is stopped leaves none of them beside its own to be
-  // taken for its results (a telemetry.csv beside a new telemetry.npy, an older summary.json), and
-  // the renames that finish the files then replace nothing (ext4 flushes a file renamed over
-  // another before the rename returns: 16 ms for a 10 MB telemetry file).
-  for (const char* name : {"summary.json", "telemetry.csv", "telemetry.npy"}) std::filesystem::remove(out / name, ec);
-  const std::filesystem::path telemetry =
-      args.telemetry_format == "none" ? std::filesystem::path() : out / ("telemetry." + args.telemetry_format);
+  const std::filesystem::path telemetry = sim::run_telemetry_path(out, args.telemetry_format);
   const sim::RunResult result =
       sim::run_scenario(scenario, {.telemetry_path = telemetry.string(), .telemetry_channels = args.channels});
   if (!result.telemetry_ok) {

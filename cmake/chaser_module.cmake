@@ -5,6 +5,11 @@ function(chaser_module name)
   if(sources)
     add_library(${name} STATIC ${sources})
     target_link_libraries(${name} PUBLIC chaser_options ${ARGN})
+    # The Python module (python/module/) links these libraries into a shared object, which needs
+    # position-independent code. -fno-semantic-interposition keeps the calls inside a library
+    # inlinable as under the compiler's default -fPIE (a library's symbols are never interposed).
+    set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_compile_options(${name} PRIVATE -fno-semantic-interposition)
   else()  # a header-only folder
     add_library(${name} INTERFACE)
     target_link_libraries(${name} INTERFACE chaser_options ${ARGN})

@@ -121,13 +121,20 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
   flight::FlightState flight_state;
 
   std::unique_ptr<TelemetryWriter> telemetry;
+  TelemetryRows* const memory = options.telemetry_rows;
   std::vector<TelemetryChannel> channels;
   const bool every_channel = options.telemetry_channels.empty();  // the whole table, record_every_channel
   const TelemetryShape shape = telemetry_shape(scenario);
-  if (!options.telemetry_path.empty()) {
+  if (!options.telemetry_path.empty() || memory) {
     channels = select_channels(telemetry_channels(shape), options.telemetry_channels);
-    telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
+    if (!options.telemetry_path.empty())
+      telemetry = std::make_unique<TelemetryWriter>(options.telemetry_path, channel_names(channels));
+    if (memory) {  // room for every row now: the loop allocates nothing
+      *memory = TelemetryRows{.channels = channel_names(channels), .values = {}};
+      memory->values.reserve(static_cast<std::size_t>(periods) * channels.size());
+    }
   }
+  const bool recording = telemetry || memory;
 
   RunResult result;
   const auto loop_start = std::chrono::steady_clock::now();
@@ -141,16 +148,16 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
 
     const model::SensorMeasurements meas = plant::sense_plant(plant.params, plant.state, t_k);
     // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
-    const flight::fdi::WatchedSet watched = telemetry && !flight_params.fdir.watched.empty() && flight_state.fdir.watched >= 0
+    const flight::fdi::WatchedSet watched = recording && !flight_params.fdir.watched.empty() && flight_state.fdir.watched >= 0
                                                 ? flight::watched_set(flight_params.fdir, flight_state.fdir)
                                                 : flight::fdi::WatchedSet{};
     const flight::FlightOutput out = flight::step_flight(flight_params, flight_state, meas);
     const MonitorSample sample =
         monitor_sample(t_s, plant::q_inertial_from_lvlh(plant, orbit, t_s), truth, out.reference);
     // The target's attitude and rate and the slosh at t_k, for telemetry, before the plant steps past them.
-    const plant::TargetRotation target = telemetry ? plant::target_rotation(plant, t_s) : plant::TargetRotation{};
+    const plant::TargetRotation target = recording ? plant::target_rotation(plant, t_s) : plant::TargetRotation{};
     std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
-    if (shape.slosh_tanks > 0 && telemetry) slosh = plant.state.orbit.slosh;
+    if (shape.slosh_tanks > 0 && recording) slosh = plant.state.orbit.slosh;
     if (!monitor_period(scenario, sample, result.figures)) break;
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
@@ -161,7 +168,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
       second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
       second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
     }
-    if (telemetry && telemetry->ok()) {
+    if (memory || (telemetry && telemetry->ok())) {
       const PeriodRecord record{
           .t_s = t_s,
           .truth = &truth,
@@ -173,8 +180,10 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
           .q_inertial_from_target = target.q_inertial_from_target,
           .omega_target_body_radps = target.omega_body_radps,
           .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape.slosh_tanks))};
-      if (every_channel) record_every_channel(record, shape, telemetry->new_row().data());
-      else record_period(*telemetry, channels, record);
+      double* const row = memory ? memory->new_row().data() : telemetry->new_row().data();
+      if (every_channel) record_every_channel(record, shape, row);
+      else record_period(channels, record, row);
+      if (memory && telemetry && telemetry->ok()) std::copy_n(row, channels.size(), telemetry->new_row().data());
     }
   }
 

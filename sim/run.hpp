@@ -9,12 +9,16 @@
 #include "flight/flight_software.hpp"
 #include "model/scenario.hpp"
 #include "sim/mission_monitor.hpp"
+#include "sim/telemetry.hpp"
 
 namespace chaser::sim {
 
 struct RunOptions {
   std::string telemetry_path;  // empty: no telemetry (campaigns, benchmarks); ".csv" or ".npy" (sim/telemetry.hpp)
   std::vector<std::string> telemetry_channels;  // name patterns ('*' and '?'); empty: every channel
+  // Telemetry in memory as well as (or instead of) the file, with the same channels: filled with
+  // one row per period when set (the Python module). Its channels are set by the run.
+  TelemetryRows* telemetry_rows = nullptr;
   bool record_glr_per_second = false;  // fill RunResult::glr_max_per_s (threshold selection)
 };
 

@@ -28,6 +28,19 @@ namespace chaser::sim {
 
 enum class TelemetryFormat { kCsv, kNpy };
 
+// Telemetry kept in memory (the Python module's RunResult.telemetry): the same rows as the file's,
+// row-major, channels() values per row. It grows by one row per period; nothing is written.
+struct TelemetryRows {
+  std::vector<std::string> channels;
+  std::vector<double> values;  // row r, channel c at values[r * channels.size() + c]
+
+  std::size_t rows() const { return channels.empty() ? 0 : values.size() / channels.size(); }
+  std::span<double> new_row() {
+    values.resize(values.size() + channels.size());
+    return {values.data() + values.size() - channels.size(), channels.size()};
+  }
+};
+
 // The format a path asks for by its extension (".csv" or ".npy"); false for any other.
 bool telemetry_format_of(const std::filesystem::path& path, TelemetryFormat& format);
 

@@ -160,8 +160,7 @@ bool name_matches(std::string_view pattern, std::string_view name) {
   return p == pattern.size();
 }
 
-void record_period(TelemetryWriter& w, const std::vector<TelemetryChannel>& channels, const PeriodRecord& r) {
-  const std::span<double> row = w.new_row();
+void record_period(const std::vector<TelemetryChannel>& channels, const PeriodRecord& r, double* row) {
   for (std::size_t i = 0; i < channels.size(); ++i) row[i] = channels[i].value(r, channels[i].index);
 }
 

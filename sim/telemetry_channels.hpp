@@ -64,8 +64,8 @@ std::vector<TelemetryChannel> select_channels(std::vector<TelemetryChannel> chan
 std::vector<std::string> unmatched_patterns(const std::vector<TelemetryChannel>& channels,
                                             const std::vector<std::string>& patterns);
 
-// One row: every channel's value, in table order.
-void record_period(TelemetryWriter& writer, const std::vector<TelemetryChannel>& channels, const PeriodRecord& record);
+// One row: every channel's value, in table order. `row` holds channels.size() values.
+void record_period(const std::vector<TelemetryChannel>& channels, const PeriodRecord& record, double* row);
 
 // The same row for the whole table of telemetry_channels(shape), the usual case, written in
 // straight-line code: the table's call per channel cost 2,500 instructions a period, a sixth of

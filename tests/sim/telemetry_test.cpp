@@ -216,6 +216,33 @@ TEST(TelemetryFile, CsvAndNpyOfARunHoldTheSameDoublesAsTheRun) {
   std::filesystem::remove_all(dir);
 }
 
+// The rows kept in memory (RunOptions::telemetry_rows, the Python module's) are the file's doubles,
+// with every channel or a selection, with a file beside them or alone.
+TEST(TelemetryFile, RowsInMemoryAreTheNpyFilesDoubles) {
+  const model::Scenario s = scenario_with(16);
+  const auto dir = std::filesystem::temp_directory_path() / "chaser_telemetry_rows";
+  std::filesystem::create_directories(dir);
+  for (const std::vector<std::string>& patterns : {std::vector<std::string>{}, std::vector<std::string>{"glr_*", "ton_*"}}) {
+    TelemetryRows with_file, alone;
+    const RunResult r = run_scenario(
+        s, {.telemetry_path = (dir / "t.npy").string(), .telemetry_channels = patterns, .telemetry_rows = &with_file});
+    run_scenario(s, {.telemetry_path = "", .telemetry_channels = patterns, .telemetry_rows = &alone});
+    ASSERT_TRUE(r.telemetry_ok);
+    EXPECT_EQ(with_file.channels, channel_names(select_channels(telemetry_channels(telemetry_shape(s)), patterns)));
+    EXPECT_EQ(with_file.rows(), static_cast<std::size_t>(r.periods));
+
+    std::ifstream npy(dir / "t.npy", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(npy)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 10u);
+    const std::size_t data = 10 + (static_cast<unsigned char>(bytes[8]) | static_cast<unsigned char>(bytes[9]) << 8);
+    ASSERT_EQ(bytes.size() - data, with_file.values.size() * sizeof(double));
+    EXPECT_EQ(std::memcmp(bytes.data() + data, with_file.values.data(), bytes.size() - data), 0);
+    ASSERT_EQ(alone.values.size(), with_file.values.size());
+    EXPECT_EQ(std::memcmp(alone.values.data(), with_file.values.data(), alone.values.size() * sizeof(double)), 0);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 // --channels: the chosen channels and t_s, in table order.
 TEST(TelemetryFile, ChannelSelectionKeepsTableOrderAndTime) {
   const std::vector<TelemetryChannel> all = telemetry_channels({.thrusters = 16});
