@@ -162,6 +162,7 @@ RunResult run_scenario(const model::Scenario& scenario, const flight::FlightPara
     plant::step_plant(plant.params, plant.state, out.command, t_k);
 
     result.infeasible_allocations += !out.allocation_feasible;
+    result.active_checks += out.checked_thruster != model::kNoThruster;
     if (options.record_glr_per_second) {
       std::array<float, 3>& second = result.glr_max_per_s[static_cast<std::size_t>(t_s)];
       second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr.value()));

@@ -60,6 +60,7 @@ struct RunResult {
   double wall_files_s = 0;        // [s]
   std::int64_t periods = 0;
   std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
+  std::int64_t active_checks = 0;           // periods whose command carried an active check's test pulse
   bool telemetry_ok = true;
   FdirResult fdir;
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole

@@ -155,6 +155,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"max_position_error_m", f.max_position_error_m},
       {"propellant_used_kg", r.propellant_used_kg},
       {"infeasible_allocation_periods", r.infeasible_allocations},
+      {"active_check_pulses", r.active_checks},
       {"fdir", fdir_json(scenario, r.fdir)},
   };
 }

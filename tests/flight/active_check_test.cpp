@@ -59,8 +59,12 @@ TEST(ActiveCheck, NeverChecksAThrusterOutsideTheMask) {
     const double t_s = 0.1 * k;
     const int checked = step(p, s, t_s, command(k < 10 ? std::initializer_list<int>{5} : std::initializer_list<int>{}),
                              without_t6);
-    if (checked != model::kNoThruster) EXPECT_TRUE(model::has_thruster(without_t6, checked)) << t_s;
-    if (t_s >= 10.0) EXPECT_NE(checked, model::kNoThruster) << t_s;  // the others are stale by then
+    if (checked != model::kNoThruster) {
+      EXPECT_TRUE(model::has_thruster(without_t6, checked)) << t_s;
+    }
+    if (t_s >= 10.0) {
+      EXPECT_NE(checked, model::kNoThruster) << t_s;  // the others are stale by then
+    }
   }
   // A recovery to branch B at 30 s: B joins then, A is never checked again.
   for (int k = 301; k <= 500; ++k) {

@@ -118,11 +118,13 @@ TEST(FdirClosedLoop, ActiveChecksFindAStuckClosedDormantThrusterWithin30s) {
   scenario.fdi.active_check = {
       .enabled = false, .max_unverified_s = 25.0, .informative_on_time_s = 0.005, .pulse_s = 0.0075, .keep_quiet_range_m = 2.0};
   const RunResult passive = run_scenario(scenario);
+  EXPECT_EQ(passive.active_checks, 0);
   EXPECT_EQ(passive.fdir.detection_s, -1.0);
   EXPECT_EQ(passive.fdir.isolated_thruster, model::kNoThruster);
 
   scenario.fdi.active_check.enabled = true;
   const RunResult active = run_scenario(scenario);
+  EXPECT_GT(active.active_checks, 0);
   EXPECT_GE(active.fdir.detection_s, 1000.0);
   EXPECT_LE(active.fdir.detection_s, 1030.0);
   EXPECT_EQ(active.fdir.isolated_thruster, 3);
@@ -138,6 +140,9 @@ TEST(FdirClosedLoop, ActiveChecksRaiseNoFalseAlarm) {
   const RunResult r = run_scenario(scenario);
   EXPECT_EQ(r.fdir.detection_s, -1.0);
   EXPECT_TRUE(r.figures.capture_achieved);
+  // A check resets its thruster's clock: at most one per active thruster (8) per 25 s.
+  EXPECT_GT(r.active_checks, 0);
+  EXPECT_LE(r.active_checks, 1200 / 25 * 8);
 }
 
 }  // namespace
