@@ -47,8 +47,7 @@ nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::js
 // |S|, |T|, |K S|, |L|, arg L and the bounds gamma / |W_S|, gamma / |W_KS| on a log grid, for the plots.
 nlohmann::json response_json(const control::AxisDesign& d) {
   const double w_lo = 1e-4 * d.spec.bandwidth_radps;
-  const double w_hi = d.spec.delay_s > 0.0 ? std::max(1e3 * d.spec.bandwidth_radps, 20.0 / d.spec.delay_s)
-                                           : 1e3 * d.spec.bandwidth_radps;
+  const double w_hi = control::margin_band_top_radps(d.spec.bandwidth_radps, d.spec.delay_s);
   const int count = static_cast<int>(std::ceil(std::log10(w_hi / w_lo) * kResponsePointsPerDecade)) + 1;
   const control::SisoLoop loop{control::delayed_double_integrator(0.0, 0.0), d.synthesis.controller, d.spec.delay_s};
   const double gamma = d.synthesis.gamma;

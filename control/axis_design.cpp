@@ -50,6 +50,10 @@ HinfResult synthesise_three_pass(const GeneralisedPlant& gp, double& threshold) 
 
 }  // namespace
 
+double margin_band_top_radps(double bandwidth_radps, double delay_s) {
+  return delay_s > 0.0 ? std::max(1e3 * bandwidth_radps, 20.0 / delay_s) : 1e3 * bandwidth_radps;
+}
+
 StateSpace pade_delay(double delay_s) {
   if (delay_s == 0.0) return static_gain(MatrixXd::Ones(1, 1));
   // (1 - s tau/2) / (1 + s tau/2) = -1 + (4 / tau) / (s + 2 / tau)
@@ -102,9 +106,7 @@ AxisDesign design_axis(const AxisDesignSpec& spec) {
 
   // Margins on the undelayed double integrator with the exact delay e^{-s tau}.
   const SisoLoop loop{delayed_double_integrator(0.0, 0.0), d.synthesis.controller, spec.delay_s};
-  const double omega_hi = spec.delay_s > 0.0 ? std::max(1e3 * spec.bandwidth_radps, 20.0 / spec.delay_s)
-                                             : 1e3 * spec.bandwidth_radps;
-  d.margins = loop_margins(loop, 1e-4 * spec.bandwidth_radps, omega_hi);
+  d.margins = loop_margins(loop, 1e-4 * spec.bandwidth_radps, margin_band_top_radps(spec.bandwidth_radps, spec.delay_s));
   return d;
 }
 

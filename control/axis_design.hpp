@@ -39,6 +39,10 @@ struct AxisDesignSpec {
   double pole_shift_fraction = 1e-3;  // [-] epsilon / omega_B of the design plant, in (0, 0.1]
 };
 
+// The top of the band a loop's margins and responses are swept over: 1e3 omega_B, and at least
+// 20 / tau where tau > 0, past the delay's phase crossovers (e^{-j w tau} turns by pi at pi / tau).
+double margin_band_top_radps(double bandwidth_radps, double delay_s);
+
 // The first-order Pade approximation of e^{-s tau}: (1 - s tau/2) / (1 + s tau/2); a unit static
 // gain for tau = 0.
 StateSpace pade_delay(double delay_s);

@@ -92,9 +92,9 @@ void judge(const AxisDesign& design, const AxisUncertainty& box, const GridPoint
     return;
   }
   const AxisDesignSpec& spec = design.spec;
-  const double w_hi = pt.delay_s > 0.0 ? std::max(1e3 * spec.bandwidth_radps, 20.0 / pt.delay_s) : 1e3 * spec.bandwidth_radps;
-  const LoopMargins m = loop_margins({g, design.synthesis.controller, pt.delay_s}, 1e-2 * spec.bandwidth_radps, w_hi,
-                                     kGridMarginPointsPerDecade);
+  const LoopMargins m =
+      loop_margins({g, design.synthesis.controller, pt.delay_s}, 1e-2 * spec.bandwidth_radps,
+                   margin_band_top_radps(spec.bandwidth_radps, pt.delay_s), kGridMarginPointsPerDecade);
   if (m.phase_margin_deg < r.min_phase_margin_deg) {
     r.min_phase_margin_deg = m.phase_margin_deg;
     r.min_phase_margin_point = pt;

@@ -231,7 +231,8 @@ TEST(Cli, ControlDesignChecksSixLoops) {
     EXPECT_EQ(axis["status"], "ok") << axis["axis"];
     EXPECT_TRUE(axis["stable"].get<bool>()) << axis["axis"];
     EXPECT_LE(axis["closed_loop_norm"].get<double>(), axis["gamma"].get<double>() * (1.0 + 1e-9)) << axis["axis"];
-    EXPECT_GT(axis["margins"]["phase_margin_deg"].get<double>(), 30.0) << axis["axis"];
+    // M = 2 and gamma < 1 keep |S| below 2, so PM >= 2 asin(1/4) = 29 deg (S&P eq. 2.41).
+    EXPECT_GT(axis["margins"]["phase_margin_deg"].get<double>(), 29.0) << axis["axis"];
     EXPECT_GT(axis["frequency_response"]["omega_radps"].size(), 100u);
   }
   // control.hinf.robustness: 5 points per range; x, y, z see the slosh (5^3 points), the rotations the

@@ -70,7 +70,7 @@ TEST(Robustness, EnvisatTranslationWithSloshIsStable) {
   const RobustnessResult r = robust_stability_grid(d, box);
   EXPECT_EQ(r.points, 125);
   EXPECT_TRUE(r.robustly_stable());
-  EXPECT_GT(r.min_phase_margin_deg, 30.0);
+  EXPECT_GT(r.min_phase_margin_deg, 29.0);  // S&P eq. 2.41's bound for the design's |S| < 2, kept across the box
 }
 
 // The scenario's box: the gain range from the mass and thrust knowledge, the delay over the valves'
