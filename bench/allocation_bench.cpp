@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "flight/norm_allocation.hpp"
 #include "flight/thruster_allocation.hpp"
 #include "model/thruster_geometry.hpp"
 #include "tests/support/msr_branch_a.hpp"
@@ -121,12 +122,35 @@ void BM_AllocateWarmSequence(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// The norms of flight/norm_allocation.hpp on the 24-thruster set (issue 18): range(0) = p (1, 2,
+// or 0 for infinity), range(1) = demand kind (0 small and attainable, 1 large and unattainable);
+// a fresh warm start per call, so that p = 1 is the cold solve and the rest is the norm's own cost.
+void BM_AllocateNorm24(benchmark::State& state) {
+  const AllocationParams params = wide_allocation();
+  const std::vector<Vec6> set = demands(static_cast<int>(state.range(1)));
+  const model::AllocationNorm norm = state.range(0) == 1   ? model::AllocationNorm::kOne
+                                     : state.range(0) == 2 ? model::AllocationNorm::kTwo
+                                                           : model::AllocationNorm::kInfinity;
+  std::size_t k = 0;
+  long iterations = 0;
+  for (auto _ : state) {
+    AllocationWarmStart warm;
+    const AllocationResult result = allocate_thrusters(params, set[k], norm, warm);
+    benchmark::DoNotOptimize(result);
+    iterations += result.iterations;
+    k = k + 1 == set.size() ? 0 : k + 1;
+  }
+  state.counters["iterations_per_call"] = static_cast<double>(iterations) / static_cast<double>(state.iterations());
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_AllocateSmallFeasible);
 BENCHMARK(BM_AllocateWarmSequence)->Arg(0)->Arg(1);
 BENCHMARK(BM_AllocateLargeInfeasible);
 BENCHMARK(BM_AllocateMixed);
 BENCHMARK(BM_AllocateSmallFeasible24);
 BENCHMARK(BM_AllocateLargeInfeasible24);
+BENCHMARK(BM_AllocateNorm24)->ArgsProduct({{1, 2, 0}, {0, 1}});
 
 }  // namespace
 }  // namespace chaser::flight

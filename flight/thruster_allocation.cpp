@@ -506,6 +506,60 @@ AllocationResult allocate_floored(const AllocationParams& params, const Vec6& de
   return result;
 }
 
+// Caps: the problem (P)/(E) with ton_i <= cap for every on-time (the p = infinity allocation's
+// second stage, flight/norm_allocation.cpp).
+template <int N>
+AllocationResult allocate_capped(const AllocationParams& params, const Vec6& demand_wrench, double cap) {
+  AllocationResult result;
+  const ConfigMap<N> config = config_of<N>(params);
+  const bool valid = std::isfinite(cap) && cap > 0.0 && cap <= 1.0 && valid_problem<N>(params, config);
+  if (answered_without_lp(params, valid, demand_wrench, result)) return result;
+  Lp<N> lp;
+  lp.ton_upper = TonN<N>::Constant(cap);
+  solve<N>(params, config, demand_wrench, scaling_of<N>(params, config), lp, result);
+  return result;
+}
+
+// The homogeneous LP of attainable_scale: max nu s.t. M_s s + nu c = 0, 0 <= s <= 1, nu >= 0, with
+// M_s = M / wrench scale and c = -wrench / p (p a power of two with |c| <= 1), so lambda = nu wrench
+// scale / p exactly. The solver's own machinery: the column c rides as an extra "on-time" with
+// bounds [0, inf) at index `thrusters` (W >= thrusters + 1 columns), the error variables are fixed
+// at 0 (the start basis is them, all at 0: b = 0 is feasible at once), and the cost is -nu.
+template <int W>
+AttainableScale scale_of(const AllocationParams& params, const Vec6& wrench) {
+  AttainableScale out;
+  const int n = params.thrusters;
+  if (n < 1 || n > model::kMaxThrusters || n >= W) return out;
+  const auto config = params.config.leftCols(n);
+  if (!config.allFinite() || !wrench.allFinite()) return out;
+  const double wrench_max = wrench.cwiseAbs().maxCoeff();
+  if (wrench_max == 0.0) {  // every lambda: the zero wrench needs no firing
+    out.scale = kInf;
+    out.converged = true;
+    return out;
+  }
+  const double config_scale = power_of_two_above(config.cwiseAbs().maxCoeff());
+  const double column_scale = power_of_two_above(wrench_max);
+  ConfigN<W> m = ConfigN<W>::Zero();
+  m.leftCols(n) = config / config_scale;
+  m.col(n) = -wrench / column_scale;
+  Lp<W> lp;
+  lp.thrusters = n + 1;
+  lp.ton_upper.setOnes();
+  lp.ton_upper[n] = kInf;
+  init_phase1<W>(lp, m, Vec6::Ones(), Vec6::Zero());
+  lp.primal_tol = kPrimalTol;  // the variables' own size: s in [0, 1], nu ~ lambda
+  for (int j = W; j < Lp<W>::kCols; ++j) lp.upper[j] = 0.0;
+  lp.cost.setZero();
+  lp.cost[n] = -1.0;
+  out.converged = run_simplex(lp);
+  const double nu = std::max(0.0, lp.x[static_cast<std::size_t>(n)]);
+  out.scale = nu * config_scale / column_scale;
+  for (int i = 0; i < n; ++i) out.ton[i] = std::clamp(lp.x[static_cast<std::size_t>(i)], 0.0, 1.0);
+  out.iterations = lp.iterations;
+  return out;
+}
+
 // The slots belong to the same set: the solver's columns compared at its width (the padding is
 // zero in both).
 template <int N>
@@ -575,6 +629,22 @@ AllocationResult allocate_thrusters_floored(const AllocationParams& params, cons
   if (params.thrusters <= 16) return allocate_floored<16>(params, demand_wrench, floor);
   if (params.thrusters <= 24) return allocate_floored<24>(params, demand_wrench, floor);
   return allocate_floored<32>(params, demand_wrench, floor);
+}
+
+AllocationResult allocate_thrusters_capped(const AllocationParams& params, const Vec6& demand_wrench, double cap) {
+  if (params.thrusters <= 8) return allocate_capped<8>(params, demand_wrench, cap);
+  if (params.thrusters <= 16) return allocate_capped<16>(params, demand_wrench, cap);
+  if (params.thrusters <= 24) return allocate_capped<24>(params, demand_wrench, cap);
+  return allocate_capped<32>(params, demand_wrench, cap);
+}
+
+// One more column than the set's (the wrench's): the width above the count.
+AttainableScale attainable_scale(const AllocationParams& params, const Vec6& wrench) {
+  if (params.thrusters < 8) return scale_of<8>(params, wrench);
+  if (params.thrusters < 16) return scale_of<16>(params, wrench);
+  if (params.thrusters < 24) return scale_of<24>(params, wrench);
+  if (params.thrusters < 32) return scale_of<32>(params, wrench);
+  return scale_of<40>(params, wrench);
 }
 
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench,

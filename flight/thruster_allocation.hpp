@@ -59,6 +59,25 @@ AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& 
 AllocationResult allocate_thrusters_floored(const AllocationParams& params, const Vec6& demand_wrench,
                                             const AllocationTon& floor);
 
+// (P) and (E) with every on-time capped, 0 <= ton_i <= cap (0 < cap <= 1): the second stage of the
+// least-peak allocation (flight/norm_allocation.hpp). Otherwise, ton = 0 with converged = false.
+AllocationResult allocate_thrusters_capped(const AllocationParams& params, const Vec6& demand_wrench, double cap);
+
+// How far the set can push along `wrench`: the largest lambda with lambda * wrench attainable,
+//
+//   lambda* = max lambda  s.t.  M s = lambda wrench,  0 <= s <= 1,
+//
+// the inverse of the attainable set's gauge (Durham's direct allocation scales a demand by it).
+// The least peak on-time that realises an attainable wrench is 1 / lambda* (u = s / lambda*).
+// Solved by the allocator's simplex with the wrench as one more column; infinity for a zero wrench.
+struct AttainableScale {
+  double scale = 0.0;                         // [-] lambda*, 0 when invalid
+  AllocationTon ton = AllocationTon::Zero();  // [-] s at the optimum, compact order
+  int iterations = 0;
+  bool converged = false;  // false: iteration cap or invalid input (non-finite, thrusters not 1..32)
+};
+AttainableScale attainable_scale(const AllocationParams& params, const Vec6& wrench);
+
 // Optimal bases of earlier attainable demands of one configuration matrix, tried before a solve
 // (thruster_allocation.cpp, "Warm start"): a controller's demands change slowly, so the optimal
 // basis of (P) often stays the same and the answer is one 6x6 product instead of a simplex.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "flight/norm_allocation.hpp"
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::flight {
@@ -12,6 +13,7 @@ ThrusterManagementParams make_thruster_management(const model::Scenario& scenari
       .thrusters = scenario.thrusters,
       .com_body_m = scenario.chaser.com_body_m,
       .min_on_fraction = scenario.thrusters.min_on_time_s / scenario.control_period_s,
+      .norm = scenario.control.allocation_norm,
   };
 }
 
@@ -54,7 +56,8 @@ ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params
   ThrusterManagementOutput out;
   std::optional<AllocationResult> pulsed = allocate_with_pulse(state, demand_wrench, pulse);
   if (pulsed) out.pulsed = pulse.thruster;
-  AllocationResult result = pulsed ? *pulsed : allocate_thrusters(state.allocation, demand_wrench, state.warm);
+  AllocationResult result =
+      pulsed ? *pulsed : allocate_thrusters(state.allocation, demand_wrench, params.norm, state.warm);
   const int n = state.active_list.count;
   AllocationTon& ton = result.ton;  // compact order: the k-th active thruster
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.

@@ -1,6 +1,7 @@
 #pragma once
 // Thruster management function (TMF, Fonod 2015 sec. II.C): turns the wrench released by the TMU
-// into on-times of the active thrusters with the least propellant, then respects the valves'
+// into on-times of the active thrusters with the least propellant (or, by the scenario's choice, the
+// least energy or peak: flight/norm_allocation.hpp), then respects the valves'
 // minimum on-time, which the allocation itself does not know about. The active set is a mask that
 // recovery may change (model/recovery.hpp); the allocation problem is rebuilt when it does.
 #include "core/types.hpp"
@@ -14,6 +15,7 @@ struct ThrusterManagementParams {
   model::ThrusterSetParams thrusters;  // nominal geometry
   Vec3 com_body_m = Vec3::Zero();      // [m] nominal centre of mass
   double min_on_fraction = 0;          // [-] min_on_time / T: shorter on-times are dropped
+  model::AllocationNorm norm = model::AllocationNorm::kOne;  // what the on-times minimise
 };
 
 ThrusterManagementParams make_thruster_management(const model::Scenario& scenario);
@@ -47,6 +49,7 @@ struct ThrusterManagementOutput {
 // a copy of the whole capacity-wide array every period is measurable (docs/performance.md).
 // With a test pulse on an active thruster, the allocation floors its on-time and the others cancel
 // its wrench; where the demand would then be unattainable, the period allocates without the pulse.
+// The pulse's allocation is the least-propellant one whatever the norm: a check costs least that way.
 ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
                                           const Vec6& demand_wrench, model::ThrusterOnTimes& ton,
                                           const TestPulse& pulse = {});

@@ -98,6 +98,17 @@ void read_optional_hinf(MapReader& r, std::optional<model::HinfDesignParams>& ou
   });
 }
 
+// control.allocation_norm (optional): 1, 2 or inf (flight/norm_allocation.hpp).
+void read_allocation_norm(MapReader& r, model::AllocationNorm& out) {
+  std::string text;
+  if (!r.has("allocation_norm") || !r.text("allocation_norm", text)) return;
+  if (text == "1") out = model::AllocationNorm::kOne;
+  else if (text == "2") out = model::AllocationNorm::kTwo;
+  else if (text == "inf") out = model::AllocationNorm::kInfinity;
+  else
+    r.diagnostics().add(r.path_of("allocation_norm"), fmt::format("must be one of 1, 2, inf (got '{}')", text));
+}
+
 }  // namespace
 
 void read_control(MapReader& r, model::ControlParams& out) {
@@ -110,6 +121,7 @@ void read_control(MapReader& r, model::ControlParams& out) {
   r.number("tmu_force_threshold_Ns", Range::positive(), out.tmu_force_threshold_Ns);
   r.number("tmu_torque_threshold_Nms", Range::positive(), out.tmu_torque_threshold_Nms);
   r.number("tmu_windup_periods", Range::positive(), out.tmu_windup_periods);
+  read_allocation_norm(r, out.allocation_norm);
   read_optional_hinf(r, out.hinf);
 }
 

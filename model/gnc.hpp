@@ -1,5 +1,6 @@
 #pragma once
 // Parameters of the flight software: navigation, guidance, control, modulation and management.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,11 @@ struct HinfDesignParams {
   std::optional<HinfRobustnessParams> robustness;       // absent: no robustness check
 };
 
+// The norm the thrust allocation minimises among the on-times that realise the wrench (issue 18;
+// flight/norm_allocation.hpp): p = 1 least propellant (Fonod 2015's TMF), p = 2 least energy,
+// p = infinity least peak on-time (COMRADE 2018, sec. 6.3, names the three).
+enum class AllocationNorm : std::uint8_t { kOne, kTwo, kInfinity };
+
 struct ControlParams {
   // LQR weights: state cost diag(q_pos * I, q_vel * I), input cost r_force * I (position), and the
   // same shape for attitude. Gains are computed from these and the scenario's mass and inertia.
@@ -87,6 +93,7 @@ struct ControlParams {
   double tmu_torque_threshold_Nms = 0.1;   // [N m s]
   // Accumulator clamp (anti-windup) in periods of full per-axis thruster authority.
   double tmu_windup_periods = 3.0;         // [-]
+  AllocationNorm allocation_norm = AllocationNorm::kOne;
   // The H-infinity design (`chaser control design`); absent: the scenario has none.
   std::optional<HinfDesignParams> hinf;
 };

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/random.hpp"
+#include "flight/norm_allocation.hpp"
 #include "model/thruster_geometry.hpp"
 #include "tests/support/msr_branch_a.hpp"
 
@@ -84,6 +85,35 @@ TEST(ThrusterManagement, TestPulseIsSkippedOutsideTheSetAndWhenTheDemandIsAtTheL
   EXPECT_FALSE(out.feasible);
   EXPECT_EQ(out.pulsed, model::kNoThruster);
   EXPECT_EQ(std::memcmp(checked.data(), unchecked.data(), sizeof(double) * 8), 0);
+}
+
+}  // namespace
+}  // namespace chaser::flight
+
+namespace chaser::flight {
+namespace {
+
+// The TMF flies the scenario's norm (flight/norm_allocation.hpp): its command is that norm's
+// allocation, written by thruster index, and realises the same wrench whatever the norm.
+TEST(ThrusterManagement, FliesTheChosenNorm) {
+  RandomStream rng(18, "test/management/norm");
+  for (const model::AllocationNorm norm :
+       {model::AllocationNorm::kOne, model::AllocationNorm::kTwo, model::AllocationNorm::kInfinity}) {
+    ThrusterManagementParams p = msr_management();
+    p.norm = norm;
+    ThrusterManagementState s;
+    set_active_thrusters(p, s, kBranchA);
+    AllocationWarmStart warm;  // evolves like the TMF's own: the same calls in the same order
+    for (int k = 0; k < 50; ++k) {
+      const Vec6 demand = attainable_demand(rng, s);
+      model::ThrusterOnTimes ton{};
+      const ThrusterManagementOutput out = manage_thrusters(p, s, demand, ton);
+      const AllocationResult expected = allocate_thrusters(s.allocation, demand, norm, warm);
+      for (int i = 0; i < 8; ++i) EXPECT_EQ(ton[static_cast<std::size_t>(i)], expected.ton[i]) << k;
+      EXPECT_TRUE(out.feasible);
+      EXPECT_LE((out.commanded_wrench - demand).cwiseAbs().maxCoeff(), 1e-10) << k;
+    }
+  }
 }
 
 }  // namespace

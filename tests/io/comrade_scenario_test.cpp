@@ -43,6 +43,20 @@ TEST(ComradeScenario, AssistLoadsAndSpinCasesOverride) {
   }
 }
 
+// control.allocation_norm: 1 (the default, Fonod 2015's least propellant), 2 or inf.
+TEST(ComradeScenario, AllocationNormIsSelectable) {
+  const LoadResult plain = load_scenario_file(kEnvisat, {});
+  ASSERT_TRUE(plain.errors.empty()) << format_errors(plain.errors);
+  EXPECT_EQ(plain.scenario->control.allocation_norm, model::AllocationNorm::kOne);
+  const std::pair<const char*, model::AllocationNorm> norms[] = {
+      {"1", model::AllocationNorm::kOne}, {"2", model::AllocationNorm::kTwo}, {"inf", model::AllocationNorm::kInfinity}};
+  for (const auto& [text, norm] : norms) {
+    const LoadResult r = load_scenario_file(kEnvisat, {std::string("control.allocation_norm=") + text});
+    ASSERT_TRUE(r.errors.empty()) << text << ": " << format_errors(r.errors);
+    EXPECT_EQ(r.scenario->control.allocation_norm, norm) << text;
+  }
+}
+
 // The circular-orbit scenario has neither section and needs none.
 TEST(ComradeScenario, MsrHasNoEarthOrbit) {
   const LoadResult r = testing::load_msr();
@@ -91,6 +105,8 @@ const BadCase kBadCases[] = {
   {"hinf_peak", {"control.hinf.translation.peak_sensitivity=1"}, "control.hinf.translation.peak_sensitivity", "must be in (1, 10] (got 1)"},
   {"hinf_low_gain", {"control.hinf.rotation.low_frequency_gain=0"}, "control.hinf.rotation.low_frequency_gain", "must be in (0, 1) (got 0)"},
   {"hinf_scale", {"control.hinf.rotation.error_scale_rad=-1"}, "control.hinf.rotation.error_scale_rad", "must be > 0 (got -1)"},
+  {"allocation_norm", {"control.allocation_norm=3"}, "control.allocation_norm", "must be one of 1, 2, inf (got '3')"},
+  {"allocation_norm_text", {"control.allocation_norm=infinity"}, "control.allocation_norm", "must be one of 1, 2, inf (got 'infinity')"},
   {"robust_points", {"control.hinf.robustness.points_per_range=1"}, "control.hinf.robustness.points_per_range", "must be in [2, 20] (got 1)"},
   {"robust_mass", {"control.hinf.robustness.mass_uncertainty=0.5"}, "control.hinf.robustness.mass_uncertainty", "must be in [0, 0.5) (got 0.5)"},
   {"robust_fraction", {"control.hinf.robustness.translation_modes=[{name: slosh, frequency_lo_radps: 0.05, frequency_hi_radps: 0.16, modal_fraction: 1, damping: 0.005}]"}, "control.hinf.robustness.translation_modes.0.modal_fraction", "must be in [0, 1) (got 1)"},
