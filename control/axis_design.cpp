@@ -28,6 +28,8 @@ void check_spec(const AxisDesignSpec& s) {
        fmt::format("low_frequency_gain must be in (0, 1) (got {})", s.low_frequency_gain));
   need(std::isfinite(s.error_scale) && s.error_scale > 0.0,
        fmt::format("error_scale must be > 0 (got {})", s.error_scale));
+  need(s.input_disturbance >= 0.0 && s.input_disturbance <= 10.0,
+       fmt::format("input_disturbance must be in [0, 10] (got {})", s.input_disturbance));
   need(s.pole_shift_fraction > 0.0 && s.pole_shift_fraction <= 0.1,
        fmt::format("pole_shift_fraction must be in (0, 0.1] (got {})", s.pole_shift_fraction));
   if (problems.empty()) return;
@@ -91,6 +93,8 @@ AxisDesign design_axis(const AxisDesignSpec& spec) {
   d.plant = delayed_double_integrator(spec.delay_s, 0.0);
   d.weights.w_s = performance_weight(spec.peak_sensitivity, spec.bandwidth_radps, spec.low_frequency_gain);
   d.weights.w_ks = static_gain(MatrixXd::Constant(1, 1, spec.error_scale / spec.authority));
+  if (spec.input_disturbance > 0.0)
+    d.weights.w_d = static_gain(MatrixXd::Constant(1, 1, spec.input_disturbance * spec.authority / spec.error_scale));
   const GeneralisedPlant design = mixed_sensitivity_plant(d.design_plant, d.weights);
   d.synthesis = synthesise_three_pass(design, d.gamma_threshold);
   if (!d.synthesis.ok()) return d;

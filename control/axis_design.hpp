@@ -37,6 +37,8 @@ struct AxisDesignSpec {
   double low_frequency_gain = 1e-3;   // [-] A of W_S, in (0, 1)
   double error_scale = 1.0;           // [m | rad] (> 0)
   double pole_shift_fraction = 1e-3;  // [-] epsilon / omega_B of the design plant, in (0, 0.1]
+  double input_disturbance = 0.0;     // [-] W_d = input_disturbance authority / error_scale, in [0, 10]
+                                      // (0: no input disturbance channel)
 };
 
 // The top of the band a loop's margins and responses are swept over: 1e3 omega_B, and at least

@@ -37,6 +37,10 @@ void validate_inputs(const StateSpace& g, const MixedSensitivityWeights& w) {
   check_weight(w.w_s, "W_S", g.outputs(), "one per output of G: it weighs e", problems);
   check_weight(w.w_ks, "W_KS", g.inputs(), "one per input of G: it weighs u", problems);
   check_weight(w.w_t, "W_T", g.outputs(), "one per output of G: it weighs y", problems);
+  check_weight(w.w_d, "W_d", g.inputs(), "one per input of G: it shapes the input disturbance", problems);
+  if (w.w_d && w.w_d->outputs() != g.inputs())
+    problems.push_back("W_d: must have " + std::to_string(g.inputs()) + " outputs (one per input of G), got " +
+                       std::to_string(w.w_d->outputs()));
   if (!w.w_s && !w.w_ks && !w.w_t) problems.push_back("no weight given: at least one of W_S, W_KS, W_T");
   if (problems.empty()) return;
   std::string all = "mixed_sensitivity_plant: invalid input:";
@@ -48,8 +52,10 @@ const StateSpace kAbsent{MatrixXd(0, 0), MatrixXd(0, 0), MatrixXd(0, 0), MatrixX
 
 }  // namespace
 
-GeneralisedPlant mixed_sensitivity_plant(const StateSpace& g, const MixedSensitivityWeights& weights) {
-  validate_inputs(g, weights);
+namespace {
+
+// The plant of the header without W_d: inputs [r; u].
+GeneralisedPlant reference_plant(const StateSpace& g, const MixedSensitivityWeights& weights) {
   const StateSpace& ws = weights.w_s ? *weights.w_s : kAbsent;
   const StateSpace& wks = weights.w_ks ? *weights.w_ks : kAbsent;
   const StateSpace& wt = weights.w_t ? *weights.w_t : kAbsent;
@@ -103,6 +109,47 @@ GeneralisedPlant mixed_sensitivity_plant(const StateSpace& g, const MixedSensiti
   p.d.block(ze, ny, ny, nu) = -g.d;
   out.n_meas = static_cast<int>(ny);
   out.n_ctrl = static_cast<int>(nu);
+  return out;
+}
+
+}  // namespace
+
+GeneralisedPlant mixed_sensitivity_plant(const StateSpace& g, const MixedSensitivityWeights& weights) {
+  validate_inputs(g, weights);
+  GeneralisedPlant out = reference_plant(g, weights);
+  if (!weights.w_d) return out;
+  // d = W_d w_d reaches everything u reaches except W_KS (which weighs the controller's u alone):
+  // its column block in [r; u]'s P is u's with W_KS's rows cleared. With W_d's states appended:
+  // x_d' = A_d x_d + B_d w_d, d = C_d x_d + D_d w_d, so d's column into P is P_u (C_d x_d + D_d w_d).
+  const StateSpace& wd = *weights.w_d;
+  const Index ny = g.outputs(), nu = g.inputs(), nd = wd.inputs(), nwd = wd.states();
+  const StateSpace& p0 = out.p;
+  const Index n0 = p0.states();
+  const Index ps = weights.w_s ? weights.w_s->outputs() : 0, pks = weights.w_ks ? weights.w_ks->outputs() : 0;
+  const Index iks = g.states() + (weights.w_s ? weights.w_s->states() : 0);
+  const Index nks = weights.w_ks ? weights.w_ks->states() : 0;
+  MatrixXd b_u = p0.b.rightCols(nu);  // u's column block: state rows and output rows
+  MatrixXd d_u = p0.d.rightCols(nu);
+  b_u.middleRows(iks, nks).setZero();
+  d_u.middleRows(ps, pks).setZero();
+  StateSpace p;
+  p.a = MatrixXd::Zero(n0 + nwd, n0 + nwd);
+  p.a.topLeftCorner(n0, n0) = p0.a;
+  p.a.block(0, n0, n0, nwd) = b_u * wd.c;
+  p.a.bottomRightCorner(nwd, nwd) = wd.a;
+  p.b = MatrixXd::Zero(n0 + nwd, ny + nd + nu);
+  p.b.topLeftCorner(n0, ny) = p0.b.leftCols(ny);
+  p.b.block(0, ny, n0, nd) = b_u * wd.d;
+  p.b.block(n0, ny, nwd, nd) = wd.b;
+  p.b.topRightCorner(n0, nu) = p0.b.rightCols(nu);
+  p.c = MatrixXd::Zero(p0.outputs(), n0 + nwd);
+  p.c.leftCols(n0) = p0.c;
+  p.c.rightCols(nwd) = d_u * wd.c;
+  p.d = MatrixXd::Zero(p0.outputs(), ny + nd + nu);
+  p.d.leftCols(ny) = p0.d.leftCols(ny);
+  p.d.middleCols(ny, nd) = d_u * wd.d;
+  p.d.rightCols(nu) = p0.d.rightCols(nu);
+  out.p = p;
   return out;
 }
 

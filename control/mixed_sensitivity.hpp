@@ -6,7 +6,7 @@
 // (Skogestad & Postlethwaite, "Multivariable Feedback Control", 2nd ed., 2005: the general
 // control configuration of sec. 3.8 and the mixed-sensitivity design of sec. 9.3, S/KS/T form).
 //
-// Signs: the reference is the exogenous input, w = r; the controller sees the error e = r - y and
+// Signs: the reference is the exogenous input, w = r (then w_d, with W_d below); the controller sees the error e = r - y and
 // outputs u = K e; y = G u. Then e = S r, u = K S r, y = T r, and with z = [W_S e; W_KS u; W_T y]
 //
 //   [ z1 ]   [ W_S   -W_S G  ]
@@ -31,6 +31,12 @@ struct MixedSensitivityWeights {
   std::optional<StateSpace> w_s;   // on e = S r: n_y inputs, any number of outputs
   std::optional<StateSpace> w_ks;  // on u = K S r: n_u inputs
   std::optional<StateSpace> w_t;   // on y = T r: n_y inputs
+  // Optional input disturbance: d = W_d w_d adds to u at G's input (y = G (u + d)), a second
+  // exogenous input after r. It brings G S (d -> e) and K S G (d -> u) into the problem, which an
+  // S/KS design otherwise ignores: without it the optimum cancels the plant's slow poles with
+  // controller zeros and leaves them in the loop, where an input disturbance excites them
+  // (S&P sec. 9.3; docs/control.md, "Input disturbance"). n_u inputs, n_u outputs.
+  std::optional<StateSpace> w_d;
 };
 
 struct GeneralisedPlant {

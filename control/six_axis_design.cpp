@@ -40,6 +40,7 @@ std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario) {
     spec.peak_sensitivity = w.peak_sensitivity;
     spec.low_frequency_gain = w.low_frequency_gain;
     spec.error_scale = w.error_scale;
+    spec.input_disturbance = w.input_disturbance;
   }
   return specs;
 }

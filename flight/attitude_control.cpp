@@ -22,16 +22,23 @@ AttitudeControlParams make_attitude_control(const model::Scenario& scenario) {
   return design_attitude_control(scenario.control, scenario.chaser.inertia_kgm2, scenario.control_period_s);
 }
 
-Vec3 attitude_control(const AttitudeControlParams& params, const NavEstimate& nav, const GuidanceRef& ref) {
+AttitudeError attitude_error(const NavEstimate& nav, const GuidanceRef& ref) {
   const Quat q_ref_from_body = ref.q_inertial_from_body.conjugate() * nav.q_inertial_from_body;
-  const Vec3 theta = rotation_vector_from_quat(q_ref_from_body);
-  const Vec3 omega_ref_in_body = q_ref_from_body.conjugate() * ref.omega_body_radps;
+  return {.theta_rad = rotation_vector_from_quat(q_ref_from_body),
+          .omega_ref_body_radps = q_ref_from_body.conjugate() * ref.omega_body_radps};
+}
+
+Vec3 attitude_feedforward(const Mat3& inertia_kgm2, const Vec3& omega_body_radps, const Vec3& omega_ref_body_radps) {
+  return omega_body_radps.cross(inertia_kgm2 * omega_body_radps) -
+         inertia_kgm2 * omega_body_radps.cross(omega_ref_body_radps);
+}
+
+Vec3 attitude_control(const AttitudeControlParams& params, const NavEstimate& nav, const GuidanceRef& ref) {
+  const AttitudeError att = attitude_error(nav, ref);
   const Vec3& omega = nav.omega_body_radps;
   Vec6 error;
-  error << theta, omega - omega_ref_in_body;
-  const Mat3& inertia = params.inertia_kgm2;
-  const Vec3 feedforward = omega.cross(inertia * omega) - inertia * omega.cross(omega_ref_in_body);
-  return feedforward - params.K * error;
+  error << att.theta_rad, omega - att.omega_ref_body_radps;
+  return attitude_feedforward(params.inertia_kgm2, omega, att.omega_ref_body_radps) - params.K * error;
 }
 
 }  // namespace chaser::flight

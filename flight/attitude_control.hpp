@@ -29,6 +29,18 @@ AttitudeControlParams design_attitude_control(const model::ControlParams& weight
                                               double period_s);
 AttitudeControlParams make_attitude_control(const model::Scenario& scenario);
 
+// The attitude error of the header: theta (rotation reference -> body, body axes) and the
+// reference rate seen in body axes, omega_r.
+struct AttitudeError {
+  Vec3 theta_rad = Vec3::Zero();
+  Vec3 omega_ref_body_radps = Vec3::Zero();
+};
+AttitudeError attitude_error(const NavEstimate& nav, const GuidanceRef& ref);
+
+// The computed torque of the header, omega x (I omega) - I (omega x omega_r) [N m]: with it, the
+// error obeys the double integrator I delta_omega' = C_fb.
+Vec3 attitude_feedforward(const Mat3& inertia_kgm2, const Vec3& omega_body_radps, const Vec3& omega_ref_body_radps);
+
 // Desired torque C_d in body axes [N m].
 Vec3 attitude_control(const AttitudeControlParams& params, const NavEstimate& nav, const GuidanceRef& ref);
 

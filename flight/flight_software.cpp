@@ -12,6 +12,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .navigation = make_nav_params(scenario),
       .position = make_position_control(scenario),
       .attitude = make_attitude_control(scenario),
+      .hinf = make_hinf_control(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
@@ -32,8 +33,15 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   out.estimate = step_nav(params.navigation, state.navigation, meas, state.force_cmd_lvlh_N_prev);
   const model::LvlhFrame lvlh = params.orbit.lvlh_at(t_s);
   out.reference = guidance_reference(params.guidance, t_s, lvlh);
-  out.force_demand_lvlh_N = position_control(params.position, out.estimate, out.reference);
-  out.torque_demand_body_Nm = attitude_control(params.attitude, out.estimate, out.reference);
+  if (params.hinf.enabled) {
+    const HinfDemand demand =
+        hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference);
+    out.force_demand_lvlh_N = demand.force_lvlh_N;
+    out.torque_demand_body_Nm = demand.torque_body_Nm;
+  } else {
+    out.force_demand_lvlh_N = position_control(params.position, out.estimate, out.reference);
+    out.torque_demand_body_Nm = attitude_control(params.attitude, out.estimate, out.reference);
+  }
 
   // The force is wanted in LVLH; the thrusters are fixed in the body: rotate with the estimate.
   const Quat q_body_from_lvlh = out.estimate.q_inertial_from_body.conjugate() * lvlh.q_inertial_from_lvlh;

@@ -9,6 +9,7 @@
 #include "flight/attitude_control.hpp"
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
+#include "flight/hinf_control.hpp"
 #include "flight/modulation.hpp"
 #include "flight/navigation.hpp"
 #include "flight/position_control.hpp"
@@ -27,6 +28,7 @@ struct FlightParams {
   NavParams navigation;
   PositionControlParams position;
   AttitudeControlParams attitude;
+  HinfControlParams hinf;  // enabled: flies instead of the LQR pair (control.law: hinf)
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
@@ -40,6 +42,7 @@ FlightParams make_flight_params(const model::Scenario& scenario);
 struct FlightState {
   NavState navigation;
   TmuState tmu;
+  HinfControlState hinf;
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
   FdirState fdir;
   model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting

@@ -37,6 +37,7 @@ void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWe
   r.number("peak_sensitivity", Range::left_open(1.0, 10.0), out.peak_sensitivity);
   r.number("low_frequency_gain", Range::open(0.0, 1.0), out.low_frequency_gain);
   r.number(error_scale_key, Range::positive(), out.error_scale);
+  if (r.has("input_disturbance")) r.number("input_disturbance", Range::closed(0.0, 10.0), out.input_disturbance);
 }
 
 constexpr int kMaxModesPerFamily = 4;
@@ -109,6 +110,18 @@ void read_allocation_norm(MapReader& r, model::AllocationNorm& out) {
     r.diagnostics().add(r.path_of("allocation_norm"), fmt::format("must be one of 1, 2, inf (got '{}')", text));
 }
 
+// control.law (optional): lqr or hinf; hinf flies control.hinf's design, which must be there.
+void read_control_law(MapReader& r, model::ControlParams& out) {
+  std::string text;
+  if (!r.has("law") || !r.text("law", text)) return;
+  if (text == "lqr") out.law = model::ControlLaw::kLqr;
+  else if (text == "hinf") out.law = model::ControlLaw::kHinf;
+  else
+    r.diagnostics().add(r.path_of("law"), fmt::format("must be one of lqr, hinf (got '{}')", text));
+  if (out.law == model::ControlLaw::kHinf && !out.hinf)
+    r.diagnostics().add(r.path_of("law"), "hinf needs a control.hinf section (the loops' weights)");
+}
+
 }  // namespace
 
 void read_control(MapReader& r, model::ControlParams& out) {
@@ -123,6 +136,7 @@ void read_control(MapReader& r, model::ControlParams& out) {
   r.number("tmu_windup_periods", Range::positive(), out.tmu_windup_periods);
   read_allocation_norm(r, out.allocation_norm);
   read_optional_hinf(r, out.hinf);
+  read_control_law(r, out);
 }
 
 void read_initial(MapReader& r, model::InitialState& out) {

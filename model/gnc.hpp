@@ -41,6 +41,11 @@ struct HinfLoopWeights {
   double peak_sensitivity = 2.0;     // [-] M: |S| below M gamma at high frequency
   double low_frequency_gain = 1e-3;  // [-] A: |S| below A gamma at low frequency (A > 0: SB10AD's A3)
   double error_scale = 1.0;          // [m | rad] an error this large may ask for the axis's authority
+  // [-] An input disturbance of this fraction of the authority weighs like an error of error_scale
+  // (W_d = input_disturbance authority / error_scale; 0: none, the plain S/KS problem). Without it
+  // the design cancels the double integrator's (shifted) poles and flies a slow drift under any
+  // constant acceleration error (docs/control.md, "Input disturbance").
+  double input_disturbance = 0.003;
 };
 
 // A mode the rigid design model leaves out (propellant slosh, a flexible appendage), as the loops
@@ -74,6 +79,11 @@ struct HinfDesignParams {
 // p = infinity least peak on-time (COMRADE 2018, sec. 6.3, names the three).
 enum class AllocationNorm : std::uint8_t { kOne, kTwo, kInfinity };
 
+// The feedback law the flight software flies: the LQR pair of Fonod 2015 (flight/position_control,
+// flight/attitude_control), or the six H-infinity loops of control.hinf behind the computed-torque
+// precompensation (flight/hinf_control.hpp; COMRADE 2018, sec. 5).
+enum class ControlLaw : std::uint8_t { kLqr, kHinf };
+
 struct ControlParams {
   // LQR weights: state cost diag(q_pos * I, q_vel * I), input cost r_force * I (position), and the
   // same shape for attitude. Gains are computed from these and the scenario's mass and inertia.
@@ -94,6 +104,7 @@ struct ControlParams {
   // Accumulator clamp (anti-windup) in periods of full per-axis thruster authority.
   double tmu_windup_periods = 3.0;         // [-]
   AllocationNorm allocation_norm = AllocationNorm::kOne;
+  ControlLaw law = ControlLaw::kLqr;
   // The H-infinity design (`chaser control design`); absent: the scenario has none.
   std::optional<HinfDesignParams> hinf;
 };

@@ -260,6 +260,30 @@ TEST(Cli, ControlDesignRefusesWhatItCannotDesign) {
   EXPECT_NE(fast.output.find("control.hinf.rotation.bandwidth_radps"), std::string::npos) << fast.output;
 }
 
+// ENVISAT flown with the H-infinity loops (control.law: hinf) and with each allocation norm: every
+// combination captures inside the corridor (one seed each; docs/control.md, "Flying the loops",
+// and docs/gnc.md, "Thrust allocation", give the campaigns). MSR has no control.hinf: refused.
+TEST(Cli, EnvisatFliesEveryLawAndNorm) {
+  const auto out = std::filesystem::temp_directory_path() / "chaser_law_norm_test";
+  for (const char* law : {"lqr", "hinf"}) {
+    for (const char* norm : {"1", "2", "inf"}) {
+      const std::string what = std::string(law) + ", p = " + norm;
+      const CommandResult r = run_chaser("run scenarios/comrade_envisat.yaml --telemetry none --out " + out.string() +
+                                         " --set control.law=" + law + " --set control.allocation_norm=" + norm);
+      ASSERT_EQ(r.exit_code, 0) << what << "\n" << r.output;
+      std::ifstream in(out / "summary.json");
+      const nlohmann::json j = nlohmann::json::parse(in);
+      EXPECT_TRUE(j["capture_achieved"].get<bool>()) << what;
+      EXPECT_TRUE(j["corridor_kept"].get<bool>()) << what;
+      EXPECT_FALSE(j["diverged"].get<bool>()) << what;
+    }
+  }
+  std::filesystem::remove_all(out);
+  const CommandResult msr = run_chaser("run scenarios/msr_terminal.yaml --set control.law=hinf");
+  EXPECT_EQ(msr.exit_code, 2) << msr.output;
+  EXPECT_NE(msr.output.find("control.law: hinf needs a control.hinf section"), std::string::npos) << msr.output;
+}
+
 // A set that cannot span is refused by the loader before any analysis: exit 2, the key named.
 TEST(Cli, ThrustersRefusesABadScenarioWithExitCode2) {
   const CommandResult r = run_chaser(

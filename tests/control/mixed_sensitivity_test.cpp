@@ -62,6 +62,41 @@ TEST(MixedSensitivity, LftOfThePlantIsTheWeightedSensitivityStack) {
   }
 }
 
+// With an input disturbance d' = W_d w_d at G's input (y = G (u + d')): e = S r - S G d',
+// u = K e, y = T r + S G d', so the second column block of F_l is [-W_S S G W_d; -W_KS K S G W_d;
+// W_T S G W_d], computed from the frequency responses as above (same tolerance, same reasons); the
+// first block is unchanged. A dynamic, coupled W_d exercises its states' rows.
+TEST(MixedSensitivity, InputDisturbanceAddsTheGsBlocks) {
+  const StateSpace g = coupled_plant_with_feedthrough();
+  const StateSpace k = dynamic_controller();
+  const StateSpace w_s = testing::diagonal_weight(performance_weight(2.0, 1.0, 1e-3), 2);
+  const StateSpace w_ks = static_gain(0.5 * MatrixXd::Identity(2, 2));
+  const StateSpace w_t = testing::diagonal_weight(performance_weight(0.5, 5.0, 2.0), 2);
+  StateSpace w_d;
+  w_d.a = (MatrixXd(2, 2) << -0.5, 0.2, 0.0, -2.0).finished();
+  w_d.b = (MatrixXd(2, 2) << 1.0, 0.0, 0.3, 1.0).finished();
+  w_d.c = (MatrixXd(2, 2) << 0.4, 0.0, 0.1, 0.8).finished();
+  w_d.d = (MatrixXd(2, 2) << 0.05, 0.0, 0.0, 0.02).finished();
+  const GeneralisedPlant gp = mixed_sensitivity_plant(g, {w_s, w_ks, w_t, w_d});
+  ASSERT_EQ(gp.p.states(), 3 + 2 + 0 + 2 + 2);
+  ASSERT_EQ(gp.p.inputs(), 2 + 2 + 2);  // [r; w_d; u]
+  ASSERT_EQ(gp.p.outputs(), 2 + 2 + 2 + 2);
+  const StateSpace cl = lower_lft(gp.p, gp.n_meas, gp.n_ctrl, k);
+  for (double omega : log_grid(1e-3, 1e3, 25)) {
+    const MatrixXcd G = frequency_response(g, omega), K = frequency_response(k, omega);
+    const MatrixXcd Wd = frequency_response(w_d, omega);
+    const MatrixXcd S = (MatrixXcd::Identity(2, 2) + G * K).inverse();
+    const MatrixXcd Ws = frequency_response(w_s, omega), Wks = frequency_response(w_ks, omega);
+    const MatrixXcd Wt = frequency_response(w_t, omega);
+    MatrixXcd expected(6, 4);
+    expected << Ws * S, -Ws * S * G * Wd,  //
+        Wks * K * S, -Wks * K * S * G * Wd,  //
+        Wt * G * K * S, Wt * S * G * Wd;
+    const MatrixXcd got = frequency_response(cl, omega);
+    EXPECT_LE((got - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff()) << "omega " << omega;
+  }
+}
+
 TEST(MixedSensitivity, AbsentWeightsLeaveTheirRowsOut) {
   const StateSpace g = testing::skogestad_siso_plant();
   const GeneralisedPlant gp =
