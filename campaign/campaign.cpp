@@ -71,7 +71,8 @@ CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& op
   const ExecuteOptions execute{.threads = options.threads,
                                .keep_telemetry = options.keep_telemetry,
                                .telemetry_root = (fs::path(options.out_dir) / "runs").string(),
-                               .progress = options.progress};
+                               .progress = options.progress,
+                               .show_progress = options.show_progress};
   outcome.executed = executor ? executor(plan, flight, todo, *writer, execute)
                               : execute_runs(plan, flight, todo, *writer, execute);
   outcome.simulated_s = static_cast<double>(outcome.executed.runs) * run_duration_s(plan.nominal);

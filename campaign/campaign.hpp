@@ -19,7 +19,8 @@ struct CampaignOptions {
   int threads = 1;
   bool resume = false;
   std::int64_t keep_telemetry = 0;  // runs with index < K keep DIR/runs/<run>/telemetry.csv, summary.json
-  bool progress = false;
+  bool progress = false;           // show progress: the line on stderr, or show_progress
+  ProgressCallback show_progress;  // empty: the line on stderr (the Python module shows its own)
   // --target: judged in summary.md. Not part of what the campaign is (campaign.json): a resume or a
   // merge may ask other questions of the same runs.
   std::vector<Target> targets;

@@ -19,7 +19,7 @@ ExecuteResult execute_runs(const CampaignPlan& plan, const flight::FlightParams&
                            RowsWriter& writer, const ExecuteOptions& options) {
   const int threads = std::max(1, options.threads);
   RunSchedule schedule(todo.begin, todo.end, static_cast<std::int64_t>(threads) * kReorderWindowPerThread);
-  Progress progress(todo.size(), options.progress);
+  Progress progress(todo.size(), options.progress, options.show_progress);
   const auto worker = [&] {
     for (std::int64_t run = schedule.claim(); run >= 0; run = schedule.claim())
       schedule.deliver(run_one(plan, flight, run, telemetry_dir(options.telemetry_root, options.keep_telemetry, run)),

@@ -8,6 +8,7 @@
 
 #include "campaign/cases.hpp"
 #include "campaign/plan.hpp"
+#include "campaign/progress.hpp"
 #include "campaign/rows_files.hpp"
 #include "flight/flight_software.hpp"
 
@@ -20,7 +21,8 @@ struct ExecuteOptions {
   int threads = 1;
   std::int64_t keep_telemetry = 0;  // runs with index < keep_telemetry write telemetry_root/<run>/
   std::string telemetry_root;       // DIR/runs
-  bool progress = false;            // progress line on stderr
+  bool progress = false;            // show progress: the line on stderr, or show_progress
+  ProgressCallback show_progress;   // empty: the line on stderr
 };
 
 struct ExecuteResult {
