@@ -14,25 +14,17 @@
 #include <pybind11/stl.h>
 
 #include "io/scenario_loader.hpp"
+#include "python/module/module.hpp"
 #include "sim/run.hpp"
 #include "sim/run_directory.hpp"
 #include "sim/summary.hpp"
 #include "sim/telemetry_channels.hpp"
-
-namespace py = pybind11;
 
 namespace chaser::python {
 
 namespace {
 
 PyObject* scenario_error_type = nullptr;  // chaser.ScenarioError, made once by the module's init
-
-// A scenario that loaded and validated: what `chaser run` holds after load_or_report.
-struct Scenario {
-  model::Scenario scenario;
-  std::string hash;            // of the document after overrides, as in summary.json
-  std::string canonical_yaml;  // that document, keys sorted
-};
 
 struct RunResult {
   py::dict summary;    // summary.json's content
@@ -170,6 +162,24 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
 
 }  // namespace
 
+Scenario scenario_argument(const py::handle& value) {
+  if (py::isinstance<Scenario>(value)) return value.cast<Scenario>();
+  const py::object fspath = py::module_::import("os").attr("fspath");
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"))
+    return load_file(py::str(fspath(value)).cast<std::string>(), py::none());
+  throw py::type_error("scenario: a chaser.Scenario or a scenario file's path (got " +
+                       py::str(py::type::of(value)).cast<std::string>() + ")");
+}
+
+Scenario with_overrides(const Scenario& loaded, const std::vector<std::string>& overrides) {
+  io::LoadResult reloaded;
+  {
+    py::gil_scoped_release released;
+    reloaded = io::load_scenario_text(loaded.canonical_yaml, overrides);
+  }
+  return loaded_or_raise(std::move(reloaded));
+}
+
 PYBIND11_MODULE(chaser, m) {
   m.doc() = "Chaser, a spacecraft GNC/FDIR simulator, from Python (docs/python.md).";
   m.attr("__version__") = sim::kChaserVersion;
@@ -209,6 +219,8 @@ PYBIND11_MODULE(chaser, m) {
         "One closed-loop run, as `chaser run`: seed replaces the scenario's; with out=DIR it writes "
         "DIR/telemetry.<csv|npy> (telemetry='none': no file) and DIR/summary.json as `chaser run --out DIR` does; "
         "channels keeps the channels matching those patterns (and t_s), in memory and in the file.");
+  add_campaign(m);
+  add_analyses(m);
 }
 
 }  // namespace chaser::python
