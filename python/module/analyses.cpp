@@ -1,14 +1,22 @@
 // The design-time analyses of the command line, from Python: chaser.thrusters (`chaser thrusters
-// --json`) and chaser.fdi_design (`chaser fdi design --out`). Each returns the JSON document the
-// command writes, made by the same C++ function, as Python values with NumPy arrays for matrices.
+// --json`) and chaser.fdi_design (`chaser fdi design --out`) return the JSON document the command
+// writes, made by the same C++ function, as Python values with NumPy arrays for matrices;
+// chaser.fmea (`chaser fmea`) runs the command's study and returns fmea.csv as a structured array.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
+#include <sstream>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
+#include "campaign/csv.hpp"
+#include "cli/fmea_report.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
 #include "flight/fdir.hpp"
@@ -95,6 +103,80 @@ py::object fdi_design(const py::object& scenario_arg, const std::string& model) 
   return json_to_python(design);
 }
 
+// A CSV text of our own writing (no quoting) as a structured array: a column whose fields are all
+// true/false is bool, all integers int64, all numbers float64, otherwise a string as wide as its
+// longest field.
+py::object csv_table(const std::string& text) {
+  std::istringstream in(text);
+  std::string header_line;
+  std::getline(in, header_line);
+  const std::vector<std::string_view> header = campaign::split_fields(header_line);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::vector<std::vector<std::string_view>> cells;
+  for (const std::string& line : lines) {
+    cells.push_back(campaign::split_fields(line));
+    if (cells.back().size() != header.size()) throw std::runtime_error("a malformed row: " + line);
+  }
+  const py::module_ np = py::module_::import("numpy");
+  py::list fields;
+  std::vector<py::list> columns(header.size());
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    const auto all = [&](auto test) {
+      return std::all_of(cells.begin(), cells.end(), [&](const auto& row) { return test(row[c]); });
+    };
+    std::size_t width = 1;
+    for (const auto& row : cells) width = std::max(width, row[c].size());
+    if (all([](std::string_view f) { return f == "true" || f == "false"; })) {
+      fields.append(py::make_tuple(std::string(header[c]), "?"));
+      for (const auto& row : cells) columns[c].append(row[c] == "true");
+    } else if (all([](std::string_view f) { return campaign::parse_integer(f).has_value(); })) {
+      fields.append(py::make_tuple(std::string(header[c]), "<i8"));
+      for (const auto& row : cells) columns[c].append(*campaign::parse_integer(row[c]));
+    } else if (all([](std::string_view f) { return campaign::parse_number(f).has_value(); })) {
+      fields.append(py::make_tuple(std::string(header[c]), "<f8"));
+      for (const auto& row : cells) columns[c].append(*campaign::parse_number(row[c]));
+    } else {
+      fields.append(py::make_tuple(std::string(header[c]), fmt::format("<U{}", width)));
+      for (const auto& row : cells) columns[c].append(py::str(std::string(row[c])));
+    }
+  }
+  py::object table = np.attr("zeros")(cells.size(), np.attr("dtype")(fields));
+  for (std::size_t c = 0; c < header.size(); ++c) table[py::str(std::string(header[c]))] = columns[c];
+  return table;
+}
+
+// `chaser fmea SCENARIO --set ... --threads K [--three-axis]`: fmea.csv, fmea.md and the per-layout
+// figures the command prints.
+py::dict fmea(const std::string& path, const py::object& overrides, std::optional<int> threads, bool three_axis) {
+  if (threads && *threads < 1) throw py::value_error(fmt::format("threads: must be >= 1 (got {})", *threads));
+  const std::vector<std::string> sets = override_strings(overrides);
+  io::InvSimLoadResult loaded;
+  std::vector<cli::FmeaLayout> layouts;
+  std::string csv, markdown;
+  {
+    py::gil_scoped_release released;
+    loaded = io::load_invsim_file(path, sets);
+    if (loaded.errors.empty() && loaded.params) {
+      layouts = cli::run_fmea_layouts(
+          loaded, three_axis, threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+          nullptr);
+      csv = cli::fmea_csv(layouts);
+      markdown = cli::fmea_markdown(layouts, nullptr, loaded.study.optimize_keep);
+    }
+  }
+  if (!loaded.errors.empty() || !loaded.params) raise_scenario_error(loaded.errors);
+  py::dict summaries;
+  for (const cli::FmeaLayout& layout : layouts) {
+    const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
+    summaries[py::str(layout.name)] =
+        py::dict(py::arg("description") = layout.description, py::arg("class_I") = s.per_class[0],
+                 py::arg("class_II") = s.per_class[1], py::arg("class_III") = s.per_class[2],
+                 py::arg("propellant_kg") = s.propellant_kg);
+  }
+  return py::dict(py::arg("rows") = csv_table(csv), py::arg("layouts") = summaries, py::arg("markdown") = markdown);
+}
+
 }  // namespace
 
 py::object json_to_python(const nlohmann::json& value) {
@@ -128,6 +210,12 @@ void add_analyses(py::module_& m) {
         "The residual generator design of one FDI scheme (Fonod 2015, IV.A), as `chaser fdi design SCENARIO "
         "--model M --out F` writes it: a dict with NumPy arrays for matrices (A_bar, L, Q, ...; complex "
         "eigenvalues as [re, im] rows). Raises ValueError where the command exits with 2.");
+  m.def("fmea", &fmea, py::arg("scenario"), py::arg("overrides") = py::none(), py::arg("threads") = py::none(),
+        py::arg("three_axis") = false,
+        "The failure-mode and effects analysis of `chaser fmea` (Zhou 2018; docs/invsim.md) for an "
+        "inverse-simulation scenario file: {'rows': fmea.csv as a structured array, 'layouts': {name: "
+        "{description, class_I, class_II, class_III, propellant_kg}}, 'markdown': fmea.md's text}. overrides: "
+        "as for load_scenario; threads: --threads (default every core); three_axis: --three-axis.");
 }
 
 }  // namespace chaser::python

@@ -32,17 +32,6 @@ struct RunResult {
   std::string report;  // the text `chaser run` prints
 };
 
-// Every problem at once, as the command line gives them: .errors the (key path, message) pairs,
-// str() io::format_errors' lines.
-[[noreturn]] void raise_scenario_error(const std::vector<io::ScenarioError>& errors) {
-  py::list pairs;
-  for (const io::ScenarioError& e : errors) pairs.append(py::make_tuple(e.key_path, e.message));
-  py::object error = py::reinterpret_borrow<py::object>(scenario_error_type)(io::format_errors(errors));
-  error.attr("errors") = pairs;
-  PyErr_SetObject(scenario_error_type, error.ptr());
-  throw py::error_already_set();
-}
-
 Scenario loaded_or_raise(io::LoadResult loaded) {
   if (!loaded.errors.empty()) raise_scenario_error(loaded.errors);
   return Scenario{std::move(*loaded.scenario), std::move(loaded.hash), std::move(loaded.canonical_yaml)};
@@ -59,23 +48,6 @@ std::string flow_yaml(const py::handle& value) {
   for (const std::string_view end : {"\n...\n", "\n"})  // a scalar's document-end marker, the last newline
     if (text.ends_with(end)) text.resize(text.size() - end.size());
   return text;
-}
-
-// --set strings from a list of "key.path=value", or from a dict {key.path: value} where a str value
-// is YAML text as on the command line and any other value (numbers, booleans, None, lists, dicts)
-// is written as YAML's flow style.
-std::vector<std::string> override_strings(const py::object& overrides) {
-  std::vector<std::string> out;
-  if (overrides.is_none()) return out;
-  if (py::isinstance<py::dict>(overrides)) {
-    for (const auto& [key, value] : overrides.cast<py::dict>()) {
-      const std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : flow_yaml(value);
-      out.push_back(py::str(key).cast<std::string>() + "=" + text);
-    }
-    return out;
-  }
-  if (py::isinstance<py::str>(overrides)) throw py::type_error("overrides: a dict or a list of 'key.path=value' strings");
-  return overrides.cast<std::vector<std::string>>();
 }
 
 Scenario load_file(const std::string& path, const py::object& overrides) {
@@ -161,6 +133,34 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
 }
 
 }  // namespace
+
+// --set strings from a list of "key.path=value", or from a dict {key.path: value} where a str value
+// is YAML text as on the command line and any other value (numbers, booleans, None, lists, dicts)
+// is written as YAML's flow style.
+std::vector<std::string> override_strings(const py::object& overrides) {
+  std::vector<std::string> out;
+  if (overrides.is_none()) return out;
+  if (py::isinstance<py::dict>(overrides)) {
+    for (const auto& [key, value] : overrides.cast<py::dict>()) {
+      const std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : flow_yaml(value);
+      out.push_back(py::str(key).cast<std::string>() + "=" + text);
+    }
+    return out;
+  }
+  if (py::isinstance<py::str>(overrides)) throw py::type_error("overrides: a dict or a list of 'key.path=value' strings");
+  return overrides.cast<std::vector<std::string>>();
+}
+
+// Every problem at once, as the command line gives them: .errors the (key path, message) pairs,
+// str() io::format_errors' lines.
+[[noreturn]] void raise_scenario_error(const std::vector<io::ScenarioError>& errors) {
+  py::list pairs;
+  for (const io::ScenarioError& e : errors) pairs.append(py::make_tuple(e.key_path, e.message));
+  py::object error = py::reinterpret_borrow<py::object>(scenario_error_type)(io::format_errors(errors));
+  error.attr("errors") = pairs;
+  PyErr_SetObject(scenario_error_type, error.ptr());
+  throw py::error_already_set();
+}
 
 Scenario scenario_argument(const py::handle& value) {
   if (py::isinstance<Scenario>(value)) return value.cast<Scenario>();

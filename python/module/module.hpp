@@ -2,10 +2,12 @@
 // What the Python module's files share: the loaded scenario, the conversion of JSON documents to
 // Python values, and the functions that add each part to the module.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
+#include "io/scenario_loader.hpp"
 #include "model/scenario.hpp"
 
 namespace chaser::python {
@@ -19,6 +21,14 @@ struct Scenario {
   std::string canonical_yaml;  // that document, keys sorted
 };
 
+// chaser.ScenarioError with every problem: .errors the (key path, message) pairs, str() the lines
+// of io::format_errors, as the command line prints them.
+[[noreturn]] void raise_scenario_error(const std::vector<io::ScenarioError>& errors);
+
+// --set strings from overrides as load_scenario takes them: None, a list of "key.path=value", or a
+// dict {key.path: value}.
+std::vector<std::string> override_strings(const py::object& overrides);
+
 // A chaser.Scenario, or a path (str or os.PathLike) loaded as chaser.load_scenario(path) loads it.
 Scenario scenario_argument(const py::handle& value);
 // The same document with more --set overrides applied after its own (raises ScenarioError).
@@ -30,6 +40,6 @@ Scenario with_overrides(const Scenario& loaded, const std::vector<std::string>& 
 py::object json_to_python(const nlohmann::json& value);
 
 void add_campaign(py::module_& m);  // campaign.cpp
-void add_analyses(py::module_& m);  // analyses.cpp: thrusters, fdi_design
+void add_analyses(py::module_& m);  // analyses.cpp: thrusters, fdi_design, fmea
 
 }  // namespace chaser::python

@@ -1,5 +1,6 @@
 """chaser.thrusters and chaser.fdi_design against the JSON files of `chaser thrusters --json` and
 `chaser fdi design --out`: the same figures, number arrays as NumPy arrays."""
+import csv
 import json
 
 import numpy as np
@@ -57,3 +58,49 @@ def test_bad_analysis_arguments_raise():
         chaser.thrusters(None)
     with pytest.raises(chaser.ScenarioError):
         chaser.thrusters(str(MSR) + ".missing")
+
+
+MANUAL_RVD = MSR.parent / "manual_rvd.yaml"
+
+
+def test_fmea_is_the_command_lines_fmea_csv_and_md(cli, tmp_path):
+    shown = run_cli(cli, "fmea", MANUAL_RVD, "--out", tmp_path, "--threads", 2)
+    assert shown.returncode == 0, shown.stderr
+    with open(tmp_path / "fmea.csv", newline="") as f:
+        expected = list(csv.DictReader(f))
+    got = chaser.fmea(str(MANUAL_RVD), threads=2)
+    rows = got["rows"]
+    assert list(rows.dtype.names) == list(expected[0]) and len(rows) == len(expected) == 3 * 41
+    for i, row in enumerate(expected):
+        for name, text in row.items():
+            value = rows[name][i]
+            if rows.dtype[name] == np.bool_:
+                assert text == ("true" if value else "false"), (i, name)
+            elif rows.dtype[name].kind in "if":
+                assert float(text) == value, (i, name, text, value)
+            else:
+                assert text == value, (i, name)
+    assert rows.dtype["k_p"] == np.float64 and rows.dtype["risk_rank"] == np.int64
+    assert got["markdown"] == (tmp_path / "fmea.md").read_text()
+    baseline = got["layouts"]["baseline"]
+    assert f"baseline: class I {baseline['class_I']}, class II {baseline['class_II']}, class III {baseline['class_III']}; " \
+           f"propellant {baseline['propellant_kg']:.1f} kg" in shown.stdout
+    assert list(got["layouts"]) == ["baseline", "scheme_I", "scheme_II"]
+
+
+def test_fmea_rows_do_not_depend_on_threads_and_overrides_act():
+    one = chaser.fmea(str(MANUAL_RVD), threads=1)["rows"]
+    assert one.tobytes() == chaser.fmea(str(MANUAL_RVD), threads=2)["rows"].tobytes()
+    three_axis = chaser.fmea(str(MANUAL_RVD), threads=2, three_axis=True)["rows"]
+    assert len(three_axis) == 3 * 105 and "three_axis" in set(three_axis["table"])
+    weaker = chaser.fmea(str(MANUAL_RVD), overrides={"thrusters.1.thrust_N": 50}, threads=2)["rows"]
+    assert len(weaker) == len(one) and not np.array_equal(weaker["propellant_kg"], one["propellant_kg"])
+
+
+def test_bad_fmea_arguments_raise(tmp_path):
+    with pytest.raises(ValueError, match="threads: must be >= 1"):
+        chaser.fmea(str(MANUAL_RVD), threads=0)
+    with pytest.raises(chaser.ScenarioError):
+        chaser.fmea(str(tmp_path / "nowhere.yaml"))
+    with pytest.raises(chaser.ScenarioError):
+        chaser.fmea(str(MANUAL_RVD), overrides={"nonesuch.key": 1})
