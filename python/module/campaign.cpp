@@ -22,6 +22,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/csv.hpp"
 #include "campaign/run_row.hpp"
+#include "campaign/target.hpp"
 #include "python/module/module.hpp"
 
 namespace chaser::python {
@@ -233,13 +234,46 @@ class TemporaryDirectory {
   throw py::error_already_set();
 }
 
-// `chaser campaign SCENARIO --runs --cases --threads --seed --out` (cli/campaign_command.cpp, prepare).
+// --target's requirements, every one checked.
+std::vector<campaign::Target> targets_of(const std::vector<std::string>& texts) {
+  std::vector<campaign::Target> targets;
+  for (const std::string& text : texts) {
+    const campaign::TargetParse parsed = campaign::parse_target(text);
+    if (!parsed.target) throw py::value_error(parsed.error);
+    targets.push_back(*parsed.target);
+  }
+  return targets;
+}
+
+// What the command line's options say beyond the layout, checked as prepare() checks them.
+struct Extras {
+  campaign::Shard shard;
+  bool resume = false;
+  std::int64_t keep_telemetry = 0;
+  std::vector<campaign::Target> targets;
+};
+
+Extras extras_of(const std::optional<std::string>& shard_text, bool resume, std::int64_t keep_telemetry,
+                 const std::vector<std::string>& targets) {
+  const campaign::ShardParse shard = campaign::parse_shard(shard_text.value_or("0/1"));
+  if (!shard.shard) throw py::value_error(shard.error);
+  if (keep_telemetry < 0) throw py::value_error(fmt::format("keep_telemetry: must be >= 0 (got {})", keep_telemetry));
+  return Extras{*shard.shard, resume, keep_telemetry, targets_of(targets)};
+}
+
+// `chaser campaign SCENARIO --runs --cases --threads --seed --out --shard --resume --keep-telemetry
+// --target` (cli/campaign_command.cpp, prepare).
 CampaignResult run_campaign(const py::object& scenario_arg, const py::object& runs, const py::object& cases,
                             std::optional<int> threads, std::optional<std::uint64_t> seed,
-                            std::optional<std::string> out, const py::object& progress) {
+                            std::optional<std::string> out, const py::object& progress,
+                            const std::optional<std::string>& shard, bool resume, std::int64_t keep_telemetry,
+                            const std::vector<std::string>& target_texts) {
   Scenario scenario = scenario_argument(scenario_arg);
   if (seed) scenario = with_overrides(scenario, {fmt::format("campaign.seed={}", *seed)});
   if (threads && *threads < 1) throw py::value_error(fmt::format("threads: must be >= 1 (got {})", *threads));
+  const Extras extras = extras_of(shard, resume, keep_telemetry, target_texts);
+  if (!out && (resume || keep_telemetry > 0))
+    throw py::value_error("resume and keep_telemetry need out=DIR (without it the directory is a temporary one)");
   const campaign::LayoutParse layout = campaign::parse_layout(
       cases_text(cases), runs_text(runs), static_cast<std::int64_t>(scenario.scenario.campaign.runs_per_case));
   if (!layout.error.empty()) throw py::value_error(layout.error);
@@ -252,11 +286,13 @@ CampaignResult run_campaign(const py::object& scenario_arg, const py::object& ru
   const campaign::CampaignPlan plan{scenario.scenario, scenario.hash, campaign::RunLayout(layout.cases)};
   campaign::CampaignOptions options{
       .out_dir = dir,
-      .shard = {},
+      .shard = extras.shard,
       .threads = threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      .resume = extras.resume,
+      .keep_telemetry = extras.keep_telemetry,
       .progress = show,
       .show_progress = [&shown](const campaign::ProgressCounts& counts) { shown(counts); },
-      .targets = {}};
+      .targets = extras.targets};
   campaign::CampaignOutcome outcome;
   {
     py::gil_scoped_release released;
@@ -300,12 +336,15 @@ void add_campaign(py::module_& m) {
 
   m.def("campaign", &run_campaign, py::arg("scenario"), py::arg("runs") = py::none(), py::arg("cases") = py::none(),
         py::arg("threads") = py::none(), py::arg("seed") = py::none(), py::arg("out") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::kw_only(), py::arg("shard") = py::none(), py::arg("resume") = false,
+        py::arg("keep_telemetry") = 0, py::arg("targets") = std::vector<std::string>{},
         "A Monte Carlo campaign, as `chaser campaign` (docs/campaigns.md): runs as --runs (N, 'case=N,...' or "
         "{case: N}), cases as --cases ('none,leak' or a list), threads as --threads (default: every core), seed as "
         "--seed (campaign.seed), out as --out (None: a temporary directory, removed after reading). progress: None "
         "shows a line on stderr when it is a terminal, True always, False never; or a function "
-        "progress(done, total, diverged), called at most every 0.25 s and once at the end.");
+        "progress(done, total, diverged), called at most every 0.25 s and once at the end. Keywords as the "
+        "command's options: shard='I/M' (--shard), resume=True (--resume, with out), keep_telemetry=K "
+        "(--keep-telemetry, with out), targets=['P_nd<=1e-3@0.95', ...] (--target, judged in summary.md).");
 }
 
 }  // namespace chaser::python

@@ -14,6 +14,7 @@ import pytest
 import chaser
 from conftest import MSR, SHORT_CAMPAIGN, run_cli, set_args
 
+TARGETS = ["P_nd<=0.5@0.9", "capture_rate>=0.5@0.9"]
 FILES = ["campaign.json", "runs.csv", "glr_runs.csv", "summary.csv", "summary.md", "glr_envelope.csv"]
 
 
@@ -27,7 +28,7 @@ def cli_campaign(cli, tmp_path_factory):
     """The command line's campaign: every case, 2 runs each, seed 5, two threads."""
     out = tmp_path_factory.mktemp("cli") / "campaign"
     shown = run_cli(cli, "campaign", MSR, *set_args(SHORT_CAMPAIGN), "--runs", 2, "--seed", 5, "--threads", 2,
-                    "--out", out)
+                    "--out", out, "--target", TARGETS[0], "--target", TARGETS[1])
     assert shown.returncode == 0, shown.stderr
     return out
 
@@ -35,7 +36,7 @@ def cli_campaign(cli, tmp_path_factory):
 @pytest.fixture(scope="module")
 def py_campaign(short_msr, tmp_path_factory):
     out = tmp_path_factory.mktemp("py") / "campaign"
-    return chaser.campaign(short_msr, runs=2, seed=5, threads=2, out=str(out), progress=False)
+    return chaser.campaign(short_msr, runs=2, seed=5, threads=2, out=str(out), progress=False, targets=TARGETS)
 
 
 def csv_rows(path):
@@ -85,6 +86,37 @@ def test_the_summary_is_summary_csv_and_campaign_json(cli_campaign, py_campaign)
     assert py_campaign.campaign == json.loads((cli_campaign / "campaign.json").read_text())
     assert py_campaign.summary_md == (cli_campaign / "summary.md").read_text()
     assert py_campaign.campaign["campaign_seed"] == 5
+    assert "### Targets (--target)" in py_campaign.summary_md and "`P_nd<=0.5@0.9`: P_nd <= 50 %" in py_campaign.summary_md
+
+
+def test_two_shards_are_the_whole_campaign(short_msr, py_campaign):
+    shards = [chaser.campaign(short_msr, runs=2, seed=5, threads=1, progress=False, shard=f"{i}/2") for i in (0, 1)]
+    assert [len(s.runs) for s in shards] == [5, 5]
+    assert np.concatenate([s.runs for s in shards]).tobytes() == py_campaign.runs.tobytes()
+    assert shards[1].campaign["shard"] == [1, 2]
+
+
+def test_resume_finishes_a_cut_campaign_with_the_same_files(short_msr, py_campaign, tmp_path):
+    whole = Path(py_campaign.out)
+    cut = tmp_path / "cut"
+    chaser.campaign(short_msr, runs=2, seed=5, threads=2, out=str(cut), progress=False, targets=TARGETS)
+    text = (cut / "runs.csv").read_text()
+    lines = text.splitlines(keepends=True)
+    (cut / "runs.csv").write_text("".join(lines[:5]) + lines[5][:40])  # header, 4 rows, a torn 5th
+    (cut / "summary.csv").unlink()
+    resumed = chaser.campaign(short_msr, runs=2, seed=5, threads=2, out=str(cut), progress=False, targets=TARGETS,
+                              resume=True)
+    for name in FILES:
+        assert (cut / name).read_bytes() == (whole / name).read_bytes(), name
+    assert resumed.runs.tobytes() == py_campaign.runs.tobytes()
+
+
+def test_keep_telemetry_keeps_the_first_runs_files(short_msr, tmp_path):
+    chaser.campaign(short_msr, runs=1, cases="none,leak", threads=1, out=str(tmp_path / "c"), progress=False,
+                    keep_telemetry=1)
+    assert (tmp_path / "c" / "runs" / "0" / "telemetry.csv").is_file()
+    assert (tmp_path / "c" / "runs" / "0" / "summary.json").is_file()
+    assert not (tmp_path / "c" / "runs" / "1").exists()
 
 
 def test_one_thread_and_two_give_the_same_runs(short_msr):
@@ -155,6 +187,16 @@ def test_bad_arguments_raise_clear_errors(short_msr, tmp_path):
         chaser.campaign(42, runs=1)
     with pytest.raises(chaser.ScenarioError):
         chaser.campaign(str(tmp_path / "nowhere.yaml"), runs=1)
+    with pytest.raises(ValueError, match="--shard"):
+        chaser.campaign(short_msr, runs=1, shard="2/2")
+    with pytest.raises(ValueError, match="keep_telemetry: must be >= 0"):
+        chaser.campaign(short_msr, runs=1, out=str(tmp_path / "k"), keep_telemetry=-1)
+    with pytest.raises(ValueError, match="--target"):
+        chaser.campaign(short_msr, runs=1, targets=["P_nd is small"])
+    with pytest.raises(ValueError, match="need out=DIR"):
+        chaser.campaign(short_msr, runs=1, resume=True)
+    with pytest.raises(TypeError):
+        chaser.campaign(short_msr, 1, None, 1, 1, None, False, "0/1")  # the command's rarer options: keywords only
     chaser.campaign(short_msr, runs=1, cases="none", out=str(tmp_path / "c"), progress=False)
     with pytest.raises(ValueError, match="already holds a campaign"):
         chaser.campaign(short_msr, runs=1, cases="none", out=str(tmp_path / "c"), progress=False)
