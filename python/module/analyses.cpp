@@ -49,9 +49,10 @@ bool is_matrix(const nlohmann::json& array) {
 template <typename T>
 py::object numpy_array(const nlohmann::json& array) {
   const bool nested = array.front().is_array();
+  const auto rows = static_cast<py::ssize_t>(array.size());
   const std::vector<py::ssize_t> shape =
-      nested ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(array.size()), static_cast<py::ssize_t>(array.front().size())}
-             : std::vector<py::ssize_t>{static_cast<py::ssize_t>(array.size())};
+      nested ? std::vector<py::ssize_t>{rows, static_cast<py::ssize_t>(array.front().size())}
+             : std::vector<py::ssize_t>{rows};
   py::array_t<T> out(shape);
   T* values = out.mutable_data();
   for (const nlohmann::json& v : array)

@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -122,59 +121,65 @@ bool progress_wanted(const py::handle& progress) {
   return !stderr_.is_none() && py::hasattr(stderr_, "isatty") && stderr_.attr("isatty")().cast<bool>();
 }
 
+// One runs.csv field as its column's kind reads it; nullopt when it does not read.
+std::optional<py::object> field_value(campaign::ColumnKind kind, std::string_view field) {
+  switch (kind) {
+    case campaign::ColumnKind::kInteger:
+      if (const auto v = campaign::parse_integer(field)) return py::int_(*v);
+      return std::nullopt;
+    case campaign::ColumnKind::kUnsigned: {
+      std::uint64_t v = 0;
+      const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
+      if (field.empty() || ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
+      return py::int_(v);
+    }
+    case campaign::ColumnKind::kText:
+      if (field.empty() || field.size() > kTextWidth) return std::nullopt;
+      return py::str(std::string(field));
+    case campaign::ColumnKind::kNumber:
+      if (const auto v = campaign::parse_number(field)) return py::float_(*v);
+      return std::nullopt;
+    case campaign::ColumnKind::kFlag:
+      if (field != "0" && field != "1") return std::nullopt;
+      return py::bool_(field == "1");
+  }
+  return std::nullopt;
+}
+
+// The NumPy type of each kind.
+std::string numpy_type(campaign::ColumnKind kind) {
+  switch (kind) {
+    case campaign::ColumnKind::kInteger: return "<i8";
+    case campaign::ColumnKind::kUnsigned: return "<u8";
+    case campaign::ColumnKind::kText: return fmt::format("<U{}", kTextWidth);
+    case campaign::ColumnKind::kNumber: return "<f8";
+    case campaign::ColumnKind::kFlag: return "?";
+  }
+  return "";
+}
+
 // runs.csv's rows as a structured array, each column typed by its ColumnKind.
 py::object runs_array(const std::string& text) {
   const std::vector<std::string> lines = lines_of(text);
   const std::vector<campaign::RunColumn>& columns = campaign::run_columns();
-  if (lines.empty() || lines.front() != campaign::runs_header()) throw std::runtime_error("runs.csv: not this version's header");
-  const py::module_ np = py::module_::import("numpy");
-  static const std::map<campaign::ColumnKind, std::string> kTypes = {
-      {campaign::ColumnKind::kInteger, "<i8"}, {campaign::ColumnKind::kUnsigned, "<u8"},
-      {campaign::ColumnKind::kText, fmt::format("<U{}", kTextWidth)}, {campaign::ColumnKind::kNumber, "<f8"},
-      {campaign::ColumnKind::kFlag, "?"}};
-  py::list fields;
-  for (const campaign::RunColumn& c : columns) fields.append(py::make_tuple(std::string(c.name), kTypes.at(c.kind)));
-  const std::size_t rows = lines.size() - 1;
-  py::object array = np.attr("zeros")(rows, np.attr("dtype")(fields));
-  std::vector<std::vector<std::string_view>> cells;
-  for (std::size_t r = 0; r < rows; ++r) {
-    cells.push_back(campaign::split_fields(lines[r + 1]));
-    if (cells.back().size() != columns.size()) throw std::runtime_error(fmt::format("runs.csv: row {} is malformed", r + 1));
+  if (lines.empty() || lines.front() != campaign::runs_header())
+    throw std::runtime_error("runs.csv: not this version's header");
+  std::vector<std::vector<std::string_view>> rows;
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    rows.push_back(campaign::split_fields(lines[r]));
+    if (rows.back().size() != columns.size()) throw std::runtime_error(fmt::format("runs.csv: row {} is malformed", r));
   }
+  py::list fields;
+  for (const campaign::RunColumn& c : columns) fields.append(py::make_tuple(std::string(c.name), numpy_type(c.kind)));
+  const py::module_ np = py::module_::import("numpy");
+  py::object array = np.attr("zeros")(rows.size(), np.attr("dtype")(fields));
   for (std::size_t c = 0; c < columns.size(); ++c) {
     py::list values;
-    for (std::size_t r = 0; r < rows; ++r) {
-      const std::string_view cell = cells[r][c];
-      const auto bad = [&] { return std::runtime_error(fmt::format("runs.csv: row {}, {}: '{}'", r + 1, columns[c].name, cell)); };
-      switch (columns[c].kind) {
-        case campaign::ColumnKind::kInteger: {
-          const auto v = campaign::parse_integer(cell);
-          if (!v) throw bad();
-          values.append(*v);
-          break;
-        }
-        case campaign::ColumnKind::kUnsigned: {
-          std::uint64_t v = 0;
-          const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
-          if (cell.empty() || ec != std::errc() || end != cell.data() + cell.size()) throw bad();
-          values.append(v);
-          break;
-        }
-        case campaign::ColumnKind::kText:
-          if (cell.empty() || cell.size() > kTextWidth) throw bad();
-          values.append(py::str(std::string(cell)));
-          break;
-        case campaign::ColumnKind::kNumber: {
-          const auto v = campaign::parse_number(cell);
-          if (!v) throw bad();
-          values.append(*v);
-          break;
-        }
-        case campaign::ColumnKind::kFlag:
-          if (cell != "0" && cell != "1") throw bad();
-          values.append(cell == "1");
-          break;
-      }
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const std::optional<py::object> value = field_value(columns[c].kind, rows[r][c]);
+      if (!value)
+        throw std::runtime_error(fmt::format("runs.csv: row {}, {}: '{}'", r + 1, columns[c].name, rows[r][c]));
+      values.append(*value);
     }
     array[py::str(std::string(columns[c].name))] = values;
   }
@@ -189,13 +194,15 @@ py::dict summary_dict(const std::string& text) {
   py::dict summary;
   for (std::size_t r = 1; r < lines.size(); ++r) {
     const std::vector<std::string_view> cells = campaign::split_fields(lines[r]);
-    if (cells.size() != header.size() || header.size() < 2) throw std::runtime_error(fmt::format("summary.csv: row {} is malformed", r));
+    if (cells.size() != header.size() || header.size() < 2)
+      throw std::runtime_error(fmt::format("summary.csv: row {} is malformed", r));
     py::dict row;
     for (std::size_t c = 2; c < cells.size(); ++c) {
       const bool count = header[c] == "runs" || header[c] == "detected";
       const auto integer = count ? campaign::parse_integer(cells[c]) : std::nullopt;
       const auto number = count ? std::nullopt : campaign::parse_number(cells[c]);
-      if (!integer && !number) throw std::runtime_error(fmt::format("summary.csv: row {}, {}: '{}'", r, header[c], cells[c]));
+      if (!integer && !number)
+        throw std::runtime_error(fmt::format("summary.csv: row {}, {}: '{}'", r, header[c], cells[c]));
       row[py::str(std::string(header[c]))] = integer ? py::object(py::int_(*integer)) : py::object(py::float_(*number));
     }
     const py::str scheme{std::string(cells[0])}, fault_case{std::string(cells[1])};
@@ -218,7 +225,8 @@ CampaignResult read_result(const std::filesystem::path& dir, double wall_s) {
 // A directory from tempfile.mkdtemp, removed with what is in it when this goes out of scope.
 class TemporaryDirectory {
  public:
-  TemporaryDirectory() : path_(py::module_::import("tempfile").attr("mkdtemp")(py::arg("prefix") = "chaser-campaign-").cast<std::string>()) {}
+  TemporaryDirectory()
+      : path_(py::str(py::module_::import("tempfile").attr("mkdtemp")(py::arg("prefix") = "chaser-campaign-"))) {}
   ~TemporaryDirectory() { py::module_::import("shutil").attr("rmtree")(path_, py::arg("ignore_errors") = true); }
   TemporaryDirectory(const TemporaryDirectory&) = delete;
   TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
