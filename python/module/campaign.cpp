@@ -273,9 +273,11 @@ Extras extras_of(const std::optional<std::string>& shard_text, bool resume, std:
 // --target` (cli/campaign_command.cpp, prepare).
 CampaignResult run_campaign(const py::object& scenario_arg, const py::object& runs, const py::object& cases,
                             std::optional<int> threads, std::optional<std::uint64_t> seed,
-                            std::optional<std::string> out, const py::object& progress,
+                            const py::object& out_arg, const py::object& progress,
                             const std::optional<std::string>& shard, bool resume, std::int64_t keep_telemetry,
                             const std::vector<std::string>& target_texts) {
+  const std::optional<std::string> out =
+      out_arg.is_none() ? std::nullopt : std::optional(py::str(py::module_::import("os").attr("fspath")(out_arg)));
   Scenario scenario = scenario_argument(scenario_arg);
   if (seed) scenario = with_overrides(scenario, {fmt::format("campaign.seed={}", *seed)});
   if (threads && *threads < 1) throw py::value_error(fmt::format("threads: must be >= 1 (got {})", *threads));
