@@ -76,12 +76,12 @@ void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_insert
 void thruster_number(std::string& out, int index) { integer(out, model::thruster_number(index)); }
 
 // One scheme's seven columns, in the spec's order.
-#define CHASER_SCHEME_COLUMNS(scheme)                                                                  \
-  {#scheme "_detection_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }}, \
-  {#scheme "_isolation_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }}, \
-  {#scheme "_isolated", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }},      \
-  {#scheme "_false_alarm", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},   \
-  {#scheme "_missed", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},             \
+#define CHASER_SCHEME_COLUMNS(scheme)                                                                                             \
+  {#scheme "_detection_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }},     \
+  {#scheme "_isolation_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }},     \
+  {#scheme "_isolated", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }}, \
+  {#scheme "_false_alarm", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},         \
+  {#scheme "_missed", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},                   \
   {#scheme "_wrong_isolation", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
 
 }  // namespace
