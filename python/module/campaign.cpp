@@ -2,7 +2,10 @@
 // The campaign library flies the runs and writes its directory exactly as for the command; this file
 // turns the arguments into its plan and options, shows the progress, and reads the directory back:
 // runs.csv as a NumPy structured array, summary.csv and campaign.json as dicts.
+#include <signal.h>
+
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
@@ -107,6 +110,39 @@ class ProgressShow {
  private:
   py::object callback_;  // None: the stderr line
   std::optional<py::error_already_set> error_;
+};
+
+// Ctrl-C during a campaign. With the GIL released, Python's SIGINT handler would run only once the
+// campaign returned. While one runs on Python's main thread under the default handler, a handler
+// of ours records the signal instead; the workers then take no more runs (stop_requested), the
+// rows written stay a prefix that resume=True finishes, and the call raises KeyboardInterrupt.
+std::atomic<bool> interrupt_seen = false;
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+extern "C" void record_interrupt(int) { interrupt_seen = true; }
+
+class InterruptWatch {
+ public:
+  InterruptWatch() {
+    const py::module_ signal = py::module_::import("signal"), threading = py::module_::import("threading");
+    watching_ = threading.attr("current_thread")().is(threading.attr("main_thread")()) &&
+                signal.attr("getsignal")(SIGINT).is(signal.attr("default_int_handler"));
+    if (!watching_) return;
+    interrupt_seen = false;
+    struct sigaction ours {};
+    ours.sa_handler = record_interrupt;
+    sigemptyset(&ours.sa_mask);
+    sigaction(SIGINT, &ours, &previous_);
+  }
+  ~InterruptWatch() {
+    if (watching_) sigaction(SIGINT, &previous_, nullptr);
+  }
+  InterruptWatch(const InterruptWatch&) = delete;
+  InterruptWatch& operator=(const InterruptWatch&) = delete;
+  bool seen() const { return watching_ && interrupt_seen; }
+
+ private:
+  bool watching_ = false;
+  struct sigaction previous_ {};
 };
 
 // progress=None: the line when sys.stderr is a terminal, as the command line decides.
@@ -302,11 +338,23 @@ CampaignResult run_campaign(const py::object& scenario_arg, const py::object& ru
       .keep_telemetry = extras.keep_telemetry,
       .progress = show,
       .show_progress = [&shown](const campaign::ProgressCounts& counts) { shown(counts); },
+      .stop_requested = {},
       .targets = extras.targets};
   campaign::CampaignOutcome outcome;
+  bool interrupted = false;
   {
-    py::gil_scoped_release released;
-    outcome = campaign::run_campaign(plan, options);
+    const InterruptWatch interrupt;
+    options.stop_requested = [&interrupt] { return interrupt.seen(); };
+    {
+      py::gil_scoped_release released;
+      outcome = campaign::run_campaign(plan, options);
+    }
+    interrupted = interrupt.seen();  // also after the last run was taken: the Ctrl-C is not lost
+  }
+  if (interrupted) {
+    const std::string when = outcome.status == campaign::CampaignStatus::kStopped ? outcome.message : "after every run";
+    PyErr_SetString(PyExc_KeyboardInterrupt, ("chaser.campaign: " + when).c_str());
+    throw py::error_already_set();
   }
   if (outcome.status != campaign::CampaignStatus::kOk) raise_outcome(outcome);
   shown.raise_if_failed();

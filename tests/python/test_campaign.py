@@ -3,6 +3,8 @@ summary and files; threads and the progress display change nothing."""
 import csv
 import json
 import math
+import os
+import signal
 import sys
 import threading
 import time
@@ -172,6 +174,27 @@ def test_python_threads_run_while_the_campaign_does(short_msr):
     # With the GIL held for the campaign this thread would not run until it returned: 4 ticks in
     # 0.07 s when tried, against one per millisecond or so with it released.
     assert ticks >= 15, (ticks, elapsed)
+
+
+def test_ctrl_c_stops_the_runs_and_resume_finishes_them(short_msr, tmp_path):
+    """SIGINT while the GIL is released: the campaign stops taking runs and raises KeyboardInterrupt;
+    its rows are a prefix of the whole campaign's, and resume=True writes the whole one's files."""
+    stopped, whole = tmp_path / "stopped", tmp_path / "whole"
+    timer = threading.Timer(0.05, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt, match="stopped after"):
+            chaser.campaign(short_msr, runs=40, seed=8, threads=2, out=stopped, progress=False)
+    finally:
+        timer.cancel()
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    done = (stopped / "runs.csv").read_text()
+    chaser.campaign(short_msr, runs=40, seed=8, threads=2, out=whole, progress=False)
+    assert len(done.splitlines()) < 201 and (whole / "runs.csv").read_text().startswith(done)
+    assert not (stopped / "summary.csv").exists()
+    chaser.campaign(short_msr, runs=40, seed=8, threads=2, out=stopped, progress=False, resume=True)
+    for name in FILES:
+        assert (stopped / name).read_bytes() == (whole / name).read_bytes(), name
 
 
 def test_out_may_be_a_path_object(short_msr, tmp_path):
