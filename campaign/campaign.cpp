@@ -71,11 +71,18 @@ CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& op
   const ExecuteOptions execute{.threads = options.threads,
                                .keep_telemetry = options.keep_telemetry,
                                .telemetry_root = (fs::path(options.out_dir) / "runs").string(),
-                               .progress = options.progress};
+                               .progress = options.progress,
+                               .show_progress = options.show_progress,
+                               .stop_requested = options.stop_requested};
   outcome.executed = executor ? executor(plan, flight, todo, *writer, execute)
                               : execute_runs(plan, flight, todo, *writer, execute);
   outcome.simulated_s = static_cast<double>(outcome.executed.runs) * run_duration_s(plan.nominal);
   if (!outcome.executed.io_ok) return failure(fmt::format("cannot write the rows files in {}", options.out_dir));
+  if (outcome.executed.stopped) {
+    outcome.status = CampaignStatus::kStopped;
+    outcome.message = fmt::format("stopped after {} of {} runs; resume finishes it", outcome.executed.runs, todo.size());
+    return outcome;
+  }
   std::vector<FaultCase> cases;
   for (const CaseRuns& c : plan.layout.cases()) cases.push_back(c.fault_case);
   const std::string summary_error =

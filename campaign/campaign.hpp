@@ -19,13 +19,17 @@ struct CampaignOptions {
   int threads = 1;
   bool resume = false;
   std::int64_t keep_telemetry = 0;  // runs with index < K keep DIR/runs/<run>/telemetry.csv, summary.json
-  bool progress = false;
+  bool progress = false;           // show progress: the line on stderr, or show_progress
+  ProgressCallback show_progress;  // empty: the line on stderr (the Python module shows its own)
+  std::function<bool()> stop_requested;  // ExecuteOptions::stop_requested (the Python module's Ctrl-C)
   // --target: judged in summary.md. Not part of what the campaign is (campaign.json): a resume or a
   // merge may ask other questions of the same runs.
   std::vector<Target> targets;
 };
 
-enum class CampaignStatus { kOk, kBadInput, kFailure };
+// kStopped: stop_requested ended the runs early; the rows written are a prefix that --resume
+// finishes, and no summary was written.
+enum class CampaignStatus { kOk, kBadInput, kFailure, kStopped };
 
 struct CampaignOutcome {
   CampaignStatus status = CampaignStatus::kOk;

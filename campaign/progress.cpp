@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -21,19 +22,28 @@ std::string clock_text(double seconds) {
 
 bool stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
 
-Progress::Progress(std::int64_t total, bool enabled)
-    : total_(total), enabled_(enabled), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+std::string progress_line(const ProgressCounts& c) {
+  const double rate = c.elapsed_s > 0 ? static_cast<double>(c.done) / c.elapsed_s : 0.0;
+  const std::string eta = rate > 0 ? clock_text(static_cast<double>(c.total - c.done) / rate) : "?";
+  return fmt::format("campaign: {}/{} runs, {:.1f} runs/s, ETA {}, {} diverged   ", c.done, c.total, rate, eta,
+                     c.diverged);
+}
+
+Progress::Progress(std::int64_t total, bool enabled, ProgressCallback show)
+    : total_(total), enabled_(enabled), show_(std::move(show)), start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
 
 double Progress::elapsed_s() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void Progress::draw(std::int64_t done, std::int64_t diverged) {
-  const double elapsed = elapsed_s();
-  const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
-  const std::string eta = rate > 0 ? clock_text(static_cast<double>(total_ - done) / rate) : "?";
-  std::fputs(fmt::format("\rcampaign: {}/{} runs, {:.1f} runs/s, ETA {}, {} diverged   ", done, total_, rate, eta,
-                         diverged).c_str(), stderr);
+void Progress::draw(std::int64_t done, std::int64_t diverged, bool final) {
+  const ProgressCounts counts{done, total_, diverged, elapsed_s(), final};
+  if (show_) {
+    show_(counts);
+    return;
+  }
+  std::fputs(("\r" + progress_line(counts) + (final ? "\n" : "")).c_str(), stderr);
   std::fflush(stderr);
 }
 
@@ -42,13 +52,11 @@ void Progress::update(std::int64_t done, std::int64_t diverged) {
   const auto now = std::chrono::steady_clock::now();
   if (now - last_draw_ < kRedrawInterval) return;
   last_draw_ = now;
-  draw(done, diverged);
+  draw(done, diverged, false);
 }
 
 void Progress::finish(std::int64_t done, std::int64_t diverged) {
-  if (!enabled_) return;
-  draw(done, diverged);
-  std::fputc('\n', stderr);
+  if (enabled_) draw(done, diverged, true);
 }
 
 }  // namespace chaser::campaign

@@ -76,13 +76,13 @@ void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_insert
 void thruster_number(std::string& out, int index) { integer(out, model::thruster_number(index)); }
 
 // One scheme's seven columns, in the spec's order.
-#define CHASER_SCHEME_COLUMNS(scheme)                                                                  \
-  {#scheme "_detection_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }}, \
-  {#scheme "_isolation_s", [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }}, \
-  {#scheme "_isolated", [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }},      \
-  {#scheme "_false_alarm", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},   \
-  {#scheme "_missed", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},             \
-  {#scheme "_wrong_isolation", [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
+#define CHASER_SCHEME_COLUMNS(scheme)                                                                                             \
+  {#scheme "_detection_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }},     \
+  {#scheme "_isolation_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }},     \
+  {#scheme "_isolated", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }}, \
+  {#scheme "_false_alarm", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},         \
+  {#scheme "_missed", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},                   \
+  {#scheme "_wrong_isolation", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
 
 }  // namespace
 
@@ -134,33 +134,33 @@ RunRecord error_record(const RunSetup& setup) {
 const std::vector<RunColumn>& run_columns() {
   // The one table of runs.csv columns (docs/campaigns.md), in file order.
   static const std::vector<RunColumn> columns = {
-      {"run", [](const RunRecord& r, std::string& o) { integer(o, r.run); }},
-      {"seed", [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
-      {"case", [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }},
-      {"status", [](const RunRecord& r, std::string& o) { o += to_string(r.status); }},
-      {"fault_thruster", [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }},
-      {"fault_size", [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }},
-      {"onset_s", [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }},
-      {"mass_kg", [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }},
-      {"inertia_xx_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }},
-      {"inertia_yy_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }},
-      {"inertia_zz_kgm2", [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }},
-      {"com_x_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }},
-      {"com_y_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }},
-      {"com_z_m", [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }},
+      {"run", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { integer(o, r.run); }},
+      {"seed", ColumnKind::kUnsigned, [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
+      {"case", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }},
+      {"status", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.status); }},
+      {"fault_thruster", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }},
+      {"fault_size", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }},
+      {"onset_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }},
+      {"mass_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }},
+      {"inertia_xx_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }},
+      {"inertia_yy_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }},
+      {"inertia_zz_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }},
+      {"com_x_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }},
+      {"com_y_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }},
+      {"com_z_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }},
       CHASER_SCHEME_COLUMNS(position),
-      {"position_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.position.glr_max_before_onset); }},
+      {"position_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.position.glr_max_before_onset); }},
       CHASER_SCHEME_COLUMNS(attitude),
-      {"attitude_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.attitude.glr_max_before_onset); }},
+      {"attitude_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.attitude.glr_max_before_onset); }},
       CHASER_SCHEME_COLUMNS(deficit),
-      {"deficit_glr_max_before_onset", [](const RunRecord& r, std::string& o) { number(o, r.deficit.glr_max_before_onset); }},
+      {"deficit_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.deficit.glr_max_before_onset); }},
       CHASER_SCHEME_COLUMNS(fdir),
-      {"recovery_s", [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }},
-      {"capture", [](const RunRecord& r, std::string& o) { flag(o, r.capture); }},
-      {"corridor_kept", [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }},
-      {"target_in_view", [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }},
-      {"propellant_kg", [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }},
-      {"simulated_s", [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }},
+      {"recovery_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }},
+      {"capture", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.capture); }},
+      {"corridor_kept", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }},
+      {"target_in_view", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }},
+      {"propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }},
+      {"simulated_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }},
   };
   return columns;
 }

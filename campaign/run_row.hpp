@@ -49,8 +49,18 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
 // The record of a run that threw: no figures, every outcome empty.
 RunRecord error_record(const RunSetup& setup);
 
+// How a column's fields read back (the Python module's structured array takes its types from it).
+enum class ColumnKind {
+  kInteger,   // a signed integer: run index, thruster number n of Tn (0: none)
+  kUnsigned,  // an unsigned 64-bit integer: the seed
+  kText,      // a word: case, status
+  kNumber,    // append_number's {:.17g} or nan
+  kFlag,      // 1 or 0
+};
+
 struct RunColumn {
   std::string_view name;
+  ColumnKind kind;
   void (*write)(const RunRecord& r, std::string& out);
 };
 const std::vector<RunColumn>& run_columns();

@@ -121,6 +121,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
                                             .resume = args.resume,
                                             .keep_telemetry = args.keep_telemetry,
                                             .progress = campaign::stderr_is_terminal(),
+                                            .show_progress = {},   // the line on stderr
+                                            .stop_requested = {},  // Ctrl-C ends the process instead
                                             .targets = *targets}};
 }
 

@@ -47,13 +47,6 @@ void print_summary(const std::vector<FmeaLayout>& layouts, double seconds, int t
   }
 }
 
-std::vector<FmeaLayout> layouts_of(const io::InvSimLoadResult& loaded) {
-  std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
-  for (const model::InvSimConfiguration& c : loaded.study.configurations)
-    layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
-  return layouts;
-}
-
 }  // namespace
 
 int fmea_command(const FmeaArgs& args) {
@@ -81,15 +74,13 @@ int fmea_command(const FmeaArgs& args) {
   }
   const int threads = args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis);
-  std::vector<FmeaLayout> layouts = layouts_of(loaded);
-  std::vector<model::InvSimParams> params;
-  for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
   std::vector<std::vector<std::vector<invsim::InvSimSample>>> histories;
-  auto rows = invsim::run_fmea(params, cases, threads, args.history ? &histories : nullptr);
-  for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
+  const std::vector<FmeaLayout> layouts =
+      run_fmea_layouts(loaded, args.three_axis, threads, args.history ? &histories : nullptr);
   std::vector<invsim::LayoutCandidate> optimized;
-  if (args.optimize) optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices, cases, threads);
+  if (args.optimize)
+    optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,
+                                       invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis), threads);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path out(args.out_dir);

@@ -141,6 +141,19 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 
 }  // namespace
 
+std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
+                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories) {
+  std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
+  for (const model::InvSimConfiguration& c : loaded.study.configurations)
+    layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
+  std::vector<model::InvSimParams> params;
+  for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
+  auto rows = invsim::run_fmea(params, invsim::fmea_cases(*loaded.params, loaded.faults, three_axis), threads,
+                               histories);
+  for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
+  return layouts;
+}
+
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts) {
   std::string csv =
       "configuration,mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,"

@@ -10,6 +10,7 @@
 
 #include "invsim/fmea.hpp"
 #include "invsim/layout_study.hpp"
+#include "io/invsim_loader.hpp"
 #include "model/invsim.hpp"
 
 namespace chaser::cli {
@@ -20,6 +21,12 @@ struct FmeaLayout {
   model::InvSimParams params;
   std::vector<invsim::FmeaRow> rows;
 };
+
+// The FMEA of `chaser fmea` without --optimize: the scenario's own layout ("baseline") and each of
+// its configurations, every mode of invsim::fmea_cases on `threads` workers, rows ranked within each
+// layout. With `histories`, (*histories)[l][i] receives the per-step history of mode i on layout l.
+std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
+                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories);
 
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts);
 // `optimized`: the --optimize candidates, best first (nullptr: no search); `keep` of them are listed.

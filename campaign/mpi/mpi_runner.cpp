@@ -124,7 +124,7 @@ ExecuteResult execute_mpi(int world_size, const CampaignPlan& plan, const flight
                           const RunRange& todo, RowsWriter& writer, const ExecuteOptions& options) {
   const int threads = std::max(1, options.threads);
   RunSchedule s(todo.begin, todo.end, static_cast<std::int64_t>(threads) * world_size * kReorderWindowPerThread);
-  Progress progress(todo.size(), options.progress);
+  Progress progress(todo.size(), options.progress, options.show_progress);
   const auto worker = [&] {
     for (std::int64_t run = s.claim(); run >= 0; run = s.claim())
       s.deliver(run_one(plan, flight, run, telemetry_dir(options.telemetry_root, options.keep_telemetry, run)),

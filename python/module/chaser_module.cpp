@@ -14,12 +14,11 @@
 #include <pybind11/stl.h>
 
 #include "io/scenario_loader.hpp"
+#include "python/module/module.hpp"
 #include "sim/run.hpp"
 #include "sim/run_directory.hpp"
 #include "sim/summary.hpp"
 #include "sim/telemetry_channels.hpp"
-
-namespace py = pybind11;
 
 namespace chaser::python {
 
@@ -27,29 +26,11 @@ namespace {
 
 PyObject* scenario_error_type = nullptr;  // chaser.ScenarioError, made once by the module's init
 
-// A scenario that loaded and validated: what `chaser run` holds after load_or_report.
-struct Scenario {
-  model::Scenario scenario;
-  std::string hash;            // of the document after overrides, as in summary.json
-  std::string canonical_yaml;  // that document, keys sorted
-};
-
 struct RunResult {
   py::dict summary;    // summary.json's content
   py::dict telemetry;  // channel name -> float64 array, one value per period
   std::string report;  // the text `chaser run` prints
 };
-
-// Every problem at once, as the command line gives them: .errors the (key path, message) pairs,
-// str() io::format_errors' lines.
-[[noreturn]] void raise_scenario_error(const std::vector<io::ScenarioError>& errors) {
-  py::list pairs;
-  for (const io::ScenarioError& e : errors) pairs.append(py::make_tuple(e.key_path, e.message));
-  py::object error = py::reinterpret_borrow<py::object>(scenario_error_type)(io::format_errors(errors));
-  error.attr("errors") = pairs;
-  PyErr_SetObject(scenario_error_type, error.ptr());
-  throw py::error_already_set();
-}
 
 Scenario loaded_or_raise(io::LoadResult loaded) {
   if (!loaded.errors.empty()) raise_scenario_error(loaded.errors);
@@ -67,23 +48,6 @@ std::string flow_yaml(const py::handle& value) {
   for (const std::string_view end : {"\n...\n", "\n"})  // a scalar's document-end marker, the last newline
     if (text.ends_with(end)) text.resize(text.size() - end.size());
   return text;
-}
-
-// --set strings from a list of "key.path=value", or from a dict {key.path: value} where a str value
-// is YAML text as on the command line and any other value (numbers, booleans, None, lists, dicts)
-// is written as YAML's flow style.
-std::vector<std::string> override_strings(const py::object& overrides) {
-  std::vector<std::string> out;
-  if (overrides.is_none()) return out;
-  if (py::isinstance<py::dict>(overrides)) {
-    for (const auto& [key, value] : overrides.cast<py::dict>()) {
-      const std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : flow_yaml(value);
-      out.push_back(py::str(key).cast<std::string>() + "=" + text);
-    }
-    return out;
-  }
-  if (py::isinstance<py::str>(overrides)) throw py::type_error("overrides: a dict or a list of 'key.path=value' strings");
-  return overrides.cast<std::vector<std::string>>();
 }
 
 Scenario load_file(const std::string& path, const py::object& overrides) {
@@ -170,6 +134,52 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
 
 }  // namespace
 
+// --set strings from a list of "key.path=value", or from a dict {key.path: value} where a str value
+// is YAML text as on the command line and any other value (numbers, booleans, None, lists, dicts)
+// is written as YAML's flow style.
+std::vector<std::string> override_strings(const py::object& overrides) {
+  std::vector<std::string> out;
+  if (overrides.is_none()) return out;
+  if (py::isinstance<py::dict>(overrides)) {
+    for (const auto& [key, value] : overrides.cast<py::dict>()) {
+      const std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : flow_yaml(value);
+      out.push_back(py::str(key).cast<std::string>() + "=" + text);
+    }
+    return out;
+  }
+  if (py::isinstance<py::str>(overrides)) throw py::type_error("overrides: a dict or a list of 'key.path=value' strings");
+  return overrides.cast<std::vector<std::string>>();
+}
+
+// Every problem at once, as the command line gives them: .errors the (key path, message) pairs,
+// str() io::format_errors' lines.
+[[noreturn]] void raise_scenario_error(const std::vector<io::ScenarioError>& errors) {
+  py::list pairs;
+  for (const io::ScenarioError& e : errors) pairs.append(py::make_tuple(e.key_path, e.message));
+  py::object error = py::reinterpret_borrow<py::object>(scenario_error_type)(io::format_errors(errors));
+  error.attr("errors") = pairs;
+  PyErr_SetObject(scenario_error_type, error.ptr());
+  throw py::error_already_set();
+}
+
+Scenario scenario_argument(const py::handle& value) {
+  if (py::isinstance<Scenario>(value)) return value.cast<Scenario>();
+  const py::object fspath = py::module_::import("os").attr("fspath");
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"))
+    return load_file(py::str(fspath(value)).cast<std::string>(), py::none());
+  throw py::type_error("scenario: a chaser.Scenario or a scenario file's path (got " +
+                       py::str(py::type::of(value)).cast<std::string>() + ")");
+}
+
+Scenario with_overrides(const Scenario& loaded, const std::vector<std::string>& overrides) {
+  io::LoadResult reloaded;
+  {
+    py::gil_scoped_release released;
+    reloaded = io::load_scenario_text(loaded.canonical_yaml, overrides);
+  }
+  return loaded_or_raise(std::move(reloaded));
+}
+
 PYBIND11_MODULE(chaser, m) {
   m.doc() = "Chaser, a spacecraft GNC/FDIR simulator, from Python (docs/python.md).";
   m.attr("__version__") = sim::kChaserVersion;
@@ -209,6 +219,8 @@ PYBIND11_MODULE(chaser, m) {
         "One closed-loop run, as `chaser run`: seed replaces the scenario's; with out=DIR it writes "
         "DIR/telemetry.<csv|npy> (telemetry='none': no file) and DIR/summary.json as `chaser run --out DIR` does; "
         "channels keeps the channels matching those patterns (and t_s), in memory and in the file.");
+  add_campaign(m);
+  add_analyses(m);
 }
 
 }  // namespace chaser::python

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <fstream>
 
@@ -118,6 +119,34 @@ TEST(Campaign, ResumeAfterATornRowGivesTheSameFiles) {
   EXPECT_EQ(o.resumed, 5);
   EXPECT_EQ(o.executed.runs, 5);
   expect_same_files(whole, cut);
+}
+
+// A stop request ends the runs early: the rows written are a prefix, no summary is written, and a
+// resume gives the uninterrupted campaign's files (the Python module stops this way on Ctrl-C).
+TEST(Campaign, AStoppedCampaignLeavesAPrefixThatResumeFinishes) {
+  const CampaignPlan plan = short_plan(kCases);
+  const auto whole = fresh_dir("swhole"), stopped = fresh_dir("sstopped");
+  ASSERT_EQ(run(plan, whole, 2).status, CampaignStatus::kOk);
+  for (const int threads : {1, 2}) {
+    std::filesystem::remove_all(stopped);
+    std::atomic<int> asked = 0;
+    CampaignOptions o;
+    o.out_dir = stopped.string();
+    o.threads = threads;
+    o.stop_requested = [&] { return ++asked > 4; };  // the fifth question and after: stop
+    const CampaignOutcome s = run_campaign(plan, o);
+    ASSERT_EQ(s.status, CampaignStatus::kStopped) << s.message;
+    EXPECT_GE(s.executed.runs, 1);
+    EXPECT_LT(s.executed.runs, 10);
+    EXPECT_TRUE(s.executed.stopped);
+    EXPECT_FALSE(std::filesystem::exists(stopped / "summary.csv"));
+    const std::string rows = read_file(stopped / "runs.csv");
+    EXPECT_EQ(read_file(whole / "runs.csv").substr(0, rows.size()), rows);
+    const CampaignOutcome resumed = run(plan, stopped, 2, {}, true);
+    ASSERT_EQ(resumed.status, CampaignStatus::kOk) << resumed.message;
+    EXPECT_EQ(resumed.resumed, s.executed.runs);
+    expect_same_files(whole, stopped);
+  }
 }
 
 TEST(Campaign, ResumeOfAnotherCampaignAndOverwriteAreRefused) {

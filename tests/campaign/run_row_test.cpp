@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
+#include <cmath>
+
+#include "campaign/csv.hpp"
+
 #include <string>
 #include <vector>
 
@@ -43,6 +48,37 @@ TEST(RunRow, ThrustersAreWrittenAsTheNumberOfTheirNameAndZeroForNone) {
   const RunRecord none = error_record(RunSetup{});
   EXPECT_EQ(none.fault_thruster, model::kNoThruster);
   EXPECT_EQ(column(none, "fault_thruster"), "0");
+}
+
+// Every field reads back as its column's kind says (the Python module types its array by it): the
+// faulty record has numbers, nan, flags set and unset, a seed above 2^63.
+TEST(RunRow, EveryFieldReadsBackAsItsColumnKind) {
+  RunSetup setup;
+  setup.seed = 18446744073709551557ull;
+  setup.fault_case = FaultCase::kStuckClosed;
+  setup.fault = model::FaultParams{.kind = model::FaultKind::kStuckClosed, .thruster = 4, .onset_s = 1000.0};
+  RunRecord r = error_record(setup);
+  r.capture = true;
+  r.propellant_kg = 1.25;
+  const std::vector<std::string> values = fields(format_row(r));
+  ASSERT_EQ(values.size(), run_columns().size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string& v = values[i];
+    const RunColumn& c = run_columns()[i];
+    switch (c.kind) {
+      case ColumnKind::kInteger: EXPECT_TRUE(parse_integer(v).has_value()) << c.name << " " << v; break;
+      case ColumnKind::kUnsigned: {
+        std::uint64_t u = 0;
+        EXPECT_EQ(std::from_chars(v.data(), v.data() + v.size(), u).ptr, v.data() + v.size()) << c.name;
+        break;
+      }
+      case ColumnKind::kText: EXPECT_FALSE(v.empty() || parse_number(v).has_value()) << c.name << " " << v; break;
+      case ColumnKind::kNumber: EXPECT_TRUE(parse_number(v).has_value()) << c.name << " " << v; break;
+      case ColumnKind::kFlag: EXPECT_TRUE(v == "0" || v == "1") << c.name << " " << v; break;
+    }
+  }
+  EXPECT_EQ(column(r, "seed"), "18446744073709551557");
+  EXPECT_EQ(column(r, "case"), "stuck_closed");
 }
 
 }  // namespace

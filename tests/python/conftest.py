@@ -47,3 +47,12 @@ def assert_same_bits(a, b, name):
     assert a.shape == b.shape, f"{name}: {a.shape} rows against {b.shape}"
     differ = np.flatnonzero(a.view(np.uint64) != b.view(np.uint64))
     assert differ.size == 0, f"{name}: {differ.size} values differ, first at row {differ[0]}: {a[differ[0]]!r} != {b[differ[0]]!r}"
+
+
+# A small campaign, as tests/cli sets them up: 120 s runs (onset at 100 s, 20 s after it).
+SHORT_CAMPAIGN = ["campaign.onset_s=100", "campaign.horizon_after_onset_s=20"]
+
+
+def set_args(overrides):
+    """--set arguments for the command line."""
+    return [a for s in overrides for a in ("--set", s)]

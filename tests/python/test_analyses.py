@@ -1,0 +1,106 @@
+"""chaser.thrusters and chaser.fdi_design against the JSON files of `chaser thrusters --json` and
+`chaser fdi design --out`: the same figures, number arrays as NumPy arrays."""
+import csv
+import json
+
+import numpy as np
+import pytest
+
+import chaser
+from conftest import MSR, run_cli
+
+
+def assert_same_document(got, expected, where="$"):
+    """A Python document (NumPy arrays for the number arrays) equal to the JSON one, to the bit."""
+    if isinstance(got, np.ndarray):
+        want = np.asarray(expected)
+        assert got.shape == want.shape and got.dtype == (np.int64 if want.dtype.kind == "i" else np.float64), where
+        assert got.tobytes() == want.astype(got.dtype).tobytes(), where
+    elif isinstance(got, dict):
+        assert isinstance(expected, dict) and list(got) == list(expected), where
+        for key in got:
+            assert_same_document(got[key], expected[key], f"{where}.{key}")
+    elif isinstance(got, list):
+        assert isinstance(expected, list) and len(got) == len(expected), where
+        for i, (g, e) in enumerate(zip(got, expected)):
+            assert_same_document(g, e, f"{where}[{i}]")
+    else:
+        assert type(got) is type(expected) and got == expected, (where, got, expected)
+
+
+def test_thrusters_are_the_command_lines_json(cli, tmp_path):
+    shown = run_cli(cli, "thrusters", MSR, "--json", tmp_path / "t.json")
+    assert shown.returncode == 0, shown.stderr
+    expected = json.loads((tmp_path / "t.json").read_text())
+    got = chaser.thrusters(chaser.load_scenario(str(MSR)))
+    assert_same_document(got, expected)
+    start = got["sets"][0]
+    assert start["configuration_matrix_columns"].shape == (len(start["thrusters"]), 6)
+    assert start["attainable"].shape == (12,) and start["attainable"].dtype == np.float64
+    assert len(got["sets"]) == 2  # MSR: the set at the start and branch B after a switch
+
+
+def test_fdi_design_is_the_command_lines_json(cli, tmp_path):
+    shown = run_cli(cli, "fdi", "design", MSR, "--model", "attitude", "--out", tmp_path / "d.json")
+    assert shown.returncode == 0, shown.stderr
+    expected = json.loads((tmp_path / "d.json").read_text())
+    got = chaser.fdi_design(str(MSR), model="attitude")
+    assert_same_document(got, expected)
+    assert got["inputs"]["name"] == "attitude"
+    assert got["L"].ndim == 2 and got["A_bar"].shape[0] == got["A_bar"].shape[1]
+    assert chaser.fdi_design(str(MSR))["inputs"]["name"] == "position"
+
+
+def test_bad_analysis_arguments_raise():
+    with pytest.raises(ValueError, match="model: position or attitude"):
+        chaser.fdi_design(str(MSR), model="orbit")
+    with pytest.raises(TypeError, match="scenario"):
+        chaser.thrusters(None)
+    with pytest.raises(chaser.ScenarioError):
+        chaser.thrusters(str(MSR) + ".missing")
+
+
+MANUAL_RVD = MSR.parent / "manual_rvd.yaml"
+
+
+def test_fmea_is_the_command_lines_fmea_csv_and_md(cli, tmp_path):
+    shown = run_cli(cli, "fmea", MANUAL_RVD, "--out", tmp_path, "--threads", 2)
+    assert shown.returncode == 0, shown.stderr
+    with open(tmp_path / "fmea.csv", newline="") as f:
+        expected = list(csv.DictReader(f))
+    got = chaser.fmea(str(MANUAL_RVD), threads=2)
+    rows = got["rows"]
+    assert list(rows.dtype.names) == list(expected[0]) and len(rows) == len(expected) == 3 * 41
+    for i, row in enumerate(expected):
+        for name, text in row.items():
+            value = rows[name][i]
+            if rows.dtype[name] == np.bool_:
+                assert text == ("true" if value else "false"), (i, name)
+            elif rows.dtype[name].kind in "if":
+                assert float(text) == value, (i, name, text, value)
+            else:
+                assert text == value, (i, name)
+    assert rows.dtype["k_p"] == np.float64 and rows.dtype["risk_rank"] == np.int64
+    assert got["markdown"] == (tmp_path / "fmea.md").read_text()
+    baseline = got["layouts"]["baseline"]
+    assert f"baseline: class I {baseline['class_I']}, class II {baseline['class_II']}, class III {baseline['class_III']}; " \
+           f"propellant {baseline['propellant_kg']:.1f} kg" in shown.stdout
+    assert list(got["layouts"]) == ["baseline", "scheme_I", "scheme_II"]
+
+
+def test_fmea_rows_do_not_depend_on_threads_and_overrides_act():
+    one = chaser.fmea(str(MANUAL_RVD), threads=1)["rows"]
+    assert one.tobytes() == chaser.fmea(str(MANUAL_RVD), threads=2)["rows"].tobytes()
+    three_axis = chaser.fmea(str(MANUAL_RVD), threads=2, three_axis=True)["rows"]
+    assert len(three_axis) == 3 * 105 and "three_axis" in set(three_axis["table"])
+    weaker = chaser.fmea(str(MANUAL_RVD), overrides={"thrusters.1.thrust_N": 50}, threads=2)["rows"]
+    assert len(weaker) == len(one) and not np.array_equal(weaker["propellant_kg"], one["propellant_kg"])
+
+
+def test_bad_fmea_arguments_raise(tmp_path):
+    with pytest.raises(ValueError, match="threads: must be >= 1"):
+        chaser.fmea(str(MANUAL_RVD), threads=0)
+    with pytest.raises(chaser.ScenarioError):
+        chaser.fmea(str(tmp_path / "nowhere.yaml"))
+    with pytest.raises(chaser.ScenarioError):
+        chaser.fmea(str(MANUAL_RVD), overrides={"nonesuch.key": 1})
