@@ -24,7 +24,7 @@ namespace chaser::invsim {
 
 // Pulses of one body axis: index 0 for the positive direction, 1 for the negative.
 struct AxisPulses {
-  std::array<int, 2> count{0, 0};          // steps in which the group fired (the pilot's pulses)
+  std::array<int, 2> count{0, 0};          // pulses under the reading (invsim/paper_reading.hpp)
   std::array<double, 2> on_time_s{0.0, 0.0};  // [s] summed opening time of the group
 };
 
