@@ -2,6 +2,7 @@
 """Calibration of the `paper` reading of Zhou 2018's inverse simulation on the NOMINAL case only.
 
 Usage: /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check]
+       /usr/bin/python3 python/calibrate_invsim.py --targets DIR/fmea.csv
 
 The `paper` reading (docs/invsim.md, "Readings of App. B") leaves four choices the paper does not
 print: the width w of one counted valve opening (pulses.paper.pulse_width_s) and the velocity
@@ -21,7 +22,9 @@ sections (41 runs, ~0.1 s) and reads the nominal row of fmea.csv.
 
 --write puts the result into the scenario's pulses.paper block; --check exits 1 when the
 scenario's block differs from what the procedure finds (the shipped values are reproducible).
-Prints each accepted step and the final nominal figures beside the paper's.
+Prints each accepted step and the final nominal figures beside the paper's. --targets scores an
+existing fmea.csv (baseline layout) against issue 21's targets: the fault rows' predictions beside
+Tables 4 and 5.
 """
 import argparse
 import csv
@@ -115,13 +118,100 @@ def write_block(path, params):
     path.write_text(text)
 
 
+# Zhou 2018, Tables 4 and 5 (the same figures as invsim/zhou2018_tables.cpp; None: printed `---`).
+PAPER_TABLE4 = {
+    "nominal": [114, 50, 230, 327, 289, 567], "e1~": [114, 50, 464, 328, 292, 568],
+    "e2~": [114, 50, 459, 326, 289, 565], "e1/e1~": [116, 52, 459, 645, 289, 567],
+    "e2/e1~": [115, 51, 458, 647, 290, 568], "e1/e2~": [116, 52, 457, 645, 289, 568],
+    "f1": [116, 51, 231, 327, 576, 567], "f2~": [114, 50, 231, 328, 288, 1131],
+    "f1/f1~": [116, 51, 230, 326, 579, 1088], "f2/f1~": [116, 51, 229, 328, 577, 1088],
+    "f1/f2~": [116, 51, 227, 325, 577, 1089], "f2/f2~": [117, 52, 230, 326, 576, 1088],
+    "d1": [230, 49, 228, 325, 290, 567], "d1~": [123, 104, 231, 326, 288, 564],
+    "d1/d1~": [250, 105, 232, 328, 288, 564], "d2/d1~": [251, 106, 228, 323, 288, 563],
+    "d1/d2~": [252, 105, 229, 325, 290, 569],
+}
+PAPER_LOST = {"d1/d2~+e2/e1~", "d1/d2~+e2/e2~", "d2/d1~+e1/e1~", "d2/d1~+e1/e2~"}
+Z_DOUBLES = {"f1/f1~", "f2/f1~", "f1/f2~", "f2/f2~"}
+
+
+def spearman(a, b):
+    def ranks(v):
+        order = sorted(range(len(v)), key=lambda i: v[i])
+        r = [0.0] * len(v)
+        i = 0
+        while i < len(order):  # ties share their mean rank
+            j = i
+            while j + 1 < len(order) and v[order[j + 1]] == v[order[i]]:
+                j += 1
+            for k in range(i, j + 1):
+                r[order[k]] = (i + j) / 2.0
+            i = j + 1
+        return r
+    ra, rb = ranks(a), ranks(b)
+    ma, mb = sum(ra) / len(ra), sum(rb) / len(rb)
+    cov = sum((x - ma) * (y - mb) for x, y in zip(ra, rb))
+    return cov / math.sqrt(sum((x - ma) ** 2 for x in ra) * sum((y - mb) ** 2 for y in rb))
+
+
+def score_targets(csv_path, configuration="baseline"):
+    """Issue 21's targets on one layout of an fmea.csv; prints the predictions beside the paper."""
+    rows = {}
+    with open(csv_path, newline="") as f:
+        for row in csv.DictReader(f):
+            if row["configuration"] == configuration:
+                rows[row["mode"]] = row
+    nominal = rows["nominal"]
+    ours_nom = [int(nominal[d]) for d in DIRECTIONS]
+    kp_nom = float(nominal["k_p"])
+    paper_nom_total = sum(PAPER_TABLE4["nominal"])
+    print("| mode | ours x+/x-/y+/y-/z+/z- | paper | k_p ours | paper | within 15 % | rise ours | paper | within 10 pt |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    kp_ok = rise_ok = 0
+    for mode, paper in PAPER_TABLE4.items():
+        ours = [int(rows[mode][d]) for d in DIRECTIONS]
+        kp = float(rows[mode]["k_p"])
+        kp_paper = sum(paper) / 3000.0
+        rise, rise_paper = 100.0 * (kp / kp_nom - 1.0), 100.0 * (sum(paper) / paper_nom_total - 1.0)
+        k_within = abs(kp / kp_paper - 1.0) <= 0.15
+        r_within = abs(rise - rise_paper) <= 10.0
+        kp_ok += k_within
+        if mode != "nominal":
+            rise_ok += r_within
+        print(f"| {mode} | {'/'.join(map(str, ours))} | {'/'.join(map(str, paper))} | {kp:.3f} | {kp_paper:.3f} | "
+              f"{'yes' if k_within else 'no'} | {rise:+.0f} % | {rise_paper:+.0f} % | "
+              f"{'' if mode == 'nominal' else ('yes' if r_within else 'no')} |")
+    single = {m: float(r["k_p"]) for m, r in rows.items() if r["table"] == "table2"}
+    worst4 = set(sorted(single, key=lambda m: -single[m])[:4])
+    table5 = {m: r for m, r in rows.items() if r["table"] == "table5"}
+    lost = {m for m, r in table5.items() if r["controllable"] != "true"}
+    ratios = [float(r["k_p"]) / kp_nom for m, r in table5.items() if m not in PAPER_LOST and r["controllable"] == "true"]
+    faults = [m for m in PAPER_TABLE4 if m != "nominal"]
+    rho = spearman([float(rows[m]["k_p"]) for m in faults], [sum(PAPER_TABLE4[m]) for m in faults])
+    nominal_ok = sum(abs(o / p - 1.0) <= 0.15 for o, p in zip(ours_nom, PAPER_TABLE4["nominal"]))
+    print()
+    print(f"- nominal pulses within 15 %: {nominal_ok} of 6 directions")
+    print(f"- k_p within 15 % of the paper: {kp_ok} of 17 Table 4 rows")
+    print(f"- rise over nominal within 10 points: {rise_ok} of 16 fault rows (target >= 12)")
+    print(f"- Spearman rank correlation of k_p over the 16 fault rows: {rho:.2f}")
+    print(f"- the z doubles are the four worst single-axis modes: {'yes' if worst4 == Z_DOUBLES else 'no'} "
+          f"(worst four by k_p: {', '.join(sorted(worst4))})")
+    print(f"- Table 5 modes the paper flies, ratio to nominal: {min(ratios):.2f}-{max(ratios):.2f} "
+          f"({sum(1.3 <= r <= 1.6 for r in ratios)} of {len(ratios)} in 1.3-1.6)")
+    print(f"- uncontrollable Table 5 modes: {', '.join(sorted(lost)) or 'none'} "
+          f"({'the paper four' if lost == PAPER_LOST else 'not the paper four'})")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--write", action="store_true")
     ap.add_argument("--check", action="store_true")
+    ap.add_argument("--targets", metavar="FMEA_CSV", help="only score issue 21's targets on this fmea.csv")
     args = ap.parse_args()
+    if args.targets:
+        score_targets(args.targets)
+        return 0
     path = pathlib.Path(args.scenario)
     scenario = yaml.safe_load(path.read_text())
     with tempfile.TemporaryDirectory() as tmp:
