@@ -190,10 +190,12 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
     const double t = static_cast<double>(k) * p.step_s;
     Vec3 u_body;
     const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, u_body);
+    std::array<int, 3> counted{};
     for (int axis = 0; axis < 3; ++axis) {
       if (pulses[axis].direction == 0) continue;
       AxisPulses& a = r.pulses[axis];
-      a.count[dir_index(pulses[axis].direction)] += counted_pulses(p.pulses, pulses[axis]);
+      counted[axis] = counted_pulses(p.pulses, pulses[axis]);
+      a.count[dir_index(pulses[axis].direction)] += counted[axis];
       a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
     }
     if (history != nullptr) {
@@ -204,7 +206,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       const Vec6 x_d = desired_state(p.trajectory, p.r0_hill_m.x(), t);
       history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
-                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}});
+                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}, counted});
     }
     forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns);
     if (!finite_and_near(s)) {
