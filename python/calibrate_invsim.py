@@ -37,8 +37,27 @@ import tempfile
 
 import yaml
 
-PAPER_NOMINAL = [114, 50, 230, 327, 289, 567]  # Zhou 2018, Table 4, first row
-PAPER_KP = 0.53
+PAPER_KP = 0.53  # Zhou 2018, Table 4, first row
+
+# Zhou 2018, Tables 4 and 5, read from their one copy in the code (invsim/zhou2018_tables.cpp):
+# {label: [x+, x-, y+, y-, z+, z-]}, Table 4 in the paper's order, and the labels printed `---`.
+TABLES_CPP = pathlib.Path(__file__).resolve().parent.parent / "invsim" / "zhou2018_tables.cpp"
+ROW = re.compile(r'\{"([^"]+)", (true|false), \{([^}]*)\}, ([0-9.]+)\}')
+
+
+def paper_tables(path=TABLES_CPP):
+    text = path.read_text()
+    table4_text = text[text.index("kTable4"):text.index("kTable5")]
+    table4 = {m[1]: [int(v) for v in m[3].split(",")] for m in ROW.finditer(table4_text)}
+    lost = {m[1] for m in ROW.finditer(text) if m[2] == "false"}
+    if len(table4) != 17 or len(lost) != 4:
+        raise RuntimeError(f"{path}: expected 17 Table 4 rows and 4 `---` rows")
+    return table4, lost
+
+
+PAPER_TABLE4, PAPER_LOST = paper_tables()
+PAPER_NOMINAL = PAPER_TABLE4["nominal"]
+
 DIRECTIONS = ["x_pos", "x_neg", "y_pos", "y_neg", "z_pos", "z_neg"]
 W_GRID = [0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.1, 0.12, 0.15, 0.2]  # [s]
 Q_GRID = [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0]  # velocity weight [s^2/m^2] (position weight 1)
@@ -118,19 +137,6 @@ def write_block(path, params):
     path.write_text(text)
 
 
-# Zhou 2018, Tables 4 and 5 (the same figures as invsim/zhou2018_tables.cpp; None: printed `---`).
-PAPER_TABLE4 = {
-    "nominal": [114, 50, 230, 327, 289, 567], "e1~": [114, 50, 464, 328, 292, 568],
-    "e2~": [114, 50, 459, 326, 289, 565], "e1/e1~": [116, 52, 459, 645, 289, 567],
-    "e2/e1~": [115, 51, 458, 647, 290, 568], "e1/e2~": [116, 52, 457, 645, 289, 568],
-    "f1": [116, 51, 231, 327, 576, 567], "f2~": [114, 50, 231, 328, 288, 1131],
-    "f1/f1~": [116, 51, 230, 326, 579, 1088], "f2/f1~": [116, 51, 229, 328, 577, 1088],
-    "f1/f2~": [116, 51, 227, 325, 577, 1089], "f2/f2~": [117, 52, 230, 326, 576, 1088],
-    "d1": [230, 49, 228, 325, 290, 567], "d1~": [123, 104, 231, 326, 288, 564],
-    "d1/d1~": [250, 105, 232, 328, 288, 564], "d2/d1~": [251, 106, 228, 323, 288, 563],
-    "d1/d2~": [252, 105, 229, 325, 290, 569],
-}
-PAPER_LOST = {"d1/d2~+e2/e1~", "d1/d2~+e2/e2~", "d2/d1~+e1/e1~", "d2/d1~+e1/e2~"}
 Z_DOUBLES = {"f1/f1~", "f2/f1~", "f1/f2~", "f2/f2~"}
 
 
