@@ -16,6 +16,7 @@
 #include "cli/fmea_report.hpp"
 #include "invsim/fmea.hpp"
 #include "invsim/layout_study.hpp"
+#include "invsim/paper_reading.hpp"
 #include "io/invsim_loader.hpp"
 
 namespace chaser::cli {
@@ -30,9 +31,9 @@ bool write_text(const std::filesystem::path& path, const std::string& text) {
 void print_summary(const std::vector<FmeaLayout>& layouts, double seconds, int threads) {
   std::size_t modes = 0;
   for (const FmeaLayout& layout : layouts) modes += layout.rows.size();
-  std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes) in {:.2f} s on {} thread{}\n", modes,
-                           layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(), seconds,
-                           threads, threads == 1 ? "" : "s");
+  std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes) in {:.2f} s on {} thread{}; pulses.reading {}\n",
+                           modes, layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(), seconds,
+                           threads, threads == 1 ? "" : "s", invsim::reading_name(layouts.front().params.pulses.reading));
   for (const FmeaLayout& layout : layouts) {
     const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
     std::cout << fmt::format("  {}: class I {}, class II {}, class III {}; propellant {:.1f} kg\n", layout.name,

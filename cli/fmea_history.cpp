@@ -19,15 +19,16 @@ std::string file_stem(std::size_t index, const std::string& label) {
 std::string history_csv(const std::vector<invsim::InvSimSample>& samples) {
   std::string csv =
       "t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,x_desired_m,y_desired_m,z_desired_m,roll_deg,pitch_deg,yaw_deg,"
-      "azimuth_deg,elevation_deg,ux_mps2,uy_mps2,uz_mps2,pulse_x,pulse_y,pulse_z\n";
+      "azimuth_deg,elevation_deg,ux_mps2,uy_mps2,uz_mps2,pulse_x,pulse_y,pulse_z,count_x,count_y,count_z\n";
   for (const invsim::InvSimSample& s : samples) {
     csv += fmt::format("{:.1f},{:.5f},{:.5f},{:.5f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},", s.t_s, s.r_hill_m.x(),
                        s.r_hill_m.y(), s.r_hill_m.z(), s.v_hill_mps.x(), s.v_hill_mps.y(), s.v_hill_mps.z(),
                        s.r_desired_hill_m.x(), s.r_desired_hill_m.y(), s.r_desired_hill_m.z());
-    csv += fmt::format("{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.6e},{},{},{}\n", s.euler_rad.x() / kDegToRad,
+    csv += fmt::format("{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.6e},{},{},{},{},{},{}\n", s.euler_rad.x() / kDegToRad,
                        s.euler_rad.y() / kDegToRad, s.euler_rad.z() / kDegToRad, s.azimuth_rad / kDegToRad,
                        s.elevation_rad / kDegToRad, s.u_body_mps2.x(), s.u_body_mps2.y(), s.u_body_mps2.z(),
-                       s.pulse_direction[0], s.pulse_direction[1], s.pulse_direction[2]);
+                       s.pulse_direction[0], s.pulse_direction[1], s.pulse_direction[2], s.pulse_count[0],
+                       s.pulse_count[1], s.pulse_count[2]);
   }
   return csv;
 }

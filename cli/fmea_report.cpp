@@ -4,6 +4,7 @@
 
 #include "core/constants.hpp"
 #include "invsim/thruster_set.hpp"
+#include "invsim/zhou2018_tables.hpp"
 
 namespace chaser::cli {
 namespace {
@@ -49,31 +50,81 @@ std::string moment_label(const model::InvSimParams& p, const std::string& pair) 
   return pair + " " + moments;
 }
 
+// Cells "ours (paper)" for Zhou 2018's published figures (invsim/zhou2018_tables.hpp); the paper's
+// ratio to nominal from its pulse counts, ours from our k_p.
+struct PaperCells {
+  std::string pulses, k_p, ratio, paper_class;
+};
+
+PaperCells paper_cells(const FmeaRow& row, double nominal_k_p) {
+  const auto paper = invsim::zhou2018_row(row.fmea_case.table == FmeaTable::kNominal ? "nominal" : row.fmea_case.mode.label);
+  const auto& r = row.result;
+  const double ratio = nominal_k_p > 0.0 ? r.k_p / nominal_k_p : 0.0;
+  PaperCells c;
+  if (!paper || !paper->controllable) {
+    const std::string mark = paper ? " (---)" : "";  // a row the paper prints as `---`, or does not print
+    for (int axis = 0; axis < 3; ++axis)
+      for (int d = 0; d < 2; ++d) c.pulses += fmt::format(" | {}{}", r.pulses[axis].count[d], mark);
+    c.k_p = fmt::format("{:.3f}{}", r.k_p, mark);
+    c.ratio = fmt::format("{:.2f}{}", ratio, mark);
+    c.paper_class = paper ? "uncontrollable (`---`)" : "";
+    return c;
+  }
+  const auto nominal = *invsim::zhou2018_row("nominal");
+  int total = 0, nominal_total = 0;
+  for (int i = 0; i < 6; ++i) {
+    total += paper->pulses[static_cast<std::size_t>(i)];
+    nominal_total += nominal.pulses[static_cast<std::size_t>(i)];
+    c.pulses += fmt::format(" | {} ({})", row.result.pulses[i / 2].count[i % 2], paper->pulses[static_cast<std::size_t>(i)]);
+  }
+  c.k_p = fmt::format("{:.3f} ({:.2f})", r.k_p, paper->k_p);
+  c.ratio = fmt::format("{:.2f} ({:.2f})", ratio, static_cast<double>(total) / nominal_total);
+  c.paper_class = "controllable";
+  return c;
+}
+
+double nominal_k_p(const std::vector<FmeaRow>& rows) {
+  for (const FmeaRow& row : rows)
+    if (row.fmea_case.table == FmeaTable::kNominal) return row.result.k_p;
+  return 0.0;
+}
+
+constexpr const char* kPaperNote =
+    "Each cell: ours (Zhou 2018's published figure, invsim/zhou2018_tables.hpp). Ratio: k_p over the "
+    "nominal k_p (the paper's from its pulse counts). The paper prints no classes for Table 4 and "
+    "`---` for its four uncontrollable Table 5 rows.\n\n";
+
 void table4(std::string& md, const std::vector<FmeaRow>& rows) {
   md += "## Table 4: single-axis faults (pulses per body axis and direction, operational amount)\n\n";
-  md += "| Fault thrusters | x+ | x- | y+ | y- | z+ | z- | Operational amount k_p | Class |\n";
-  md += "|---|---|---|---|---|---|---|---|---|\n";
+  md += kPaperNote;
+  md += "| Fault thrusters | x+ | x- | y+ | y- | z+ | z- | Operational amount k_p | / nominal | Class | Paper |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const double k_nominal = nominal_k_p(rows);
   for (const FmeaRow& row : rows) {
     const FmeaTable t = row.fmea_case.table;
     if (t != FmeaTable::kNominal && t != FmeaTable::kSingleAxis) continue;
     const std::string name = t == FmeaTable::kNominal ? "—" : row.fmea_case.mode.label;
-    md += fmt::format("| {}{} | {:.3f} | {} |\n", name, pulse_cells(row.result, " | "), row.result.k_p,
-                      invsim::risk_class_roman(row.risk));
+    const PaperCells c = paper_cells(row, k_nominal);
+    md += fmt::format("| {}{} | {} | {} | {} | {} |\n", name, c.pulses, c.k_p, c.ratio,
+                      invsim::risk_class_roman(row.risk), c.paper_class.empty() ? "not in Table 4" : c.paper_class);
   }
   md += "\n";
 }
 
 void table5(std::string& md, const std::vector<FmeaRow>& rows) {
   md += "## Table 5: multi-axis faults\n\n";
-  md += "| x-axis | y-axis | x+ | x- | y+ | y- | z+ | z- | Operational rate k_p | Class |\n";
-  md += "|---|---|---|---|---|---|---|---|---|---|\n";
+  md += kPaperNote;
+  md += "| x-axis | y-axis | x+ | x- | y+ | y- | z+ | z- | Operational rate k_p | / nominal | Class | Paper |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const double k_nominal = nominal_k_p(rows);
   for (const FmeaRow& row : rows) {
     const FmeaTable t = row.fmea_case.table;
     if (t != FmeaTable::kNominal && t != FmeaTable::kMultiAxis) continue;
     const auto [x, y] = t == FmeaTable::kNominal ? std::pair<std::string, std::string>{"—", "—"}
                                                   : split_multi(row.fmea_case.mode.label);
-    md += fmt::format("| {} | {}{} | {:.3f} | {} |\n", x, y, pulse_cells(row.result, " | "), row.result.k_p,
-                      invsim::risk_class_roman(row.risk));
+    const PaperCells c = paper_cells(row, k_nominal);
+    md += fmt::format("| {} | {}{} | {} | {} | {} | {} |\n", x, y, c.pulses, c.k_p, c.ratio,
+                      invsim::risk_class_roman(row.risk), c.paper_class);
   }
   md += "\n(The paper prints `---` for its uncontrollable rows; we keep the figures and mark them Class III.)\n\n";
 }
@@ -188,8 +239,14 @@ std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
   const model::InvSimParams& p = layouts.front().params;
   const std::vector<FmeaRow>& rows = layouts.front().rows;
   std::string md = fmt::format("# FMEA of scenario '{}' (Zhou 2018, inverse simulation)\n\n", p.name);
+  md += p.pulses.reading == model::InvSimReading::kPaper
+             ? fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's "
+                           "opening dtau counting ceil(dtau / {} s). ",
+                           p.pulses.paper.pulse_width_s, p.pulses.paper.pulse_width_s)
+             : std::string("Reading `smooth` (docs/invsim.md): a pulse is a step in which a body axis' translation "
+                           "group fired in that direction. ");
   md += fmt::format(
-      "Pulses: steps in which a body axis' translation group fired in that direction; k_p = P / {:.0f} (eq. 22). "
+      "k_p = P / {:.0f} (eq. 22). "
       "Classes (docs/invsim.md): III uncontrollable (not docked, or the target left the {:.1f}/{:.1f} deg field "
       "of view); II controllable with a large deviation (peak |az| or |el| above {:.0f}% of its limit, or the "
       "attitude beyond +-{:.1f} deg); I the other controllable modes. Tables 4-6 and the ranking are for the "

@@ -7,6 +7,7 @@
 #include "core/hill_frames.hpp"
 #include "invsim/desired_trajectory.hpp"
 #include "invsim/inverse_step.hpp"
+#include "invsim/paper_reading.hpp"
 #include "invsim/phase_plane.hpp"
 #include "invsim/pulse_conversion.hpp"
 #include "invsim/relative_dynamics.hpp"
@@ -41,7 +42,8 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
   const double period_s = p.step_s / static_cast<double>(c.sub_steps);  // the longest piece
   c.rvd = make_rvd_constants(p.mu_m3ps2, p.radius_m(), p.mass_kg, p.inertia_kgm2, period_s);
   Vec6 weights;
-  for (int i = 0; i < 6; ++i) weights(i) = p.inverse.state_weights[i];
+  const std::array<double, 6>& q = reading_state_weights(p);
+  for (int i = 0; i < 6; ++i) weights(i) = q[static_cast<std::size_t>(i)];
   c.inverse = make_inverse_model(c.rvd.dynamics.orbit.mean_motion_radps(), p.step_s, p.inverse.horizon_steps, weights);
   for (int axis = 0; axis < 3; ++axis) {
     for (int d : {1, -1}) {
@@ -188,10 +190,12 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
     const double t = static_cast<double>(k) * p.step_s;
     Vec3 u_body;
     const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, u_body);
+    std::array<int, 3> counted{};
     for (int axis = 0; axis < 3; ++axis) {
       if (pulses[axis].direction == 0) continue;
       AxisPulses& a = r.pulses[axis];
-      ++a.count[dir_index(pulses[axis].direction)];
+      counted[axis] = counted_pulses(p.pulses, pulses[axis]);
+      a.count[dir_index(pulses[axis].direction)] += counted[axis];
       a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
     }
     if (history != nullptr) {
@@ -202,7 +206,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       const Vec6 x_d = desired_state(p.trajectory, p.r0_hill_m.x(), t);
       history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
-                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}});
+                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}, counted});
     }
     forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns);
     if (!finite_and_near(s)) {

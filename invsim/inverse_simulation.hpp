@@ -24,7 +24,7 @@ namespace chaser::invsim {
 
 // Pulses of one body axis: index 0 for the positive direction, 1 for the negative.
 struct AxisPulses {
-  std::array<int, 2> count{0, 0};          // steps in which the group fired (the pilot's pulses)
+  std::array<int, 2> count{0, 0};          // pulses under the reading (invsim/paper_reading.hpp)
   std::array<double, 2> on_time_s{0.0, 0.0};  // [s] summed opening time of the group
 };
 
@@ -57,6 +57,7 @@ struct InvSimSample {
   double elevation_rad;            // [rad]
   Vec3 u_body_mps2;                // [m/s^2] inverse model output
   std::array<int, 3> pulse_direction;  // -1, 0, +1 per axis
+  std::array<int, 3> pulse_count;      // pulses counted in the step per axis under the reading
 };
 
 InvSimResult run_inverse_simulation(const model::InvSimParams& params,

@@ -91,6 +91,30 @@ void read_weights(MapReader& r, std::array<double, 6>& out) {
                 out[i]);
 }
 
+// pulses.reading: optional, smooth by default (docs/invsim.md, "Readings of App. B").
+void read_reading(MapReader& m, model::InvSimReading& out) {
+  if (!m.has("reading")) return;
+  std::string text;
+  if (!m.text("reading", text)) return;
+  if (text == "smooth") out = model::InvSimReading::kSmooth;
+  else if (text == "paper") out = model::InvSimReading::kPaper;
+  else m.diagnostics().add(m.path_of("reading"), fmt::format("must be smooth or paper (got '{}')", text));
+}
+
+// pulses.paper: the paper reading's calibrated choices; required when pulses.reading is paper,
+// checked whenever present.
+void read_paper_reading(MapReader& m, InvSimParams& p) {
+  if (!m.has("paper")) {
+    if (p.pulses.reading == model::InvSimReading::kPaper)
+      m.diagnostics().add(m.path_of("paper"), "is required with pulses.reading: paper (keys pulse_width_s, state_weights)");
+    return;
+  }
+  read_section(m, "paper", [&](MapReader& s) {
+    s.number("pulse_width_s", Range::left_open(0.0, 60.0), p.pulses.paper.pulse_width_s);
+    read_weights(s, p.pulses.paper.state_weights);
+  });
+}
+
 void read_sections(MapReader& r, InvSimParams& p) {
   r.text("name", p.name);
   read_section(r, "orbit", [&](MapReader& m) {
@@ -130,9 +154,11 @@ void read_sections(MapReader& r, InvSimParams& p) {
     read_weights(m, p.inverse.state_weights);
   });
   read_section(r, "pulses", [&](MapReader& m) {
+    read_reading(m, p.pulses.reading);
     m.number("time_sensitivity", Range::right_open(0.0, 1.0), p.pulses.time_sensitivity);
     m.number("acceleration_sensitivity", Range::right_open(0.0, 1.0), p.pulses.acceleration_sensitivity);
     m.number("basic_pulse_amount", Range::positive(), p.pulses.basic_pulse_amount);
+    read_paper_reading(m, p);
   });
   read_section(r, "attitude_control", [&](MapReader& m) {
     model::InvSimPhasePlaneParams& a = p.attitude;

@@ -48,11 +48,26 @@ struct InvSimInverseParams {
   std::array<double, 6> state_weights{};           // diagonal of Q: [1/m^2] x3, [s^2/m^2] x3
 };
 
+// How App. B's pulses are read and counted (docs/invsim.md, "Readings of App. B"; invsim/paper_reading.hpp).
+//  - smooth (Chaser's default): a pulse is a step in which a group fired (the pilot's stick pulse);
+//  - paper: a pulse is one valve opening of at most pulse_width_s: a step's opening dtau counts
+//    ceil(dtau / pulse_width_s) pulses, so P measures the commanded opening time (the paper's
+//    "operational impulse amounts"), and Q of eq. 20 is the reading's own, both calibrated on the
+//    nominal case only (python/calibrate_invsim.py).
+enum class InvSimReading { kSmooth, kPaper };
+
+struct InvSimPaperReadingParams {
+  double pulse_width_s = 0.1;                          // [s] one counted valve opening at most
+  std::array<double, 6> state_weights{1, 1, 1, 1, 1, 1};  // diagonal of Q under this reading
+};
+
 // Pulse conversion (Zhou 2018, App. B eqs. 1-4) and the operational amount (eq. 22).
 struct InvSimPulseParams {
+  InvSimReading reading = InvSimReading::kSmooth;
   double time_sensitivity = 0.35;          // k_t [-]
   double acceleration_sensitivity = 0.35;  // k_f [-]
   double basic_pulse_amount = 3000.0;      // P_thrust [-]
+  InvSimPaperReadingParams paper;          // used with reading kPaper only
 };
 
 // Phase-plane attitude control (Zhou 2018, App. A), the same for the three axes except a0, which

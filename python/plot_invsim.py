@@ -15,7 +15,8 @@ layout), PLOTDIR/<configuration>/<history file stem>.png (default PLOTDIR = DIR/
  2. attitude: roll, pitch, yaw against the +-attitude limit (Figs. 7-8, 13-14, 16);
  3. line of sight: azimuth and elevation against the field of view; the band outside it shaded,
     and the times the target is out of view shaded red across the panel (Figs. 7-16);
- 4. pulses: CUMULATIVE count of the steps in which each body axis' translation group fired, per
+ 4. pulses: CUMULATIVE count of each body axis' translation pulses (the history's count_x.. under
+    the scenario's reading; without them, the steps in which the group fired), per
     direction (x+ solid, x- dashed, ...; the legend's totals are the Table 4/5 entries of fmea.csv,
     and a mismatch is warned about on stderr) (Fig. 6).
 The title carries the layout, the mode, the failed thrusters, the risk class, k_p and docking.
@@ -48,7 +49,10 @@ AXIS_COLOURS = {"x": "tab:blue", "y": "tab:orange", "z": "tab:green"}
 # Written by cli/fmea_history.cpp; the plots read HISTORY_COLUMNS only.
 HISTORY_HEADER = ("t_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps", "x_desired_m", "y_desired_m",
                   "z_desired_m", "roll_deg", "pitch_deg", "yaw_deg", "azimuth_deg", "elevation_deg", "ux_mps2",
-                  "uy_mps2", "uz_mps2", "pulse_x", "pulse_y", "pulse_z")
+                  "uy_mps2", "uz_mps2", "pulse_x", "pulse_y", "pulse_z", "count_x", "count_y", "count_z")
+# Pulses counted in the step under the scenario's reading (docs/invsim.md, "Readings of App. B");
+# optional: without them a fired step counts one (the smooth reading).
+COUNT_COLUMNS = ("count_x", "count_y", "count_z")
 HISTORY_COLUMNS = ("t_s", "x_m", "y_m", "z_m", "x_desired_m", "y_desired_m", "z_desired_m", "roll_deg",
                    "pitch_deg", "yaw_deg", "azimuth_deg", "elevation_deg", "pulse_x", "pulse_y", "pulse_z")
 INDEX_COLUMNS = ("configuration", "mode", "file")
@@ -147,16 +151,17 @@ def load_history(path):
     """{column: float array} of one history file; raises ValueError naming the file when unreadable."""
     with path.open(newline="") as f:
         header = next(csv.reader(f), [])
+    columns = HISTORY_COLUMNS + tuple(c for c in COUNT_COLUMNS if c in header)
     try:
         with warnings.catch_warnings():  # a header-only file is reported below, not warned about
             warnings.simplefilter("ignore", UserWarning)
             data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2,
-                              usecols=[header.index(c) for c in HISTORY_COLUMNS])
+                              usecols=[header.index(c) for c in columns])
     except ValueError as e:
         raise ValueError(f"{path}: unreadable, cut mid-write? ({e})") from None
     if data.shape[0] == 0:
         raise ValueError(f"{path}: no step (header only)")
-    return {c: data[:, i] for i, c in enumerate(HISTORY_COLUMNS)}
+    return {c: data[:, i] for i, c in enumerate(columns)}
 
 
 def yes_no(text):
@@ -257,8 +262,9 @@ def plot_pulses(ax, h, row):
     totals = []
     for axis in ("x", "y", "z"):
         fired = h[f"pulse_{axis}"]
+        per_step = h.get(f"count_{axis}", np.ones_like(fired))
         for sign, style, suffix, column in ((1, "-", "+", f"{axis}_pos"), (-1, "--", "-", f"{axis}_neg")):
-            count = np.cumsum(fired == sign)
+            count = np.cumsum(np.where(fired == sign, per_step, 0)).astype(int)
             totals.append(int(count[-1]))
             ax.plot(h["t_s"], count, color=AXIS_COLOURS[axis], ls=style, lw=1.1, drawstyle="steps-post",
                     label=f"{axis}{suffix}: {totals[-1]}")

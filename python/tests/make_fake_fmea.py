@@ -79,6 +79,8 @@ def history(rng, yaw_excursion_deg):
     h["pulse_x"] = pulses(rng, STEPS, 0.03 + extra, 0.02)
     h["pulse_y"] = pulses(rng, STEPS, 0.025, 0.03 + extra)
     h["pulse_z"] = pulses(rng, STEPS, 0.005, 0.03)
+    for axis in "xyz":  # the smooth reading: one pulse per fired step
+        h[f"count_{axis}"] = np.abs(h[f"pulse_{axis}"])
     return h
 
 
@@ -127,7 +129,7 @@ def file_stem(index, label):
 
 def write_history(path, h):
     data = np.column_stack([h[c] for c in HISTORY_HEADER])
-    formats = ["%.1f"] + ["%.5f"] * 3 + ["%.6f"] * 3 + ["%.5f"] * 8 + ["%.6e"] * 3 + ["%d"] * 3
+    formats = ["%.1f"] + ["%.5f"] * 3 + ["%.6f"] * 3 + ["%.5f"] * 8 + ["%.6e"] * 3 + ["%d"] * 6
     np.savetxt(path, data, fmt=formats, delimiter=",", header=",".join(HISTORY_HEADER), comments="")
 
 

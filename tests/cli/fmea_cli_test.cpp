@@ -175,4 +175,27 @@ TEST(FmeaCli, OutputDoesNotDependOnThreads) {
   EXPECT_FALSE(read_file(one / "fmea.csv").empty());
 }
 
+// The paper reading (docs/invsim.md, "Readings of App. B"): fmea.md prints Zhou 2018's figures
+// beside ours and names the reading; python/calibrate_invsim.py, run again on the nominal case,
+// finds the scenario's shipped pulses.paper block (--check, exit 0: the calibration is repeatable);
+// an unknown reading is exit 2 naming the key and the allowed values.
+TEST(FmeaCli, PaperReadingPrintsThePaperBesideUsAndItsCalibrationIsRepeatable) {
+  const fs::path out = fresh_dir("paper");
+  const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --set pulses.reading=paper --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string md = read_file(out / "fmea.md");
+  EXPECT_NE(md.find("Reading `paper`"), std::string::npos);
+  EXPECT_NE(md.find(" (114) | "), std::string::npos);   // Table 4's nominal x+
+  EXPECT_NE(md.find(" (1131) | "), std::string::npos);  // f2~'s z-
+  EXPECT_NE(md.find("uncontrollable (`---`)"), std::string::npos);
+  const CommandResult cal = chaser::testing::run_shell("/usr/bin/python3 python/calibrate_invsim.py "
+                                                       "scenarios/manual_rvd.yaml --check --chaser " +
+                                                       std::string(CHASER_BINARY));
+  EXPECT_EQ(cal.exit_code, 0) << cal.output;
+  EXPECT_NE(cal.output.find("check: the scenario's pulses.paper matches"), std::string::npos) << cal.output;
+  const CommandResult bad = chaser("fmea scenarios/manual_rvd.yaml --set pulses.reading=chatter --out " + out.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("pulses.reading: must be smooth or paper (got 'chatter')"), std::string::npos) << bad.output;
+}
+
 }  // namespace

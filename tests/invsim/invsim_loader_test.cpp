@@ -72,6 +72,26 @@ TEST(InvSimLoader, ReportsEveryErrorWithItsKeyPath) {
   EXPECT_TRUE(has_error_at(faults, "faults.2")) << format_errors(faults.errors);
 }
 
+// pulses.reading is smooth unless the file says otherwise; `paper` reads its own block; an unknown
+// reading is named with its key and the allowed values; the paper reading needs its block.
+TEST(InvSimLoader, ReadingIsSmoothByDefaultAndValidated) {
+  const InvSimLoadResult shipped = load_invsim_file(kScenario);
+  ASSERT_TRUE(shipped.errors.empty()) << format_errors(shipped.errors);
+  EXPECT_EQ(shipped.params->pulses.reading, model::InvSimReading::kSmooth);
+  const InvSimLoadResult paper = load_invsim_file(
+      kScenario, {"pulses.reading=paper", "pulses.paper.pulse_width_s=0.05",
+                  "pulses.paper.state_weights=[1, 1, 1, 2, 3, 4]"});
+  ASSERT_TRUE(paper.errors.empty()) << format_errors(paper.errors);
+  EXPECT_EQ(paper.params->pulses.reading, model::InvSimReading::kPaper);
+  EXPECT_EQ(paper.params->pulses.paper.pulse_width_s, 0.05);
+  EXPECT_EQ(paper.params->pulses.paper.state_weights[5], 4.0);
+  const InvSimLoadResult bad = load_invsim_file(kScenario, {"pulses.reading=chatter", "pulses.paper.pulse_width_s=0"});
+  ASSERT_TRUE(has_error_at(bad, "pulses.reading")) << format_errors(bad.errors);
+  EXPECT_TRUE(has_error_at(bad, "pulses.paper.pulse_width_s")) << format_errors(bad.errors);
+  const std::string text = format_errors(bad.errors);
+  EXPECT_NE(text.find("must be smooth or paper (got 'chatter')"), std::string::npos) << text;
+}
+
 // A layout that cannot push along an axis is rejected before any run.
 TEST(InvSimLoader, RejectsAGroupThatDoesNotPushAlongItsAxis) {
   const InvSimLoadResult r = load_invsim_file(
