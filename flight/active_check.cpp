@@ -14,6 +14,7 @@ ActiveCheckParams make_active_check_params(const model::Scenario& scenario) {
       .pulse_fraction = s.pulse_s / scenario.control_period_s,
       .informative_fraction = s.informative_on_time_s / scenario.control_period_s,
       .keep_quiet_range_m = s.keep_quiet_range_m,
+      .arm_range_m = s.arm_range_m,
   };
 }
 
@@ -28,6 +29,9 @@ std::vector<std::string> validate(const ActiveCheckParams& p) {
                                    p.pulse_fraction, p.informative_fraction));
   if (!(p.keep_quiet_range_m >= 0))
     problems.push_back(fmt::format("keep_quiet_range_m must be >= 0 (got {})", p.keep_quiet_range_m));
+  if (!(p.arm_range_m > p.keep_quiet_range_m))
+    problems.push_back(fmt::format("arm_range_m must be > keep_quiet_range_m = {} (got {})", p.keep_quiet_range_m,
+                                   p.arm_range_m));
   return problems;
 }
 
@@ -60,6 +64,7 @@ int step_active_check(const ActiveCheckParams& p, ActiveCheckState& state, const
     }
   }
   if (in.range_m < p.keep_quiet_range_m) return state.next;  // the keep-quiet zone: no check
+  if (in.range_m > p.arm_range_m) return state.next;         // not yet armed
   if (stalest != model::kNoThruster && in.t_s - stalest_verified_s >= p.max_unverified_s) state.next = stalest;
   return state.next;
 }

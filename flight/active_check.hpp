@@ -9,13 +9,15 @@
 //   stale_i(t) = t - verified_i,   i in the active mask.
 //
 // When the stalest exceeds max_unverified_s, and the estimated range to the target is at least
-// keep_quiet_range_m, the next period's allocation gives that one thruster the floor
+// keep_quiet_range_m (and at most arm_range_m: checks kept for the last approach, before the phase
+// that needs every thruster), the next period's allocation gives that one thruster the floor
 // pulse_s / T >= informative_on_time_s / T on its on-time (allocate_thrusters_floored): the others
 // cancel its force and torque, so the commanded wrench is unchanged and the check costs only
 // propellant. The FDI sees the pulse
 // through the ordinary on-time command; a thruster that does not deliver it leaves a deficit.
 // One thruster at a time; checking resets its clock, so the stale ones take turns, stalest first.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,7 @@ struct ActiveCheckParams {
   double pulse_fraction = 0.05;     // [-] pulse_s / T: a check's floor on the on-time
   double informative_fraction = 0.05;  // [-] informative_on_time_s / T, at most pulse_fraction
   double keep_quiet_range_m = 2.0;  // [m] no check closer to the target than this (estimated range)
+  double arm_range_m = std::numeric_limits<double>::infinity();  // [m] and none farther than this
 };
 
 ActiveCheckParams make_active_check_params(const model::Scenario& scenario);

@@ -88,6 +88,7 @@ void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
   r.number("informative_on_time_s", Range::positive(), out.informative_on_time_s);
   r.number("pulse_s", Range::positive(), out.pulse_s);
   r.number("keep_quiet_range_m", Range::non_negative(), out.keep_quiet_range_m);
+  if (r.has("arm_range_m")) r.number("arm_range_m", Range::positive(), out.arm_range_m);
 }
 
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {

@@ -99,6 +99,10 @@ void check_active_check(Diagnostics& d, const model::Scenario& s, double period)
   if (d.clean(bound) && a.max_unverified_s < period)
     d.add(bound, fmt::format("must be >= control_period_s = {} (got {})", format_number(period),
                              format_number(a.max_unverified_s)));
+  const char* arm = "fdi.active_check.arm_range_m";
+  if (d.clean(arm) && d.clean("fdi.active_check.keep_quiet_range_m") && !(a.arm_range_m > a.keep_quiet_range_m))
+    d.add(arm, fmt::format("must be > keep_quiet_range_m = {} (got {})", format_number(a.keep_quiet_range_m),
+                           format_number(a.arm_range_m)));
 }
 
 void check_timing(const model::Scenario& s, Diagnostics& d) {

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of the thruster fault detection, isolation and recovery (Fonod 2015, sections IV-V).
 #include <array>
+#include <limits>
 
 namespace chaser::model {
 
@@ -56,6 +57,9 @@ struct ActiveCheckParams {
   double informative_on_time_s = 0.005;  // [s] a commanded on-time this long or longer is informative
   double pulse_s = 0.0075;          // [s] a check's on-time (at least informative_on_time_s)
   double keep_quiet_range_m = 2.0;  // [m] no check while the estimated range to the target is below this
+  // [m] checks only once the estimated range is at most this: a check just before the final phase
+  // that needs every thruster, instead of all along the approach (infinity: all along; docs/fdi.md)
+  double arm_range_m = std::numeric_limits<double>::infinity();
 };
 
 enum class RecoveryPolicy {

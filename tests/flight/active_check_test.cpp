@@ -89,6 +89,22 @@ TEST(ActiveCheck, NoCheckInTheKeepQuietZone) {
   EXPECT_EQ(step(p, s, 50.2, command({}), kBranchA, 2.0), 0);
 }
 
+// With arm_range_m, checks wait for the last approach: none farther than it (the stale thruster
+// stays stale, its clock running), the stalest at once on entering the window, none in the
+// keep-quiet zone inside it; and arm_range_m must lie beyond the keep-quiet range.
+TEST(ActiveCheck, ArmedOnlyWithinTheArmRange) {
+  ActiveCheckParams p = params();
+  p.arm_range_m = 3.0;
+  ActiveCheckState s;
+  step(p, s, 0.0, command({}));
+  EXPECT_EQ(step(p, s, 50.0, command({}), kBranchA, 3.001), model::kNoThruster);
+  EXPECT_EQ(step(p, s, 50.1, command({}), kBranchA, 3.0), 0);
+  EXPECT_EQ(step(p, s, 50.2, command({0}), kBranchA, 2.5), 1);  // T1 fired its check: T2 next
+  EXPECT_EQ(step(p, s, 50.3, command({}), kBranchA, 1.9), model::kNoThruster);
+  p.arm_range_m = p.keep_quiet_range_m;
+  EXPECT_EQ(validate(p).size(), 1U);
+}
+
 // Disabled, nothing is ever chosen.
 TEST(ActiveCheck, DisabledChecksNothing) {
   ActiveCheckParams p = params();

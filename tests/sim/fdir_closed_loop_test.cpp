@@ -2,6 +2,8 @@
 // its own): detection of a stuck-open thruster, the fault the paper detects fastest.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <tuple>
 
 #include "flight/flight_software.hpp"
@@ -128,6 +130,34 @@ TEST(FdirClosedLoop, ActiveChecksFindAStuckClosedDormantThrusterWithin30s) {
   EXPECT_GE(active.fdir.detection_s, 1000.0);
   EXPECT_LE(active.fdir.detection_s, 1030.0);
   EXPECT_EQ(active.fdir.isolated_thruster, 3);
+}
+
+// Armed only for the last approach (arm_range_m 3: MSR reaches 3 m at about 1,005 s and the 2 m
+// keep-quiet range at 1,063 s), the checks find the same fault (the window opens after its onset)
+// and, over the fault-free approach, fire only inside the window: far fewer than all along.
+TEST(FdirClosedLoop, ArmedChecksWaitForTheLastApproach) {
+  model::Scenario scenario = msr_without_recovery();
+  scenario.duration_s = 1060.0;
+  scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckClosed, .thruster = 3, .onset_s = 1000.0}};
+  scenario.fdi.active_check = {.enabled = true, .max_unverified_s = 25.0, .informative_on_time_s = 0.005,
+                               .pulse_s = 0.0075, .keep_quiet_range_m = 2.0, .arm_range_m = 3.0};
+  const RunResult armed = run_scenario(scenario);
+  EXPECT_GT(armed.active_checks, 0);
+  EXPECT_GE(armed.fdir.detection_s, 1000.0);
+  EXPECT_LE(armed.fdir.detection_s, 1030.0);
+  EXPECT_EQ(armed.fdir.isolated_thruster, 3);
+
+  scenario.faults.clear();
+  scenario.duration_s = 1200.0;
+  const RunResult quiet = run_scenario(scenario);
+  scenario.fdi.active_check.arm_range_m = std::numeric_limits<double>::infinity();
+  const RunResult all_along = run_scenario(scenario);
+  EXPECT_EQ(quiet.fdir.detection_s, -1.0);
+  EXPECT_TRUE(quiet.figures.capture_achieved);
+  // 58 s of window: each of the 8 at most 3 times (0, 25, 50 s after it opens).
+  EXPECT_GT(quiet.active_checks, 0);
+  EXPECT_LE(quiet.active_checks, 3 * 8);
+  EXPECT_GT(all_along.active_checks, 3 * quiet.active_checks);
 }
 
 // The checks themselves raise no alarm over the whole fault-free approach, and the chaser still
