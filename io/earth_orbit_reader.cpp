@@ -76,6 +76,25 @@ void read_spin_case(MapReader& r, model::SpinCase& out) {
     r.diagnostics().add(r.path_of("spin_case"), fmt::format("must be one of given, S1, S2, S3 (got '{}')", text));
 }
 
+// target.body.keep_out (optional): 1 to 4 boxes {centre_target_m, half_extents_m}.
+void read_keep_out(MapReader& r, std::vector<model::KeepOutBox>& out) {
+  if (!r.has("keep_out")) return;
+  const auto list = r.child("keep_out", fmt::format("a list of 1 to {} boxes", model::kMaxKeepOutBoxes));
+  if (!list) return;
+  if (!list->IsSequence() || list->size() < 1 || list->size() > static_cast<std::size_t>(model::kMaxKeepOutBoxes)) {
+    r.diagnostics().add(r.path_of("keep_out"), fmt::format("must be a list of 1 to {} boxes (got {})",
+                                                           model::kMaxKeepOutBoxes, describe_node(*list)));
+    return;
+  }
+  out.assign(list->size(), model::KeepOutBox{});
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    MapReader m((*list)[i], join_path(r.path_of("keep_out"), std::to_string(i)), r.diagnostics());
+    m.vec3("centre_target_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out[i].centre_target_m);
+    m.vec3("half_extents_m", Range::left_open(0.0, kMaxLayoutExtentM), out[i].half_extents_m);
+    m.finish();
+  }
+}
+
 void read_target_body(MapReader& r, model::TargetBodyParams& out) {
   r.number("mass_kg", Range::positive(), out.mass_kg);
   r.mat3("inertia_kgm2", out.inertia_kgm2);
@@ -84,6 +103,7 @@ void read_target_body(MapReader& r, model::TargetBodyParams& out) {
   r.angle_deg("spin_rate_deg_s", Range::closed(0.0, kMaxSpinRateDegps), out.spin_rate_radps);
   r.vec3("grasp_point_target_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.grasp_point_target_m);
   r.vec3("capture_point_target_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.capture_point_target_m);
+  read_keep_out(r, out.keep_out);
 }
 
 }  // namespace

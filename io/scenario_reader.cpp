@@ -46,6 +46,8 @@ void read_chaser(MapReader& r, model::SpacecraftParams& out) {
   r.mat3("inertia_kgm2", out.inertia_kgm2);
   r.vec3("com_body_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.com_body_m);
   r.number("isp_s", Range::positive(), out.isp_s);
+  if (r.has("keep_out_radius_m"))
+    r.number("keep_out_radius_m", Range::closed(0.0, kMaxLayoutExtentM), out.keep_out_radius_m);
   read_optional_slosh(r, out.slosh);
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/constants.hpp"
 #include "core/types.hpp"
+#include "model/keep_out.hpp"
 
 namespace chaser::model {
 
@@ -38,6 +39,8 @@ struct SpacecraftParams {
   Vec3 com_body_m = Vec3::Zero();            // [m] centre of mass from the reference point
   double isp_s = 220.0;                      // [s] specific impulse of the thrusters
   std::optional<SloshParams> slosh;          // propellant slosh (with orbit.earth only)
+  double keep_out_radius_m = 0.0;            // [m] a sphere about the CoM enclosing the chaser, for the
+                                             // target's keep-out clearance (model/keep_out.hpp)
 };
 
 // COMRADE 2018, sec. 7.1: the ENVISAT-like target's spin cases at 2.5 deg/s (docs/scenario.md
@@ -54,6 +57,7 @@ struct TargetBodyParams {
   double spin_rate_radps = 0.0;              // [rad/s] inertial, for spin cases S1-S3
   Vec3 grasp_point_target_m = Vec3::Zero();  // [m] where the gripper takes hold (target axes, from its CoM)
   Vec3 capture_point_target_m = Vec3::Zero();  // [m] where the chaser's CoM holds for capture
+  std::vector<KeepOutBox> keep_out;           // the target's keep-out volume; empty: not checked
 };
 
 // Passive target: its attitude turns at a constant inertial rate (a slow tumble, or zero), or,
