@@ -1,0 +1,38 @@
+#pragma once
+// The synchronised reference (issue 18; COMRADE 2018's synchronisation phase): once the chaser's
+// rotation is synchronised with the tumbling target's, its reference is a point of the target's
+// frame, moved from where the synchronisation started to the capture point and then held there,
+// turning with the target:
+//
+//   p(t) = p_start + (p_capture - p_start) s(tau),  tau = (t - start_s) / duration_s in [0, 1],
+//   s(tau) = 10 tau^3 - 15 tau^4 + 6 tau^5   (rest to rest: s' = s'' = 0 at both ends),
+//
+// seen in LVLH through the target's estimated motion (flight/target_frame.hpp), and the attitude
+// q_inertial_from_body = q_inertial_from_target (x) q_target_from_body, its rate the target's in
+// body axes. Before start_s the point is p_start (a hold in the target frame), after the end
+// p_capture. The jerk is left at zero: the feed-forward's mid-period term it feeds is ~w^3 |r| T/2,
+// 3e-5 m/s^2 at ENVISAT's 2.5 deg/s and 7 m, against an authority of 0.055 m/s^2.
+// Not built yet: the phases before it (V-bar, fly-around to the angular-momentum axis, approach
+// along it, the rotation's synchronisation), and the wiring into the flight software.
+#include "core/types.hpp"
+#include "flight/guidance.hpp"
+#include "flight/target_estimator.hpp"
+#include "model/target_orbit.hpp"
+
+namespace chaser::flight {
+
+struct SyncTransferParams {
+  Vec3 start_target_m = Vec3::Zero();    // [m] p_start, target axes from its CoM
+  Vec3 capture_target_m = Vec3::Zero();  // [m] p_capture (target.body.capture_point_target_m)
+  double start_s = 0.0;                  // [s]
+  double duration_s = 1.0;               // [s] > 0
+  Quat q_target_from_body = Quat::Identity();  // the chaser's attitude in the target's frame
+};
+
+// s(tau), s'(tau), s''(tau) of the quintic rest-to-rest profile, tau clamped to [0, 1].
+Eigen::Vector3d rest_to_rest_quintic(double tau);
+
+GuidanceRef sync_reference(const SyncTransferParams& params, const TargetEstimate& target, const model::LvlhFrame& lvlh,
+                           double t_s);
+
+}  // namespace chaser::flight
