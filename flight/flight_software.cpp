@@ -4,6 +4,20 @@
 
 namespace chaser::flight {
 
+namespace {
+
+// The estimator flies with a pose sensor and a rigid-body target (its inertia is the model's).
+std::optional<TargetEstimatorParams> make_target_estimator_params(const model::Scenario& scenario) {
+  if (!scenario.sensors.target_pose || !scenario.target.body) return std::nullopt;
+  return TargetEstimatorParams{
+      .inertia_kgm2 = scenario.target.body->inertia_kgm2,
+      .torque_noise_Nm = scenario.navigation.target_torque_noise_Nm,
+      .attitude_noise_rad = scenario.sensors.target_pose->attitude_noise_rad,
+  };
+}
+
+}  // namespace
+
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
       .orbit = model::TargetOrbit(scenario.orbit),
@@ -13,6 +27,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .position = make_position_control(scenario),
       .attitude = make_attitude_control(scenario),
       .hinf = make_hinf_control(scenario),
+      .target_estimator = make_target_estimator_params(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
@@ -27,10 +42,17 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     state.navigation = init_nav(params.navigation, meas);
     state.thrusters = model::initial_configuration(params.management.thrusters);
     set_active_thrusters(params.management, state.management, state.thrusters.active);
+    if (params.target_estimator) state.target.emplace(*params.target_estimator);
     state.initialised = true;
   }
   const double t_s = to_seconds(meas.t);
   out.estimate = step_nav(params.navigation, state.navigation, meas, state.force_cmd_lvlh_N_prev);
+  if (state.target) {  // the pose in the chaser's body, turned into inertial by the attitude estimate
+    if (meas.target_pose.valid)
+      state.target->update(meas.target_pose.taken_s,
+                           out.estimate.q_inertial_from_body * meas.target_pose.q_body_from_target);
+    if (state.target->initialised()) out.target = state.target->predict(t_s);
+  }
   const model::LvlhFrame lvlh = params.orbit.lvlh_at(t_s);
   out.reference = guidance_reference(params.guidance, t_s, lvlh);
   if (params.hinf.enabled) {

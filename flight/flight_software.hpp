@@ -3,6 +3,7 @@
 // navigation -> guidance -> position and attitude control -> TMU -> TMF. It sees only sensor
 // measurements and its own commands, never the truth.
 #include <array>
+#include <optional>
 
 #include "core/time.hpp"
 #include "flight/active_check.hpp"
@@ -10,6 +11,7 @@
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
 #include "flight/hinf_control.hpp"
+#include "flight/target_estimator.hpp"
 #include "flight/modulation.hpp"
 #include "flight/navigation.hpp"
 #include "flight/position_control.hpp"
@@ -29,6 +31,8 @@ struct FlightParams {
   PositionControlParams position;
   AttitudeControlParams attitude;
   HinfControlParams hinf;  // enabled: flies instead of the LQR pair (control.law: hinf)
+  // The target's attitude estimator: with a target pose sensor and a rigid-body target.
+  std::optional<TargetEstimatorParams> target_estimator;
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
@@ -43,6 +47,7 @@ struct FlightState {
   NavState navigation;
   TmuState tmu;
   HinfControlState hinf;
+  std::optional<TargetEstimator> target;      // with FlightParams::target_estimator
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
   FdirState fdir;
   model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting
@@ -65,6 +70,8 @@ struct FlightOutput {
   FdirOutput fdir;                           // both FDI schemes, event resolution
   bool recovered_now = false;                // a recovery changed the active set this period
   int checked_thruster = model::kNoThruster; // index of the thruster whose test pulse the command carries
+  std::optional<TargetEstimate> target;      // the target's estimated attitude and rate at this period
+                                             // (once the first pose has arrived)
 };
 
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas);

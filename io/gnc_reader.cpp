@@ -9,6 +9,8 @@ void read_navigation(MapReader& r, model::NavigationParams& out) {
   r.number("position_process_noise_mps2", Range::non_negative(), out.position_process_noise_mps2);
   r.number("attitude_gain", Range::left_open(0.0, 1.0), out.attitude_gain);
   r.number("gyro_bias_gain", Range::non_negative(), out.gyro_bias_gain);
+  if (r.has("target_torque_noise_Nm"))
+    r.number("target_torque_noise_Nm", Range::left_open(0.0, 1e6), out.target_torque_noise_Nm);
 }
 
 // Distances and durations against each other are checked in validate_scenario.

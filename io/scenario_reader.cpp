@@ -86,6 +86,14 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
   read_section(r, "propellant", [&](MapReader& m) {
     m.number("noise_sigma_kg", Range::non_negative(), out.propellant.noise_sigma_kg);
   });
+  if (r.has("target_pose")) {  // optional; its period and latency against the control period in validate_scenario
+    out.target_pose.emplace();
+    read_section(r, "target_pose", [&](MapReader& m) {
+      m.number("period_s", Range::left_open(0.0, 10.0), out.target_pose->period_s);
+      m.angle_deg("attitude_noise_deg", Range::closed(0.0, 30.0), out.target_pose->attitude_noise_rad);
+      m.number("latency_s", Range::non_negative(), out.target_pose->latency_s);
+    });
+  }
 }
 
 }  // namespace chaser::io

@@ -134,6 +134,16 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
                                                 format_number(s.fdi.design_delay_max_s)));
   check_deficit_windows(d, s.fdi.deficit, period);
   check_active_check(d, s, period);
+  if (s.sensors.target_pose) {  // sampled at control periods, delivered before the next sample
+    const model::TargetPoseSensorParams& pose = *s.sensors.target_pose;
+    if (d.clean("sensors.target_pose.period_s") && pose.period_s < period)
+      d.add("sensors.target_pose.period_s", fmt::format("must be in [control_period_s = {}, 10] (got {})",
+                                                        format_number(period), format_number(pose.period_s)));
+    if (d.clean("sensors.target_pose.latency_s") && d.clean("sensors.target_pose.period_s") &&
+        pose.latency_s >= pose.period_s)
+      d.add("sensors.target_pose.latency_s", fmt::format("must be in [0, period_s = {}) (got {})",
+                                                         format_number(pose.period_s), format_number(pose.latency_s)));
+  }
 }
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy

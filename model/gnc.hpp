@@ -15,6 +15,9 @@ struct NavigationParams {
   // Attitude complementary filter: star-tracker correction gain per period and gyro-bias gain.
   double attitude_gain = 0.1;                  // [-] fraction of the attitude error removed per period
   double gyro_bias_gain = 0.001;               // [1/s] gyro-bias estimate gain
+  // The target attitude estimator's torque noise (flight/target_estimator.hpp): what its torque-free
+  // model leaves out, gravity gradient first (ENVISAT: up to ~0.4 N m), as white noise.
+  double target_torque_noise_Nm = 1.0;         // [N m / sqrt(s)]
 };
 
 // Forced straight-line approach along approach_axis_lvlh towards the target (Fonod 2015, Fig. 5).

@@ -8,6 +8,13 @@
 
 namespace chaser::model {
 
+// A target pose sample (model::TargetPoseSensorParams), delivered after its latency.
+struct TargetPoseMeasurement {
+  bool valid = false;                          // a sample was delivered this period
+  double taken_s = 0;                          // [s] run time the sample was taken
+  Quat q_body_from_target = Quat::Identity();  // the target's attitude in the chaser's body axes
+};
+
 // Plant -> flight: what the sensors deliver at the start of a control period.
 struct SensorMeasurements {
   TimeNs t = 0;                                    // [ns] time of delivery
@@ -15,6 +22,7 @@ struct SensorMeasurements {
   Quat q_inertial_from_body = Quat::Identity();    // star tracker
   Vec3 omega_body_radps = Vec3::Zero();            // gyro
   double propellant_used_kg = 0;                   // [kg] tank gauging: propellant used so far
+  TargetPoseMeasurement target_pose;               // pose sensor, when the scenario has one
 };
 
 // Flight -> plant: commanded on-times for the coming period, by thruster index (0 for the idle

@@ -1,6 +1,8 @@
 #pragma once
 // Sensor specifications. Each sensor adds a constant bias and white Gaussian noise, and delivers its
 // sample a whole number of control periods late (delay_s is validated to be a multiple of T).
+#include <optional>
+
 #include "core/types.hpp"
 #include "model/fdi.hpp"
 
@@ -29,11 +31,21 @@ struct GyroParams {  // chaser body rate omega_body
   double delay_s = 0.0;             // [s]
 };
 
+// A pose sensor on the target (issue 18): the target's attitude relative to the chaser's body, as a
+// camera or LIDAR pose estimate gives it, taken every period_s and delivered latency_s later
+// (COMRADE 2018 gives 3 Hz for the reach phase; we use it from the synchronisation on).
+struct TargetPoseSensorParams {
+  double period_s = 1.0 / 3.0;        // [s] between samples, in [control period, 10]
+  double attitude_noise_rad = 0.0175;  // [rad] 1-sigma per axis, a small rotation in target axes
+  double latency_s = 0.1;             // [s] from taking to delivery, in [0, period_s)
+};
+
 struct SensorParams {
   LidarParams lidar;
   StarTrackerParams star_tracker;
   GyroParams gyro;
   PropellantSensorParams propellant;
+  std::optional<TargetPoseSensorParams> target_pose;  // absent: no pose sensor
 };
 
 }  // namespace chaser::model

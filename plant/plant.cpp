@@ -9,6 +9,7 @@ PlantStreams::PlantStreams(std::uint64_t seed)
       force_noise(seed, "environment/force"),
       torque_noise(seed, "environment/torque"),
       propellant_gauge(seed, "sensors/propellant"),
+      target_pose(seed, "sensors/target_pose"),
       sensors(make_sensor_noise(seed)) {}
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed) {
@@ -63,6 +64,14 @@ model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& sta
                      state.rigid.omega_body_radps, state.streams.sensors);
   meas.propellant_used_kg = state.propellant_used_kg + state.streams.propellant_gauge.normal(
                                                            0.0, params.sensors.propellant.noise_sigma_kg);
+  if (params.sensors.target_pose) {
+    const double t_s = to_seconds(t);
+    const Quat q_inertial_from_target = params.earth ? state.orbit.q_inertial_from_target
+                                                     : target_rotation(params.target, t_s).q_inertial_from_target;
+    meas.target_pose = sample_target_pose(*params.sensors.target_pose, state.sensors, t_s,
+                                          state.rigid.q_inertial_from_body, q_inertial_from_target,
+                                          state.streams.target_pose);
+  }
   return meas;
 }
 

@@ -31,7 +31,7 @@ struct PlantParams {
 
 // Every noise source draws from its own named stream (docs/architecture.md, deterministic randomness).
 struct PlantStreams {
-  RandomStream delay, force_noise, torque_noise, propellant_gauge;
+  RandomStream delay, force_noise, torque_noise, propellant_gauge, target_pose;
   SensorNoise sensors;
   explicit PlantStreams(std::uint64_t seed);
 };

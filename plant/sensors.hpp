@@ -43,7 +43,18 @@ struct SensorState {
   DelayLine<Vec3> lidar_r_lvlh_m;           // [m]
   DelayLine<Quat> star_q_inertial_from_body;
   DelayLine<Vec3> gyro_omega_body_radps;    // [rad/s]
+  // The target pose sensor: its next sample's time and the sample awaiting delivery.
+  double target_pose_next_s = 0.0;         // [s]
+  model::TargetPoseMeasurement target_pose_pending;  // valid: taken, not yet delivered
 };
+
+// The target pose sensor (model::TargetPoseSensorParams) at run time t_s, called once per control
+// period after sample_sensors: takes a sample of the truth when its period has come (the target's
+// attitude in the chaser's body axes, turned by a random small rotation of the noise), and returns
+// the pending one once its latency has passed (invalid otherwise). Allocation-free.
+model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorParams& params, SensorState& state,
+                                                double t_s, const Quat& q_inertial_from_body,
+                                                const Quat& q_inertial_from_target, RandomStream& noise);
 
 // Delays in periods: round(delay_s / T), clamped to [0, kMaxSensorDelayPeriods] (the scenario
 // validator checks both the range and that the delay is a whole number of periods).
