@@ -56,7 +56,9 @@ TEST(LoopMu, InterconnectionIsTheBlockDiagram) {
 // A gain box the grid check finds unstable (up to 1.5 times the gain margin, its centre still
 // stable: mu needs a stable centre) must have a mu bound of at least 1 somewhere: a margin below 1,
 // both for the complex and the mixed bound.
-// A gain box up to half the margin, stable at every grid point, passes the mixed (real-gain) bound.
+// A gain box up to half the margin, stable at every grid point, passes the mixed (real-gain) bound,
+// and not the complex one (measured 0.49): a complex gain of that size destabilises, a real one does
+// not. The complex bound's conservatism for a real parameter, shown.
 TEST(LoopMu, GainBoxAgreesWithTheGridCheck) {
   const AxisDesign d = translation_design();
   const double gm = d.margins.gain_margin_up;
@@ -73,12 +75,13 @@ TEST(LoopMu, GainBoxAgreesWithTheGridCheck) {
   const LoopMu good = loop_mu(d, stable_box);
   ASSERT_TRUE(good.ok()) << good.message;
   EXPECT_GT(good.margin_mixed(), 1.0);
-  EXPECT_LE(good.margin_complex(), good.margin_mixed() * (1.0 + 1e-5));  // the complex bound is the looser
+  EXPECT_LT(good.margin_complex(), 1.0);
 }
 
 // With the gain alone and delta_k real, the exact answer is the classical one: the box k0 (1 +- alpha
 // r_k) reaches the upper or the lower gain margin at alpha = (GM_up / k0 - 1) / r_k or (1 - GM_down /
-// k0) / r_k. A valid bound can only give less; the mixed bound should be close (measured 1e-?).
+// k0) / r_k (here the lower one, at 0.0157 rad/s). A valid bound can only give less; the mixed bound
+// is within 1e-3 (measured 8.70824 against 8.70850), the complex one 10 % below (7.83).
 TEST(LoopMu, MixedGainMarginIsTheClassicalOne) {
   const AxisDesign d = translation_design();
   const LoopMu r = loop_mu(d, gain_box(0.9, 1.1));
@@ -87,12 +90,12 @@ TEST(LoopMu, MixedGainMarginIsTheClassicalOne) {
   const LoopMargins m = loop_margins({delayed_double_integrator(0.0, 0.0), d.synthesis.controller, 0.0625}, 1e-6, 1e3);
   const double exact = std::min((m.gain_margin_up / k0 - 1.0) / rk, (1.0 - m.gain_margin_down / k0) / rk);
   EXPECT_LE(r.margin_mixed(), exact * (1.0 + 1e-5));
-  EXPECT_GE(r.margin_mixed(), 0.9 * exact);
-  EXPECT_LT(r.margin_complex(), r.margin_mixed());
+  EXPECT_GE(r.margin_mixed(), exact * (1.0 - 1e-3));
+  EXPECT_LT(r.margin_complex(), 0.95 * r.margin_mixed());
 }
 
 // With the delay alone: the covering disk is conservative, so alpha Delta_tau may not pass the
-// exact delay margin of the centre loop.
+// exact delay margin of the centre loop (measured 10.67 s against 13.10 s).
 TEST(LoopMu, DelayBoxIsInsideTheDelayMargin) {
   const AxisDesign d = translation_design();
   const AxisUncertainty box{.gain_lo = 1.0, .gain_hi = 1.0, .delay_lo_s = 0.0525, .delay_hi_s = 0.0725, .modes = {}};
