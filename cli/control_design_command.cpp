@@ -163,7 +163,10 @@ nlohmann::json mu_json(const control::LoopMu& r) {
           {"mu_mixed", r.mu_mixed}};
 }
 
-std::string factor_text(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "inf"; }
+std::string factor_text(double x) {
+  if (!std::isfinite(x)) return "inf";
+  return x < 1e3 ? fmt::format("{:.2f}", x) : fmt::format("{:.3g}", x);
+}
 
 void print_mu_table(const control::SixAxisDesign& design) {
   std::cout << "\nStructured singular value (SLICOT AB13MD upper bound) of each loop's gain x delay LFT; the modes are "

@@ -52,14 +52,26 @@ void refine_peak(const std::vector<double>& grid, const std::vector<double>& val
   const double r = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = b - r * (b - a), x2 = a + r * (b - a), f1 = f(std::exp(x1)), f2 = f(std::exp(x2));
   for (int k = 0; k < kMaxGoldenSteps && b - a > kPeakLogTolerance; ++k) {
-    if (f1 > f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - r * (b - a), f1 = f(std::exp(x1));
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + r * (b - a), f2 = f(std::exp(x2));
+    if (f1 > f2) {  // the peak lies in [a, x2]
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - r * (b - a);
+      f1 = f(std::exp(x1));
+    } else {  // in [x1, b]
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + r * (b - a);
+      f2 = f(std::exp(x2));
     }
   }
-  for (const auto& [x, fx] : {std::pair{x1, f1}, std::pair{x2, f2}})
-    if (fx > peak) peak = fx, peak_radps = std::exp(x);
+  for (const auto& [x, fx] : {std::pair{x1, f1}, std::pair{x2, f2}}) {
+    if (fx > peak) {
+      peak = fx;
+      peak_radps = std::exp(x);
+    }
+  }
 }
 
 // The closed loop at the box's centre (k0, tau0), the delay as the design's Pade approximation.
