@@ -138,6 +138,56 @@ nlohmann::json robustness_json(const control::AxisUncertainty& box, const contro
           {"max_gain_margin_down", r.max_gain_margin_down}};
 }
 
+// AB13MD's bounds on the loop's gain x delay LFT (control/loop_mu.hpp), with their curves.
+nlohmann::json mu_json(const control::LoopMu& r) {
+  return {{"lft",
+           {{"gain_nominal", r.lft.gain_nominal},
+            {"gain_radius", r.lft.gain_radius},
+            {"delay_nominal_s", r.lft.delay_nominal_s},
+            {"delay_radius_s", r.lft.delay_radius_s}}},
+          {"blocks", "delta_tau complex (delay, covering disk 2 sin(w Delta/2)); delta_k complex or real (gain)"},
+          {"note", "AB13MD upper bound. complex: both blocks complex, conservative for the real gain; mixed: gain "
+                   "real. The modes are left to the grid check."},
+          {"nominal_stable", r.nominal_stable},
+          {"nominal_max_real_pole", r.nominal_max_real_pole},
+          {"status", control::to_string(r.status)},
+          {"message", r.message},
+          {"peak_complex", r.peak_complex},
+          {"peak_complex_radps", r.peak_complex_radps},
+          {"margin_complex", finite_or_null(r.margin_complex())},
+          {"peak_mixed", r.peak_mixed},
+          {"peak_mixed_radps", r.peak_mixed_radps},
+          {"margin_mixed", finite_or_null(r.margin_mixed())},
+          {"omega_radps", r.omega_radps},
+          {"mu_complex", r.mu_complex},
+          {"mu_mixed", r.mu_mixed}};
+}
+
+std::string factor_text(double x) {
+  if (!std::isfinite(x)) return "inf";
+  return x < 1e3 ? fmt::format("{:.2f}", x) : fmt::format("{:.3g}", x);
+}
+
+void print_mu_table(const control::SixAxisDesign& design) {
+  std::cout << "\nStructured singular value (SLICOT AB13MD upper bound) of each loop's gain x delay LFT; the modes are "
+               "left to the grid.\n"
+               "complex: both blocks complex, conservative for the real gain; mixed: the gain real. margin = 1 / peak, "
+               "the factor the box may grow by.\n";
+  std::cout << fmt::format("{:<4} {:>17} {:>17} {:>8} {:>9} {:>9} {:>8} {:>9} {:>9} {:>8}\n", "loop", "gain k0 +- r_k",
+                           "delay s t0 +- D", "nominal", "mu cplx", "at rad/s", "margin", "mu mixed", "at rad/s",
+                           "margin");
+  for (std::size_t k = 0; k < design.axes.size(); ++k) {
+    const control::LoopMu& r = design.mu[k];
+    std::cout << fmt::format("{:<4} {:>7.4f} +- {:<6.4f} {:>7.4f} +- {:<6.4f} {:>8} {:>9.4f} {:>9.3g} {:>8} {:>9.4f} "
+                             "{:>9.3g} {:>8}{}\n",
+                             design.axes[k].spec.name, r.lft.gain_nominal, r.lft.gain_radius, r.lft.delay_nominal_s,
+                             r.lft.delay_radius_s, r.nominal_stable ? "stable" : "UNSTABLE", r.peak_complex,
+                             r.peak_complex_radps, factor_text(r.margin_complex()), r.peak_mixed, r.peak_mixed_radps,
+                             factor_text(r.margin_mixed()),
+                             r.status == control::MuStatus::kOk ? "" : "  " + r.message);
+  }
+}
+
 std::string margin_text(double gain) { return std::isfinite(gain) ? fmt::format("{:.1f} dB", db(gain)) : "inf"; }
 
 std::string axis_row(std::size_t axis, const control::AxisDesign& d) {
@@ -201,7 +251,9 @@ int control_design_command(const ControlDesignArgs& args) {
                                modes.empty() ? "-" : modes, r.points, r.unstable, r.worst_max_real_pole,
                                r.min_phase_margin_deg, margin_text(r.min_gain_margin_up));
       report["axes"][k]["robustness"] = robustness_json(box, r);
+      report["axes"][k]["mu"] = mu_json(design.mu[k]);
     }
+    print_mu_table(design);
     report["robust"] = design.robust();
   }
   if (!args.json_path.empty()) {

@@ -78,6 +78,7 @@ SixAxisDesign design_six_axes(const model::Scenario& scenario) {
   for (std::size_t k = 0; k < specs.size(); ++k) {
     design.boxes[k] = axis_uncertainty(scenario, *box, static_cast<int>(k));
     design.robustness[k] = robust_stability_grid(design.axes[k], design.boxes[k]);
+    design.mu[k] = loop_mu(design.axes[k], design.boxes[k]);
   }
   return design;
 }

@@ -13,11 +13,13 @@
 //    (delay_max / 2: uniform in [0, delay_max), Fonod 2015 eq. 1) and the rise's equivalent delay
 //    (rise_time / 2, plant/thruster_hardware.hpp);
 //  - weights: control.hinf.translation for x, y, z, control.hinf.rotation for rx, ry, rz;
-//  - with control.hinf.robustness, each loop is then checked over its box (robust_stability_grid).
+//  - with control.hinf.robustness, each loop is then checked over its box (robust_stability_grid),
+//    and its gain and delay by AB13MD's mu bound (loop_mu; the modes stay with the grid).
 // Design-time code: allocates.
 #include <array>
 
 #include "control/axis_design.hpp"
+#include "control/loop_mu.hpp"
 #include "control/robustness.hpp"
 #include "model/scenario.hpp"
 
@@ -43,6 +45,7 @@ struct SixAxisDesign {
   bool checked_robustness = false;          // control.hinf.robustness was given
   std::array<AxisUncertainty, 6> boxes;     // when checked
   std::array<RobustnessResult, 6> robustness;
+  std::array<LoopMu, 6> mu;                 // when checked
   bool ok() const;      // every axis synthesised and stable on the true plant
   bool robust() const;  // and, where checked, stable at every grid point
 };

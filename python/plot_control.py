@@ -9,7 +9,12 @@ Reads the JSON that `chaser control design SCENARIO --out DESIGN.json` writes an
     gamma / |W_KS|, with the achieved bandwidth and the |S| peak marked (singular values of a SISO
     loop are its magnitudes);
   - loop.png: the Bode plot of the loop L = G K e^{-s tau}, with the gain crossover and the phase
-    margin, and the phase crossover and the gain margin where there is one.
+    margin, and the phase crossover and the gain margin where there is one;
+  - mu.png (when the design checked control.hinf.robustness): SLICOT AB13MD's upper bound on the
+    structured singular value of each loop's gain x delay LFT over frequency, with its peak and the
+    margin 1 / peak. AB13MD bounds mu for the blocks as given: the "complex" curve lets the gain be
+    complex and is conservative for a real parameter; the "mixed" curve keeps the gain real. The
+    delay enters as a covering complex disk in both; the flexible modes are left to the grid check.
 DIR defaults to the JSON file's folder.
 """
 import argparse
@@ -98,6 +103,46 @@ def plot_loop(design, out):
     plt.close(fig)
 
 
+MU_NOTE = ("AB13MD upper bound. complex: gain and delay blocks complex (conservative for the real gain); "
+           "mixed: gain real. Delay as a covering complex disk; modes left to the grid check.")
+
+
+def plot_mu(design, out):
+    axes = [a for a in designed(design["axes"]) if "mu" in a]
+    if not axes:
+        return False
+    fig, grid = plt.subplots(2, 3, figsize=(15, 8), squeeze=False)
+    for ax, loop in zip(grid.flat, axes):
+        mu = loop["mu"]
+        w = np.asarray(mu["omega_radps"])
+        ax.loglog(w, mu["mu_complex"], label="mu bound, complex blocks")
+        ax.loglog(w, mu["mu_mixed"], "--", label="mu bound, gain real (spikes where L is real)")
+        ax.plot([mu["peak_complex_radps"]], [mu["peak_complex"]], "o", color="C0")
+        ax.plot([mu["peak_mixed_radps"]], [mu["peak_mixed"]], "s", color="C1")
+        ax.axhline(1.0, color="C3", lw=0.8)
+        lft = mu["lft"]
+
+        def margin(key):
+            return "inf" if mu[key] is None else f"{mu[key]:.3g}"
+
+        ax.set_title(f"{loop['axis']}: k {lft['gain_nominal']:.3f} +- {100 * lft['gain_radius']:.1f} %, "
+                     f"tau {lft['delay_nominal_s']:.4f} +- {lft['delay_radius_s']:.4f} s\n"
+                     f"peak {mu['peak_complex']:.3g} (margin {margin('margin_complex')}), "
+                     f"gain real {mu['peak_mixed']:.3g} (margin {margin('margin_mixed')})"
+                     + ("" if mu["nominal_stable"] else "\nNOMINAL LOOP UNSTABLE: mu means nothing"), fontsize=9)
+        ax.set_xlabel("omega [rad/s]")
+        ax.set_ylabel("mu upper bound [-]")
+        ax.set_ylim(1e-4, max(3.0, 2.0 * mu["peak_complex"]))
+        ax.grid(True, which="both", alpha=0.3)
+    grid.flat[0].legend(fontsize=7, loc="upper left")
+    fig.suptitle(f"{design['scenario']}: structured singular value of the gain x delay uncertainty (1 = the box's edge "
+                 f"of guaranteed stability)\n{MU_NOTE}", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out / "mu.png", dpi=110)
+    plt.close(fig)
+    return True
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("design", type=Path)
@@ -110,7 +155,10 @@ def main():
         raise SystemExit(f"{args.design}: no loop was designed (see each axis's status)")
     plot_sensitivity(design, out)
     plot_loop(design, out)
-    print(f"wrote {out / 'sensitivity.png'} and {out / 'loop.png'}")
+    wrote = [out / "sensitivity.png", out / "loop.png"]
+    if plot_mu(design, out):
+        wrote.append(out / "mu.png")
+    print("wrote " + ", ".join(str(p) for p in wrote))
 
 
 if __name__ == "__main__":

@@ -241,6 +241,19 @@ TEST(Cli, ControlDesignChecksSixLoops) {
   EXPECT_EQ(j["axes"][0]["robustness"]["points"], 125);
   EXPECT_EQ(j["axes"][5]["robustness"]["points"], 625);
   for (const auto& axis : j["axes"]) EXPECT_EQ(axis["robustness"]["unstable"], 0) << axis["axis"];
+  // AB13MD's mu bound on each loop's gain x delay box: a nominally stable centre, a curve per loop,
+  // a complex bound at least the mixed (gain real) one, and a box the grid finds stable with room
+  // (docs/control.md, "Structured singular value") guaranteed with room by the bound too.
+  EXPECT_NE(r.output.find("AB13MD"), std::string::npos) << r.output;
+  for (const auto& axis : j["axes"]) {
+    const auto& mu = axis["mu"];
+    EXPECT_EQ(mu["status"], "ok") << axis["axis"];
+    EXPECT_TRUE(mu["nominal_stable"].get<bool>()) << axis["axis"];
+    EXPECT_EQ(mu["mu_complex"].size(), mu["omega_radps"].size());
+    EXPECT_GT(mu["omega_radps"].size(), 100u);
+    EXPECT_GE(mu["peak_complex"].get<double>(), mu["peak_mixed"].get<double>() * (1.0 - 1e-5)) << axis["axis"];
+    EXPECT_GT(mu["margin_complex"].get<double>(), 1.0) << axis["axis"];
+  }
   const auto& attainable = t["sets"][0]["attainable"];
   const double fx = std::min(attainable[0].get<double>(), attainable[1].get<double>());
   EXPECT_NEAR(j["axes"][0]["authority"].get<double>(), fx / 1600.0, 1e-9 * fx);
