@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -174,14 +175,14 @@ void Simulation::step_user(const py::object& flight) {
   const model::SensorMeasurements& meas = sim_->begin_period();
   const double t_s = to_seconds(meas.t);
   const int count = loaded_.scenario.thrusters.count;
-  const std::string at = "flight callback at t = " + std::to_string(t_s) + " s: ";
+  const auto at = [t_s] { return fmt::format("flight callback at t = {:.10g} s: ", t_s); };  // built on an error only
   py::object returned = flight(measurements_dict(meas, sim_->period(), sim_->flight_params().orbit));
 
   std::string form;  // "wrench" or "on_times", when the return says
   if (py::isinstance<py::dict>(returned)) {
     const py::dict d = returned.cast<py::dict>();
     if (d.size() != 1 || !(d.contains("wrench") || d.contains("on_times")))
-      throw py::value_error(at + "a returned dict has one key, 'wrench' or 'on_times'");
+      throw py::value_error(at() + "a returned dict has one key, 'wrench' or 'on_times'");
     form = d.contains("wrench") ? "wrench" : "on_times";
     returned = d[form.c_str()];
   }
@@ -191,28 +192,28 @@ void Simulation::step_user(const py::object& flight) {
   } catch (const py::error_already_set&) {
   }
   if (!values || returned.is_none())
-    throw py::type_error(at + "returned " + py::str(py::type::of(returned)).cast<std::string>() +
+    throw py::type_error(at() + "returned " + py::str(py::type::of(returned)).cast<std::string>() +
                          ", not numbers: a wrench [Fx, Fy, Fz, Cx, Cy, Cz] or on-times of the " +
                          std::to_string(count) + " thrusters");
   const py::ssize_t n = values.ndim() == 1 ? values.shape(0) : -1;
   if (form.empty()) {
     if (n == 6 && count == 6)
-      throw py::value_error(at + "6 values with 6 thrusters is ambiguous: return {'wrench': w} or {'on_times': t}");
+      throw py::value_error(at() + "6 values with 6 thrusters is ambiguous: return {'wrench': w} or {'on_times': t}");
     form = n == 6 ? "wrench" : n == count ? "on_times" : "";
   }
   const py::ssize_t wanted = form == "wrench" ? 6 : count;
   if (form.empty() || n != wanted)
-    throw py::value_error(at + "returned an array of shape " + shape_text(values) +
+    throw py::value_error(at() + "returned an array of shape " + shape_text(values) +
                           (form.empty() ? ": a wrench [Fx, Fy, Fz, Cx, Cy, Cz] (6 values) or on-times of the " +
                                               std::to_string(count) + " thrusters (" + std::to_string(count) + " values)"
                                         : ": " + form + " has " + std::to_string(wanted) + " values"));
   const double* v = values.data();
   for (py::ssize_t i = 0; i < n; ++i) {
     if (!std::isfinite(v[i]))
-      throw py::value_error(at + form + "[" + std::to_string(i) + "] is not finite (" + std::to_string(v[i]) + ")");
+      throw py::value_error(at() + fmt::format("{}[{}] is not finite ({})", form, i, v[i]));
     if (form == "on_times" && !(v[i] >= 0.0 && v[i] <= 1.0))
-      throw py::value_error(at + "on_times[" + std::to_string(i) + "] (T" + std::to_string(i + 1) +
-                            ") must be in [0, 1], a fraction of the period (got " + std::to_string(v[i]) + ")");
+      throw py::value_error(at() + fmt::format("on_times[{}] (T{}) must be in [0, 1], a fraction of the period (got {})",
+                                               i, i + 1, v[i]));
   }
   if (form == "wrench") {
     fly(sim::wrench_flight_output(sim_->flight_params(), sim_->flight_state(), meas, Eigen::Map<const Vec6>(v)));
@@ -232,8 +233,7 @@ void Simulation::inject_fault(const std::string& thruster, const std::string& ki
   const double now = sim_->t_s();
   const double onset = onset_s.value_or(now);
   if (onset < now)
-    throw py::value_error("onset_s: must be >= the simulation's time t = " + std::to_string(now) + " s (got " +
-                          std::to_string(onset) + ")");
+    throw py::value_error(fmt::format("onset_s: must be >= the simulation's time t = {:.10g} s (got {})", now, onset));
   py::dict fault;
   fault["thruster"] = thruster;
   fault["kind"] = kind;
