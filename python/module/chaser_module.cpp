@@ -26,12 +26,6 @@ namespace {
 
 PyObject* scenario_error_type = nullptr;  // chaser.ScenarioError, made once by the module's init
 
-struct RunResult {
-  py::dict summary;    // summary.json's content
-  py::dict telemetry;  // channel name -> float64 array, one value per period
-  std::string report;  // the text `chaser run` prints
-};
-
 Scenario loaded_or_raise(io::LoadResult loaded) {
   if (!loaded.errors.empty()) raise_scenario_error(loaded.errors);
   return Scenario{std::move(*loaded.scenario), std::move(loaded.hash), std::move(loaded.canonical_yaml)};
@@ -97,13 +91,7 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
     throw py::value_error("telemetry: csv, npy or none (got '" + telemetry_format + "')");
   model::Scenario scenario = loaded.scenario;
   if (seed) scenario.seed = *seed;
-  const std::vector<std::string> unmatched =
-      sim::unmatched_patterns(sim::telemetry_channels(sim::telemetry_shape(scenario)), channels);
-  if (!unmatched.empty()) {
-    std::string list;
-    for (const std::string& p : unmatched) list += (list.empty() ? "" : ", ") + p;
-    throw py::value_error("channels: " + list + " match no telemetry channel (names as in telemetry.csv's header)");
-  }
+  check_channels(scenario, channels);
 
   sim::TelemetryRows memory;
   std::string summary_json, report, problem;
@@ -129,10 +117,23 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
     PyErr_SetString(PyExc_OSError, problem.c_str());
     throw py::error_already_set();
   }
-  return RunResult{py::module_::import("json").attr("loads")(summary_json), telemetry_arrays(memory), report};
+  return run_result(summary_json, report, memory);
 }
 
 }  // namespace
+
+RunResult run_result(const std::string& summary_json, std::string report, const sim::TelemetryRows& rows) {
+  return RunResult{py::module_::import("json").attr("loads")(summary_json), telemetry_arrays(rows), std::move(report)};
+}
+
+void check_channels(const model::Scenario& scenario, const std::vector<std::string>& patterns) {
+  const std::vector<std::string> unmatched =
+      sim::unmatched_patterns(sim::telemetry_channels(sim::telemetry_shape(scenario)), patterns);
+  if (unmatched.empty()) return;
+  std::string list;
+  for (const std::string& p : unmatched) list += (list.empty() ? "" : ", ") + p;
+  throw py::value_error("channels: " + list + " match no telemetry channel (names as in telemetry.csv's header)");
+}
 
 // --set strings from a list of "key.path=value", or from a dict {key.path: value} where a str value
 // is YAML text as on the command line and any other value (numbers, booleans, None, lists, dicts)
@@ -221,6 +222,7 @@ PYBIND11_MODULE(chaser, m) {
         "channels keeps the channels matching those patterns (and t_s), in memory and in the file.");
   add_campaign(m);
   add_analyses(m);
+  add_simulation(m);
 }
 
 }  // namespace chaser::python

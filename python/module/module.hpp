@@ -9,6 +9,7 @@
 
 #include "io/scenario_loader.hpp"
 #include "model/scenario.hpp"
+#include "sim/telemetry.hpp"
 
 namespace chaser::python {
 
@@ -20,6 +21,19 @@ struct Scenario {
   std::string hash;            // of the document after overrides, as in summary.json
   std::string canonical_yaml;  // that document, keys sorted
 };
+
+// chaser.RunResult: what chaser.run and chaser.Simulation.result() give.
+struct RunResult {
+  py::dict summary;    // summary.json's content
+  py::dict telemetry;  // channel name -> float64 array, one value per period
+  std::string report;  // the text `chaser run` prints
+};
+
+// A RunResult from summary.json's text, the report and the rows recorded in memory.
+RunResult run_result(const std::string& summary_json, std::string report, const sim::TelemetryRows& rows);
+
+// Raises ValueError naming the channel patterns that match no telemetry channel of the scenario.
+void check_channels(const model::Scenario& scenario, const std::vector<std::string>& patterns);
 
 // chaser.ScenarioError with every problem: .errors the (key path, message) pairs, str() the lines
 // of io::format_errors, as the command line prints them.
@@ -41,5 +55,6 @@ py::object json_to_python(const nlohmann::json& value);
 
 void add_campaign(py::module_& m);  // campaign.cpp
 void add_analyses(py::module_& m);  // analyses.cpp: thrusters, fdi_design, fmea
+void add_simulation(py::module_& m);  // simulation.cpp: chaser.Simulation
 
 }  // namespace chaser::python

@@ -1,0 +1,205 @@
+#include "sim/simulation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/rotation.hpp"
+#include "plant/target.hpp"
+
+namespace chaser::sim {
+
+namespace {
+
+// The chaser's truth at t = 0: on the approach axis at the start distance, at rest and pointing at
+// the target, unless the scenario gives the state explicitly.
+plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrbit& orbit) {
+  const model::InitialState& init = s.initial;
+  plant::RigidState x{};
+  x.mass_kg = s.chaser.mass_kg;
+  if (init.use_guidance_start) {
+    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, orbit, 0.0);
+    x.r_lvlh_m = ref.r_lvlh_m;
+    x.v_lvlh_mps = ref.v_lvlh_mps;
+    x.q_inertial_from_body = ref.q_inertial_from_body;
+    x.omega_body_radps = ref.omega_body_radps;
+  } else {
+    x.r_lvlh_m = init.r_lvlh_m;
+    x.v_lvlh_mps = init.v_lvlh_mps;
+    x.q_inertial_from_body = orbit.q_inertial_from_lvlh(0.0) * init.q_lvlh_from_body;
+    x.omega_body_radps = init.omega_body_radps;
+  }
+  return x;
+}
+
+MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const plant::RigidState& x,
+                             const flight::GuidanceRef& ref) {
+  return MonitorSample{
+      .t_s = t_s,
+      .r_lvlh_m = x.r_lvlh_m,
+      .v_lvlh_mps = x.v_lvlh_mps,
+      .q_inertial_from_body = x.q_inertial_from_body,
+      .r_ref_lvlh_m = ref.r_lvlh_m,
+      .v_ref_lvlh_mps = ref.v_lvlh_mps,
+      .q_ref_inertial_from_body = ref.q_inertial_from_body,
+      .q_inertial_from_lvlh = q_inertial_from_lvlh,
+  };
+}
+
+SchemeResult scheme_result(bool enabled, const flight::SchemeSummary& s) {
+  SchemeResult r;
+  r.enabled = enabled;
+  r.alarm_s = s.alarm_s;
+  r.isolated_s = s.isolated_s;
+  r.isolated_thruster = s.confirmed;
+  if (s.diagnosis.decided && s.diagnosis.thruster >= 0) {
+    r.diagnosed_kind = s.diagnosis.kind;
+    r.diagnosed_size = s.diagnosis.size;
+    r.estimated_onset_s = s.estimated_onset_s;
+  }
+  return r;
+}
+
+FdirResult episode_result(const flight::FlightParams& p, const flight::FdirEpisode& e) {
+  FdirResult r{
+      .position = scheme_result(p.fdir.position_enabled, e.position),
+      .attitude = scheme_result(p.fdir.attitude_enabled, e.attitude),
+      .deficit = scheme_result(p.fdir.deficit_detection, e.detector),
+      .recovery_s = e.recovery_s,
+      .recovered_thruster = e.recovered_thruster,
+      .episodes = {},
+  };
+  for (const SchemeResult* scheme : {&r.position, &r.attitude, &r.deficit}) {
+    if (scheme->alarm_s >= 0 && (r.detection_s < 0 || scheme->alarm_s < r.detection_s)) r.detection_s = scheme->alarm_s;
+    if (scheme->isolated_s >= 0 && (r.isolation_s < 0 || scheme->isolated_s < r.isolation_s))
+      r.isolation_s = scheme->isolated_s, r.isolated_thruster = scheme->isolated_thruster;
+  }
+  return r;
+}
+
+// The first diagnosis (ended by a recovery, or still running) as the run's FDIR result, and every
+// diagnosis in order as its episodes.
+FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState& s) {
+  const flight::FdirState& f = s.fdir;
+  std::vector<FdirResult> episodes;
+  for (int i = 0; i < f.episode_count; ++i) episodes.push_back(episode_result(p, f.episodes[static_cast<std::size_t>(i)]));
+  if (f.armed) episodes.push_back(episode_result(p, flight::current_episode(p.fdir, f)));
+  FdirResult r = episodes.empty() ? episode_result(p, flight::current_episode(p.fdir, f)) : episodes.front();
+  r.episodes = std::move(episodes);
+  return r;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams& flight_params,
+                       const RunOptions& options)
+    : wall_start_(std::chrono::steady_clock::now()),
+      scenario_(truth),
+      flight_params_(flight_params),
+      options_(options),
+      orbit_(truth.orbit),
+      period_ns_(from_seconds(truth.control_period_s)),
+      periods_(from_seconds(truth.duration_s) / period_ns_),
+      shape_(telemetry_shape(truth)),
+      plant_(plant::make_plant(truth, initial_truth(truth, orbit_), truth.seed)),
+      memory_(options.telemetry_rows),
+      every_channel_(options.telemetry_channels.empty()) {  // the whole table, record_every_channel
+  if (!options_.telemetry_path.empty() || memory_) {
+    channels_ = select_channels(telemetry_channels(shape_), options_.telemetry_channels);
+    if (!options_.telemetry_path.empty())
+      telemetry_ = std::make_unique<TelemetryWriter>(options_.telemetry_path, channel_names(channels_));
+    if (memory_) {  // room for every row now: the loop allocates nothing
+      *memory_ = TelemetryRows{.channels = channel_names(channels_), .values = {}};
+      memory_->values.reserve(static_cast<std::size_t>(periods_) * channels_.size());
+    }
+  }
+  recording_ = telemetry_ || memory_;
+  loop_start_ = std::chrono::steady_clock::now();
+  if (options_.record_glr_per_second)
+    result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {0.0f, 0.0f, 0.0f});
+  done_ = periods_ <= 0;
+}
+
+Simulation::~Simulation() = default;
+
+const model::SensorMeasurements& Simulation::begin_period() {
+  if (begun_) return measurements_;
+  begun_ = true;
+  truth_ = plant_.state.rigid;
+  measurements_ = plant::sense_plant(plant_.params, plant_.state, k_ * period_ns_);
+  // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
+  watched_ = recording_ && !flight_params_.fdir.watched.empty() && flight_state_.fdir.watched >= 0
+                 ? flight::watched_set(flight_params_.fdir, flight_state_.fdir)
+                 : flight::fdi::WatchedSet{};
+  return measurements_;
+}
+
+void Simulation::end_period(const flight::FlightOutput& out) {
+  const TimeNs t_k = k_ * period_ns_;
+  const double t_s = to_seconds(t_k);
+  const MonitorSample sample =
+      monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference);
+  // The target's attitude and rate and the slosh at t_k, for telemetry, before the plant steps past them.
+  const plant::TargetRotation target = recording_ ? plant::target_rotation(plant_, t_s) : plant::TargetRotation{};
+  std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
+  if (shape_.slosh_tanks > 0 && recording_) slosh = plant_.state.orbit.slosh;
+  begun_ = false;
+  if (!monitor_period(scenario_, sample, result_.figures)) {
+    done_ = true;
+    return;
+  }
+  plant::step_plant(plant_.params, plant_.state, out.command, t_k);
+
+  result_.infeasible_allocations += !out.allocation_feasible;
+  result_.active_checks += out.checked_thruster != model::kNoThruster;
+  if (options_.record_glr_per_second) {
+    std::array<float, 3>& second = result_.glr_max_per_s[static_cast<std::size_t>(t_s)];
+    second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr.value()));
+    second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
+    second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
+  }
+  if (memory_ || (telemetry_ && telemetry_->ok())) {
+    const PeriodRecord record{
+        .t_s = t_s,
+        .truth = &truth_,
+        .plant = &plant_.state,
+        .flight = &out,
+        .flight_state = &flight_state_,
+        .watched = &watched_,
+        .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth_.q_inertial_from_body),
+        .q_inertial_from_target = target.q_inertial_from_target,
+        .omega_target_body_radps = target.omega_body_radps,
+        .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks))};
+    double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
+    if (every_channel_) record_every_channel(record, shape_, row);
+    else record_period(channels_, record, row);
+    if (memory_ && telemetry_ && telemetry_->ok()) std::copy_n(row, channels_.size(), telemetry_->new_row().data());
+  }
+  done_ = ++k_ >= periods_;
+}
+
+RunResult Simulation::finish() {
+  const double t_end_s = t_s();
+  const flight::GuidanceRef final_ref = flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
+  monitor_final(scenario_,
+                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant_.state.rigid, final_ref),
+                result_.figures);
+
+  RunResult result = std::move(result_);
+  result.fdir = fdir_result(flight_params_, flight_state_);
+  result.propellant_used_kg = plant_.state.propellant_used_kg;
+  result.simulated_s = t_end_s;
+  result.periods = k_;
+  result.wall_loop_s = seconds_since(loop_start_);
+  const auto files_start = std::chrono::steady_clock::now();
+  result.telemetry_ok = !telemetry_ || telemetry_->finish();  // before wall_s: the user waits for the file
+  result.wall_files_s = seconds_since(files_start);
+  result.wall_s = seconds_since(wall_start_);
+  return result;
+}
+
+}  // namespace chaser::sim

@@ -1,0 +1,93 @@
+#pragma once
+// One closed-loop run as an object that can be advanced period by period (run_scenario flies it to
+// the end; the Python module's chaser.Simulation steps it, reads it, and may fly a period itself).
+// A control period is begin_period (the truth at its start, the sensors' measurements), a flight
+// output computed from those measurements only, and end_period (the mission monitor, the plant's
+// propagation under the command, telemetry). step() is the three with Chaser's flight software.
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "flight/flight_software.hpp"
+#include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
+#include "plant/plant.hpp"
+#include "sim/run.hpp"
+#include "sim/telemetry.hpp"
+#include "sim/telemetry_channels.hpp"
+
+namespace chaser::sim {
+
+class Simulation {
+ public:
+  // The plant from `truth`, flown by flight software built from `flight_params`; options as for
+  // run_scenario (a telemetry file and/or rows in memory, GLR maxima per second). Both references
+  // must outlive the simulation.
+  Simulation(const model::Scenario& truth, const flight::FlightParams& flight_params, const RunOptions& options);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Every period flown, or the monitor stopped the run (diverged); finish() may then be called.
+  bool done() const { return done_; }
+  std::int64_t period() const { return k_; }  // the next period to fly
+  std::int64_t periods() const { return periods_; }
+  double t_s() const { return to_seconds(k_ * period_ns_); }  // [s] its start
+
+  // One period flown by Chaser's flight software.
+  void step() { end_period(flight::step_flight(flight_params_, flight_state_, begin_period())); }
+
+  // The two halves of a period, for a flight output computed elsewhere (sim/user_flight.hpp).
+  // begin_period draws the sensors' noise once per period: called again before end_period (a
+  // flight callback that failed, retried), it returns the same measurements.
+  const model::SensorMeasurements& begin_period();
+  void end_period(const flight::FlightOutput& out);
+
+  // A fault added to the plant's from now on (its onset is not before t_s(), checked by the caller).
+  void add_fault(const model::FaultParams& fault) { plant_.params.faults.push_back(fault); }
+
+  // The end of the run: the final monitor sample, the FDIR's diagnoses, the timings, the telemetry
+  // file finished. Called once, when done().
+  RunResult finish();
+
+  const plant::Plant& plant() const { return plant_; }
+  const flight::FlightParams& flight_params() const { return flight_params_; }
+  flight::FlightState& flight_state() { return flight_state_; }
+
+ private:
+  const std::chrono::steady_clock::time_point wall_start_;
+  const model::Scenario& scenario_;
+  const flight::FlightParams& flight_params_;
+  const RunOptions options_;
+  const model::TargetOrbit orbit_;  // the truth's, for the initial state and the monitor
+  const TimeNs period_ns_;
+  const std::int64_t periods_;
+  const TelemetryShape shape_;
+
+  plant::Plant plant_;
+  flight::FlightState flight_state_;
+
+  // Telemetry: the file's writer, the rows in memory, the channels they hold.
+  std::unique_ptr<TelemetryWriter> telemetry_;
+  TelemetryRows* memory_ = nullptr;
+  std::vector<TelemetryChannel> channels_;
+  bool every_channel_ = true;
+  bool recording_ = false;
+
+  // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
+  plant::RigidState truth_;
+  model::SensorMeasurements measurements_;
+  flight::fdi::WatchedSet watched_;
+
+  RunResult result_;
+  std::chrono::steady_clock::time_point loop_start_;
+  std::int64_t k_ = 0;
+  bool begun_ = false;  // begin_period has sensed period k_
+  bool done_ = false;
+
+  void record(const flight::FlightOutput& out, double t_s);
+};
+
+}  // namespace chaser::sim
