@@ -22,7 +22,7 @@ struct SensorMeasurements {
   Quat q_inertial_from_body = Quat::Identity();    // star tracker
   Vec3 omega_body_radps = Vec3::Zero();            // gyro
   double propellant_used_kg = 0;                   // [kg] tank gauging: propellant used so far
-  TargetPoseMeasurement target_pose;               // pose sensor, when the scenario has one
+  TargetPoseMeasurement target_pose{};             // pose sensor, when the scenario has one
 };
 
 // Flight -> plant: commanded on-times for the coming period, by thruster index (0 for the idle
