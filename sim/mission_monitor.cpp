@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/rotation.hpp"
+#include "model/keep_out.hpp"
 
 namespace chaser::sim {
 
@@ -16,6 +17,10 @@ bool finite(const MonitorSample& s) {
 }
 
 }  // namespace
+
+bool checks_keep_out(const model::Scenario& scenario) {
+  return scenario.target.body && !scenario.target.body->keep_out.empty();
+}
 
 bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
   if (!finite(s) || s.r_lvlh_m.norm() > kDivergedDistance_m) {
@@ -42,6 +47,15 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
   const double attitude_error = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
   f.max_attitude_error_rad = std::max(f.max_attitude_error_rad, attitude_error);
   f.max_position_error_m = std::max(f.max_position_error_m, (s.r_lvlh_m - s.r_ref_lvlh_m).norm());
+  if (checks_keep_out(scenario)) {  // the chaser's CoM in the target's axes, from its CoM
+    const Vec3 p_target_m = s.q_inertial_from_target.conjugate() * (s.q_inertial_from_lvlh * s.r_lvlh_m);
+    const double clearance_m =
+        model::keep_out_distance_m(scenario.target.body->keep_out, p_target_m) - scenario.chaser.keep_out_radius_m;
+    if (clearance_m < f.min_target_clearance_m) {
+      f.min_target_clearance_m = clearance_m;
+      f.min_target_clearance_at_s = s.t_s;
+    }
+  }
   return true;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The run's figures of merit, judged on the truth: corridor, target in view, attitude error against
 // the guidance reference, and capture at the end of the run.
+#include <limits>
+
 #include "core/types.hpp"
 #include "model/scenario.hpp"
 
@@ -17,6 +19,10 @@ struct MissionFigures {
   double final_position_error_m = 0;       // [m] from the capture point at the end
   double final_speed_mps = 0;              // [m/s] relative speed at the end
   double final_attitude_error_rad = 0;     // [rad] at the end
+  // The chaser's clearance from the target's keep-out volume (target.body.keep_out less
+  // chaser.keep_out_radius_m; COMRADE 2018 Table 4), with the volume given.
+  double min_target_clearance_m = std::numeric_limits<double>::infinity();  // [m]
+  double min_target_clearance_at_s = -1;   // [s]
   bool capture_achieved = false;
   bool diverged = false;                   // a state became non-finite or left the bounds
   double diverged_at_s = -1;               // [s]
@@ -30,7 +36,12 @@ struct MonitorSample {
   Vec3 r_ref_lvlh_m, v_ref_lvlh_mps;
   Quat q_ref_inertial_from_body;
   Quat q_inertial_from_lvlh;
+  Quat q_inertial_from_target = Quat::Identity();  // the truth; used with a keep-out volume only
 };
+
+// Whether the scenario's target has a keep-out volume to check (the simulation then supplies
+// MonitorSample::q_inertial_from_target every period).
+bool checks_keep_out(const model::Scenario& scenario);
 
 // Divergence bound: far outside anything a 20 m approach can reach under control.
 inline constexpr double kDivergedDistance_m = 1e4;

@@ -33,7 +33,7 @@ plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrb
 }
 
 MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const plant::RigidState& x,
-                             const flight::GuidanceRef& ref) {
+                             const flight::GuidanceRef& ref, const Quat& q_inertial_from_target = Quat::Identity()) {
   return MonitorSample{
       .t_s = t_s,
       .r_lvlh_m = x.r_lvlh_m,
@@ -43,6 +43,7 @@ MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const
       .v_ref_lvlh_mps = ref.v_lvlh_mps,
       .q_ref_inertial_from_body = ref.q_inertial_from_body,
       .q_inertial_from_lvlh = q_inertial_from_lvlh,
+      .q_inertial_from_target = q_inertial_from_target,
   };
 }
 
@@ -118,6 +119,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
     }
   }
   recording_ = telemetry_ || memory_;
+  keep_out_ = checks_keep_out(scenario_);
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {0.0f, 0.0f, 0.0f});
@@ -141,10 +143,12 @@ const model::SensorMeasurements& Simulation::begin_period() {
 void Simulation::end_period(const flight::FlightOutput& out) {
   const TimeNs t_k = k_ * period_ns_;
   const double t_s = to_seconds(t_k);
-  const MonitorSample sample =
-      monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference);
-  // The target's attitude and rate and the slosh at t_k, for telemetry, before the plant steps past them.
-  const plant::TargetRotation target = recording_ ? plant::target_rotation(plant_, t_s) : plant::TargetRotation{};
+  // The target's attitude and rate and the slosh at t_k, for telemetry and the keep-out check, before
+  // the plant steps past them.
+  const plant::TargetRotation target =
+      recording_ || keep_out_ ? plant::target_rotation(plant_, t_s) : plant::TargetRotation{};
+  const MonitorSample sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_,
+                                              out.reference, target.q_inertial_from_target);
   std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
   if (shape_.slosh_tanks > 0 && recording_) slosh = plant_.state.orbit.slosh;
   begun_ = false;

@@ -75,6 +75,7 @@ class Simulation {
   std::vector<TelemetryChannel> channels_;
   bool every_channel_ = true;
   bool recording_ = false;
+  bool keep_out_ = false;  // the target has a keep-out volume: its attitude is needed every period
 
   // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
   plant::RigidState truth_;

@@ -153,6 +153,8 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"max_line_of_sight_angle_deg", f.max_line_of_sight_angle_rad * kRadToDeg},
       {"max_attitude_error_deg", f.max_attitude_error_rad * kRadToDeg},
       {"max_position_error_m", f.max_position_error_m},
+      {"min_target_clearance_m", checks_keep_out(scenario) ? nlohmann::json(f.min_target_clearance_m) : nlohmann::json()},
+      {"min_target_clearance_at_s", checks_keep_out(scenario) ? nlohmann::json(f.min_target_clearance_at_s) : nlohmann::json()},
       {"propellant_used_kg", r.propellant_used_kg},
       {"infeasible_allocation_periods", r.infeasible_allocations},
       {"active_check_pulses", r.active_checks},
@@ -181,6 +183,9 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   out += fmt::format("  target out of view: {:.1f} s; max attitude error {:.2f} deg; max position error {:.3f} m\n",
                      f.out_of_view_periods * scenario.control_period_s, f.max_attitude_error_rad * kRadToDeg,
                      f.max_position_error_m);
+  if (checks_keep_out(scenario))
+    out += fmt::format("  keep-out: least clearance {:.3f} m at {:.1f} s (target.body.keep_out less chaser.keep_out_radius_m)\n",
+                       f.min_target_clearance_m, f.min_target_clearance_at_s);
   const double onset = first_onset_s(scenario);
   const int faulty = scenario.faults.empty() ? model::kNoThruster : scenario.faults.front().thruster;
   out += scheme_text("position", r.fdir.position, onset, faulty);
