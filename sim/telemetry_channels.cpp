@@ -1,8 +1,12 @@
 #include "sim/telemetry_channels.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include <fmt/format.h>
+
+#include "core/rotation.hpp"
 
 namespace chaser::sim {
 
@@ -58,8 +62,23 @@ void fdi_scheme(Channels& t, const char* name, int s) {
 
 TelemetryShape telemetry_shape(const model::Scenario& scenario) {
   const auto& slosh = scenario.chaser.slosh;
-  return {.thrusters = scenario.thrusters.count, .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0};
+  return {.thrusters = scenario.thrusters.count,
+          .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0,
+          .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value()};
 }
+
+namespace {
+
+// The target estimator against the truth (flight/target_estimator.hpp): the attitude error's angle,
+// the rate error's norm (target axes) and the largest attitude sigma; NaN before the first pose.
+std::array<double, 3> target_estimate_errors(const PeriodRecord& r) {
+  const auto& est = r.flight->target;
+  if (!est) return {std::nan(""), std::nan(""), std::nan("")};
+  return {rotation_vector_from_quat(r.q_inertial_from_target.conjugate() * est->q_inertial_from_target).norm(),
+          (est->omega_target_radps - r.omega_target_body_radps).norm(), est->attitude_sigma_rad.maxCoeff()};
+}
+
+}  // namespace
 
 std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
   const int thrusters = shape.thrusters;
@@ -111,6 +130,11 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
                      return r.slosh[static_cast<std::size_t>(k / 3)].s_dot_body_mps[k % 3];
                    },
                    3 * tank + i});
+  }
+  if (shape.target_estimator) {
+    t.push_back({"target_est_att_err_rad", "rad", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[0]; }, 0});
+    t.push_back({"target_est_rate_err_radps", "radps", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[1]; }, 0});
+    t.push_back({"target_est_att_sigma_rad", "rad", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[2]; }, 0});
   }
   return t;
 }
@@ -205,6 +229,10 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
   for (int tank = 0; tank < shape.slosh_tanks; ++tank) {
     put3(r.slosh[static_cast<std::size_t>(tank)].s_body_m);
     put3(r.slosh[static_cast<std::size_t>(tank)].s_dot_body_mps);
+  }
+  if (shape.target_estimator) {
+    const std::array<double, 3> e = target_estimate_errors(r);
+    *row++ = e[0], *row++ = e[1], *row++ = e[2];
   }
 }
 

@@ -35,6 +35,7 @@ struct PeriodRecord {
 struct TelemetryShape {
   int thrusters = 0;    // ton_cmd_1..N, ton_real_1..N
   int slosh_tanks = 0;  // slosh1_s_body_x_m .. per tank of chaser.slosh (none without it)
+  bool target_estimator = false;  // target_est_att_err_rad, target_est_rate_err_radps, target_est_att_sigma_rad
 };
 TelemetryShape telemetry_shape(const model::Scenario& scenario);
 
