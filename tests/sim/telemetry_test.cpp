@@ -296,7 +296,9 @@ TEST(TelemetryTable, TargetEstimatorChannels) {
   while (std::getline(lines, line)) {
     const std::vector<std::string> row = split(line);
     const double t = std::stod(row[t_col]);
-    if (rows++ == 0) EXPECT_EQ(row[err], "nan");
+    if (rows++ == 0) {
+      EXPECT_EQ(row[err], "nan");
+    }
     if (t >= 60.0) {
       EXPECT_LT(std::stod(row[err]), 1.0 * kPi / 180.0) << t;
       ++checked;
