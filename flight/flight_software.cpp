@@ -18,6 +18,16 @@ std::optional<TargetEstimatorParams> make_target_estimator_params(const model::S
 
 }  // namespace
 
+std::optional<SyncTransferParams> make_sync_transfer(const model::Scenario& scenario) {
+  const auto& sync = scenario.guidance.synchronised;
+  if (!sync || !scenario.target.body) return std::nullopt;
+  return SyncTransferParams{.start_target_m = sync->start_target_m,
+                            .capture_target_m = scenario.target.body->capture_point_target_m,
+                            .start_s = sync->transfer_start_s,
+                            .duration_s = sync->transfer_duration_s,
+                            .q_target_from_body = sync->q_target_from_body};
+}
+
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
       .orbit = model::TargetOrbit(scenario.orbit),
@@ -28,6 +38,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .attitude = make_attitude_control(scenario),
       .hinf = make_hinf_control(scenario),
       .target_estimator = make_target_estimator_params(scenario),
+      .sync = make_sync_transfer(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
@@ -54,7 +65,20 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     if (state.target->initialised()) out.target = state.target->predict(t_s);
   }
   const model::LvlhFrame lvlh = params.orbit.lvlh_at(t_s);
-  out.reference = guidance_reference(params.guidance, t_s, lvlh);
+  if (params.sync) {
+    // The synchronised reference follows the target's estimate; until the first pose has arrived,
+    // hold where the chaser is (the estimate as its own reference: no feedback, no feed-forward).
+    if (out.target) {
+      out.reference = sync_reference(*params.sync, *out.target, lvlh, t_s);
+    } else {
+      out.reference.r_lvlh_m = out.estimate.r_lvlh_m;
+      out.reference.v_lvlh_mps = out.estimate.v_lvlh_mps;
+      out.reference.q_inertial_from_body = out.estimate.q_inertial_from_body;
+      out.reference.omega_body_radps = out.estimate.omega_body_radps;
+    }
+  } else {
+    out.reference = guidance_reference(params.guidance, t_s, lvlh);
+  }
   if (params.hinf.enabled) {
     const HinfDemand demand =
         hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference);

@@ -11,6 +11,7 @@
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
 #include "flight/hinf_control.hpp"
+#include "flight/sync_guidance.hpp"
 #include "flight/target_estimator.hpp"
 #include "flight/modulation.hpp"
 #include "flight/navigation.hpp"
@@ -33,6 +34,8 @@ struct FlightParams {
   HinfControlParams hinf;  // enabled: flies instead of the LQR pair (control.law: hinf)
   // The target's attitude estimator: with a target pose sensor and a rigid-body target.
   std::optional<TargetEstimatorParams> target_estimator;
+  // The synchronised approach (guidance.synchronised): its reference replaces the straight line.
+  std::optional<SyncTransferParams> sync;
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
@@ -41,6 +44,8 @@ struct FlightParams {
 };
 
 FlightParams make_flight_params(const model::Scenario& scenario);
+// guidance.synchronised with the target's capture point (absent without it or target.body).
+std::optional<SyncTransferParams> make_sync_transfer(const model::Scenario& scenario);
 
 
 struct FlightState {

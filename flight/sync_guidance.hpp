@@ -12,8 +12,9 @@
 // body axes. Before start_s the point is p_start (a hold in the target frame), after the end
 // p_capture. The jerk is left at zero: the feed-forward's mid-period term it feeds is ~w^3 |r| T/2,
 // 3e-5 m/s^2 at ENVISAT's 2.5 deg/s and 7 m, against an authority of 0.055 m/s^2.
-// Not built yet: the phases before it (V-bar, fly-around to the angular-momentum axis, approach
-// along it, the rotation's synchronisation), and the wiring into the flight software.
+// Flown with guidance.synchronised (flight_software.cpp; docs/gnc.md, "Synchronised final
+// approach"). Not built yet: the phases before it (V-bar, fly-around to the angular-momentum axis,
+// approach along it, the rotation's synchronisation).
 #include "core/types.hpp"
 #include "flight/guidance.hpp"
 #include "flight/target_estimator.hpp"

@@ -25,6 +25,15 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
   r.number("capture_position_tol_m", Range::positive(), out.capture_position_tol_m);
   r.number("capture_speed_tol_mps", Range::positive(), out.capture_speed_tol_mps);
   r.angle_deg("capture_attitude_tol_deg", Range::left_open(0.0, 180.0), out.capture_attitude_tol_rad);
+  if (r.has("synchronised")) {  // its needs (target.body, sensors.target_pose) are checked in validate_scenario
+    out.synchronised.emplace();
+    read_section(r, "synchronised", [&](MapReader& m) {
+      m.vec3("start_target_m", Range::closed(-1e3, 1e3), out.synchronised->start_target_m);
+      m.number("transfer_start_s", Range::non_negative(), out.synchronised->transfer_start_s);
+      m.number("transfer_duration_s", Range::positive(), out.synchronised->transfer_duration_s);
+      m.quaternion("q_target_from_body", out.synchronised->q_target_from_body);
+    });
+  }
 }
 
 // LQR weights (model/gnc.hpp): input weights r > 0 so that the input cost is positive definite;

@@ -292,6 +292,12 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   validate_thruster_set(s, diag);
   check_faults(s, diag);
   check_guidance(s.guidance, diag);
+  if (s.guidance.synchronised && diag.clean("guidance.synchronised")) {  // what the synchronised approach follows
+    if (!s.target.body)
+      diag.add("guidance.synchronised", "needs target.body (the target's frame and capture point)");
+    if (!s.sensors.target_pose)
+      diag.add("guidance.synchronised", "needs sensors.target_pose (the flight software follows its estimate of the target)");
+  }
   check_hinf(s, diag);
   validate_campaign(s, diag);
 }

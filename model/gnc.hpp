@@ -20,6 +20,17 @@ struct NavigationParams {
   double target_torque_noise_Nm = 1.0;         // [N m / sqrt(s)]
 };
 
+// The synchronised final approach (issue 18, flight/sync_guidance.hpp): the chaser starts at a hold
+// point of the tumbling target's frame, its rotation synchronised with the target's, moves to the
+// capture point (target.body.capture_point_target_m) and holds there. Needs target.body and
+// sensors.target_pose (the reference follows the flight software's estimate of the target).
+struct SyncGuidanceParams {
+  Vec3 start_target_m = Vec3::Zero();           // [m] the hold point it starts from, target axes
+  double transfer_start_s = 0.0;                // [s] when it leaves it
+  double transfer_duration_s = 300.0;           // [s] rest to rest to the capture point
+  Quat q_target_from_body = Quat::Identity();   // the chaser's attitude in the target's frame
+};
+
 // Forced straight-line approach along approach_axis_lvlh towards the target (Fonod 2015, Fig. 5).
 struct GuidanceParams {
   Vec3 approach_axis_lvlh = Vec3(0.0, -1.0, 0.0);  // unit vector from target towards the chaser start
@@ -32,6 +43,7 @@ struct GuidanceParams {
   double capture_position_tol_m = 0.1;  // [m] capture: position error at the end
   double capture_speed_tol_mps = 0.01;  // [m/s] capture: relative speed at the end
   double capture_attitude_tol_rad = 0.0349;  // [rad] capture: attitude error at the end
+  std::optional<SyncGuidanceParams> synchronised;  // present: the synchronised approach replaces the line
 };
 
 // The H-infinity mixed-sensitivity design of one family of loops, translation or rotation

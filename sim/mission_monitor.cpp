@@ -30,7 +30,8 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
   }
   const auto& g = scenario.guidance;
   const double range_m = s.r_lvlh_m.norm();
-  if (range_m > g.corridor_min_distance_m) {
+  if (range_m > g.corridor_min_distance_m && !g.synchronised) {  // the line's cone; the synchronised
+                                                                  // approach turns with the target
     const double corridor_angle = angle_between(s.r_lvlh_m, g.approach_axis_lvlh);
     f.max_corridor_angle_rad = std::max(f.max_corridor_angle_rad, corridor_angle);
     if (corridor_angle > g.corridor_half_angle_rad) {
@@ -61,9 +62,15 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
 
 void monitor_final(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
   const auto& g = scenario.guidance;
-  const Vec3 capture_point_lvlh_m = g.capture_distance_m * g.approach_axis_lvlh;
-  f.final_position_error_m = (s.r_lvlh_m - capture_point_lvlh_m).norm();
-  f.final_speed_mps = s.v_lvlh_mps.norm();
+  if (g.synchronised) {  // the capture point turns with the target: judged against the reference,
+                         // which the sample carries from the truth at the end (sim::Simulation)
+    f.final_position_error_m = (s.r_lvlh_m - s.r_ref_lvlh_m).norm();
+    f.final_speed_mps = (s.v_lvlh_mps - s.v_ref_lvlh_mps).norm();
+  } else {
+    const Vec3 capture_point_lvlh_m = g.capture_distance_m * g.approach_axis_lvlh;
+    f.final_position_error_m = (s.r_lvlh_m - capture_point_lvlh_m).norm();
+    f.final_speed_mps = s.v_lvlh_mps.norm();
+  }
   f.final_attitude_error_rad = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
   f.capture_achieved = !f.diverged && f.final_position_error_m <= g.capture_position_tol_m &&
                        f.final_speed_mps <= g.capture_speed_tol_mps &&

@@ -5,20 +5,42 @@
 #include <cmath>
 
 #include "core/rotation.hpp"
+#include "plant/orbit_plant.hpp"
 #include "plant/target.hpp"
 
 namespace chaser::sim {
 
 namespace {
 
+// The synchronised reference from the truth (the target's true attitude, rate and Euler's rate
+// derivative), for the run's start and its final judgement: the flight software's own follows its
+// estimate instead.
+flight::GuidanceRef true_sync_reference(const model::Scenario& s, const model::TargetOrbit& orbit,
+                                        const plant::TargetRotation& target, double t_s) {
+  const Mat3& inertia = s.target.body->inertia_kgm2;
+  flight::TargetEstimate truth;
+  truth.t_s = t_s;
+  truth.q_inertial_from_target = target.q_inertial_from_target;
+  truth.omega_target_radps = target.omega_body_radps;
+  truth.omega_dot_target_radps2 = -inertia.inverse() * target.omega_body_radps.cross(inertia * target.omega_body_radps);
+  return flight::sync_reference(*flight::make_sync_transfer(s), truth, orbit.lvlh_at(t_s), t_s);
+}
+
 // The chaser's truth at t = 0: on the approach axis at the start distance, at rest and pointing at
-// the target, unless the scenario gives the state explicitly.
+// the target (or, in the synchronised approach, at its start point turning with the target),
+// unless the scenario gives the state explicitly.
 plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrbit& orbit) {
   const model::InitialState& init = s.initial;
   plant::RigidState x{};
   x.mass_kg = s.chaser.mass_kg;
   if (init.use_guidance_start) {
-    const flight::GuidanceRef ref = flight::guidance_reference(s.guidance, orbit, 0.0);
+    plant::TargetRotation target;
+    if (s.guidance.synchronised) {
+      const plant::TargetSpin spin = plant::initial_target_spin(s.target);
+      target = {spin.q_inertial_from_target, spin.omega_target_body_radps};
+    }
+    const flight::GuidanceRef ref = s.guidance.synchronised ? true_sync_reference(s, orbit, target, 0.0)
+                                                            : flight::guidance_reference(s.guidance, orbit, 0.0);
     x.r_lvlh_m = ref.r_lvlh_m;
     x.v_lvlh_mps = ref.v_lvlh_mps;
     x.q_inertial_from_body = ref.q_inertial_from_body;
@@ -188,7 +210,10 @@ void Simulation::end_period(const flight::FlightOutput& out) {
 
 RunResult Simulation::finish() {
   const double t_end_s = t_s();
-  const flight::GuidanceRef final_ref = flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
+  const flight::GuidanceRef final_ref =
+      scenario_.guidance.synchronised
+          ? true_sync_reference(scenario_, orbit_, plant::target_rotation(plant_, t_end_s), t_end_s)
+          : flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
   monitor_final(scenario_,
                 monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant_.state.rigid, final_ref),
                 result_.figures);
