@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/power_of_two.hpp"
+
 // Method (the header's (Q)): the primal active-set method for a convex QP with the Hessian I.
 // Each iteration forms G = M_F M_F^T over the free on-times (at most 6 x 6 whatever the set's size)
 // and solves G z = r, r = wrench - sum of the columns held at 1; the free on-times' target is
@@ -36,12 +38,6 @@ constexpr double kMultiplierTol = 1e-11;  // [-] multipliers (target beyond the 
 constexpr double kGramPivotRatio = 1e-12;  // LDLT pivots spread more than this: use the pseudo-inverse
 constexpr double kStartTol = 1e-9;        // [-] the start's on-times may overrun [0, 1] by rounding
 
-double power_of_two_above(double value) {
-  if (!(value > 0.0)) return 1.0;
-  int exponent = 0;
-  std::frexp(value, &exponent);
-  return std::ldexp(1.0, exponent);
-}
 
 // z with G z = r for a symmetric positive semidefinite G (the minimum-norm solution when singular).
 Vec6 solve_gram(const Mat6& g, const Vec6& r) {

@@ -9,6 +9,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/power_of_two.hpp"
+
 // Method: one linear program in standard bounded form,
 //
 //   M ton + e_plus - e_minus = demand,   0 <= ton <= 1,   e_plus, e_minus >= 0,
@@ -94,13 +96,6 @@ struct Lp {
   bool fresh = false;  // basic values recomputed (and duals to be refined) since the last step
 };
 
-// 2^k with value / 2^k in [0.5, 1): dividing by it is exact in binary floating point.
-double power_of_two_above(double value) {
-  if (!(value > 0.0)) return 1.0;
-  int exponent = 0;
-  std::frexp(value, &exponent);
-  return std::ldexp(1.0, exponent);
-}
 
 template <int N>
 void init_phase1(Lp<N>& lp, const ConfigN<N>& m_scaled, const Vec6& w_scaled, const Vec6& b) {

@@ -12,45 +12,12 @@
 #include "core/constants.hpp"
 #include "core/random.hpp"
 #include "core/rotation.hpp"
+#include "tests/support/torque_free_body.hpp"
 
 namespace chaser::flight {
 namespace {
 
-Mat3 envisat_inertia() {  // scenarios/comrade_envisat.yaml, target.body.inertia_kgm2
-  Mat3 i;
-  i << 17023.3, 397.1, -2171.4, 397.1, 124825.7, 344.2, -2171.4, 344.2, 129112.2;
-  return i;
-}
-
-struct Truth {
-  Quat q = Quat::Identity();
-  Vec3 omega = Vec3::Zero();
-};
-
-// Torque-free rigid body by RK4 at 1 ms (its own code: the filter's substeps are 50 ms).
-void integrate(const Mat3& inertia, Truth& x, double duration_s) {
-  const Mat3 inv = inertia.inverse();
-  const double h = 1e-3;
-  const auto f = [&](const Eigen::Vector4d& q, const Vec3& w, Eigen::Vector4d& dq, Vec3& dw) {
-    const Quat p(q);
-    // q' = 1/2 q (x) (0, w), written out component by component
-    dq << 0.5 * (p.w() * w.x() + p.y() * w.z() - p.z() * w.y()), 0.5 * (p.w() * w.y() + p.z() * w.x() - p.x() * w.z()),
-        0.5 * (p.w() * w.z() + p.x() * w.y() - p.y() * w.x()), -0.5 * (p.x() * w.x() + p.y() * w.y() + p.z() * w.z());
-    dw = -inv * w.cross(inertia * w);
-  };
-  for (int k = 0, n = static_cast<int>(std::lround(duration_s / h)); k < n; ++k) {
-    const Eigen::Vector4d q0 = x.q.coeffs();
-    Eigen::Vector4d a, b, c, d;
-    Vec3 wa, wb, wc, wd;
-    f(q0, x.omega, a, wa);
-    f(q0 + 0.5 * h * a, x.omega + 0.5 * h * wa, b, wb);
-    f(q0 + 0.5 * h * b, x.omega + 0.5 * h * wb, c, wc);
-    f(q0 + h * c, x.omega + h * wc, d, wd);
-    x.q.coeffs() = q0 + h / 6 * (a + 2 * b + 2 * c + d);
-    x.q.normalize();
-    x.omega += h / 6 * (wa + 2 * wb + 2 * wc + wd);
-  }
-}
+using testing::TorqueFreeBody;
 
 Quat noisy(const Quat& q, RandomStream& rng, double sigma) {
   return q * quat_from_rotation_vector(Vec3(rng.normal(), rng.normal(), rng.normal()) * sigma);
@@ -65,30 +32,30 @@ struct Errors {
 // 3 Hz with 1 deg per axis; errors over the last 600 s of a 900 s run. latency: the measurement
 // is of the truth `latency_s` before the time the filter is asked about.
 Errors fly(double latency_s, std::uint64_t seed) {
-  const Mat3 inertia = envisat_inertia();
+  const Mat3 inertia = testing::envisat_inertia_kgm2();
   TargetEstimatorParams params;
   params.inertia_kgm2 = inertia;
   params.attitude_noise_rad = kPi / 180.0;
   params.torque_noise_Nm = 1e-3;
   TargetEstimator filter(params);
   RandomStream rng(seed, "test/target_estimator");
-  Truth truth;
-  truth.q = quat_from_rotation_vector(Vec3(0.3, -0.2, 0.5));
-  truth.omega = Vec3(0.2, 1.0, 0.3).normalized() * (2.5 * kPi / 180.0);
+  TorqueFreeBody truth{.inertia_kgm2 = inertia,
+                       .q_inertial_from_body = quat_from_rotation_vector(Vec3(0.3, -0.2, 0.5)),
+                       .omega_body_radps = Vec3(0.2, 1.0, 0.3).normalized() * (2.5 * kPi / 180.0)};
   const double dt = 1.0 / 3.0;
   Errors e;
   int counted = 0;
   for (int k = 0; k <= 2700; ++k) {
     const double t = k * dt;
-    if (k > 0) integrate(inertia, truth, dt);
-    EXPECT_TRUE(filter.update(t, noisy(truth.q, rng, params.attitude_noise_rad))) << k;
+    if (k > 0) truth.advance(dt);
+    EXPECT_TRUE(filter.update(t, noisy(truth.q_inertial_from_body, rng, params.attitude_noise_rad))) << k;
     if (t < 300.0) continue;
     // The estimate the flight software would use at t + latency (the measurement is that old).
-    Truth later = truth;
-    integrate(inertia, later, latency_s);
+    TorqueFreeBody later = truth;
+    later.advance(latency_s);
     const TargetEstimate est = filter.predict(t + latency_s);
-    const double att = rotation_vector_from_quat(later.q.conjugate() * est.q_inertial_from_target).norm();
-    const double rate = (est.omega_target_radps - later.omega).norm();
+    const double att = rotation_vector_from_quat(later.q_inertial_from_body.conjugate() * est.q_inertial_from_target).norm();
+    const double rate = (est.omega_target_radps - later.omega_body_radps).norm();
     e.attitude_rms_rad += att * att;
     e.rate_rms_radps += rate * rate;
     e.attitude_max_rad = std::max(e.attitude_max_rad, att);
@@ -98,10 +65,10 @@ Errors fly(double latency_s, std::uint64_t seed) {
   e.attitude_rms_rad = std::sqrt(e.attitude_rms_rad / counted);
   e.rate_rms_radps = std::sqrt(e.rate_rms_radps / counted);
   e.mean_nis /= counted;
-  Truth ahead = truth;
-  integrate(inertia, ahead, 30.0);
+  TorqueFreeBody ahead = truth;
+  ahead.advance(30.0);
   e.prediction_30s_rad =
-      rotation_vector_from_quat(ahead.q.conjugate() * filter.predict(2700 * dt + 30.0).q_inertial_from_target).norm();
+      rotation_vector_from_quat(ahead.q_inertial_from_body.conjugate() * filter.predict(2700 * dt + 30.0).q_inertial_from_target).norm();
   return e;
 }
 

@@ -10,33 +10,12 @@
 #include <cstdio>
 
 #include "core/rotation.hpp"
+#include "tests/support/torque_free_body.hpp"
 
 namespace chaser::flight {
 namespace {
 
-struct Tumble {
-  Mat3 inertia;
-  Quat q = Quat::Identity();
-  Vec3 w = Vec3::Zero();
-  Vec3 w_dot() const { return -inertia.inverse() * w.cross(inertia * w); }
-  void step(double h) {  // RK4 on (q, w)
-    const Mat3 inv = inertia.inverse();
-    const auto f = [&](const Eigen::Vector4d& qc, const Vec3& wc, Eigen::Vector4d& dq, Vec3& dw) {
-      dq = 0.5 * (Quat(qc) * Quat(0.0, wc.x(), wc.y(), wc.z())).coeffs();
-      dw = -inv * wc.cross(inertia * wc);
-    };
-    const Eigen::Vector4d q0 = q.coeffs();
-    Eigen::Vector4d a, b, c, d;
-    Vec3 wa, wb, wc, wd;
-    f(q0, w, a, wa);
-    f(q0 + 0.5 * h * a, w + 0.5 * h * wa, b, wb);
-    f(q0 + 0.5 * h * b, w + 0.5 * h * wb, c, wc);
-    f(q0 + h * c, w + h * wc, d, wd);
-    q.coeffs() = q0 + h / 6 * (a + 2 * b + 2 * c + d);
-    q.normalize();
-    w += h / 6 * (wa + 2 * wb + 2 * wc + wd);
-  }
-};
+using testing::TorqueFreeBody;
 
 constexpr double kN = 1.06e-3;  // [rad/s] ENVISAT's mean motion (765 km)
 
@@ -51,26 +30,26 @@ Vec3 p_ddot_of(double t) { return Vec3(-2.6 * 0.0004 * std::cos(0.02 * t), 0.0, 
 // |r'''| ~ w^3 |r| = 6e-4 (4e-10 m/s for the velocity), rounding ~ 1e-15 |r| / h^2 (2e-9 m/s^2 for
 // the acceleration): bounds 1e-8 m/s and 1e-7 m/s^2 (an error in a Coriolis term would be ~1e-3).
 TEST(TargetFrame, PointVelocityAndAccelerationMatchFiniteDifferences) {
-  Tumble tumble;
-  tumble.inertia << 17023.3, 397.1, -2171.4, 397.1, 124825.7, 344.2, -2171.4, 344.2, 129112.2;
-  tumble.q = quat_from_rotation_vector(Vec3(0.3, -0.2, 0.5));
-  tumble.w = Vec3(0.2, 1.0, 0.3).normalized() * (2.5 * M_PI / 180.0);
-  for (int k = 0; k < 200000; ++k) tumble.step(1e-3);  // 200 s into the tumble
+  TorqueFreeBody tumble{.inertia_kgm2 = testing::envisat_inertia_kgm2(),
+                        .q_inertial_from_body = quat_from_rotation_vector(Vec3(0.3, -0.2, 0.5)),
+                        .omega_body_radps = Vec3(0.2, 1.0, 0.3).normalized() * (2.5 * M_PI / 180.0)};
+  tumble.advance(200.0);  // 200 s into the tumble
   const double t0 = 200.0, h = 0.002;
   std::array<Vec3, 3> r;
   // Positions at t0, t0 + h, t0 + 2h (stepping forward), the derivatives compared at t0 + h.
-  Tumble at = tumble;
-  Tumble s = tumble;
+  TorqueFreeBody at = tumble;
+  TorqueFreeBody s = tumble;
   for (int i = 0; i < 3; ++i) {
     const double t = t0 + i * h;
-    r[static_cast<std::size_t>(i)] = (lvlh_at(t).conjugate() * s.q) * p_of(t);
+    r[static_cast<std::size_t>(i)] = (lvlh_at(t).conjugate() * s.q_inertial_from_body) * p_of(t);
     if (i == 1) at = s;
     for (int j = 0; j < 2; ++j) s.step(1e-3);
   }
   const double t1 = t0 + h;
   const Vec3 omega_l(0.0, 0.0, kN);
   const TargetFrameMotion frame =
-      target_frame_motion(lvlh_at(t1), omega_l, Vec3::Zero(), at.q, at.w, at.w_dot());
+      target_frame_motion(lvlh_at(t1), omega_l, Vec3::Zero(), at.q_inertial_from_body,
+                                                           at.omega_body_radps, at.omega_dot());
   const LvlhPoint pt = target_point_in_lvlh(frame, p_of(t1), p_dot_of(t1), p_ddot_of(t1));
   const Vec3 v_fd = (r[2] - r[0]) / (2 * h);
   const Vec3 a_fd = (r[2] - 2 * r[1] + r[0]) / (h * h);
