@@ -326,10 +326,11 @@ TEST(NormAllocation, LeastEnergyOfTwinThrustersIsHalfTheSingleAnswer) {
   EXPECT_GE(checked, 150);
 }
 
-// A closed form for p = infinity: a demand along one thruster's own column, on a set holding k
-// copies of it, is realised at the least peak 1/k of... by the k copies at u = |d| / (k |m|) each
-// when nothing else is cheaper; here the set is k copies of one column plus MSR branch A, whose
-// columns are independent of it, and the demand a small multiple of the copied column.
+// p = infinity on a demand 0.6 m_1 along one column m_1 of MSR branch A, with k - 1 more copies of
+// m_1 added to the set: the k copies alone realise it at u = 0.6 / k each, the least peak unless a
+// mix with branch A's other columns goes lower, which it does not here (a branch-A column's
+// wrench is far from m_1's direction, so any other thruster's share must be cancelled by a third);
+// and with propellant as the tie-break the copies carry all of it, 0.6 in all.
 TEST(NormAllocation, LeastPeakSharesEquallyAmongCopies) {
   const AllocationParams branch = msr_params();
   for (const int copies : {2, 3, 5}) {
