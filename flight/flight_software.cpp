@@ -28,6 +28,17 @@ std::optional<SyncTransferParams> make_sync_transfer(const model::Scenario& scen
                             .q_target_from_body = sync->q_target_from_body};
 }
 
+std::optional<SyncApproachPlan> make_sync_approach(const model::Scenario& scenario) {
+  const auto transfer = make_sync_transfer(scenario);
+  if (!transfer || !scenario.guidance.synchronised->approach) return std::nullopt;
+  model::GuidanceParams line = scenario.guidance;
+  line.synchronised.reset();
+  return SyncApproachPlan{.line = line,
+                          .approach = *scenario.guidance.synchronised->approach,
+                          .transfer = *transfer,
+                          .target_inertia_kgm2 = scenario.target.body->inertia_kgm2};
+}
+
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
       .orbit = model::TargetOrbit(scenario.orbit),
@@ -39,6 +50,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .hinf = make_hinf_control(scenario),
       .target_estimator = make_target_estimator_params(scenario),
       .sync = make_sync_transfer(scenario),
+      .approach = make_sync_approach(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
@@ -65,7 +77,9 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     if (state.target->initialised()) out.target = state.target->predict(t_s);
   }
   const model::LvlhFrame lvlh = params.orbit.lvlh_at(t_s);
-  if (params.sync) {
+  if (params.approach) {
+    out.reference = sync_approach_reference(*params.approach, state.sync_latch, out.target, params.orbit, t_s);
+  } else if (params.sync) {
     // The synchronised reference follows the target's estimate; until the first pose has arrived,
     // hold where the chaser is (the estimate as its own reference: no feedback, no feed-forward).
     if (out.target) {
@@ -81,7 +95,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   }
   if (params.hinf.enabled) {
     const HinfDemand demand =
-        hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference);
+        hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference, lvlh);
     out.force_demand_lvlh_N = demand.force_lvlh_N;
     out.torque_demand_body_Nm = demand.torque_body_Nm;
   } else {

@@ -11,6 +11,7 @@
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
 #include "flight/hinf_control.hpp"
+#include "flight/sync_approach.hpp"
 #include "flight/sync_guidance.hpp"
 #include "flight/target_estimator.hpp"
 #include "flight/modulation.hpp"
@@ -36,6 +37,9 @@ struct FlightParams {
   std::optional<TargetEstimatorParams> target_estimator;
   // The synchronised approach (guidance.synchronised): its reference replaces the straight line.
   std::optional<SyncTransferParams> sync;
+  // With guidance.synchronised.approach: the steps before the transfer (flight/sync_approach.hpp);
+  // the reference is then this plan's from the line's start.
+  std::optional<SyncApproachPlan> approach;
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
@@ -46,6 +50,8 @@ struct FlightParams {
 FlightParams make_flight_params(const model::Scenario& scenario);
 // guidance.synchronised with the target's capture point (absent without it or target.body).
 std::optional<SyncTransferParams> make_sync_transfer(const model::Scenario& scenario);
+// guidance.synchronised.approach with the line before it (absent without it).
+std::optional<SyncApproachPlan> make_sync_approach(const model::Scenario& scenario);
 
 
 struct FlightState {
@@ -53,6 +59,7 @@ struct FlightState {
   TmuState tmu;
   HinfControlState hinf;
   std::optional<TargetEstimator> target;      // with FlightParams::target_estimator
+  SyncApproachLatch sync_latch;               // the axis and start point the approach fixed in flight
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
   FdirState fdir;
   model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting

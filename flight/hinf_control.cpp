@@ -52,14 +52,26 @@ double step_loop(const DiscreteLoop& loop, LoopState& x, double error) {
 }
 
 HinfDemand hinf_control(const HinfControlParams& params, HinfControlState& state, const PositionControlParams& position,
-                        const AttitudeControlParams& attitude, const NavEstimate& nav, const GuidanceRef& ref) {
+                        const AttitudeControlParams& attitude, const NavEstimate& nav, const GuidanceRef& ref,
+                        const model::LvlhFrame& lvlh) {
   HinfDemand out;
-  const Vec3 position_error_m = ref.r_lvlh_m - nav.r_lvlh_m;  // e = r - y
-  Vec3 u_translation;
-  for (int i = 0; i < 3; ++i) u_translation[i] = step_loop(params.loops[i], state.x[i], position_error_m[i]);
+  // The error in the reference's body axes (header): R = R_body_from_lvlh of the reference, w its
+  // rate relative to LVLH in those axes, e~ = r - r_ref (LVLH) and e~_B = R e~, e~_B' = R e~' - w x e~_B.
+  const Quat q_ref_body_from_lvlh = ref.q_inertial_from_body.conjugate() * lvlh.q_inertial_from_lvlh;
+  const Vec3 omega_lvlh_in_body = q_ref_body_from_lvlh * lvlh.omega_lvlh_radps;
+  const Vec3 w_B = ref.omega_body_radps - omega_lvlh_in_body;
+  const Vec3 error_B = q_ref_body_from_lvlh * (nav.r_lvlh_m - ref.r_lvlh_m);
+  const Vec3 error_rate_B = q_ref_body_from_lvlh * (nav.v_lvlh_mps - ref.v_lvlh_mps) - w_B.cross(error_B);
+  Vec3 u_B;
+  for (int i = 0; i < 3; ++i) u_B[i] = step_loop(params.loops[i], state.x[i], -error_B[i]);  // e = r_ref - y
+  // e~_B'' = R e~'' - 2 w x e~_B' - w x (w x e~_B) (w' x e~_B left out: w' ~ 1e-5 rad/s^2 for the
+  // tumbling cases, e~_B ~ 0.1 m): commanding e~'' = R^T (u_B + those terms) leaves e~_B'' = u_B,
+  // the double integrator each loop was designed on.
+  const Vec3 frame_terms_B = 2.0 * w_B.cross(error_rate_B) + w_B.cross(w_B.cross(error_B));
   const Vec3 hcw_on_error = hcw_acceleration(position.mean_motion_radps, nav.r_lvlh_m - ref.r_lvlh_m,
                                              nav.v_lvlh_mps - ref.v_lvlh_mps);
-  out.force_lvlh_N = position_feedforward(position, ref) + position.mass_kg * (u_translation - hcw_on_error);
+  out.force_lvlh_N = position_feedforward(position, ref) +
+                     position.mass_kg * (q_ref_body_from_lvlh.conjugate() * (u_B + frame_terms_B) - hcw_on_error);
 
   const AttitudeError att = attitude_error(nav, ref);
   Vec3 u_rotation;

@@ -3,8 +3,8 @@
 // computed-torque precompensation, then per axis the loop designed on what remains
 // (control/six_axis_design.hpp), discretised by Tustin at the control period (control/tustin.hpp).
 //
-//   translation (LVLH):  F_d = F_ff - m A_acc [r_hat - r_ref; v_hat - v_ref] + m u_xyz,
-//                        u_i = K_i(e_i), e = r_ref - r_hat
+//   translation:  F_d = F_ff - m A_acc [r_hat - r_ref; v_hat - v_ref] + m R^T (u_B + f_B),
+//                 u_B,i = K_i(e_B,i), e_B = R (r_ref - r_hat)
 //   rotation (body):     C_d = omega x (I omega) - I (omega x omega_r) + I u_rot,  u_rot = K(-theta)
 //
 // F_ff is the LQR's feed-forward of the reference (flight/position_control.hpp: the reference's
@@ -14,9 +14,14 @@
 // error); rates are the controllers' own. Each loop's acceleration is clamped at its authority (the
 // design's: what the set gives along the axis alone); the loop states run on (no anti-windup):
 // the TMU and the allocator absorb the rest, as for the LQR.
-// Translation loops act on the LVLH axes with the authority designed for the body axes: the chaser
-// points at the target, so the two frames differ by the approach geometry; the design's margins
-// (29-35 dB of gain) cover the difference in authority, not in coupling, which is left out.
+// The translation loops act on the error in the reference attitude's body axes (R = R_body_from_lvlh
+// of the reference), the axes their authority was designed for, and f_B cancels what that frame's
+// rotation relative to LVLH adds to the error's dynamics (Coriolis and centripetal; hinf_control.cpp).
+// In the synchronised hold the reference turns with the target, and an error of the chaser's
+// own (its mass, a thruster's thrust or misalignment, all fixed in the body) is then a constant
+// input disturbance, which the loops' W_d rejects; in LVLH axes it turned at the target's rate
+// (0.044 rad/s, beside the 0.08 rad/s bandwidth) and was hardly rejected at all: 2 of 20 dispersed
+// runs captured (docs/gnc.md, "COMRADE's synchronisation phase").
 #include <array>
 
 #include "control/axis_design.hpp"
@@ -72,6 +77,7 @@ struct HinfDemand {
 // The force and torque demands of the header. `position` and `attitude` give the precompensation's
 // mass, inertia, mean motion and period (the LQR's design inputs; their gains are not used).
 HinfDemand hinf_control(const HinfControlParams& params, HinfControlState& state, const PositionControlParams& position,
-                        const AttitudeControlParams& attitude, const NavEstimate& nav, const GuidanceRef& ref);
+                        const AttitudeControlParams& attitude, const NavEstimate& nav, const GuidanceRef& ref,
+                        const model::LvlhFrame& lvlh);
 
 }  // namespace chaser::flight

@@ -13,8 +13,8 @@
 // p_capture. The jerk is left at zero: the feed-forward's mid-period term it feeds is ~w^3 |r| T/2,
 // 3e-5 m/s^2 at ENVISAT's 2.5 deg/s and 7 m, against an authority of 0.055 m/s^2.
 // Flown with guidance.synchronised (flight_software.cpp; docs/gnc.md, "Synchronised final
-// approach"). Not built yet: the phases before it (V-bar, fly-around to the angular-momentum axis,
-// approach along it, the rotation's synchronisation).
+// approach"); the steps before it (fly-around to the angular-momentum axis, approach along it, the
+// rotation's synchronisation) are flight/sync_approach.hpp's.
 #include "core/types.hpp"
 #include "flight/guidance.hpp"
 #include "flight/target_estimator.hpp"

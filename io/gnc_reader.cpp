@@ -28,7 +28,19 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
   if (r.has("synchronised")) {  // its needs (target.body, sensors.target_pose) are checked in validate_scenario
     out.synchronised.emplace();
     read_section(r, "synchronised", [&](MapReader& m) {
-      m.vec3("start_target_m", Range::closed(-1e3, 1e3), out.synchronised->start_target_m);
+      if (m.has("approach")) {  // the start point is then the axis point (flight/sync_approach.hpp)
+        out.synchronised->approach.emplace();
+        read_section(m, "approach", [&](MapReader& a) {
+          model::SyncApproachParams& p = *out.synchronised->approach;
+          a.number("fly_around_start_s", Range::non_negative(), p.fly_around_start_s);
+          a.number("fly_around_duration_s", Range::positive(), p.fly_around_duration_s);
+          a.number("axis_distance_m", Range::left_open(0.0, 1e3), p.axis_distance_m);
+          a.number("axis_approach_duration_s", Range::positive(), p.axis_approach_duration_s);
+          a.number("rotation_sync_duration_s", Range::positive(), p.rotation_sync_duration_s);
+        });
+      } else {
+        m.vec3("start_target_m", Range::closed(-1e3, 1e3), out.synchronised->start_target_m);
+      }
       m.number("transfer_start_s", Range::non_negative(), out.synchronised->transfer_start_s);
       m.number("transfer_duration_s", Range::positive(), out.synchronised->transfer_duration_s);
       m.quaternion("q_target_from_body", out.synchronised->q_target_from_body);

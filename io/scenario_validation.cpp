@@ -195,6 +195,22 @@ void check_guidance(const model::GuidanceParams& g, Diagnostics& d) {
                       format_number(g.approach_duration_s / 2.0), format_number(g.blend_time_s)));
 }
 
+// The synchronisation's steps follow each other: the fly-around leaves the line's end once the line
+// has reached it, and the transfer leaves the axis point once the rotation is synchronised.
+void check_sync_approach(const model::GuidanceParams& g, Diagnostics& d) {
+  if (!g.synchronised->approach || !d.clean("guidance.synchronised.approach")) return;
+  const model::SyncApproachParams& a = *g.synchronised->approach;
+  if (d.clean("guidance.approach_duration_s") && !(a.fly_around_start_s >= g.approach_duration_s))
+    d.add("guidance.synchronised.approach.fly_around_start_s",
+          fmt::format("must be >= guidance.approach_duration_s = {} (the line must reach its end first; got {})",
+                      format_number(g.approach_duration_s), format_number(a.fly_around_start_s)));
+  if (!(g.synchronised->transfer_start_s >= a.rotation_sync_end_s()))
+    d.add("guidance.synchronised.transfer_start_s",
+          fmt::format("must be >= the end of the rotation's synchronisation, fly_around_start_s + "
+                      "fly_around_duration_s + axis_approach_duration_s + rotation_sync_duration_s = {} (got {})",
+                      format_number(a.rotation_sync_end_s()), format_number(g.synchronised->transfer_start_s)));
+}
+
 // orbit.earth and target.body come together (the perturbed plant integrates the target's attitude;
 // the circular one turns it at a constant rate), and orbit.earth's environment is the Earth's, so
 // the central body must be the Earth (mu and J2's reference radius within 1e-6 of WGS 84's).
@@ -297,6 +313,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
       diag.add("guidance.synchronised", "needs target.body (the target's frame and capture point)");
     if (!s.sensors.target_pose)
       diag.add("guidance.synchronised", "needs sensors.target_pose (the flight software follows its estimate of the target)");
+    check_sync_approach(s.guidance, diag);
   }
   check_hinf(s, diag);
   validate_campaign(s, diag);

@@ -24,7 +24,26 @@ struct NavigationParams {
 // point of the tumbling target's frame, its rotation synchronised with the target's, moves to the
 // capture point (target.body.capture_point_target_m) and holds there. Needs target.body and
 // sensors.target_pose (the reference follows the flight software's estimate of the target).
+// The steps of COMRADE's synchronisation phase before the transfer (COMRADE 2018, sec. 2.1;
+// flight/sync_approach.hpp): from the line's end (guidance.capture_distance_m on its axis) a
+// spherical fly-around to the target's angular-momentum axis, an approach along that axis, the
+// synchronisation of the rotation (the attitude turns from pointing at the target to turning with
+// it, the position from the inertial axis to the target frame), then the transfer below.
+struct SyncApproachParams {
+  double fly_around_start_s = 1200.0;         // [s] leaves the line's end (>= guidance.approach_duration_s)
+  double fly_around_duration_s = 600.0;       // [s] along the sphere of the line's end distance
+  double axis_distance_m = 12.0;              // [m] where the approach along the axis ends
+  double axis_approach_duration_s = 400.0;    // [s]
+  double rotation_sync_duration_s = 200.0;    // [s]
+  double rotation_sync_end_s() const {
+    return fly_around_start_s + fly_around_duration_s + axis_approach_duration_s + rotation_sync_duration_s;
+  }
+};
+
 struct SyncGuidanceParams {
+  // With `approach` the chaser flies the steps before (start_target_m is then the axis point where
+  // the rotation's synchronisation starts, fixed by the flight software from its estimate).
+  std::optional<SyncApproachParams> approach;
   Vec3 start_target_m = Vec3::Zero();           // [m] the hold point it starts from, target axes
   double transfer_start_s = 0.0;                // [s] when it leaves it
   double transfer_duration_s = 300.0;           // [s] rest to rest to the capture point

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/rotation.hpp"
 #include "model/keep_out.hpp"
@@ -20,6 +21,12 @@ bool finite(const MonitorSample& s) {
 
 bool checks_keep_out(const model::Scenario& scenario) {
   return scenario.target.body && !scenario.target.body->keep_out.empty();
+}
+
+double synchronised_from_s(const model::Scenario& scenario) {
+  const auto& sync = scenario.guidance.synchronised;
+  if (!sync) return std::numeric_limits<double>::infinity();
+  return sync->approach ? sync->approach->rotation_sync_end_s() : 0.0;
 }
 
 bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
@@ -56,6 +63,12 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
       f.min_target_clearance_m = clearance_m;
       f.min_target_clearance_at_s = s.t_s;
     }
+    const bool synchronised = s.t_s >= synchronised_from_s(scenario);
+    double& least = synchronised ? f.min_clearance_synchronised_m : f.min_clearance_unsynchronised_m;
+    if (clearance_m < least) {
+      least = clearance_m;
+      (synchronised ? f.min_clearance_synchronised_at_s : f.min_clearance_unsynchronised_at_s) = s.t_s;
+    }
   }
   return true;
 }
@@ -72,6 +85,10 @@ void monitor_final(const model::Scenario& scenario, const MonitorSample& s, Miss
     f.final_speed_mps = s.v_lvlh_mps.norm();
   }
   f.final_attitude_error_rad = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
+  // Both rates in the body's own axes: the reference's turned through the attitude error.
+  const Vec3 omega_ref_in_body =
+      s.q_inertial_from_body.conjugate() * (s.q_ref_inertial_from_body * s.omega_ref_body_radps);
+  f.final_rate_error_radps = (s.omega_body_radps - omega_ref_in_body).norm();
   f.capture_achieved = !f.diverged && f.final_position_error_m <= g.capture_position_tol_m &&
                        f.final_speed_mps <= g.capture_speed_tol_mps &&
                        f.final_attitude_error_rad <= g.capture_attitude_tol_rad;

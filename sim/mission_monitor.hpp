@@ -19,10 +19,17 @@ struct MissionFigures {
   double final_position_error_m = 0;       // [m] from the capture point at the end
   double final_speed_mps = 0;              // [m/s] relative speed at the end
   double final_attitude_error_rad = 0;     // [rad] at the end
+  double final_rate_error_radps = 0;       // [rad/s] body rate against the reference's, at the end
   // The chaser's clearance from the target's keep-out volume (target.body.keep_out less
   // chaser.keep_out_radius_m; COMRADE 2018 Table 4), with the volume given.
   double min_target_clearance_m = std::numeric_limits<double>::infinity();  // [m]
   double min_target_clearance_at_s = -1;   // [s]
+  // The same, split at the rotation's synchronisation (Table 4: 3 m before it, 0.5 m after;
+  // synchronised_from_s).
+  double min_clearance_unsynchronised_m = std::numeric_limits<double>::infinity();  // [m]
+  double min_clearance_unsynchronised_at_s = -1;  // [s]
+  double min_clearance_synchronised_m = std::numeric_limits<double>::infinity();    // [m]
+  double min_clearance_synchronised_at_s = -1;    // [s]
   bool capture_achieved = false;
   bool diverged = false;                   // a state became non-finite or left the bounds
   double diverged_at_s = -1;               // [s]
@@ -37,7 +44,14 @@ struct MonitorSample {
   Quat q_ref_inertial_from_body;
   Quat q_inertial_from_lvlh;
   Quat q_inertial_from_target = Quat::Identity();  // the truth; used with a keep-out volume only
+  Vec3 omega_body_radps = Vec3::Zero();            // [rad/s] the truth's body rate (final judgement)
+  Vec3 omega_ref_body_radps = Vec3::Zero();        // [rad/s] the reference's
 };
+
+// From when the chaser's rotation is synchronised with the target's (COMRADE 2018 Table 4): never
+// on the line, from the start in the synchronised final approach, from the end of the rotation's
+// synchronisation with guidance.synchronised.approach.
+double synchronised_from_s(const model::Scenario& scenario);
 
 // Whether the scenario's target has a keep-out volume to check (the simulation then supplies
 // MonitorSample::q_inertial_from_target every period).

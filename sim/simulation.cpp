@@ -16,14 +16,17 @@ namespace {
 // derivative), for the run's start and its final judgement: the flight software's own follows its
 // estimate instead.
 flight::GuidanceRef true_sync_reference(const model::Scenario& s, const model::TargetOrbit& orbit,
-                                        const plant::TargetRotation& target, double t_s) {
+                                        const plant::TargetRotation& target, double t_s,
+                                        const std::optional<Vec3>& start_target_m = std::nullopt) {
   const Mat3& inertia = s.target.body->inertia_kgm2;
   flight::TargetEstimate truth;
   truth.t_s = t_s;
   truth.q_inertial_from_target = target.q_inertial_from_target;
   truth.omega_target_radps = target.omega_body_radps;
   truth.omega_dot_target_radps2 = -inertia.inverse() * target.omega_body_radps.cross(inertia * target.omega_body_radps);
-  return flight::sync_reference(*flight::make_sync_transfer(s), truth, orbit.lvlh_at(t_s), t_s);
+  flight::SyncTransferParams transfer = *flight::make_sync_transfer(s);
+  if (start_target_m) transfer.start_target_m = *start_target_m;
+  return flight::sync_reference(transfer, truth, orbit.lvlh_at(t_s), t_s);
 }
 
 // The chaser's truth at t = 0: on the approach axis at the start distance, at rest and pointing at
@@ -35,12 +38,14 @@ plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrb
   x.mass_kg = s.chaser.mass_kg;
   if (init.use_guidance_start) {
     plant::TargetRotation target;
-    if (s.guidance.synchronised) {
+    // With the synchronisation's approach steps the run starts on the line (flight/sync_approach.hpp).
+    const bool synchronised_start = s.guidance.synchronised && !s.guidance.synchronised->approach;
+    if (synchronised_start) {
       const plant::TargetSpin spin = plant::initial_target_spin(s.target);
       target = {spin.q_inertial_from_target, spin.omega_target_body_radps};
     }
-    const flight::GuidanceRef ref = s.guidance.synchronised ? true_sync_reference(s, orbit, target, 0.0)
-                                                            : flight::guidance_reference(s.guidance, orbit, 0.0);
+    const flight::GuidanceRef ref = synchronised_start ? true_sync_reference(s, orbit, target, 0.0)
+                                                       : flight::guidance_reference(s.guidance, orbit, 0.0);
     x.r_lvlh_m = ref.r_lvlh_m;
     x.v_lvlh_mps = ref.v_lvlh_mps;
     x.q_inertial_from_body = ref.q_inertial_from_body;
@@ -66,6 +71,8 @@ MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const
       .q_ref_inertial_from_body = ref.q_inertial_from_body,
       .q_inertial_from_lvlh = q_inertial_from_lvlh,
       .q_inertial_from_target = q_inertial_from_target,
+      .omega_body_radps = x.omega_body_radps,
+      .omega_ref_body_radps = ref.omega_body_radps,
   };
 }
 
@@ -174,6 +181,7 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
   if (shape_.slosh_tanks > 0 && recording_) slosh = plant_.state.orbit.slosh;
   begun_ = false;
+  if (flight_params_.approach) last_reference_ = out.reference;
   if (!monitor_period(scenario_, sample, result_.figures)) {
     done_ = true;
     return;
@@ -208,14 +216,24 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   done_ = ++k_ >= periods_;
 }
 
+// What the end is judged against: the line's capture point, or the synchronised reference from the
+// truth (with the approach steps, from the start point the flight software fixed, once the rotation
+// is synchronised; before that the flight software's own last reference: the run ended early).
+flight::GuidanceRef Simulation::final_reference(double t_end_s) const {
+  if (!scenario_.guidance.synchronised) return flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
+  const plant::TargetRotation target = plant::target_rotation(plant_, t_end_s);
+  if (!flight_params_.approach) return true_sync_reference(scenario_, orbit_, target, t_end_s);
+  const auto& start = flight_state_.sync_latch.start_target_m;
+  if (start && flight::sync_step(*flight_params_.approach, t_end_s) == flight::SyncStep::kTransfer)
+    return true_sync_reference(scenario_, orbit_, target, t_end_s, start);
+  return last_reference_;
+}
+
 RunResult Simulation::finish() {
   const double t_end_s = t_s();
-  const flight::GuidanceRef final_ref =
-      scenario_.guidance.synchronised
-          ? true_sync_reference(scenario_, orbit_, plant::target_rotation(plant_, t_end_s), t_end_s)
-          : flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
   monitor_final(scenario_,
-                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant_.state.rigid, final_ref),
+                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant_.state.rigid,
+                               final_reference(t_end_s)),
                 result_.figures);
 
   RunResult result = std::move(result_);

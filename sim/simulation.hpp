@@ -57,6 +57,7 @@ class Simulation {
   flight::FlightState& flight_state() { return flight_state_; }
 
  private:
+  flight::GuidanceRef final_reference(double t_end_s) const;
   const std::chrono::steady_clock::time_point wall_start_;
   const model::Scenario& scenario_;
   const flight::FlightParams& flight_params_;
@@ -68,6 +69,7 @@ class Simulation {
 
   plant::Plant plant_;
   flight::FlightState flight_state_;
+  flight::GuidanceRef last_reference_;  // the flight software's, kept with the approach steps (final_reference)
 
   // Telemetry: the file's writer, the rows in memory, the channels they hold.
   std::unique_ptr<TelemetryWriter> telemetry_;

@@ -1,3 +1,4 @@
+#include <cmath>
 #include "sim/summary.hpp"
 
 #include <fmt/format.h>
@@ -11,6 +12,12 @@ namespace {
 constexpr double kRadToDeg = 1.0 / kDegToRad;
 
 // A thruster at the boundary: its name, or null for none (model/thrusters.hpp).
+// A figure that exists (with the keep-out volume) and was reached (a time with no sample stays
+// infinite or -1): its value; else null.
+nlohmann::json finite_or_null(bool exists, double value) {
+  return exists && std::isfinite(value) && value != -1 ? nlohmann::json(value) : nlohmann::json();
+}
+
 nlohmann::json thruster_json(int index) {
   return index == model::kNoThruster ? nlohmann::json(nullptr) : nlohmann::json(model::thruster_name(index));
 }
@@ -145,6 +152,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"final_position_error_m", f.final_position_error_m},
       {"final_speed_mps", f.final_speed_mps},
       {"final_attitude_error_deg", f.final_attitude_error_rad * kRadToDeg},
+      {"final_rate_error_deg_s", f.final_rate_error_radps * kRadToDeg},
       {"corridor_kept", f.corridor_violation_periods == 0},
       {"corridor_violation_s", f.corridor_violation_periods * scenario.control_period_s},
       {"first_corridor_violation_s", f.first_corridor_violation_s},
@@ -155,6 +163,10 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"max_position_error_m", f.max_position_error_m},
       {"min_target_clearance_m", checks_keep_out(scenario) ? nlohmann::json(f.min_target_clearance_m) : nlohmann::json()},
       {"min_target_clearance_at_s", checks_keep_out(scenario) ? nlohmann::json(f.min_target_clearance_at_s) : nlohmann::json()},
+      {"min_clearance_unsynchronised_m", finite_or_null(checks_keep_out(scenario), f.min_clearance_unsynchronised_m)},
+      {"min_clearance_unsynchronised_at_s", finite_or_null(checks_keep_out(scenario), f.min_clearance_unsynchronised_at_s)},
+      {"min_clearance_synchronised_m", finite_or_null(checks_keep_out(scenario), f.min_clearance_synchronised_m)},
+      {"min_clearance_synchronised_at_s", finite_or_null(checks_keep_out(scenario), f.min_clearance_synchronised_at_s)},
       {"propellant_used_kg", r.propellant_used_kg},
       {"infeasible_allocation_periods", r.infeasible_allocations},
       {"active_check_pulses", r.active_checks},
@@ -186,6 +198,11 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   if (checks_keep_out(scenario))
     out += fmt::format("  keep-out: least clearance {:.3f} m at {:.1f} s (target.body.keep_out less chaser.keep_out_radius_m)\n",
                        f.min_target_clearance_m, f.min_target_clearance_at_s);
+  if (checks_keep_out(scenario) && scenario.guidance.synchronised && scenario.guidance.synchronised->approach)
+    out += fmt::format("  COMRADE Table 4: {:.3f} m before the rotation's synchronisation (>= 3 m), {:.3f} m after (>= 0.5 m); "
+                       "final rate error {:.3f} deg/s\n",
+                       f.min_clearance_unsynchronised_m, f.min_clearance_synchronised_m,
+                       f.final_rate_error_radps * kRadToDeg);
   const double onset = first_onset_s(scenario);
   const int faulty = scenario.faults.empty() ? model::kNoThruster : scenario.faults.front().thruster;
   out += scheme_text("position", r.fdir.position, onset, faulty);
