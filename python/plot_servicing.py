@@ -158,7 +158,8 @@ class Flight:
         self.p = lvlh_to_target(self.r, self.q_l, self.q_t)
         self.p_ref = lvlh_to_target(self.r_ref, self.q_l, self.q_t)
         self.boxes = scenario["target"]["body"].get("keep_out") or []
-        self.clearance = keep_out_distance(self.boxes, self.p) - scenario["chaser"].get("keep_out_radius_m", 0.0)
+        self.chaser_radius_m = float(scenario["chaser"].get("keep_out_radius_m", 0.0))
+        self.clearance = keep_out_distance(self.boxes, self.p) - self.chaser_radius_m
 
 
 def start_end(ax, points):
@@ -234,7 +235,7 @@ def plot_target_frame(f, out, show):
     ax.set_zlabel("target z [m]")
     ax.legend(loc="upper left", fontsize=8)
     ax.set_title(f"{s['scenario']}: the chaser in the target's body axes\n"
-                 f"(clearance = distance to keep-out - chaser radius {f.scenario['chaser'].get('keep_out_radius_m', 0.0):g} m)")
+                 f"(clearance = distance to keep-out - chaser radius {f.chaser_radius_m:g} m)")
     return save(fig, out, "servicing_target.png", show)
 
 
