@@ -12,7 +12,7 @@ the run are not in it, so pass a file with them if they changed target.body or o
     capture point and the least clearance of summary.json;
   - servicing_sync.png: position error to the reference, velocity and angular rate relative to the
     target, attitude error to the reference, against COMRADE 2018's Table 1 limits, and the target
-    estimator's errors;
+    estimator's errors (a run with sensors.target_pose has them);
   - servicing_thrusters.png: each thruster's realised on-time per period, and its mean (duty);
   - servicing_slosh.png: each tank's slosh mass displacement (where the chaser has tanks).
 
@@ -107,7 +107,7 @@ def require(t, names, what):
     missing = [n for n in names if n not in t.dtype.names]
     if missing:
         raise SystemExit(f"plot_servicing: the telemetry has no channel {', '.join(missing)} (needed for {what}); "
-                         "was the run made with --channels, or without a rigid-body target?")
+                         "was the run made with --channels, or without target.body?")
 
 
 def tank_numbers(t):
@@ -118,14 +118,15 @@ def thruster_count(t):
     return sum(1 for n in t.dtype.names if n.startswith("ton_real_"))
 
 
+ESTIMATOR = ("target_est_att_err_rad", "target_est_rate_err_radps", "target_est_att_sigma_rad")
+
+
 def check_channels(t):
     require(t, ["t_s"] + [f"{p}_{c}_m" for p in ("r_lvlh", "r_ref_lvlh") for c in XYZ], "the trajectory")
     require(t, [f"v_lvlh_{c}_mps" for c in XYZ] + [f"q_inertial_from_target_{c}" for c in "wxyz"]
             + [f"omega_target_body_{c}_radps" for c in XYZ], "the target frame")
     require(t, [f"q_inertial_from_body_{c}" for c in "wxyz"] + [f"omega_body_{c}_radps" for c in XYZ]
             + [f"att_err_body_{c}_rad" for c in XYZ], "the attitude and rate errors")
-    require(t, ["target_est_att_err_rad", "target_est_rate_err_radps", "target_est_att_sigma_rad"],
-            "the target estimator's errors")
     if thruster_count(t) == 0:
         require(t, ["ton_real_1"], "the thruster activity")
 
@@ -262,12 +263,16 @@ def plot_sync(f, out, show):
     axes[1].set_title("speed in the target frame includes the transfer's planned motion: the limit applies in the hold",
                       fontsize=8)
     est = axes[-1]
-    est.plot(time, np.degrees(t["target_est_att_err_rad"]), lw=0.8, label="attitude error [deg]")
-    est.plot(time, np.degrees(t["target_est_att_sigma_rad"]), lw=0.8, ls=":", label="attitude 1-sigma [deg]")
-    est.plot(time, np.degrees(t["target_est_rate_err_radps"]), lw=0.8, label="rate error [deg/s]")
-    est.set_yscale("log")
     est.set_ylabel("target estimator")
-    est.legend(loc="upper right", fontsize=7)
+    if all(name in t.dtype.names for name in ESTIMATOR):
+        est.plot(time, np.degrees(t["target_est_att_err_rad"]), lw=0.8, label="attitude error [deg]")
+        est.plot(time, np.degrees(t["target_est_att_sigma_rad"]), lw=0.8, ls=":", label="attitude 1-sigma [deg]")
+        est.plot(time, np.degrees(t["target_est_rate_err_radps"]), lw=0.8, label="rate error [deg/s]")
+        est.set_yscale("log")
+        est.legend(loc="upper right", fontsize=7)
+    else:  # the estimator runs with sensors.target_pose only
+        est.text(0.5, 0.5, "no target estimator in this run (no target_est_* channels: no sensors.target_pose)",
+                 transform=est.transAxes, ha="center", va="center", fontsize=9)
     est.set_xlabel("time [s]")
     for ax in axes:
         ax.grid(True, lw=0.3, which="both")

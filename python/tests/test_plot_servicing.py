@@ -154,3 +154,10 @@ def test_a_run_without_slosh_channels_writes_the_other_plots(tmp_path):
     scenario = fake_run(tmp_path / "run", drop=tuple(f"slosh{k}_s_body_{c}_m" for k in (1, 2) for c in "xyz"))
     ps.main([str(tmp_path / "run"), "--scenario", str(scenario)])
     assert sorted(p.name for p in (tmp_path / "run").glob("*.png")) == sorted(PNGS[:-1])
+
+
+def test_a_run_without_the_pose_sensor_draws_all_but_the_estimator(tmp_path):
+    # The V-bar leg of comrade_envisat.yaml has no sensors.target_pose, so no target_est_* channels.
+    scenario = fake_run(tmp_path / "run", drop=ps.ESTIMATOR)
+    ps.main([str(tmp_path / "run"), "--scenario", str(scenario)])
+    assert sorted(p.name for p in (tmp_path / "run").glob("*.png")) == sorted(PNGS)
