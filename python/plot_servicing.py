@@ -111,7 +111,8 @@ def require(t, names, what):
 
 
 def tank_numbers(t):
-    return sorted({int(n[5:n.index("_")]) for n in t.dtype.names if n.startswith("slosh") and n.endswith("_s_body_x_m")})
+    return sorted({int(n[5:n.index("_")]) for n in t.dtype.names
+                   if n.startswith("slosh") and n.endswith("_s_body_x_m")})
 
 
 def thruster_count(t):
@@ -212,14 +213,14 @@ def plot_target_frame(f, out, show):
     body = f.scenario["target"]["body"]
     fig = plt.figure(figsize=(9, 8), constrained_layout=True)
     ax = fig.add_subplot(projection="3d")
-    for i, box in enumerate(f.boxes):
-        for k, edge in enumerate(box_edges(box["centre_target_m"], box["half_extents_m"])):
-            ax.plot(*edge.T, color="tab:gray", lw=0.8, label="keep-out" if i == 0 and k == 0 else None)
+    edges = [e for b in f.boxes for e in box_edges(b["centre_target_m"], b["half_extents_m"])]
+    for k, edge in enumerate(edges):
+        ax.plot(*edge.T, color="tab:gray", lw=0.8, label="keep-out" if k == 0 else None)
     ax.plot(*f.p_ref.T, "--", color="0.5", lw=0.8, label="reference")
     ax.plot(*f.p.T, color="tab:blue", lw=1.0, label="chaser CoM (truth)")
     start_end(ax, f.p)
     ax.scatter(0, 0, 0, color="k", marker="+", s=60, label="target CoM", depthshade=False)
-    points = [f.p, f.p_ref, np.zeros((1, 3))] + [e for b in f.boxes for e in box_edges(b["centre_target_m"], b["half_extents_m"])]
+    points = [f.p, f.p_ref, np.zeros((1, 3))] + edges
     if "capture_point_target_m" in body:
         capture = np.asarray(body["capture_point_target_m"], float)
         ax.scatter(*capture, color="tab:orange", marker="*", s=140, label="capture point", depthshade=False)
@@ -227,8 +228,8 @@ def plot_target_frame(f, out, show):
     s = f.summary
     if s.get("min_target_clearance_at_s", -1.0) >= 0.0 and np.isfinite(s.get("min_target_clearance_m", np.inf)):
         i = int(np.argmin(np.abs(f.time - s["min_target_clearance_at_s"])))
-        ax.scatter(*f.p[i], color="tab:purple", marker="D", s=40, depthshade=False,
-                   label=f"least clearance {s['min_target_clearance_m']:.2f} m at {s['min_target_clearance_at_s']:.0f} s")
+        label = f"least clearance {s['min_target_clearance_m']:.2f} m at {s['min_target_clearance_at_s']:.0f} s"
+        ax.scatter(*f.p[i], color="tab:purple", marker="D", s=40, depthshade=False, label=label)
         ax.text(*f.p[i], f"  {s['min_target_clearance_m']:.2f} m", color="tab:purple", fontsize=9)
     equal_axes(ax, np.vstack(points))
     ax.set_xlabel("target x [m]")
@@ -243,11 +244,13 @@ def plot_target_frame(f, out, show):
 def plot_sync(f, out, show):
     t, time = f.t, f.time
     pos_err = np.linalg.norm(f.r - f.r_ref, axis=1)
-    vel = np.linalg.norm(velocity_in_target_frame(f.r, vec(t, "v_lvlh", "mps"), f.q_l, f.q_t,
-                                                  vec(t, "omega_target_body", "radps"), f.n), axis=1)
+    omega_target = vec(t, "omega_target_body", "radps")
+    vel = np.linalg.norm(velocity_in_target_frame(f.r, vec(t, "v_lvlh", "mps"), f.q_l, f.q_t, omega_target, f.n),
+                         axis=1)
     att = np.degrees(np.linalg.norm(vec(t, "att_err_body", "rad"), axis=1))
-    rate = np.degrees(np.linalg.norm(rate_relative_to_target(quat(t, "q_inertial_from_body"), vec(t, "omega_body", "radps"),
-                                                             f.q_t, vec(t, "omega_target_body", "radps")), axis=1))
+    relative_rate = rate_relative_to_target(quat(t, "q_inertial_from_body"), vec(t, "omega_body", "radps"), f.q_t,
+                                            omega_target)
+    rate = np.degrees(np.linalg.norm(relative_rate, axis=1))
     panels = [
         (pos_err, LIMIT_POSITION_M, "position error\nto reference [m]", True),
         (vel, LIMIT_VELOCITY_MPS, "speed in the\ntarget frame [m/s]", True),
@@ -277,7 +280,7 @@ def plot_sync(f, out, show):
     for ax in axes:
         ax.grid(True, lw=0.3, which="both")
     s = f.summary
-    fig.suptitle(f"{s['scenario']}: synchronisation errors (final: {s['final_position_error_m']:.3f} m, "
+    fig.suptitle(f"{s['scenario']}: synchronisation errors (summary.json final, against the truth: {s['final_position_error_m']:.3f} m, "
                  f"{s['final_speed_mps']:.4f} m/s, {s['final_attitude_error_deg']:.2f} deg)")
     return save(fig, out, "servicing_sync.png", show)
 
@@ -328,7 +331,7 @@ def main(argv=None):
         try:
             plt.switch_backend("TkAgg")
         except ImportError as e:
-            raise SystemExit(f"plot_servicing: --show needs a window backend (python3-tk): {e}")
+            raise SystemExit(f"plot_servicing: --show needs a display and a window backend (python3-tk): {e}")
     try:
         telemetry = load_telemetry(args.run_dir)
         summary = json.loads((args.run_dir / "summary.json").read_text())
