@@ -42,7 +42,7 @@ TEST(ComradeSync, EnvisatFliesTheWholeSynchronisation) {
 TEST(ComradeSync, StepsOutOfOrderAreRefused) {
   const io::LoadResult early = io::load_scenario_file(
       "scenarios/comrade_sync.yaml",
-      {"guidance.synchronised.approach.fly_around_start_s=1000", "guidance.synchronised.transfer_start_s=2300"});
+      {"guidance.synchronised.approach.fly_around_start_s=1000", "guidance.synchronised.transfer_start_s=2100"});
   ASSERT_FALSE(early.errors.empty());
   const std::string text = io::format_errors(early.errors);
   EXPECT_NE(text.find("guidance.synchronised.approach.fly_around_start_s: must be >= guidance.approach_duration_s = 1100"),
