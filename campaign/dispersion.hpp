@@ -6,6 +6,7 @@
 
 #include "core/random.hpp"
 #include "model/campaign.hpp"
+#include "model/scenario.hpp"
 #include "model/spacecraft.hpp"
 
 namespace chaser::campaign {
@@ -20,6 +21,18 @@ inline constexpr int kMaxInertiaDraws = 100;
 // then the three centre-of-mass offsets. Principal axes stay those of the nominal tensor.
 model::SpacecraftParams disperse_chaser(const model::SpacecraftParams& nominal, const model::CampaignParams& params,
                                         std::uint64_t run_seed);
+
+// The tumbling target's initial attitude and rate with campaign.target_spin_*: the rate scaled by a
+// dispersed factor, then the target and its rate turned together by a tilt (angle normal, 3-sigma
+// given, truncated at 3 sigma) about a direction perpendicular to the rate, uniform in angle; so a
+// spin about a body axis stays about it. Stream "campaign/target_spin"; the result has spin_case
+// given. Unchanged without target.body or with both dispersions zero.
+model::TargetParams disperse_target_spin(const model::TargetParams& nominal, const model::CampaignParams& params,
+                                         std::uint64_t run_seed);
+
+// The start's offsets (model::InitialState::offset_*) with campaign.initial_*: per LVLH axis,
+// normal, truncated at 3 sigma, position then velocity; stream "campaign/initial".
+void disperse_initial(model::InitialState& initial, const model::CampaignParams& params, std::uint64_t run_seed);
 
 // One draw of a relative factor 1 + x, x normal with 3-sigma `three_sigma`, truncated at 3 sigma.
 double dispersed_factor(RandomStream& rng, double three_sigma);

@@ -21,6 +21,8 @@ RunSetup make_run_setup(const CampaignPlan& plan, std::int64_t run) {
   setup.truth.seed = setup.seed;  // the plant draws its own noises (thrust dispersion included) from it
   setup.truth.duration_s = run_duration_s(plan.nominal);
   setup.truth.chaser = disperse_chaser(plan.nominal.chaser, params, setup.seed);
+  setup.truth.target = disperse_target_spin(plan.nominal.target, params, setup.seed);
+  disperse_initial(setup.truth.initial, params, setup.seed);
   setup.truth.faults.clear();
   if (setup.fault) setup.truth.faults.push_back(*setup.fault);
   return setup;

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
+
 namespace chaser::campaign {
 
 namespace {
@@ -118,6 +120,13 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
   r.target_in_view = result.figures.out_of_view_periods == 0;
   r.propellant_kg = result.propellant_used_kg;
   r.simulated_s = result.simulated_s;
+  const sim::MissionFigures& f = result.figures;
+  r.final_position_error_m = f.final_position_error_m;
+  r.final_speed_mps = f.final_speed_mps;
+  r.final_attitude_error_deg = f.final_attitude_error_rad / kDegToRad;
+  r.final_rate_error_deg_s = f.final_rate_error_radps / kDegToRad;
+  r.min_clearance_unsynchronised_m = std::isfinite(f.min_clearance_unsynchronised_m) ? f.min_clearance_unsynchronised_m : kNaN;
+  r.min_clearance_synchronised_m = std::isfinite(f.min_clearance_synchronised_m) ? f.min_clearance_synchronised_m : kNaN;
   return r;
 }
 
@@ -128,6 +137,8 @@ RunRecord error_record(const RunSetup& setup) {
   r.position = r.attitude = r.deficit = r.fdir = empty;
   r.recovery_s = kNaN;
   r.propellant_kg = kNaN;
+  r.final_position_error_m = r.final_speed_mps = r.final_attitude_error_deg = r.final_rate_error_deg_s = kNaN;
+  r.min_clearance_unsynchronised_m = r.min_clearance_synchronised_m = kNaN;
   return r;
 }
 
@@ -161,6 +172,12 @@ const std::vector<RunColumn>& run_columns() {
       {"target_in_view", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }},
       {"propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }},
       {"simulated_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }},
+      {"final_position_error_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_position_error_m); }},
+      {"final_speed_mps", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_speed_mps); }},
+      {"final_attitude_error_deg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_attitude_error_deg); }},
+      {"final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_rate_error_deg_s); }},
+      {"min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }},
+      {"min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_synchronised_m); }},
   };
   return columns;
 }

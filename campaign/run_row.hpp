@@ -41,6 +41,11 @@ struct RunRecord {
   bool capture = false, corridor_kept = false, target_in_view = false;
   double propellant_kg = 0;    // [kg]
   double simulated_s = 0;      // [s]
+  // At the end, against the capture point (sim::MissionFigures; COMRADE 2018 Table 1), and the least
+  // keep-out clearances either side of the rotation's synchronisation (Table 4; NaN without a
+  // keep-out volume or where the run has no such time).
+  double final_position_error_m = 0, final_speed_mps = 0, final_attitude_error_deg = 0, final_rate_error_deg_s = 0;
+  double min_clearance_unsynchronised_m = 0, min_clearance_synchronised_m = 0;
 };
 
 // The record of a flown run; status kDiverged when the monitor stopped it or it left the planned

@@ -28,6 +28,14 @@ void read_campaign(MapReader& r, model::CampaignParams& out) {
   r.number("mass_3sigma_rel", Range::right_open(0.0, 1.0), out.mass_3sigma_rel);
   r.number("inertia_3sigma_rel", Range::right_open(0.0, 1.0), out.inertia_3sigma_rel);
   r.number("com_3sigma_m", Range::non_negative(), out.com_3sigma_m);
+  if (r.has("target_spin_rate_3sigma_rel"))  // checked against target.body in validate_campaign
+    r.number("target_spin_rate_3sigma_rel", Range::right_open(0.0, 1.0), out.target_spin_rate_3sigma_rel);
+  if (r.has("target_spin_axis_3sigma_deg"))
+    r.angle_deg("target_spin_axis_3sigma_deg", Range::closed(0.0, 90.0), out.target_spin_axis_3sigma_rad);
+  if (r.has("initial_position_3sigma_m"))
+    r.number("initial_position_3sigma_m", Range::closed(0.0, 100.0), out.initial_position_3sigma_m);
+  if (r.has("initial_velocity_3sigma_mps"))
+    r.number("initial_velocity_3sigma_mps", Range::closed(0.0, 1.0), out.initial_velocity_3sigma_mps);
   r.number("leak_size_min", Range::left_open(0.0, 1.0), out.leak_size_min);
   r.number("leak_size_max", Range::left_open(0.0, 1.0), out.leak_size_max);
   r.number("leak_slope_per_s", Range::positive(), out.leak_slope_per_s);
@@ -48,6 +56,11 @@ void read_campaign(MapReader& r, model::CampaignParams& out) {
 // A campaign run flies onset_s + horizon_after_onset_s: a whole number of control periods, and
 // short enough that the per-second GLR record of a run stays small.
 void validate_campaign(const model::Scenario& s, Diagnostics& d) {
+  // The spin dispersion turns a rigid-body target's initial rate.
+  if (!s.target.body && (s.campaign.target_spin_rate_3sigma_rel > 0.0 || s.campaign.target_spin_axis_3sigma_rad > 0.0))
+    d.add(s.campaign.target_spin_rate_3sigma_rel > 0.0 ? "campaign.target_spin_rate_3sigma_rel"
+                                                       : "campaign.target_spin_axis_3sigma_deg",
+          "needs target.body (a tumbling target); remove it or set it to 0");
   const char* path = "campaign.horizon_after_onset_s";
   if (!d.clean("control_period_s") || !d.clean("campaign.onset_s") || !d.clean(path)) return;
   const double run_s = s.campaign.onset_s + s.campaign.horizon_after_onset_s;

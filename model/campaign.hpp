@@ -15,6 +15,12 @@ struct CampaignParams {
   double mass_3sigma_rel = 0.10;        // [-] relative to the nominal mass
   double inertia_3sigma_rel = 0.20;     // [-] relative, each principal moment independently
   double com_3sigma_m = 0.03;           // [m] per body axis
+  // Optional (0: none). The tumbling target's initial rate (relative) and the tilt of its spin axis
+  // (about a random perpendicular), with target.body; the start's position and velocity per LVLH axis.
+  double target_spin_rate_3sigma_rel = 0.0;   // [-]
+  double target_spin_axis_3sigma_rad = 0.0;   // [rad]
+  double initial_position_3sigma_m = 0.0;     // [m]
+  double initial_velocity_3sigma_mps = 0.0;   // [m/s]
   // Fault population (Fonod 2015, section V): sizes uniform in [min, max].
   double leak_size_min = 0.1;           // [-]
   double leak_size_max = 0.3;           // [-]

@@ -25,6 +25,10 @@ struct InitialState {
   bool use_guidance_start = true;                // start on the approach axis, target-pointing, at rest
   Quat q_lvlh_from_body = Quat::Identity();      // used when use_guidance_start is false
   Vec3 omega_body_radps = Vec3::Zero();          // [rad/s] inertial rate, body axes
+  // Added to the start's position and velocity (not scenario keys: a campaign's dispersion of the
+  // start, campaign/dispersion.hpp).
+  Vec3 offset_r_lvlh_m = Vec3::Zero();           // [m]
+  Vec3 offset_v_lvlh_mps = Vec3::Zero();         // [m/s]
 };
 
 struct Scenario {

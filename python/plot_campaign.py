@@ -35,7 +35,9 @@ RUNS_HEADER = (
     "deficit_detection_s,deficit_isolation_s,deficit_isolated,deficit_false_alarm,deficit_missed,"
     "deficit_wrong_isolation,deficit_glr_max_before_onset,"
     "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
-    "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s"
+    "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s,"
+    "final_position_error_m,final_speed_mps,final_attitude_error_deg,final_rate_error_deg_s,"
+    "min_clearance_unsynchronised_m,min_clearance_synchronised_m"
 ).split(",")
 TEXT_COLUMNS = ("seed", "case", "status")  # kept as text: a 64-bit seed does not fit a double
 CASES = ("none", "stuck_open", "stuck_closed", "leak", "loss")

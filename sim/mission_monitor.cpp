@@ -6,6 +6,7 @@
 
 #include "core/rotation.hpp"
 #include "model/keep_out.hpp"
+#include "model/target_orbit.hpp"
 
 namespace chaser::sim {
 
@@ -25,8 +26,15 @@ bool checks_keep_out(const model::Scenario& scenario) {
 
 double synchronised_from_s(const model::Scenario& scenario) {
   const auto& sync = scenario.guidance.synchronised;
-  if (!sync) return std::numeric_limits<double>::infinity();
-  return sync->approach ? sync->approach->rotation_sync_end_s() : 0.0;
+  if (sync) return sync->approach ? sync->approach->rotation_sync_end_s() : 0.0;
+  // On the line the chaser's attitude is fixed in LVLH: synchronised with a target that turns with
+  // LVLH (ASSIST's "null relative angular velocity"), never with a tumbling one.
+  const auto& body = scenario.target.body;
+  if (body && body->spin_case == model::SpinCase::given) {
+    const Vec3 omega_lvlh_radps = model::TargetOrbit(scenario.orbit).mean_motion_radps() * Vec3::UnitZ();
+    if ((scenario.target.omega_inertial_radps - omega_lvlh_radps).norm() <= kSynchronisedRate_radps) return 0.0;
+  }
+  return std::numeric_limits<double>::infinity();
 }
 
 bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {

@@ -48,9 +48,11 @@ struct MonitorSample {
   Vec3 omega_ref_body_radps = Vec3::Zero();        // [rad/s] the reference's
 };
 
-// From when the chaser's rotation is synchronised with the target's (COMRADE 2018 Table 4): never
-// on the line, from the start in the synchronised final approach, from the end of the rotation's
-// synchronisation with guidance.synchronised.approach.
+// From when the chaser's rotation is synchronised with the target's (COMRADE 2018 Table 4): on the
+// line from the start if the target turns with LVLH (its given rate within kSynchronisedRate_radps
+// of LVLH's: ASSIST), else never; from the start in the synchronised final approach; from the end of
+// the rotation's synchronisation with guidance.synchronised.approach. Per period: keep it cheap.
+inline constexpr double kSynchronisedRate_radps = 1e-7;  // [rad/s] 0.02 deg an hour
 double synchronised_from_s(const model::Scenario& scenario);
 
 // Whether the scenario's target has a keep-out volume to check (the simulation then supplies

@@ -56,6 +56,8 @@ plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrb
     x.q_inertial_from_body = orbit.q_inertial_from_lvlh(0.0) * init.q_lvlh_from_body;
     x.omega_body_radps = init.omega_body_radps;
   }
+  x.r_lvlh_m += init.offset_r_lvlh_m;
+  x.v_lvlh_mps += init.offset_v_lvlh_mps;
   return x;
 }
 

@@ -88,6 +88,12 @@ def make_run(rng, run, case):
     row["target_in_view"] = int(rng.random() < 0.99)
     row["propellant_kg"] = rng.uniform(2.0, 3.0) + (0.0 if case == "none" else rng.uniform(0.0, 1.5))
     row["simulated_s"] = ONSET_S + HORIZON_S if status == "ok" else rng.uniform(900.0, 1250.0)
+    row["final_position_error_m"] = rng.uniform(0.0, 0.05)
+    row["final_speed_mps"] = rng.uniform(0.0, 0.005)
+    row["final_attitude_error_deg"] = rng.uniform(0.0, 1.0)
+    row["final_rate_error_deg_s"] = rng.uniform(0.0, 0.1)
+    row["min_clearance_unsynchronised_m"] = float("nan")  # MSR's target has no keep-out volume
+    row["min_clearance_synchronised_m"] = float("nan")
     return row
 
 

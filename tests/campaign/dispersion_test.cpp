@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "campaign/statistics.hpp"
+#include "core/constants.hpp"
 #include "core/random.hpp"
+#include "plant/orbit_plant.hpp"
 
 namespace chaser::campaign {
 namespace {
@@ -86,6 +88,72 @@ TEST(Dispersion, SameSeedSameChaserOtherSeedOtherChaser) {
   EXPECT_EQ(a.mass_kg, b.mass_kg);
   EXPECT_EQ(a.com_body_m, b.com_body_m);
   EXPECT_NE(a.mass_kg, c.mass_kg);
+}
+
+}  // namespace
+}  // namespace chaser::campaign
+
+namespace chaser::campaign {
+namespace {
+
+// ENVISAT-like spin case S1 (about target +Y, along H-bar) at 2.5 deg/s.
+model::TargetParams tumbling_target() {
+  model::TargetParams t;
+  t.body.emplace();
+  t.body->inertia_kgm2 = Vec3(17000.0, 125000.0, 129000.0).asDiagonal();
+  t.body->spin_case = model::SpinCase::s1;
+  t.body->spin_rate_radps = 2.5 * kDegToRad;
+  return t;
+}
+
+// The spin's dispersion: the rate scaled within its 3 sigma, the axis tilted within its 3 sigma
+// about a perpendicular, the rate still along the same body axis (the body turned with it), the
+// tilts' standard deviation that of the truncated normal (kTruncatedStdFactor, 2,000 draws: 5
+// standard errors are 8 %), and the same seed the same target.
+TEST(Dispersion, TargetSpinIsScaledAndTiltedWithTheBody) {
+  const model::TargetParams nominal = tumbling_target();
+  model::CampaignParams params;
+  params.target_spin_rate_3sigma_rel = 0.1;
+  params.target_spin_axis_3sigma_rad = 5.0 * kDegToRad;
+  const plant::TargetSpin spin = plant::initial_target_spin(nominal);
+  const Vec3 omega0 = spin.q_inertial_from_target * spin.omega_target_body_radps;
+  RunningStats tilts;
+  for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
+    const model::TargetParams t = disperse_target_spin(nominal, params, run_seed(7, seed));
+    ASSERT_EQ(t.body->spin_case, model::SpinCase::given);
+    const double factor = t.omega_inertial_radps.norm() / omega0.norm();
+    EXPECT_LE(std::abs(factor - 1.0), 0.1 + 1e-12);
+    const double tilt = std::atan2(t.omega_inertial_radps.cross(omega0).norm(), t.omega_inertial_radps.dot(omega0));
+    EXPECT_LE(tilt, 5.0 * kDegToRad + 1e-12);
+    tilts.add(tilt * (seed % 2 == 0 ? 1.0 : -1.0));  // the angle's sign is the perpendicular's: symmetric
+    const Vec3 omega_body = t.q_inertial_from_target.conjugate() * t.omega_inertial_radps;
+    EXPECT_LE(omega_body.normalized().cross(Vec3::UnitY()).norm(), 1e-12);  // still about target +Y
+  }
+  EXPECT_NEAR(tilts.sample_std(), kTruncatedStdFactor * 5.0 / 3.0 * kDegToRad, 0.08 * 5.0 / 3.0 * kDegToRad);
+  const model::TargetParams a = disperse_target_spin(nominal, params, 42), b = disperse_target_spin(nominal, params, 42);
+  EXPECT_EQ(a.omega_inertial_radps, b.omega_inertial_radps);
+  EXPECT_EQ(a.q_inertial_from_target.coeffs(), b.q_inertial_from_target.coeffs());
+}
+
+// Without the keys (or without a rigid-body target) nothing moves; the start's offsets stay within
+// their 3 sigma per axis.
+TEST(Dispersion, NoSpinKeysNoChangeAndStartOffsetsWithinThreeSigma) {
+  const model::TargetParams nominal = tumbling_target();
+  const model::TargetParams same = disperse_target_spin(nominal, model::CampaignParams{}, 5);
+  EXPECT_EQ(same.body->spin_case, model::SpinCase::s1);
+  model::InitialState initial;
+  disperse_initial(initial, model::CampaignParams{}, 5);
+  EXPECT_EQ(initial.offset_r_lvlh_m, Vec3::Zero());
+  model::CampaignParams params;
+  params.initial_position_3sigma_m = 1.0;
+  params.initial_velocity_3sigma_mps = 0.001;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    model::InitialState x;
+    disperse_initial(x, params, seed);
+    EXPECT_LE(x.offset_r_lvlh_m.cwiseAbs().maxCoeff(), 1.0);
+    EXPECT_LE(x.offset_v_lvlh_mps.cwiseAbs().maxCoeff(), 0.001);
+    EXPECT_GT(x.offset_r_lvlh_m.norm(), 0.0);
+  }
 }
 
 }  // namespace

@@ -56,11 +56,44 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--shard 3/3", "--shard: expected I/M with whole numbers 0 <= I < M (got '3/3')");
   expect_bad(out + "--shard x", "--shard");
   expect_bad(out + "--threads 0", "--threads");
-  expect_bad(out + "--preset nope", "--preset: unknown preset 'nope' (allowed: fonod2015-table2)");
+  expect_bad(out + "--preset nope", "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
   EXPECT_EQ(chaser("campaign merge --out " + fresh_dir("m0").string()).exit_code, 2);
+}
+
+// --preset comrade-table5: one campaign per spin case of the synchronisation (here one run each,
+// 3,000 s), or one of ASSIST's approach, and table5.md beside them; refused with a shard, and on a
+// scenario without a COMRADE target, naming the option.
+TEST(CampaignCli, ComradeTable5WritesACaseFolderPerSpinCaseAndTheTable) {
+  const fs::path dir = fs::temp_directory_path() / ("chaser_table5_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const CommandResult sync =
+      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-table5 --runs 1 --threads 2 --out " + dir.string());
+  ASSERT_EQ(sync.exit_code, 0) << sync.output;
+  for (const char* spin : {"S1", "S2", "S3"}) EXPECT_TRUE(fs::exists(dir / spin / "runs.csv")) << spin;
+  const std::string table = read_file(dir / "table5.md");
+  EXPECT_NE(table.find("| figure | Table 1 | COMRADE 2018 | S1 | S2 | S3 |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| runs flown of runs | | 100 | 1 of 1 | 1 of 1 | 1 of 1 |"), std::string::npos) << table;
+  const CommandResult again =  // resumable: every case found done
+      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-table5 --runs 1 --resume --out " + dir.string());
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_file(dir / "table5.md"), table);
+  fs::remove_all(dir);
+
+  const CommandResult assist =
+      chaser("campaign scenarios/comrade_assist.yaml --preset comrade-table5 --runs 2 --out " + dir.string());
+  ASSERT_EQ(assist.exit_code, 0) << assist.output;
+  EXPECT_NE(read_file(dir / "table5.md").find("| comrade_assist |"), std::string::npos);
+  const CommandResult shard = chaser("campaign scenarios/comrade_assist.yaml --preset comrade-table5 --shard 0/2 --out " +
+                                     dir.string());
+  EXPECT_EQ(shard.exit_code, 2);
+  EXPECT_NE(shard.output.find("leave out --mpi, --shard and --cases"), std::string::npos) << shard.output;
+  const CommandResult msr = chaser("campaign scenarios/msr_terminal.yaml --preset comrade-table5 --out " + dir.string());
+  EXPECT_EQ(msr.exit_code, 2);
+  EXPECT_NE(msr.output.find("--preset comrade-table5: needs a COMRADE target"), std::string::npos) << msr.output;
+  fs::remove_all(dir);
 }
 
 // Runs a campaign in a child process and kills it with SIGKILL once `rows` rows are on disk.

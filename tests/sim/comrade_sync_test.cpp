@@ -14,12 +14,12 @@ namespace chaser::sim {
 namespace {
 
 // Nominal run (seed 1; spin case S1). Table 4: 3 m before the rotation is synchronised (the axis
-// point at 12 m is 12 - 2 - 1 = 9 m from the bus's face less the chaser's radius: measured 8.25 m,
-// the fly-around passing nearer the bus's long end), 0.5 m after (measured 0.87 m, the transfer
-// passing the bus's +x end). Table 1 at the end: 0.1 m, 0.01 m/s, 2 deg, 0.5 deg/s; the position
-// is the closest to its limit (measured 0.102 m with this seed, 0.06-0.107 m over seeds 1-5), so it
-// is held to 0.15 m here and the rates to Table 1. No step of the reference shows as an attitude
-// error: the largest is the estimator's (measured 1.26 deg).
+// point at 12 m is 12 - 2 - 1 = 9 m from the bus's face less the chaser's radius: measured 8.24 m,
+// the fly-around passing nearer the bus's long end), 0.5 m after (measured 0.89 m, the transfer
+// passing the bus's +x end). Table 1 at the end: 0.1 m, 0.01 m/s, 2 deg, 0.5 deg/s (measured 0.050
+// m, 0.0020 m/s, 0.64 deg, 0.073 deg/s; the position's 95th percentile over 100 dispersed runs is
+// 0.093 m, so 0.1 m here is a real bound). No step of the reference shows as an attitude error: the
+// largest is the estimator's (measured 1.24 deg).
 TEST(ComradeSync, EnvisatFliesTheWholeSynchronisation) {
   const io::LoadResult loaded = io::load_scenario_file("scenarios/comrade_sync.yaml");
   ASSERT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
@@ -30,7 +30,8 @@ TEST(ComradeSync, EnvisatFliesTheWholeSynchronisation) {
   EXPECT_LE(f.min_clearance_unsynchronised_m, 9.0);
   EXPECT_GE(f.min_clearance_synchronised_m, 0.5);
   EXPECT_GT(f.min_clearance_synchronised_at_s, loaded.scenario->guidance.synchronised->approach->rotation_sync_end_s());
-  EXPECT_LT(f.final_position_error_m, 0.15);
+  EXPECT_LT(f.final_position_error_m, 0.1);
+  EXPECT_TRUE(f.capture_achieved);
   EXPECT_LT(f.final_speed_mps, 0.01);
   EXPECT_LT(f.final_attitude_error_rad, 2.0 * kDegToRad);
   EXPECT_LT(f.final_rate_error_radps, 0.5 * kDegToRad);
