@@ -56,8 +56,9 @@ plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrb
     x.q_inertial_from_body = orbit.q_inertial_from_lvlh(0.0) * init.q_lvlh_from_body;
     x.omega_body_radps = init.omega_body_radps;
   }
-  x.r_lvlh_m += init.offset_r_lvlh_m;
-  x.v_lvlh_mps += init.offset_v_lvlh_mps;
+  // Only when dispersed: + 0.0 would turn the guidance start's -0.0 into +0.0 in telemetry.
+  if (!init.offset_r_lvlh_m.isZero(0.0)) x.r_lvlh_m += init.offset_r_lvlh_m;
+  if (!init.offset_v_lvlh_mps.isZero(0.0)) x.v_lvlh_mps += init.offset_v_lvlh_mps;
   return x;
 }
 
