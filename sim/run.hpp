@@ -61,6 +61,10 @@ struct RunResult {
   std::int64_t periods = 0;
   std::int64_t infeasible_allocations = 0;  // periods where the TMF could not reach the demand exactly
   std::int64_t active_checks = 0;           // periods whose command carried an active check's test pulse
+  // Thruster saturation: the largest on-time any thruster was commanded (a fraction of the period)
+  // and the periods in which some thruster was commanded the whole period (no margin left in it).
+  double max_on_fraction = 0.0;             // [-]
+  std::int64_t saturated_periods = 0;
   bool telemetry_ok = true;
   FdirResult fdir;
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole

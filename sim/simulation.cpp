@@ -193,6 +193,10 @@ void Simulation::end_period(const flight::FlightOutput& out) {
 
   result_.infeasible_allocations += !out.allocation_feasible;
   result_.active_checks += out.checked_thruster != model::kNoThruster;
+  double largest = 0.0;
+  for (int i = 0; i < shape_.thrusters; ++i) largest = std::max(largest, out.command.ton[static_cast<std::size_t>(i)]);
+  result_.max_on_fraction = std::max(result_.max_on_fraction, largest);
+  result_.saturated_periods += largest >= 1.0;
   if (options_.record_glr_per_second) {
     std::array<float, 3>& second = result_.glr_max_per_s[static_cast<std::size_t>(t_s)];
     second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr.value()));

@@ -1,5 +1,9 @@
-#include <cmath>
 #include "sim/summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -16,6 +20,40 @@ constexpr double kRadToDeg = 1.0 / kDegToRad;
 // infinite or -1): its value; else null.
 nlohmann::json finite_or_null(bool exists, double value) {
   return exists && std::isfinite(value) && value != -1 ? nlohmann::json(value) : nlohmann::json();
+}
+
+// The guidance's phases and their times (COMRADE 2018 sec. 2.1 with guidance.synchronised.approach;
+// the line and its hold otherwise), each ending where the next starts and the last at duration_s.
+nlohmann::json phases_json(const model::Scenario& s) {
+  const model::GuidanceParams& g = s.guidance;
+  std::vector<std::pair<const char*, double>> starts;  // name, start
+  if (g.synchronised && g.synchronised->approach) {
+    const model::SyncApproachParams& a = *g.synchronised->approach;
+    const double axis = a.fly_around_start_s + a.fly_around_duration_s;
+    const double rotation = axis + a.axis_approach_duration_s;
+    const double transfer = g.synchronised->transfer_start_s;
+    starts = {{"line", 0.0},
+              {"line_end_hold", g.approach_duration_s},
+              {"fly_around", a.fly_around_start_s},
+              {"axis_approach", axis},
+              {"rotation_synchronisation", rotation},
+              {"axis_hold", a.rotation_sync_end_s()},
+              {"transfer", transfer},
+              {"capture_point_hold", transfer + g.synchronised->transfer_duration_s}};
+  } else if (g.synchronised) {
+    starts = {{"start_point_hold", 0.0},
+              {"transfer", g.synchronised->transfer_start_s},
+              {"capture_point_hold", g.synchronised->transfer_start_s + g.synchronised->transfer_duration_s}};
+  } else {
+    starts = {{"line", 0.0}, {"capture_point_hold", g.approach_duration_s}};
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const double start = std::min(starts[i].second, s.duration_s);
+    const double end = std::min(i + 1 < starts.size() ? starts[i + 1].second : s.duration_s, s.duration_s);
+    if (end > start) out.push_back({{"name", starts[i].first}, {"start_s", start}, {"duration_s", end - start}});
+  }
+  return out;
 }
 
 nlohmann::json thruster_json(int index) {
@@ -170,6 +208,9 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"propellant_used_kg", r.propellant_used_kg},
       {"infeasible_allocation_periods", r.infeasible_allocations},
       {"active_check_pulses", r.active_checks},
+      {"max_thruster_on_fraction", r.max_on_fraction},
+      {"thruster_saturated_s", static_cast<double>(r.saturated_periods) * scenario.control_period_s},
+      {"phases", phases_json(scenario)},
       {"fdir", fdir_json(scenario, r.fdir)},
   };
 }
@@ -198,6 +239,8 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
   if (checks_keep_out(scenario))
     out += fmt::format("  keep-out: least clearance {:.3f} m at {:.1f} s (target.body.keep_out less chaser.keep_out_radius_m)\n",
                        f.min_target_clearance_m, f.min_target_clearance_at_s);
+  out += fmt::format("  thrusters: largest on-time {:.0f} % of a period, {:.1f} s with one saturated (commanded the whole period)\n",
+                     100.0 * r.max_on_fraction, static_cast<double>(r.saturated_periods) * scenario.control_period_s);
   if (checks_keep_out(scenario) && scenario.guidance.synchronised && scenario.guidance.synchronised->approach)
     out += fmt::format("  COMRADE Table 4: {:.3f} m before the rotation's synchronisation (>= 3 m), {:.3f} m after (>= 0.5 m); "
                        "final rate error {:.3f} deg/s\n",
