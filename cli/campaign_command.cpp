@@ -153,42 +153,53 @@ int campaign_mpi(const CampaignArgs& args) {
 
 // --preset comrade-table5 (docs/campaigns.md, "COMRADE Table 5"): one fault-free campaign per
 // spin case S1, S2, S3 of a scenario flying the synchronisation (guidance.synchronised.approach),
-// or one of the scenario as it is (the ASSIST approach), each in its folder under --out and
-// resumable as any campaign; then table5.md and table5.csv beside them.
+// or one of the scenario as it is (the ASSIST approach), for the scenario and each --also, each in
+// its folder under --out and resumable as any campaign; then table5.md and table5.csv beside them.
 int comrade_table5(const CampaignArgs& args) {
   if (args.mpi || !args.shard.empty() || !args.cases.empty()) {
     std::cerr << "chaser campaign: --preset comrade-table5 runs whole fault-free campaigns in one process: "
                  "leave out --mpi, --shard and --cases\n";
     return kExitBadInput;
   }
-  const auto loaded = load_or_report(args.scenario_path, args.overrides);
-  if (!loaded) return kExitBadInput;
-  const model::Scenario& s = *loaded->scenario;
-  if (!s.target.body) {
-    std::cerr << "chaser campaign: --preset comrade-table5: needs a COMRADE target (target.body): "
-                 "scenarios/comrade_sync.yaml or scenarios/comrade_assist.yaml\n";
-    return kExitBadInput;
+  std::vector<std::string> paths = {args.scenario_path};
+  paths.insert(paths.end(), args.also.begin(), args.also.end());
+  struct Case {
+    std::string scenario_path, name, override_text;
+  };
+  std::vector<Case> cases;
+  for (const std::string& path : paths) {  // every scenario checked before anything runs
+    const auto loaded = load_or_report(path, args.overrides);
+    if (!loaded) return kExitBadInput;
+    const model::Scenario& s = *loaded->scenario;
+    if (!s.target.body) {
+      std::cerr << fmt::format("chaser campaign: --preset comrade-table5: {} has no COMRADE target (target.body): "
+                               "use scenarios/comrade_sync.yaml or scenarios/comrade_assist.yaml\n",
+                               path);
+      return kExitBadInput;
+    }
+    if (s.guidance.synchronised && s.guidance.synchronised->approach)
+      for (const char* spin : {"S1", "S2", "S3"})
+        cases.push_back({path, spin, fmt::format("target.body.spin_case={}", spin)});
+    else
+      cases.push_back({path, s.name, ""});
   }
-  std::vector<std::pair<std::string, std::string>> cases;  // name, override
-  if (s.guidance.synchronised && s.guidance.synchronised->approach)
-    for (const char* spin : {"S1", "S2", "S3"}) cases.emplace_back(spin, fmt::format("target.body.spin_case={}", spin));
-  else
-    cases.emplace_back(s.name, "");
   std::vector<campaign::Table5Column> columns;
-  for (const auto& [name, override_text] : cases) {
+  for (const Case& c : cases) {
     CampaignArgs sub = args;
     sub.preset.clear();
+    sub.also.clear();
+    sub.scenario_path = c.scenario_path;
     sub.cases = "none";
     if (sub.runs.empty()) sub.runs = kTable5Runs;
-    sub.out_dir = (std::filesystem::path(args.out_dir) / name).string();
-    if (!override_text.empty()) sub.overrides.insert(sub.overrides.begin(), override_text);  // the user's --set win
-    std::cerr << fmt::format("comrade-table5: case {}\n", name);
+    sub.out_dir = (std::filesystem::path(args.out_dir) / c.name).string();
+    if (!c.override_text.empty()) sub.overrides.insert(sub.overrides.begin(), c.override_text);  // the user's --set win
+    std::cerr << fmt::format("comrade-table5: case {}\n", c.name);
     const std::optional<Prepared> prepared = prepare(sub);
     if (!prepared) return kExitBadInput;
     const int code = report(campaign::run_campaign(prepared->plan, prepared->options), sub.out_dir);
     if (code != kExitOk) return code;
     std::string error;
-    const auto column = campaign::read_table5_column(name, sub.out_dir + "/runs.csv", error);
+    const auto column = campaign::read_table5_column(c.name, sub.out_dir + "/runs.csv", error);
     if (!column) {
       std::cerr << ("chaser campaign: " + error + '\n');
       return kExitFailure;
@@ -206,6 +217,10 @@ int comrade_table5(const CampaignArgs& args) {
 
 int campaign_command(const CampaignArgs& args) {
   if (args.preset == kPresetTable5) return comrade_table5(args);
+  if (!args.also.empty()) {
+    std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";
+    return kExitBadInput;
+  }
   if (args.mpi && !campaign::mpi_built()) {
     std::cerr << ("chaser campaign: " + std::string(campaign::kNoMpiMessage) + '\n');
     return kExitBadInput;

@@ -43,6 +43,7 @@ struct CampaignArgs {
   std::string preset;
   bool mpi = false;            // spread the runs over MPI ranks (main.cpp started MPI)
   std::vector<std::string> targets;  // --target 'P_nd<=1e-3@0.95' (campaign/target.hpp)
+  std::vector<std::string> also;     // --also SCENARIO: more columns of --preset comrade-table5 (ASSIST)
 };
 
 // chaser fmea (docs/invsim.md, "chaser fmea").

@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
   campaign_cmd->add_option("--seed", campaign.seed, "Campaign seed (replaces campaign.seed)");
   campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
   campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign; comrade-table5: COMRADE 2018 Table 5 by spin case (docs/campaigns.md)");
+  campaign_cmd->add_option("--also", campaign.also,
+                           "With --preset comrade-table5: another scenario's cases in the same table (repeatable)");
   campaign_cmd->add_flag("--mpi", campaign.mpi, "Spread the runs over the ranks of mpirun/srun; rank 0 writes");
   constexpr const char* kTargetHelp =
       "Requirement to judge, e.g. 'P_nd<=1e-3@0.95' (repeatable): INDEX<=P@C for P_nd, P_f; INDEX>=Q@C for P_i, "

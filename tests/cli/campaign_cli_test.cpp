@@ -64,35 +64,35 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
 }
 
 // --preset comrade-table5: one campaign per spin case of the synchronisation (here one run each,
-// 3,000 s), or one of ASSIST's approach, and table5.md beside them; refused with a shard, and on a
-// scenario without a COMRADE target, naming the option.
+// 3,000 s) and one of ASSIST's approach (--also), table5.md beside them, resumable; refused with a
+// shard, on a scenario without a COMRADE target, and --also without the preset, naming the option.
 TEST(CampaignCli, ComradeTable5WritesACaseFolderPerSpinCaseAndTheTable) {
   const fs::path dir = fs::temp_directory_path() / ("chaser_table5_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  const CommandResult sync =
-      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-table5 --runs 1 --threads 2 --out " + dir.string());
+  const std::string preset = "campaign scenarios/comrade_sync.yaml --preset comrade-table5 --also "
+                             "scenarios/comrade_assist.yaml --runs 1 --threads 2 --out " + dir.string();
+  const CommandResult sync = chaser(preset);
   ASSERT_EQ(sync.exit_code, 0) << sync.output;
-  for (const char* spin : {"S1", "S2", "S3"}) EXPECT_TRUE(fs::exists(dir / spin / "runs.csv")) << spin;
+  for (const char* spin : {"S1", "S2", "S3", "comrade_assist"}) EXPECT_TRUE(fs::exists(dir / spin / "runs.csv")) << spin;
   const std::string table = read_file(dir / "table5.md");
-  EXPECT_NE(table.find("| figure | Table 1 | COMRADE 2018 | S1 | S2 | S3 |"), std::string::npos) << table;
-  EXPECT_NE(table.find("| runs flown of runs | | 100 | 1 of 1 | 1 of 1 | 1 of 1 |"), std::string::npos) << table;
-  const CommandResult again =  // resumable: every case found done
-      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-table5 --runs 1 --resume --out " + dir.string());
+  EXPECT_NE(table.find("| figure | Table 1 | COMRADE 2018 | S1 | S2 | S3 | comrade_assist |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| runs flown of runs | | 100 | 1 of 1 | 1 of 1 | 1 of 1 | 1 of 1 |"), std::string::npos) << table;
+  const CommandResult again = chaser(preset + " --resume");  // resumable: every case found done
   EXPECT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(read_file(dir / "table5.md"), table);
-  fs::remove_all(dir);
-
-  const CommandResult assist =
-      chaser("campaign scenarios/comrade_assist.yaml --preset comrade-table5 --runs 2 --out " + dir.string());
-  ASSERT_EQ(assist.exit_code, 0) << assist.output;
-  EXPECT_NE(read_file(dir / "table5.md").find("| comrade_assist |"), std::string::npos);
+  const CommandResult stray = chaser("campaign scenarios/comrade_assist.yaml --also scenarios/comrade_sync.yaml --out " +
+                                     dir.string());
+  EXPECT_EQ(stray.exit_code, 2);
+  EXPECT_NE(stray.output.find("--also: only with --preset comrade-table5"), std::string::npos) << stray.output;
   const CommandResult shard = chaser("campaign scenarios/comrade_assist.yaml --preset comrade-table5 --shard 0/2 --out " +
                                      dir.string());
   EXPECT_EQ(shard.exit_code, 2);
   EXPECT_NE(shard.output.find("leave out --mpi, --shard and --cases"), std::string::npos) << shard.output;
   const CommandResult msr = chaser("campaign scenarios/msr_terminal.yaml --preset comrade-table5 --out " + dir.string());
   EXPECT_EQ(msr.exit_code, 2);
-  EXPECT_NE(msr.output.find("--preset comrade-table5: needs a COMRADE target"), std::string::npos) << msr.output;
+  EXPECT_NE(msr.output.find("--preset comrade-table5: scenarios/msr_terminal.yaml has no COMRADE target"),
+            std::string::npos)
+      << msr.output;
   fs::remove_all(dir);
 }
 
