@@ -193,8 +193,8 @@ void Simulation::end_period(const flight::FlightOutput& out) {
 
   result_.infeasible_allocations += !out.allocation_feasible;
   result_.active_checks += out.checked_thruster != model::kNoThruster;
-  double largest = 0.0;
-  for (int i = 0; i < shape_.thrusters; ++i) largest = std::max(largest, out.command.ton[static_cast<std::size_t>(i)]);
+  const double largest =  // Eigen's packet reduction: a fraction of a scalar loop's cost over 16-24 thrusters
+      Eigen::Map<const Eigen::ArrayXd>(out.command.ton.data(), shape_.thrusters).maxCoeff();
   result_.max_on_fraction = std::max(result_.max_on_fraction, largest);
   result_.saturated_periods += largest >= 1.0;
   if (options_.record_glr_per_second) {
