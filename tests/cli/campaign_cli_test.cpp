@@ -33,7 +33,7 @@ CommandResult chaser(const std::string& args) {
 }
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("chaser_campaign_cli_" + name);
+  const fs::path dir = chaser::testing::scratch_path("chaser_campaign_cli_" + name);
   fs::remove_all(dir);
   return dir;
 }
@@ -67,7 +67,7 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
 // 3,000 s) and one of ASSIST's approach (--also), table5.md beside them, resumable; refused with a
 // shard, on a scenario without a COMRADE target, and --also without the preset, naming the option.
 TEST(CampaignCli, ComradeTable5WritesACaseFolderPerSpinCaseAndTheTable) {
-  const fs::path dir = fs::temp_directory_path() / ("chaser_table5_cli_" + std::to_string(::getpid()));
+  const fs::path dir = chaser::testing::scratch_path("chaser_table5_cli");
   fs::remove_all(dir);
   const std::string preset = "campaign scenarios/comrade_sync.yaml --preset comrade-table5 --also "
                              "scenarios/comrade_assist.yaml --runs 1 --threads 2 --out " + dir.string();

@@ -50,7 +50,7 @@ std::string mpirun(int ranks) {
 }
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("chaser_campaign_mpi_" + name);
+  const fs::path dir = chaser::testing::scratch_path("chaser_campaign_mpi_" + name);
   fs::remove_all(dir);
   return dir;
 }

@@ -59,7 +59,7 @@ TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
 // run's) are gone, not left to pass for this run's. The same command run to the end leaves exactly
 // the two files.
 TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
-  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_killed";
+  const auto dir = chaser::testing::scratch_path("chaser_cli_killed");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string out = dir.string();
@@ -92,7 +92,7 @@ TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
 
 // --channels keeps the named channels (and t_s); a pattern that matches nothing is a typo: exit 2.
 TEST(Cli, RunWritesTheChosenChannelsAndRefusesUnknownOnes) {
-  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_channels";
+  const auto dir = chaser::testing::scratch_path("chaser_cli_channels");
   std::filesystem::remove_all(dir);
   const CommandResult r = run_chaser("run scenarios/msr_terminal.yaml --set duration_s=1 --channels 'r_lvlh_?_m,glr_*' --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -111,7 +111,7 @@ TEST(Cli, RunWritesTheChosenChannelsAndRefusesUnknownOnes) {
 TEST(Cli, PlotScriptsReadCsvAndNpyTelemetry) {
   if (run_chaser_shell("/usr/bin/python3 -c 'import numpy, matplotlib'").exit_code != 0) GTEST_SKIP() << "no numpy/matplotlib";
   for (const std::string format : {"csv", "npy"}) {
-    const auto dir = std::filesystem::temp_directory_path() / ("chaser_cli_plots_" + format);
+    const auto dir = chaser::testing::scratch_path("chaser_cli_plots_" + format);
     std::filesystem::remove_all(dir);
     ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=30 --telemetry " + format + " --out " +
                          dir.string()).exit_code, 0);
@@ -126,7 +126,7 @@ TEST(Cli, PlotScriptsReadCsvAndNpyTelemetry) {
 }
 
 TEST(Cli, RunWritesTelemetryAndSummary) {
-  const auto dir = std::filesystem::temp_directory_path() / "chaser_cli_test";
+  const auto dir = chaser::testing::scratch_path("chaser_cli_test");
   std::filesystem::remove_all(dir);
   const CommandResult r =
       run_chaser("run scenarios/msr_terminal.yaml --set duration_s=20 --seed 7 --out " + dir.string());
@@ -168,7 +168,7 @@ namespace {
 // chaser fdi design prints the design figures and writes the design as JSON; the assigned
 // eigenvalues are the paper's (0.85 ... 0.95), which the library reaches to 1e-9.
 TEST(Cli, FdiDesignWritesTheDesign) {
-  const auto path = std::filesystem::temp_directory_path() / "chaser_fdi_design.json";
+  const auto path = chaser::testing::scratch_path("chaser_fdi_design.json");
   for (const char* model : {"position", "attitude"}) {
     const CommandResult r =
         run_chaser(std::string("fdi design scenarios/msr_terminal.yaml --model ") + model + " --out " + path.string());
@@ -193,7 +193,7 @@ namespace {
 // loss (model/thruster_set_analysis tests: T1, T2, T3, T5, T6, T7 each break branch A's span). The
 // JSON holds the same figures: +Fx of branch A is 31.3 N (tests/model/thruster_set_analysis_test).
 TEST(Cli, ThrustersAnalysesTheStartAndRecoverySets) {
-  const auto json = std::filesystem::temp_directory_path() / "chaser_thrusters_test.json";
+  const auto json = chaser::testing::scratch_path("chaser_thrusters_test.json");
   const CommandResult r = run_chaser("thrusters scenarios/msr_terminal.yaml --json " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("the set that flies at the start (T1, T2, T3, T4, T5, T6, T7, T8)"), std::string::npos)
@@ -217,8 +217,8 @@ TEST(Cli, ThrustersAnalysesTheStartAndRecoverySets) {
 // sweep) at or below the gamma its controller was formed at, and its authority the smaller of the
 // +/- pure force of `chaser thrusters` divided by the mass (an independent path to the same LP).
 TEST(Cli, ControlDesignChecksSixLoops) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const auto json = dir / "chaser_control_design_test.json", thrusters = dir / "chaser_control_thrusters.json";
+  const auto json = chaser::testing::scratch_path("chaser_control_design_test.json");
+  const auto thrusters = chaser::testing::scratch_path("chaser_control_thrusters.json");
   const CommandResult r = run_chaser("control design scenarios/comrade_envisat.yaml --out " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("rz"), std::string::npos) << r.output;
@@ -277,7 +277,7 @@ TEST(Cli, ControlDesignRefusesWhatItCannotDesign) {
 // combination captures inside the corridor (one seed each; docs/control.md, "Flying the loops",
 // and docs/gnc.md, "Thrust allocation", give the campaigns). MSR has no control.hinf: refused.
 TEST(Cli, EnvisatFliesEveryLawAndNorm) {
-  const auto out = std::filesystem::temp_directory_path() / "chaser_law_norm_test";
+  const auto out = chaser::testing::scratch_path("chaser_law_norm_test");
   for (const char* law : {"lqr", "hinf"}) {
     for (const char* norm : {"1", "2", "inf"}) {
       const std::string what = std::string(law) + ", p = " + norm;

@@ -33,7 +33,7 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("chaser_fmea_cli_" + name);
+  const fs::path dir = chaser::testing::scratch_path("chaser_fmea_cli_" + name);
   fs::remove_all(dir);
   return dir;
 }

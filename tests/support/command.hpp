@@ -47,6 +47,22 @@ inline pid_t start_process(const std::string& binary, std::vector<std::string> a
   _exit(127);
 }
 
+// A path in this test process's own temporary folder, so that suites run side by side (two build
+// trees' `ctest` at once) never share one; the folder goes when the process exits.
+struct ScratchRoot {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("chaser_tests_" + std::to_string(::getpid()));
+  ScratchRoot() { std::filesystem::create_directories(path); }
+  ~ScratchRoot() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+inline std::filesystem::path scratch_path(const std::string& name) {
+  static const ScratchRoot root;
+  return root.path / name;
+}
+
 // The whole file as bytes (empty if it cannot be read).
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
