@@ -31,8 +31,8 @@ double progress(double t_s, double start_s, double duration_s) {
   return rest_to_rest_quintic((t_s - start_s) / duration_s)[0];
 }
 
-// The rotation by `angle` about the axis u x v (unit vectors), or about a fixed perpendicular of u
-// when u and v are (anti)parallel and the great circle is not defined by them.
+// The rotation by `fraction` of the angle from u to v about u x v (unit vectors), or about a fixed
+// perpendicular of u when u and v are (anti)parallel and the great circle is not defined by them.
 Quat rotation_towards(const Vec3& u, const Vec3& v, double fraction) {
   Vec3 axis = u.cross(v);
   const double angle = std::atan2(axis.norm(), u.dot(v));

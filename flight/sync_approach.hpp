@@ -30,7 +30,7 @@
 // rate derivative (second order: the odd error terms cancel in the central difference). Error of the
 // difference: h^2/12 r'''' -- with the target's 2.5 deg/s and d = 12 m, w^4 d h^2/12 ~ 1e-8 m/s^2
 // against an authority of 0.055 m/s^2 -- and rounding 2 eps |r| / h^2 ~ 3e-12 m/s^2 at 30 m. The
-// test checks them against the closed forms of a fixed axis (flight/sync_approach_test.cpp).
+// test checks them against the closed forms of a fixed axis (tests/flight/sync_approach_test.cpp).
 #include <optional>
 
 #include "flight/guidance.hpp"
