@@ -1,6 +1,6 @@
 # Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
 # benchmarks, `make sanitize` every test under ASan and UBSan (`make sanitize-fast` CI's subset),
-# `make fuzz` the loaders' fuzzers
+# `make fuzz` the loaders' fuzzers, `make servicing` COMRADE's synchronisation and its Table 5
 # (docs/reliability.md). Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -9,6 +9,7 @@ PYTHON ?= /usr/bin/python3
 DEMO_OUT ?= demo-out
 
 FMEA_OUT ?= fmea-out
+SERVICING_OUT ?= servicing-out
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
@@ -16,7 +17,7 @@ FUZZ_TARGETS ?= scenario overrides invsim
 
 SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_io test_flight test_fdi
 
-.PHONY: all deps configure build test demo fmea bench sanitize sanitize-fast fuzz clean
+.PHONY: all deps configure build test demo fmea servicing bench sanitize sanitize-fast fuzz clean
 
 all: build
 
@@ -42,6 +43,15 @@ demo: build
 fmea: build
 	@./$(BUILD)/cli/chaser fmea scenarios/manual_rvd.yaml --out $(FMEA_OUT) --optimize --history
 	@$(PYTHON) python/plot_invsim.py $(FMEA_OUT)
+
+# COMRADE 2018's synchronisation (docs/servicing.md): one flight and its plots, then Table 5 by
+# Monte Carlo, 100 runs per spin case and ASSIST's approach (~35 s on 2 cores), and its scatter.
+servicing: build
+	@./$(BUILD)/cli/chaser run scenarios/comrade_sync.yaml --out $(SERVICING_OUT)/flight
+	@$(PYTHON) python/plot_servicing.py $(SERVICING_OUT)/flight
+	@./$(BUILD)/cli/chaser campaign scenarios/comrade_sync.yaml --preset comrade-table5 \
+	  --also scenarios/comrade_assist.yaml --out $(SERVICING_OUT)/table5
+	@$(PYTHON) python/plot_table5.py $(SERVICING_OUT)/table5
 
 bench: build
 	@./$(BUILD)/bench/chaser_bench
