@@ -126,7 +126,12 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
   sample.omega_body_radps = meas.omega_body_radps;
   sample.r_lvlh_m = meas.r_lvlh_m;
   sample.q_lvlh_from_body = q_lvlh_from_body;
-  sample.ton = in.ton;
+  // The set's lanes only: the rest of the slot is zero since the watch started (start_watch clears
+  // the bank), and copying all kMaxWatchedThrusters lanes cost MSR four cache lines a period for one.
+  if (w.set.count == fdi::kSchemeThrusters)
+    sample.ton.head<fdi::kSchemeThrusters>() = in.ton.head<fdi::kSchemeThrusters>();
+  else
+    sample.ton.head(w.set.count) = in.ton.head(w.set.count);
   sample.mass_kg = w.deficit.mass_kg - meas.propellant_used_kg;
   fdi::push_deficit_sample(w.deficit, state.deficit_bank);
 }

@@ -145,8 +145,10 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   const Vec3& w = now.omega_body_radps;
   const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
   Vec3 row = I * d_omega_dt + w.cross(I * w);
-  for (int i = 0; i < p.lanes; ++i)  // M_C T_on over the commanded thrusters: most periods none
-    if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i)  // M_C T_on over the commanded thrusters: most periods none
+      if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
+  });
   return row;
 }
 
@@ -157,8 +159,10 @@ Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
   // epsilon |M_C| T_on over the commanded thrusters only: most periods command none.
   Vec3 pulse = Vec3::Zero();
-  for (int i = 0; i < p.lanes; ++i)
-    if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i)
+      if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
+  });
   pulse *= p.pulse_uncertainty;
   return (deficit_sigma0_sq(bank) + pulse.cwiseProduct(pulse)).cwiseInverse();
 }

@@ -101,8 +101,10 @@ struct DeficitSample {
   Vec3 omega_body_radps = Vec3::Zero();  // gyro
   Vec3 r_lvlh_m = Vec3::Zero();          // LIDAR
   Quat q_lvlh_from_body = Quat::Identity();  // estimated attitude
-  WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period
   double mass_kg = 1.0;                  // [kg] nominal mass less the measured propellant used
+  // Last, so that a small set's lanes share cache lines with the fields above (MSR: a sample
+  // written each period touches three lines, as when the ring held eight lanes).
+  WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period
 };
 
 struct DeficitBankState {

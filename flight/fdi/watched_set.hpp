@@ -10,6 +10,7 @@
 // fdi.position or fdi.attitude on an active set of another size (model/fdi.hpp).
 #include <Eigen/Core>
 #include <array>
+#include <type_traits>
 
 #include "model/fdi.hpp"
 #include "model/thrusters.hpp"
@@ -38,5 +39,16 @@ struct WatchedSet {
 
 // The lanes of `mask` (1..kMaxThrusters thrusters).
 WatchedSet watched_set(model::ThrusterMask mask);
+
+// Calls f(n) with the lane count n as a compile-time constant for a set of kSchemeThrusters (MSR's
+// branch: the per-period loops unrolled and the block sums vectorised as in the eight-lane
+// kernels, so MSR's FDIR costs what it did) and as an int for any other count.
+template <class F>
+inline void with_lanes(int lanes, F&& f) {
+  if (lanes == kSchemeThrusters)
+    f(std::integral_constant<int, kSchemeThrusters>{});
+  else
+    f(lanes);
+}
 
 }  // namespace chaser::flight::fdi
