@@ -127,7 +127,7 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
   sample.r_lvlh_m = meas.r_lvlh_m;
   sample.q_lvlh_from_body = q_lvlh_from_body;
   // The set's lanes only: the rest of the slot is zero since the watch started (start_watch clears
-  // the bank), and copying all kMaxWatchedThrusters lanes cost MSR four cache lines a period for one.
+  // the bank); all kMaxWatchedThrusters lanes would write four cache lines a period where MSR needs one.
   if (w.set.count == fdi::kSchemeThrusters)
     sample.ton.head<fdi::kSchemeThrusters>() = in.ton.head<fdi::kSchemeThrusters>();
   else
