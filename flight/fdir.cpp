@@ -17,12 +17,13 @@ namespace chaser::flight {
 
 namespace {
 
-fdi::WatchedConfig watched_config(const model::Scenario& s, model::ThrusterMask mask) {
-  return model::configuration_matrix(s.thrusters, mask, s.chaser.com_body_m).leftCols<fdi::kWatchedThrusters>();
+// M of a set the Fonod 2015 schemes watch (validate_scenario: kSchemeThrusters of them).
+fdi::SchemeConfig scheme_config(const model::Scenario& s, model::ThrusterMask mask) {
+  return model::configuration_matrix(s.thrusters, mask, s.chaser.com_body_m).leftCols<fdi::kSchemeThrusters>();
 }
 
 // The fault directions of a scheme in its model's input space (3 x lanes: M_F in LVLH or M_C).
-fdi::Mat3W thruster_inputs(const model::Scenario& s, FdiModel model, const fdi::WatchedConfig& config) {
+fdi::Mat3W thruster_inputs(const model::Scenario& s, FdiModel model, const fdi::SchemeConfig& config) {
   if (model == FdiModel::kAttitude) return config.bottomRows<3>();
   // The position model's input is the force in LVLH (eq. 20): the fault directions are those of
   // the attitude the chaser flies, target pointing, not of body axes aligned with LVLH.
@@ -62,13 +63,13 @@ fdi::FdiSchemeParams for_set(const model::Scenario& s, fdi::FdiSchemeParams p, c
 
 int whole_periods(double seconds, double period_s) { return static_cast<int>(std::lround(seconds / period_s)); }
 
-fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const fdi::WatchedConfig& config) {
+// The bank's lanes: every thruster of the set, however many (1..kMaxThrusters).
+fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, model::ThrusterMask mask) {
   const double T = s.control_period_s;
   fdi::DeficitIsolationParams p;
   p.inertia_kgm2 = s.chaser.inertia_kgm2;
   p.mass_kg = s.chaser.mass_kg;
-  p.force_body_N = config.topRows<3>();
-  p.torque_body_Nm = config.bottomRows<3>();
+  fdi::set_deficit_columns(p, model::configuration_columns(s.thrusters, mask, s.chaser.com_body_m));
   p.period_s = T;
   p.before = whole_periods(s.fdi.deficit.window_before_s, T);
   p.after = whole_periods(s.fdi.deficit.window_after_s, T);
@@ -85,12 +86,15 @@ fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, const fdi::
   return p;
 }
 
-// The active sets the FDI may watch: every set the vehicle may fly (model::reachable_configurations)
-// of the FDI's size.
+// The active sets the FDI may watch: every set the vehicle may fly (model::reachable_configurations),
+// of the Fonod 2015 schemes' size when one of them is on (the deficit bank and detector watch any).
 std::vector<model::ThrusterMask> watchable_sets(const model::Scenario& s) {
+  const bool schemes = s.fdi.position.enabled || s.fdi.attitude.enabled;
   std::vector<model::ThrusterMask> sets;
-  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery))
-    if (model::thruster_count(r.configuration.active) == fdi::kWatchedThrusters) sets.push_back(r.configuration.active);
+  for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery)) {
+    const int count = model::thruster_count(r.configuration.active);
+    if (schemes ? count == fdi::kSchemeThrusters : count >= 1) sets.push_back(r.configuration.active);
+  }
   return sets;
 }
 
@@ -122,7 +126,12 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
   sample.omega_body_radps = meas.omega_body_radps;
   sample.r_lvlh_m = meas.r_lvlh_m;
   sample.q_lvlh_from_body = q_lvlh_from_body;
-  sample.ton = in.ton;
+  // The set's lanes only: the rest of the slot is zero since the watch started (start_watch clears
+  // the bank); all kMaxWatchedThrusters lanes would write four cache lines a period where MSR needs one.
+  if (w.set.count == fdi::kSchemeThrusters)
+    sample.ton.head<fdi::kSchemeThrusters>() = in.ton.head<fdi::kSchemeThrusters>();
+  else
+    sample.ton.head(w.set.count) = in.ton.head(w.set.count);
   sample.mass_kg = w.deficit.mass_kg - meas.propellant_used_kg;
   fdi::push_deficit_sample(w.deficit, state.deficit_bank);
 }
@@ -175,7 +184,7 @@ SchemeSummary summary_of(const FdiWatchedParams& w, bool alarm, double alarm_s, 
 }  // namespace
 
 fdi::DesignInputs scheme_design_inputs(const model::Scenario& s, FdiModel model) {
-  const fdi::WatchedConfig config = watched_config(s, model::initial_active_set(s.thrusters));
+  const fdi::SchemeConfig config = scheme_config(s, model::initial_active_set(s.thrusters));
   fdi::DesignInputs inputs =
       model == FdiModel::kPosition ? fdi::position_design_inputs(s, config) : fdi::attitude_design_inputs(s, config);
   if (model == FdiModel::kPosition) {
@@ -215,13 +224,15 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   if (p.position_enabled) position = design(FdiModel::kPosition, s.fdi.position);
   if (p.attitude_enabled) attitude = attitude_design.get();  // rethrows the design's exception, if any
   for (const model::ThrusterMask mask : watchable_sets(s)) {
-    const fdi::WatchedConfig config = watched_config(s, mask);
     FdiWatchedParams& w = p.watched.emplace_back();
     w.set = fdi::watched_set(mask);
-    if (p.position_enabled) w.position = for_set(s, position, thruster_inputs(s, FdiModel::kPosition, config));
-    if (p.attitude_enabled) w.attitude = for_set(s, attitude, thruster_inputs(s, FdiModel::kAttitude, config));
+    if (p.position_enabled || p.attitude_enabled) {
+      const fdi::SchemeConfig config = scheme_config(s, mask);
+      if (p.position_enabled) w.position = for_set(s, position, thruster_inputs(s, FdiModel::kPosition, config));
+      if (p.attitude_enabled) w.attitude = for_set(s, attitude, thruster_inputs(s, FdiModel::kAttitude, config));
+    }
     w.mass_flow_kgps = fdi::nominal_mass_flow_kgps(s.thrusters, w.set, s.chaser.isp_s);
-    if (p.deficit_isolation) w.deficit = deficit_params(s, config);
+    if (p.deficit_isolation) w.deficit = deficit_params(s, mask);
   }
   p.event.sensor_sigma_kg = s.sensors.propellant.noise_sigma_kg;
   p.event.absolute_margin_kg = s.fdi.over_consumption_threshold_kg;
@@ -246,7 +257,7 @@ fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& stat
   fdi::WatchedTon lanes = fdi::WatchedTon::Zero();
   if (params.watched.empty() || state.watched < 0) return lanes;
   const fdi::WatchedSet& w = watched_set(params, state);
-  for (int lane = 0; lane < fdi::kWatchedThrusters; ++lane) lanes[lane] = ton[static_cast<std::size_t>(w.index[static_cast<std::size_t>(lane)])];
+  for (int lane = 0; lane < w.count; ++lane) lanes[lane] = ton[static_cast<std::size_t>(w.index[static_cast<std::size_t>(lane)])];
   return lanes;
 }
 
@@ -275,7 +286,8 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
-    fdi::step_fdi_scheme(w.position, state.position, meas.r_lvlh_m, u_c, in.ton, out.over_consumption, out.position);
+    fdi::step_fdi_scheme(w.position, state.position, meas.r_lvlh_m, u_c, in.ton.head<fdi::kSchemeThrusters>(),
+                         out.over_consumption, out.position);
     if (!state.armed) clear_latches(state.position, out.position);
     if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.position_deficit, state.position, out.position);
     if (out.position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
@@ -284,8 +296,8 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     // Eq. 16-17: u_c = M_C T_on; y is the measured attitude about the target-pointing reference,
     // the small angles of the linearised model (eq. 15): 2 vec(q), equal to them to first order.
     const Vec3 angles = small_angle_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
-    fdi::step_fdi_scheme(w.attitude, state.attitude, angles, Vec3(wrench.tail<3>()), in.ton, out.over_consumption,
-                         out.attitude);
+    fdi::step_fdi_scheme(w.attitude, state.attitude, angles, Vec3(wrench.tail<3>()),
+                         in.ton.head<fdi::kSchemeThrusters>(), out.over_consumption, out.attitude);
     if (!state.armed) clear_latches(state.attitude, out.attitude);
     if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, out.attitude);
     if (out.attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;

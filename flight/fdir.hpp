@@ -37,7 +37,7 @@ struct FdiWatchedParams {
   fdi::FdiSchemeParams position;
   fdi::FdiSchemeParams attitude;
   fdi::DeficitIsolationParams deficit;
-  std::array<double, fdi::kWatchedThrusters> mass_flow_kgps{};  // [kg/s] nominal, per lane
+  std::array<double, fdi::kMaxWatchedThrusters> mass_flow_kgps{};  // [kg/s] nominal, per lane (zero past the set)
 };
 
 struct FdirParams {

@@ -61,12 +61,14 @@ struct FlightState {
   std::optional<TargetEstimator> target;      // with FlightParams::target_estimator
   SyncApproachLatch sync_latch;               // the axis and start point the approach fixed in flight
   Vec3 force_cmd_lvlh_N_prev = Vec3::Zero();  // [N] what was commanded last period, for navigation
-  FdirState fdir;
   model::ThrusterConfiguration thrusters;     // active set and latch valves: the scenario's starting
                                              // set, every latch open, until a recovery changes them
   ThrusterManagementState management;        // the active set's allocation problem
   ActiveCheckState active_check;              // when each active thruster last proved itself
   bool initialised = false;
+  // Last: its sample and block rings (kMaxWatchedThrusters lanes, ~0.3 MB) would otherwise sit
+  // between the small states every period reads, and spread them over more cache sets and pages.
+  FdirState fdir;
 };
 
 // Everything one period computed, for telemetry and for the plant (command).

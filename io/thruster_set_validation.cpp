@@ -1,6 +1,7 @@
 // What the thruster set can do, checked before a run: the set that flies at the start, and every
 // set a recovery can lead to, must push and turn in every direction (its configuration matrix's
-// columns positively span R^6); the FDI's fixed-size kernels must fit the active set; a scenario
+// columns positively span R^6); the Fonod 2015 schemes' fixed-size kernels must fit the active set
+// (the deficit bank and detector watch any set); a scenario
 // may require that every single-thruster loss leaves a spanning set; faults must name thrusters
 // that exist.
 #include <algorithm>
@@ -64,22 +65,24 @@ bool fdi_watches(const model::FdiParams& f) {
 }
 
 // Every set the vehicle may fly (model::reachable_configurations: the start, then each set the
-// recovery policy can switch to, fault after fault), checked for span and, with the FDI on, for
-// the FDI's set size.
+// recovery policy can switch to, fault after fault), checked for span and, with a Fonod 2015
+// scheme on, for its set size.
 void check_configurations(const model::Scenario& s, Diagnostics& d) {
   const bool fdi = fdi_watches(s.fdi);
+  const bool schemes = s.fdi.position.enabled || s.fdi.attitude.enabled;
   for (const model::ReachableConfiguration& r : model::reachable_configurations(s.thrusters, s.fdi.recovery)) {
     const model::ThrusterMask active = r.configuration.active;
     const std::string flies = model::when_it_flies(s.thrusters, r);
     const std::string set = describe_set(s.thrusters, active);
     if (const std::string problem = span_problem(s, active); !problem.empty())
       d.add("thrusters.list", fmt::format("{}, {}, {}", flies, set, problem));
-    if (fdi && model::thruster_count(active) != model::kFdiWatchedThrusters)
-      d.add("fdi", fmt::format("the FDI schemes (Fonod 2015) and the deficit bank watch exactly {} active thrusters; "
-                               "{}, {}, has {}: disable fdi.position, fdi.attitude and fdi.deficit.detection, "
-                               "or fly {} at a time (thrusters.standby_groups)",
-                               model::kFdiWatchedThrusters, flies, set, model::thruster_count(active),
-                               model::kFdiWatchedThrusters));
+    if (schemes && model::thruster_count(active) != model::kFdiSchemeThrusters)
+      d.add("fdi", fmt::format("fdi.position and fdi.attitude (the Fonod 2015 schemes) watch exactly {} active "
+                               "thrusters; {}, {}, has {}: disable fdi.position and fdi.attitude (the deficit "
+                               "detector, fdi.deficit.detection, watches any set), or fly {} at a time "
+                               "(thrusters.standby_groups)",
+                               model::kFdiSchemeThrusters, flies, set, model::thruster_count(active),
+                               model::kFdiSchemeThrusters));
   }
   // A check only costs propellant unless a scheme watches the pulse it fires.
   if (s.fdi.active_check.enabled && !fdi)

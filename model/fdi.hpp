@@ -42,11 +42,11 @@ struct DeficitParams {
 // Longest detector window the on-board sums hold, in periods.
 inline constexpr int kMaxDeficitDetectorWindowPeriods = 256;
 
-// The Fonod 2015 schemes (position, attitude) and Chaser's deficit bank and detector watch the
-// thrusters of the active set, exactly this many of them (MSR's branch of eight): their per-thruster
-// kernels are fixed-size (flight/fdi/watched_set.hpp). validate_scenario refuses a scenario that
-// enables them on an active set of another size.
-inline constexpr int kFdiWatchedThrusters = 8;
+// The Fonod 2015 schemes (position, attitude) watch exactly this many active thrusters (MSR's
+// branch of eight): their isolation kernels are fixed-size (flight/fdi/watched_set.hpp), and
+// validate_scenario refuses fdi.position or fdi.attitude on an active set of another size.
+// Chaser's deficit bank and detector watch any active set of 1..kMaxThrusters.
+inline constexpr int kFdiSchemeThrusters = 8;
 
 // Active checks of dormant thrusters (flight/active_check.hpp, issue 20): a thruster the approach
 // does not command cannot be diagnosed from its effects, so when one has not fired an informative

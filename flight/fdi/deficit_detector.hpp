@@ -12,7 +12,7 @@
 //   g = sum_k [1; u] c' W(k) y(k),  u = T_on,i(k), c = M_C,i,
 // a fit of five sums per thruster. W(k) is diagonal, so the two sums without u are linear in
 // sum_k W(k) and sum_k W(k) y(k) (c'Wc = sum over axes c_a^2 w_a): the window keeps those two
-// 3-vectors for all eight thrusters, and per thruster only the three sums with u, to which a row
+// 3-vectors for all the watched thrusters, and per thruster only the three sums with u, to which a row
 // adds nothing unless the thruster was commanded. Most periods command none (81 % of the MSR
 // approach, 0.26 thrusters a period on average), so a period's row costs its weights and six
 // additions. The rows are summed in blocks of `evaluate_every` periods, the gains' cadence: per
@@ -26,8 +26,13 @@
 // of Fonod 2015's ranges are 10-100 % of a thruster. Partners (same torque) are alike here; the
 // deficit bank's position rows tell them apart after the alarm.
 //
-// Cost: the weights and six additions per period, ten flops more per commanded thruster, and the 8
-// gains every `evaluate_every` periods (bench: BM_FdirPeriod/fdi_on less BM_FdirPeriod/fdi_published).
+// Any watched set of 1..kMaxWatchedThrusters (deficit_isolation.hpp, "Lanes"): the per-thruster
+// sums are stored at that capacity and only the set's lanes are touched. A block's bookkeeping
+// (entering the window, leaving it, being reset) costs per lane, so a 24-thruster set pays three
+// times MSR's there; the rows themselves cost per commanded thruster, whatever the set.
+//
+// Cost: the weights and six additions per period, ten flops more per commanded thruster, and the
+// lanes' gains every `evaluate_every` periods (bench: BM_FdirPeriod/fdi_on less BM_FdirPeriod/fdi_published).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -51,12 +56,12 @@ std::vector<std::string> validate(const DeficitDetectorParams& params);
 
 // Per thruster, the three sums with u, row i for thruster i: [u c'Wc, u^2 c'Wc, u c'Wy] (the
 // normal equations' hab, hbb, gb).
-using DeficitCommandSums = Eigen::Matrix<double, kWatchedThrusters, 3>;
+using DeficitCommandSums = Eigen::Matrix<double, kMaxWatchedThrusters, 3>;
 // Per thruster, the rows in which it was commanded (T_on > 0). Kept exactly (integers) because the
 // running sums are not: once a thruster's last pulse has left the window, its command sums are the
 // rounding residue of adding and removing that pulse, ~1e-16 of it, not zero, and its b fitted
 // from them is arbitrary (it made a "material" b and an alarm in a Table 2 run).
-using DeficitCommandedRows = Eigen::Matrix<std::int32_t, kWatchedThrusters, 1>;
+using DeficitCommandedRows = Eigen::Matrix<std::int32_t, kMaxWatchedThrusters, 1>;
 
 // The sums of a run of rows.
 struct DeficitDetectorBlock {
@@ -78,11 +83,11 @@ struct DeficitDetectorState {
   bool alarm = false;             // latched
   std::int64_t alarm_sample = -1; // sample index of the first alarm
   double statistic = 0;           // [-] max_i S_i (material or not), last evaluation
-  int suspect = -1;               // thruster of the largest material gain (else of the largest), 0..7;
+  int suspect = -1;               // lane of the largest material gain (else of the largest);
                                   // a partner's twin (same torque) is as likely
 };
 
-// The normal equations [haa, hab, hbb, ga, gb] of the eight hypotheses (fit_deficits) on the rows
+// The normal equations [haa, hab, hbb, ga, gb] of the lanes' hypotheses (fit_deficits) on the rows
 // summed in `sums`: haa = (M_C o M_C)' sum W, ga = M_C' sum W y, the rest the command sums.
 DeficitNormalsW deficit_normals(const DeficitIsolationParams& bank_params, const DeficitDetectorBlock& sums);
 

@@ -17,6 +17,26 @@ Vec3 torque_noise_floor_sq(const DeficitIsolationParams& p) {
   return (p.inertia_kgm2.array().square().rowwise().sum() * s * s).matrix();
 }
 
+// R M_F / m of sample s into `force_lvlh` (its first p.lanes columns), and the acceleration the
+// commands give, R M_F T_on / m. Eight lanes keep the fixed-size products of the eight-lane bank
+// (Eigen sums a fixed 3 x 8 product in its own order; MSR's pinned results depend on it); any
+// other count sums the lanes in index order.
+Vec3 lvlh_forces(const DeficitIsolationParams& p, const DeficitSample& s, DeficitMat3W& force_lvlh) {
+  const Mat3 R = s.q_lvlh_from_body.toRotationMatrix();
+  if (p.lanes == kSchemeThrusters) {
+    const Mat3W f = R * p.force_body_N.leftCols<kSchemeThrusters>() / s.mass_kg;
+    const SchemeTon u = s.ton.head<kSchemeThrusters>();
+    force_lvlh.leftCols<kSchemeThrusters>() = f;
+    return f * u;
+  }
+  Vec3 acc = Vec3::Zero();
+  for (int i = 0; i < p.lanes; ++i) {
+    force_lvlh.col(i) = R * p.force_body_N.col(i) / s.mass_kg;
+    acc += force_lvlh.col(i) * s.ton(i);
+  }
+  return acc;
+}
+
 // Scratch arrays of one evaluation, sized for the longest window (on the stack: no allocation).
 struct Window {
   int n = 0;
@@ -40,10 +60,9 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
   Vec3 pos = Vec3::Zero(), vel = Vec3::Zero();
   for (int k = 0; k < w.n; ++k) {
     const DeficitSample& s = sample_at(bank, first + k);
-    w.force_lvlh[k] = s.q_lvlh_from_body.toRotationMatrix() * p.force_body_N / s.mass_kg;
     w.ton[k] = s.ton;
     w.y_pos[k] = s.r_lvlh_m - pos;  // what the commanded forces do not explain
-    const Vec3 acc = w.force_lvlh[k] * s.ton;
+    const Vec3 acc = lvlh_forces(p, s, w.force_lvlh[k]);
     pos += T * vel + 0.5 * T * T * acc;
     vel += T * acc;
     if (k + 1 < w.n) {
@@ -126,8 +145,10 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   const Vec3& w = now.omega_body_radps;
   const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
   Vec3 row = I * d_omega_dt + w.cross(I * w);
-  for (int i = 0; i < kWatchedThrusters; ++i)  // M_C T_on over the commanded thrusters: most periods none
-    if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i)  // M_C T_on over the commanded thrusters: most periods none
+      if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
+  });
   return row;
 }
 
@@ -138,8 +159,10 @@ Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
   // epsilon |M_C| T_on over the commanded thrusters only: most periods command none.
   Vec3 pulse = Vec3::Zero();
-  for (int i = 0; i < kWatchedThrusters; ++i)
-    if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i)
+      if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
+  });
   pulse *= p.pulse_uncertainty;
   return (deficit_sigma0_sq(bank) + pulse.cwiseProduct(pulse)).cwiseInverse();
 }
@@ -159,7 +182,7 @@ namespace {
 // the numerators' signs (det > 0 where the free optimum is used) and on the faces' gains
 // cross-multiplied by haa hbb > 0, then the chosen numerators are divided by the chosen
 // denominator. Every candidate is computed and the answer selected without branches, so that
-// fit_deficits' loop over eight hypotheses vectorises (with -fno-trapping-math, CMakeLists.txt); a
+// fit_deficits' loop over the hypotheses vectorises (with -fno-trapping-math, CMakeLists.txt); a
 // && would be a branch, hence the nested selects. A singular lane (det or hbb = 0: a thruster never
 // commanded) never selects them.
 inline DeficitFit fit_lane(double haa, double hab, double hbb, double ga, double gb) {
@@ -185,14 +208,14 @@ DeficitFit fit_deficit(const DeficitNormal& n) { return fit_lane(n.haa, n.hab, n
 // and/andnot/or selects), the one the CPU runs chosen at load time. The lanes' arithmetic is
 // element by element, without reductions, so both give the same bits (tested against fit_deficit).
 __attribute__((target_clones("avx2", "default")))
-DeficitFits fit_deficits(const DeficitNormalsW& normals) {
+DeficitFits fit_deficits(const DeficitNormalsW& normals, int lanes) {
   const double* haa = normals.col(0).data();
   const double* hab = normals.col(1).data();
   const double* hbb = normals.col(2).data();
   const double* ga = normals.col(3).data();
   const double* gb = normals.col(4).data();
-  DeficitFits f{DeficitVecW(), DeficitVecW(), DeficitVecW()};  // every entry is written below: no zeroing
-  for (int i = 0; i < kWatchedThrusters; ++i) {
+  DeficitFits f{DeficitVecW(), DeficitVecW(), DeficitVecW()};  // the lanes' entries are written below: no zeroing
+  for (int i = 0; i < lanes; ++i) {
     const DeficitFit fit = fit_lane(haa[i], hab[i], hbb[i], ga[i], gb[i]);
     f.a(i) = fit.a, f.b(i) = fit.b, f.gain(i) = fit.gain;
   }
@@ -201,6 +224,8 @@ DeficitFits fit_deficits(const DeficitNormalsW& normals) {
 
 std::vector<std::string> validate(const DeficitIsolationParams& p) {
   std::vector<std::string> problems;
+  if (p.lanes < 1 || p.lanes > kMaxWatchedThrusters)
+    problems.push_back("lanes: must be in [1, " + std::to_string(kMaxWatchedThrusters) + "]");
   if (!(p.mass_kg > 0.0)) problems.push_back("mass_kg: must be > 0");
   if (!(p.period_s > 0.0)) problems.push_back("period_s: must be > 0");
   if (p.before < 1) problems.push_back("before: must be >= 1 period");
@@ -216,6 +241,13 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
   if (!(p.min_gain >= 0.0) || !(p.min_margin >= 0.0)) problems.push_back("min_gain, min_margin: must be >= 0");
   if (!(p.prior_sigma > 0.0)) problems.push_back("prior_sigma: must be > 0");
   return problems;
+}
+
+void set_deficit_columns(DeficitIsolationParams& p, const Eigen::Ref<const Eigen::Matrix<double, 6, Eigen::Dynamic>>& M) {
+  p.lanes = static_cast<int>(M.cols());
+  p.force_body_N.setZero(), p.torque_body_Nm.setZero();
+  p.force_body_N.leftCols(p.lanes) = M.topRows<3>();
+  p.torque_body_Nm.leftCols(p.lanes) = M.bottomRows<3>();
 }
 
 void push_deficit_sample(const DeficitIsolationParams& p, DeficitBankState& bank) {
@@ -246,7 +278,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   h.rows = 3 * w.n + 3 * (w.n - 1);
   const int last_kf = static_cast<int>(std::clamp<std::int64_t>(last_onset - first, 0, w.n - 2));
   auto fit_all = [&](double torque_scale) {
-    for (int i = 0; i < kWatchedThrusters; ++i) {
+    for (int i = 0; i < p.lanes; ++i) {
       h.gain(i) = -1.0;
       for (int kf = 0; kf <= last_kf; ++kf) {
         const DeficitFit fit = fit_deficit(with_prior(p, normal_equations(p, w, i, kf, 1.0, torque_scale)));
@@ -261,7 +293,7 @@ DeficitHypotheses evaluate_deficit_hypotheses(const DeficitIsolationParams& p, c
   // would be told apart by chance. Their weights are then divided by the misfit (the Birge ratio),
   // so the position rows carry the choice between partners, and the fit is redone.
   int best = 0;
-  for (int i = 1; i < kWatchedThrusters; ++i)
+  for (int i = 1; i < p.lanes; ++i)
     if (h.gain(i) > h.gain(best)) best = i;
   const double chi2 = torque_chi2_per_row(p, w, best, static_cast<int>(h.onset[best] - first), h.a(best), h.b(best));
   if (chi2 > p.misfit_rescale_above) {
@@ -295,10 +327,10 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& p, co
   const std::int64_t first = std::max<std::int64_t>(state.alarm_sample - p.before, 0);
   const DeficitHypotheses h = evaluate_deficit_hypotheses(p, bank, first, state.alarm_sample);
   int best = 0;
-  for (int i = 1; i < kWatchedThrusters; ++i)
+  for (int i = 1; i < p.lanes; ++i)
     if (h.gain(i) > h.gain(best)) best = i;
   double second = -1.0;
-  for (int i = 0; i < kWatchedThrusters; ++i)
+  for (int i = 0; i < p.lanes; ++i)
     if (i != best) second = std::max(second, h.gain(i));
   const bool material = h.a(best) >= p.min_a || h.b(best) <= -p.min_b;
   const bool named = h.gain(best) >= p.min_gain && material;

@@ -32,8 +32,14 @@
 // timing error of a commanded pulse (delays spill part of a pulse into the next period).
 //
 // Computation: the r0, v0 columns are projected out in closed form (per axis, a straight-line fit
-// in t), so only 2 x 2 systems remain per hypothesis and onset: 8 x (onsets) of them per
-// evaluation, a fraction of a millisecond, done only after an alarm. Everything is fixed-size; the
+// in t), so only 2 x 2 systems remain per hypothesis and onset: lanes x (onsets) of them per
+// evaluation, a fraction of a millisecond for MSR's 8 lanes, done only after an alarm.
+//
+// Lanes: one hypothesis per thruster of the watched set, any set of 1..kMaxWatchedThrusters
+// (MSR's 8, COMRADE's 24). The per-thruster arrays are stored at that capacity (no allocation:
+// the sizes are compile-time) and every loop runs over the first `lanes`; the lanes are summed in
+// the same order whatever the set's size, and a set of eight keeps the fixed-size products it had
+// when the bank was eight lanes wide (build_window), so MSR's results keep their bits. The
 // per-period cost without an alarm is storing one sample and updating sigma_0.
 #include <array>
 #include <cstdint>
@@ -50,12 +56,13 @@ namespace chaser::flight::fdi {
 
 inline constexpr int kMaxDeficitWindow = model::kMaxDeficitWindowPeriods;  // periods the sample ring holds
 
-using DeficitMat3W = Eigen::Matrix<double, 3, kWatchedThrusters>;
-using DeficitVecW = Eigen::Matrix<double, kWatchedThrusters, 1>;
+using DeficitMat3W = Eigen::Matrix<double, 3, kMaxWatchedThrusters>;  // columns [lanes, capacity) zero
+using DeficitVecW = Eigen::Matrix<double, kMaxWatchedThrusters, 1>;
 
 struct DeficitIsolationParams {
   Mat3 inertia_kgm2 = Mat3::Identity();        // [kg m^2] nominal, about the CoM, body axes
   double mass_kg = 1.0;                        // [kg] nominal wet mass at the start
+  int lanes = 0;                               // [-] thrusters watched, 1..kMaxWatchedThrusters
   DeficitMat3W force_body_N = DeficitMat3W::Zero();    // [N] M_F, force per unit on-time, watched lanes
   DeficitMat3W torque_body_Nm = DeficitMat3W::Zero();  // [N m] M_C
   double period_s = 0.1;                       // [s] T
@@ -85,13 +92,19 @@ struct DeficitIsolationParams {
 // Problems with the parameters (empty when valid), each naming the field.
 std::vector<std::string> validate(const DeficitIsolationParams& params);
 
+// Sets lanes, M_F and M_C from the watched set's configuration matrix (6 x lanes: force rows, then
+// torque rows; 1..kMaxWatchedThrusters columns).
+void set_deficit_columns(DeficitIsolationParams& params, const Eigen::Ref<const Eigen::Matrix<double, 6, Eigen::Dynamic>>& config);
+
 // What the on-board software has in one period, stored for the fit.
 struct DeficitSample {
   Vec3 omega_body_radps = Vec3::Zero();  // gyro
   Vec3 r_lvlh_m = Vec3::Zero();          // LIDAR
   Quat q_lvlh_from_body = Quat::Identity();  // estimated attitude
-  WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period
   double mass_kg = 1.0;                  // [kg] nominal mass less the measured propellant used
+  // Last, so that a small set's lanes share cache lines with the fields above (MSR: a sample
+  // written each period touches three lines, as when the ring held eight lanes).
+  WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period
 };
 
 struct DeficitBankState {
@@ -128,7 +141,7 @@ struct DeficitHypotheses {
   DeficitVecW gain = DeficitVecW::Zero();   // [-] drop of the weighted RSS from the no-fault fit
   DeficitVecW a = DeficitVecW::Zero();      // [-] constant deficit at the best onset
   DeficitVecW b = DeficitVecW::Zero();      // [-] command-proportional deficit
-  std::array<std::int64_t, kWatchedThrusters> onset{};  // sample index of the best onset
+  std::array<std::int64_t, kMaxWatchedThrusters> onset{};  // sample index of the best onset
   double rss_no_fault = 0;                  // [-] weighted RSS of the no-fault fit
   int rows = 0;                             // scalar rows in the fit
   double torque_scale = 1.0;                // [-] 1, or 1 / the torque rows' misfit when it was rescaled
@@ -176,15 +189,15 @@ struct DeficitFit {
 };
 DeficitFit fit_deficit(const DeficitNormal& normal);
 
-// The normal equations of the eight hypotheses, row i for thruster i: [haa, hab, hbb, ga, gb].
-// Column-major: each quantity of the eight is contiguous, so they are fitted as whole columns.
-using DeficitNormalsW = Eigen::Matrix<double, kWatchedThrusters, 5>;
+// The normal equations of the hypotheses, row i for thruster i: [haa, hab, hbb, ga, gb].
+// Column-major: each quantity of the lanes is contiguous, so they are fitted as whole columns.
+using DeficitNormalsW = Eigen::Matrix<double, kMaxWatchedThrusters, 5>;
 struct DeficitFits {
   DeficitVecW a = DeficitVecW::Zero(), b = DeficitVecW::Zero(), gain = DeficitVecW::Zero();
 };
-// fit_deficit of every row, in a loop the compiler vectorises (the same lane arithmetic, so the
-// same answer bit for bit; tested).
-DeficitFits fit_deficits(const DeficitNormalsW& normals);
+// fit_deficit of rows [0, lanes), in a loop the compiler vectorises (the same lane arithmetic, so
+// the same answer bit for bit; tested). Entries from `lanes` on are not written.
+DeficitFits fit_deficits(const DeficitNormalsW& normals, int lanes);
 
 // The fault case and size (a, b) describe.
 void classify_deficit(const DeficitIsolationParams& params, DeficitDecision& decision);

@@ -25,13 +25,13 @@ DesignInputs from_model(std::string name, std::string unit, const LinearModel& m
 
 }  // namespace
 
-DesignInputs position_design_inputs(const model::Scenario& scenario, const WatchedConfig& M) {
+DesignInputs position_design_inputs(const model::Scenario& scenario, const SchemeConfig& M) {
   const LinearModel model =
       hcw_position_model(scenario.orbit.mean_motion_radps(), scenario.chaser.mass_kg);
   return from_model("position", "m", model, M.topRows(3), scenario.control_period_s);
 }
 
-DesignInputs attitude_design_inputs(const model::Scenario& scenario, const WatchedConfig& M,
+DesignInputs attitude_design_inputs(const model::Scenario& scenario, const SchemeConfig& M,
                                     const Vec3& omega_ref_body_radps) {
   const LinearModel model = linear_attitude_model(scenario.chaser.inertia_kgm2, omega_ref_body_radps);
   return from_model("attitude", "rad", model, M.bottomRows(3), scenario.control_period_s);

@@ -49,11 +49,11 @@ struct DesignInputs {
 // Position model (eq. 12) from the scenario: n from the orbit, mass, T; fault directions
 // E_f = B M_F with the chaser-to-LVLH rotation R taken as the identity for design.
 // delta_max defaults to T (the paper's [0, T)).
-DesignInputs position_design_inputs(const model::Scenario& scenario, const WatchedConfig& M);
+DesignInputs position_design_inputs(const model::Scenario& scenario, const SchemeConfig& M);
 
 // Attitude model (eq. 15) from the scenario's inertia, linearised about omega_ref (the paper: 0);
 // fault directions E_f = B M_C.
-DesignInputs attitude_design_inputs(const model::Scenario& scenario, const WatchedConfig& M,
+DesignInputs attitude_design_inputs(const model::Scenario& scenario, const SchemeConfig& M,
                                     const Vec3& omega_ref_body_radps = Vec3::Zero());
 
 }  // namespace chaser::flight::fdi

@@ -18,19 +18,20 @@ std::vector<std::string> validate(const EventResolutionParams& params) {
   return problems;
 }
 
-std::array<double, kWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
+std::array<double, kMaxWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
                                                              const WatchedSet& watched, double isp_s) {
-  std::array<double, kWatchedThrusters> flow{};
-  for (int k = 0; k < kWatchedThrusters; ++k)
+  std::array<double, kMaxWatchedThrusters> flow{};
+  for (int k = 0; k < watched.count; ++k)  // the other lanes stay zero
     flow[k] = thrusters.thrusters[static_cast<std::size_t>(watched.index[k])].max_thrust_N / (isp_s * kStandardGravity);
   return flow;
 }
 
 double expected_propellant_increment_kg(const WatchedTon& ton,
-                                        const std::array<double, kWatchedThrusters>& mass_flow_kgps,
+                                        const std::array<double, kMaxWatchedThrusters>& mass_flow_kgps,
                                         double period_s) {
   double sum = 0.0;
-  for (int i = 0; i < kWatchedThrusters; ++i) sum += ton(i) * mass_flow_kgps[i];
+  // Every lane, in order: the lanes past the set's add exact zeros, so the sum is the set's.
+  for (int i = 0; i < kMaxWatchedThrusters; ++i) sum += ton(i) * mass_flow_kgps[i];
   return sum * period_s;
 }
 

@@ -41,12 +41,12 @@ struct EventResolutionState {
 std::vector<std::string> validate(const EventResolutionParams& params);
 
 // Nominal mass flow of each watched thruster, F_i / (Isp g0) [kg/s].
-std::array<double, kWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
+std::array<double, kMaxWatchedThrusters> nominal_mass_flow_kgps(const model::ThrusterSetParams& thrusters,
                                                              const WatchedSet& watched, double isp_s);
 
 // Predicted propellant used over one period: sum_i T_on,i T mdot_i [kg].
 double expected_propellant_increment_kg(const WatchedTon& ton,
-                                        const std::array<double, kWatchedThrusters>& mass_flow_kgps,
+                                        const std::array<double, kMaxWatchedThrusters>& mass_flow_kgps,
                                         double period_s);
 
 // One period. measured_used_kg: the sensor reading (cumulative) at this period; expected_increment_kg:

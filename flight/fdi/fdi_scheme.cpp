@@ -18,7 +18,7 @@ std::vector<std::string> validate(const FdiSchemeParams& params) {
 }
 
 void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
-                     const WatchedTon& ton, bool over_consumption, FdiSchemeOutput& out) {
+                     const SchemeTon& ton, bool over_consumption, FdiSchemeOutput& out) {
   out.residual = step_residual(params.residual, state.residual, y, u_c);
   if (step_glr(params.glr, state.glr, out.residual, out.glr) && !state.alarm) {
     state.alarm = true;

@@ -54,9 +54,9 @@ std::vector<std::string> validate(const FdiSchemeParams& params);
 // The result is written into `out` (every field): the FDIR supervisor passes its own output, which
 // saves copying a returned struct through the stack every period (a store-forwarding stall).
 void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
-                     const WatchedTon& ton, bool over_consumption, FdiSchemeOutput& out);
+                     const SchemeTon& ton, bool over_consumption, FdiSchemeOutput& out);
 inline FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
-                                       const Vec3& u_c, const WatchedTon& ton, bool over_consumption) {
+                                       const Vec3& u_c, const SchemeTon& ton, bool over_consumption) {
   FdiSchemeOutput out;
   step_fdi_scheme(params, state, y, u_c, ton, over_consumption, out);
   return out;

@@ -7,7 +7,7 @@ namespace chaser::flight::fdi {
 
 namespace {
 
-constexpr int kThrusters = kWatchedThrusters;
+constexpr int kThrusters = kSchemeThrusters;
 
 struct Selection {
   VecW score = VecW::Zero();
@@ -15,7 +15,7 @@ struct Selection {
 };
 
 void store_sample(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                  const WatchedTon& ton) {
+                  const SchemeTon& ton) {
   const int window = std::clamp(params.window, 1, kMaxIsolationWindow);
   state.residual[state.next] = r;
   state.ton[state.next] = ton;
@@ -122,7 +122,7 @@ SignatureFilterParams make_signature_filter(const ResidualGeneratorParams& resid
 }
 
 IsolationOutput step_isolation(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                               const WatchedTon& ton, bool evaluate, bool over_consumption) {
+                               const SchemeTon& ton, bool evaluate, bool over_consumption) {
   store_sample(params, state, r, ton);
   IsolationOutput out;
   state.evaluated = evaluate ? std::min(state.evaluated + 1, params.settle + 1) : 0;

@@ -52,7 +52,7 @@ namespace chaser::flight::fdi {
 
 inline constexpr int kMaxIsolationWindow = 128;  // largest N the fixed ring buffers hold
 
-using Mat6W = Eigen::Matrix<double, kFdiStateDim, kWatchedThrusters>;
+using Mat6W = Eigen::Matrix<double, kFdiStateDim, kSchemeThrusters>;
 
 enum class IsolationCriterion {
   kPaper,      // eqs. 42-44 with the exclusion of unused thrusters from eq. 44
@@ -104,6 +104,6 @@ SignatureFilterParams make_signature_filter(const ResidualGeneratorParams& resid
 // One period: stores r(k), T_on(k) (and s(k)), and when `evaluate` computes eq. 42 (43 or 44 by
 // `over_consumption`) or the signature criterion, then eq. 45.
 IsolationOutput step_isolation(const IsolationParams& params, IsolationState& state, const Vec3& r,
-                               const WatchedTon& ton, bool evaluate, bool over_consumption);
+                               const SchemeTon& ton, bool evaluate, bool over_consumption);
 
 }  // namespace chaser::flight::fdi

@@ -5,11 +5,12 @@
 namespace chaser::flight::fdi {
 
 WatchedSet watched_set(model::ThrusterMask mask) {
-  assert(model::thruster_count(mask) == kWatchedThrusters);
   const model::ThrusterList list = model::thruster_list(mask);
+  assert(list.count >= 1 && list.count <= kMaxWatchedThrusters);
   WatchedSet w;
   w.mask = mask;
-  for (int k = 0; k < kWatchedThrusters; ++k) w.index[static_cast<std::size_t>(k)] = list.index[static_cast<std::size_t>(k)];
+  w.count = list.count;
+  for (int k = 0; k < list.count; ++k) w.index[static_cast<std::size_t>(k)] = list.index[static_cast<std::size_t>(k)];
   return w;
 }
 

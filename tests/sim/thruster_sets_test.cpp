@@ -71,14 +71,24 @@ TEST(ThrusterSets, MoreThanThirtyTwoAreRefused) {
   EXPECT_NE(r.errors[0].message.find("1..32"), std::string::npos) << r.errors[0].message;
 }
 
-// The eight-lane FDI refuses a set of 24 with a message that says what to change.
-TEST(ThrusterSets, EightLaneFdiRefusesTwentyFour) {
+// Fonod 2015's schemes (eight lanes) refuse a set of 24 with a message that names only their keys
+// and says what to change; the deficit detector alone watches the 24.
+TEST(ThrusterSets, EightLaneSchemesRefuseTwentyFourTheDeficitDetectorWatchesThem) {
   std::vector<std::string> overrides = one_set_overrides(24);
-  overrides.resize(3);  // FDI left on
+  overrides.resize(3);  // FDI left on: position, attitude and deficit detection
   const io::LoadResult r = io::load_scenario_file("scenarios/msr_terminal.yaml", overrides);
   ASSERT_EQ(r.errors.size(), 1u) << io::format_errors(r.errors);
   EXPECT_EQ(r.errors[0].key_path, "fdi");
-  EXPECT_NE(r.errors[0].message.find("watch exactly 8 active thrusters"), std::string::npos) << r.errors[0].message;
+  const std::string& m = r.errors[0].message;
+  EXPECT_NE(m.find("fdi.position and fdi.attitude (the Fonod 2015 schemes) watch exactly 8 active thrusters"),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("has 24"), std::string::npos) << m;
+  EXPECT_NE(m.find("disable fdi.position and fdi.attitude"), std::string::npos) << m;
+
+  overrides.insert(overrides.end(), {"fdi.position.enabled=false", "fdi.attitude.enabled=false"});
+  const io::LoadResult deficit_only = io::load_scenario_file("scenarios/msr_terminal.yaml", overrides);
+  EXPECT_TRUE(deficit_only.scenario.has_value()) << io::format_errors(deficit_only.errors);
+  EXPECT_TRUE(deficit_only.scenario && deficit_only.scenario->fdi.deficit.detection);
 }
 
 }  // namespace

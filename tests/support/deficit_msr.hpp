@@ -13,8 +13,7 @@ inline flight::fdi::DeficitIsolationParams msr_deficit_params() {
   flight::fdi::DeficitIsolationParams p;
   p.inertia_kgm2 = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();
   p.mass_kg = 2500.0;
-  p.force_body_N = m.topLeftCorner<3, 8>();
-  p.torque_body_Nm = m.bottomLeftCorner<3, 8>();
+  flight::fdi::set_deficit_columns(p, m.leftCols<8>());
   p.period_s = 0.1;
   return p;
 }

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/random.hpp"
 #include "core/rotation.hpp"
 #include "model/thruster_geometry.hpp"
+#include "tests/support/deficit_24.hpp"
 #include "tests/support/deficit_msr.hpp"
 
 // Independent tests of the deficit detector: synthetic torque data generated with the model the torque
@@ -21,7 +23,7 @@
 namespace chaser::flight::fdi {
 namespace {
 
-constexpr int kN = kWatchedThrusters;
+constexpr int kN = 8;  // lanes: MSR branch A
 
 // The MSR chaser's bank parameters (tests/support/deficit_msr.hpp).
 DeficitIsolationParams msr_params() { return chaser::testing::msr_deficit_params(); }
@@ -53,7 +55,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
   std::vector<DeficitSample> out;
   for (int k = 0; k < t.samples; ++k) {
     WatchedTon ton = WatchedTon::Zero();
-    for (int i = 0; i < kN; ++i)
+    for (int i = 0; i < p.lanes; ++i)
       if (cmd.uniform() < t.command_probability) ton(i) = cmd.uniform(0.05, 0.95);
     if (t.shape) t.shape(k, ton, cmd);
     DeficitSample s;
@@ -63,7 +65,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
     WatchedTon real = ton;
     const int f = t.fault.thruster;
     if (f >= 0 && k >= t.fault.onset) real(f) = std::clamp(t.fault.a + (1.0 + t.fault.b) * ton(f), 0.0, 1.0);
-    for (int i = 0; i < kN; ++i)
+    for (int i = 0; i < p.lanes; ++i)
       if (real(i) > 0.0) real(i) *= 1.0 + t.pulse_sigma * noise.normal();
     omega += p.period_s * I_inv * (p.torque_body_Nm * real - omega.cross(I * omega));
   }
@@ -86,13 +88,28 @@ void run(const DeficitIsolationParams& bp, const DeficitDetectorParams& dp, cons
 
 // The row's five contributions written out from the header's formulas.
 DeficitNormalsW row_sums(const DeficitIsolationParams& p, const Vec3& y, const Vec3& w, const WatchedTon& ton) {
-  DeficitNormalsW r;
-  for (int i = 0; i < kN; ++i) {
+  DeficitNormalsW r = DeficitNormalsW::Zero();
+  for (int i = 0; i < p.lanes; ++i) {
     const Vec3 c = p.torque_body_Nm.col(i);
     const double cwc = (c.cwiseProduct(w)).dot(c), cwy = (c.cwiseProduct(w)).dot(y), u = ton(i);
     r.row(i) << cwc, u * cwc, u * u * cwc, cwy, u * cwy;
   }
   return r;
+}
+
+// The header's statistic and suspect from the window's sums, by fit_deficit lane by lane: the largest
+// gain, and the thruster of the largest material gain (a >= min_a or b <= -min_b), else of the largest.
+int reference_suspect(const DeficitDetectorParams& dp, const DeficitNormalsW& sums, int lanes, double& best) {
+  best = 0.0;
+  int suspect = -1, material = -1;
+  double material_gain = -1.0;
+  for (int i = 0; i < lanes; ++i) {
+    const auto c = sums.row(i);
+    const DeficitFit f = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
+    if (f.gain > best) best = f.gain, suspect = i;
+    if ((f.a >= dp.min_a || f.b <= -dp.min_b) && f.gain > material_gain) material_gain = f.gain, material = i;
+  }
+  return material >= 0 ? material : suspect;
 }
 
 // A thruster whose last pulse has left the window: its command sums in the running sums would be the
@@ -121,7 +138,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
       EXPECT_EQ(n(3, 1), 0.0) << k;
       EXPECT_EQ(n(3, 2), 0.0) << k;
       EXPECT_EQ(n(3, 4), 0.0) << k;
-      EXPECT_EQ(fit_deficits(n).b(3), 0.0) << k;
+      EXPECT_EQ(fit_deficits(n, kN).b(3), 0.0) << k;
       EXPECT_GT(n(3, 0), 0.0) << k;  // the constant part is still fitted
     } else {
       EXPECT_GT(n(3, 2), 0.0) << k;
@@ -132,7 +149,7 @@ TEST(DeficitDetector, AThrusterNotCommandedInTheWindowHasNoCommandProportionalPa
 
 // 1. The sliding sums equal the sum over the last `window` rows recomputed directly (each row with the
 // weights the bank gives at the time it is added), long after the ring has wrapped (1500 rows, window
-// 37: 40 wraps), and the statistic and suspect equal the max over thrusters of fit_deficit on those
+// 37: 40 wraps), and the statistic and suspect equal those of fit_deficit on those
 // sums. Tolerance: the running sums add and remove ~1500 rows' contributions in double precision, so
 // the drift is ~1e-16 times the sum of |contributions| over the whole run, 40 windows: 1e-9 of the
 // window's absolute sum leaves a factor ~1e4 yet catches one row too many or too few (~1e-2 relative).
@@ -157,15 +174,11 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
     if (static_cast<int>(rows.size()) < dp.window) return;
     DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
-    const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
+    const DeficitNormalsW n = deficit_normals(bp, st.det.sums);  // rows [0, lanes) written
+    const double err = ((n.topRows(kN) - direct.topRows(kN)).cwiseAbs().array() / scale.topRows(kN).array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
     double best = 0.0;
-    int suspect = -1;
-    for (int i = 0; i < kN; ++i) {
-      const auto c = direct.row(i);
-      const DeficitFit f = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
-      if (f.gain > best) best = f.gain, suspect = i;
-    }
+    const int suspect = reference_suspect(dp, direct, kN, best);
     EXPECT_NEAR(st.det.statistic, best, 1e-7 * std::max(1.0, best)) << "row " << rows.size();
     EXPECT_EQ(st.det.suspect, suspect) << "row " << rows.size();
     ++checked;
@@ -175,11 +188,13 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
 }
 
 // The same with the rows summed in blocks of evaluate_every (2 and 3, window 36): checked at every
-// evaluation, the periods that complete a block.
-class DeficitDetectorBlocks : public ::testing::TestWithParam<int> {};
+// evaluation, the periods that complete a block. On MSR's eight thrusters and on a set of 24
+// (tests/support/deficit_24.hpp), whose lanes past the eighth take the same bookkeeping.
+class DeficitDetectorBlocks : public ::testing::TestWithParam<std::tuple<int, int>> {};
 TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
-  const int every = GetParam();
-  const DeficitIsolationParams bp = msr_params();
+  const auto [every, lanes] = GetParam();
+  const DeficitIsolationParams bp = lanes == 24 ? chaser::testing::box_24_deficit_params() : msr_params();
+  ASSERT_EQ(bp.lanes, lanes);
   DeficitDetectorParams dp;
   dp.window = 36, dp.threshold = 1e30, dp.evaluate_every = every;
   Truth t;
@@ -199,15 +214,12 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
     if (static_cast<int>(rows.size()) < dp.window || rows.size() % every != 0) return;
     DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
     for (std::size_t j = rows.size() - dp.window; j < rows.size(); ++j) direct += rows[j], scale += rows[j].cwiseAbs();
-    const double err = ((deficit_normals(bp, st.det.sums) - direct).cwiseAbs().array() / scale.array()).maxCoeff();
+    const DeficitNormalsW n = deficit_normals(bp, st.det.sums);
+    const double err =
+        ((n.topRows(lanes) - direct.topRows(lanes)).cwiseAbs().array() / scale.topRows(lanes).array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
     double best = 0.0;
-    int suspect = -1;
-    for (int i = 0; i < kN; ++i) {
-      const auto c = direct.row(i);
-      const DeficitFit f = fit_deficit({.haa = c(0), .hab = c(1), .hbb = c(2), .ga = c(3), .gb = c(4)});
-      if (f.gain > best) best = f.gain, suspect = i;
-    }
+    const int suspect = reference_suspect(dp, direct, lanes, best);
     EXPECT_NEAR(st.det.statistic, best, 1e-7 * std::max(1.0, best)) << "row " << rows.size();
     EXPECT_EQ(st.det.suspect, suspect) << "row " << rows.size();
     ++checked;
@@ -215,7 +227,33 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
   EXPECT_EQ(checked, (1500 - 36) / every + 1);
   EXPECT_FALSE(r.det.alarm);
 }
-INSTANTIATE_TEST_SUITE_P(Every, DeficitDetectorBlocks, ::testing::Values(2, 3));
+INSTANTIATE_TEST_SUITE_P(Every, DeficitDetectorBlocks,
+                         ::testing::Combine(::testing::Values(2, 3), ::testing::Values(8, 24)));
+
+// 2c. A 24-thruster set: a 60 % loss or a stuck-open thruster on lanes spread over the set, the
+// last included, raises the alarm within the bounds of test 2 and the suspect is the thruster or
+// its partner (tests/support/deficit_24.hpp: same torque, so as likely on the torque rows).
+TEST(DeficitDetector, TwentyFourThrustersDetectLossAndStuckOpen) {
+  const DeficitIsolationParams bp = chaser::testing::box_24_deficit_params();
+  const DeficitDetectorParams dp;
+  constexpr int onset = 250;
+  for (int i : {0, 8, 13, 23}) {
+    for (const bool open : {false, true}) {
+      Truth t;
+      t.samples = onset + 150, t.seed = 40 + i, t.command_probability = 0.15;
+      t.fault = open ? Fault{i, onset, 1.0, -1.0} : Fault{i, onset, 0.0, -0.6};
+      if (open) t.shape = [i](int, WatchedTon& ton, RandomStream&) { ton(i) = 0.0; };
+      Loop r;
+      run(bp, dp, generate(bp, t), r);
+      const std::string what = std::string(open ? "stuck open T" : "loss T") + std::to_string(i + 1);
+      ASSERT_TRUE(r.det.alarm) << what;
+      EXPECT_GE(r.det.alarm_sample, onset) << what;
+      EXPECT_LE(r.det.alarm_sample - onset, open ? 15 : 80) << what;
+      EXPECT_TRUE(r.det.suspect == i || r.det.suspect == chaser::testing::box_24_partner(i))
+          << what << " suspect " << r.det.suspect;
+    }
+  }
+}
 
 // Runs the onset cases of test 2: a 60 % loss of thruster i (commanded in 35 % of the periods, mean
 // on-time 0.5) or a stuck-open thruster i the controller never commands, onset at sample 250. With

@@ -17,6 +17,7 @@
 #include "core/random.hpp"
 #include "core/rotation.hpp"
 #include "model/thruster_geometry.hpp"
+#include "tests/support/deficit_24.hpp"
 #include "tests/support/deficit_msr.hpp"
 
 // Independent tests of the impulse-deficit isolation: synthetic windows generated with the model the
@@ -27,7 +28,7 @@ namespace chaser::flight::fdi {
 namespace {
 
 using model::FaultKind;
-constexpr int kN = kWatchedThrusters;
+constexpr int kN = 8;  // lanes: MSR branch A
 
 // The MSR chaser's bank parameters (tests/support/deficit_msr.hpp).
 DeficitIsolationParams msr_params() { return chaser::testing::msr_deficit_params(); }
@@ -73,7 +74,7 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
   std::vector<DeficitSample> out;
   for (int k = 0; k < t.samples; ++k) {
     WatchedTon ton = WatchedTon::Zero();
-    for (int i = 0; i < kN; ++i)
+    for (int i = 0; i < p.lanes; ++i)
       if (cmd.uniform() < t.command_probability) ton(i) = cmd.uniform(0.05, 0.95);
     if (t.shape) t.shape(k, ton);
     DeficitSample s;
@@ -83,8 +84,8 @@ std::vector<DeficitSample> generate(const DeficitIsolationParams& p, const Truth
     s.omega_body_radps = omega + t.gyro_sigma_radps * Vec3(noise.normal(), noise.normal(), noise.normal());
     s.r_lvlh_m = r + t.lidar_sigma_m * Vec3(noise.normal(), noise.normal(), noise.normal());
     out.push_back(s);
-    WatchedTon real;
-    for (int i = 0; i < kN; ++i) {
+    WatchedTon real = WatchedTon::Zero();
+    for (int i = 0; i < p.lanes; ++i) {
       real(i) = realised_ton(t.fault, k, i, ton(i));
       if (real(i) > 0.0) real(i) *= 1.0 + t.pulse_sigma * noise.normal();
     }
@@ -201,17 +202,17 @@ std::string sci(double x) {
   return buf;
 }
 
-int best_of(const DeficitVecW& gain) {
+int best_of(const DeficitVecW& gain, int lanes = kN) {
   int best = 0;
-  for (int i = 1; i < kN; ++i)
+  for (int i = 1; i < lanes; ++i)
     if (gain(i) > gain(best)) best = i;
   return best;
 }
 
-double second_of(const DeficitVecW& gain) {
-  const int best = best_of(gain);
+double second_of(const DeficitVecW& gain, int lanes = kN) {
+  const int best = best_of(gain, lanes);
   double second = -1.0;
-  for (int i = 0; i < kN; ++i)
+  for (int i = 0; i < lanes; ++i)
     if (i != best) second = std::max(second, gain(i));
   return second;
 }
@@ -297,11 +298,13 @@ TEST(DeficitIsolation, GainEqualsDenseRssDropSingleOnset) {
 
 // 1b. Same comparison with an onset scan: every hypothesis' gain is the max over onsets of the
 // constrained dense optimum (interior, a face, or 0), and for the true one its onset and (a, b) too.
-TEST(DeficitIsolation, GainEqualsDenseConstrainedMaxOverOnsets) {
-  DeficitIsolationParams p = msr_params();
+// The same on the 24-thruster set (tests/support/deficit_24.hpp): the lanes past MSR's eight are
+// fitted as the first eight are.
+void expect_gains_equal_dense_max_over_onsets(DeficitIsolationParams p, const std::vector<Fault>& faults,
+                                              double& worst) {
+  const int kN = p.lanes;
   p.noise_time_constant_s = 2.0;
-  double worst = 0.0;  // largest |gain - dense| / RSS_no_fault
-  for (const Fault fault : {Fault{FaultKind::kStuckOpen, 5, 60, 0.0}, Fault{FaultKind::kLoss, 1, 60, 0.5}}) {
+  for (const Fault& fault : faults) {
     Truth t = noisy_truth(p, 12);
     t.samples = 95, t.fault = fault;
     t.shape = [&](int k, WatchedTon& ton) {
@@ -329,9 +332,25 @@ TEST(DeficitIsolation, GainEqualsDenseConstrainedMaxOverOnsets) {
         EXPECT_NEAR(h.b(i), best.b, 1e-7);
       }
     }
-    EXPECT_EQ(best_of(h.gain), fault.thruster);
+    EXPECT_EQ(best_of(h.gain, kN), fault.thruster);
     EXPECT_EQ(h.onset[fault.thruster], 60);
   }
+}
+
+TEST(DeficitIsolation, GainEqualsDenseConstrainedMaxOverOnsets) {
+  double worst = 0.0;  // largest |gain - dense| / RSS_no_fault
+  expect_gains_equal_dense_max_over_onsets(
+      msr_params(), {Fault{FaultKind::kStuckOpen, 5, 60, 0.0}, Fault{FaultKind::kLoss, 1, 60, 0.5}}, worst);
+  RecordProperty("worst_relative_gain_difference", sci(worst));
+}
+
+TEST(DeficitIsolation, TwentyFourThrustersGainEqualsDenseConstrainedMaxOverOnsets) {
+  double worst = 0.0;
+  expect_gains_equal_dense_max_over_onsets(
+      chaser::testing::box_24_deficit_params(),
+      {Fault{FaultKind::kStuckOpen, 17, 60, 0.0}, Fault{FaultKind::kLoss, 9, 60, 0.5},
+       Fault{FaultKind::kStuckClosed, 23, 60, 0.0}},
+      worst);
   RecordProperty("worst_relative_gain_difference", sci(worst));
 }
 
@@ -385,17 +404,18 @@ TEST(DeficitIsolation, FitSatisfiesKktConditions) {
   }
 }
 
-// fit_deficits, the detector's eight fits in one vectorised loop, on every kind of normal equations:
+// fit_deficits, the detector's fits in one vectorised loop, on every kind of normal equations:
 // free optimum feasible, on the a >= 0 face, on the b <= 0 face, at the origin, and singular H (a
 // thruster never commanded in the window: hbb = hab = gb = 0). Each lane satisfies the KKT
 // conditions above (checked independently, 1e-9 relative) and equals fit_deficit bit for bit: the
 // vectorised loop must not change the lane arithmetic (as reassociation or contraction would).
-// Every case must be reached.
+// Every case must be reached. Lane counts: MSR's 8, COMRADE's 24, the capacity 32, and an odd 5
+// (a vector loop's remainder).
 TEST(DeficitIsolation, EightFitsSatisfyKktAndEqualTheScalarFit) {
-  constexpr int kN = kWatchedThrusters;
   RandomStream rng(7, "fit_deficits");
   std::array<int, 5> reached{};  // free, a face, b face, origin, singular
   for (int trial = 0; trial < 500; ++trial) {
+    const int kN = std::array{8, 24, kMaxWatchedThrusters, 5}[static_cast<std::size_t>(trial % 4)];
     DeficitNormalsW normals;
     for (int i = 0; i < kN; ++i) {
       const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 1.0), w = rng.uniform(0.1, 10.0);
@@ -405,7 +425,7 @@ TEST(DeficitIsolation, EightFitsSatisfyKktAndEqualTheScalarFit) {
       const double hbb = never_commanded ? 0.0 : w * (u1 * u1 + u2 * u2);
       normals.row(i) << haa, hab, hbb, rng.uniform(-5.0, 5.0), never_commanded ? 0.0 : rng.uniform(-5.0, 5.0);
     }
-    const DeficitFits fits = fit_deficits(normals);
+    const DeficitFits fits = fit_deficits(normals, kN);
     for (int i = 0; i < kN; ++i) {
       const auto r = normals.row(i);
       const DeficitNormal ne{r(0), r(1), r(2), r(3), r(4)};
@@ -507,6 +527,38 @@ TEST(DeficitIsolation, DecisionNamesCaseAndSizeNoiseFree) {
     }
   }
   RecordProperty("worst_size_error", sci(worst));
+}
+
+// 2c. A 24-thruster set (tests/support/deficit_24.hpp), sensor noise at the stated sigmas and pulse
+// errors at epsilon, the on-board sequence (push, freeze at the alarm, decide): each fault case on
+// thrusters spread over the set, including the last lane, is named, with its kind, and not its
+// partner (same torque: only the position rows tell them apart).
+TEST(DeficitIsolation, TwentyFourThrustersDecisionNamesTheFaultyThruster) {
+  const DeficitIsolationParams p = chaser::testing::box_24_deficit_params();
+  ASSERT_TRUE(validate(p).empty());
+  const int onset = 120, alarm = 123;
+  for (int thruster : {0, 5, 11, 16, 23}) {
+    const int partner = chaser::testing::box_24_partner(thruster);
+    ASSERT_TRUE(p.torque_body_Nm.col(thruster).isApprox(p.torque_body_Nm.col(partner), 1e-12));
+    ASSERT_TRUE(p.force_body_N.col(thruster).isApprox(-p.force_body_N.col(partner), 1e-12));
+    for (const Fault& fault : {Fault{FaultKind::kStuckOpen, thruster, onset, 0.0},
+                               Fault{FaultKind::kStuckClosed, thruster, onset, 0.0},
+                               Fault{FaultKind::kLoss, thruster, onset, 0.6}}) {
+      Truth t = noisy_truth(p, 300 + static_cast<std::uint64_t>(thruster));
+      t.samples = 320, t.fault = fault;
+      const bool open = fault.kind == FaultKind::kStuckOpen;
+      t.shape = [&](int k, WatchedTon& ton) {
+        if (open && k >= alarm) ton(thruster) = 0.0;  // the controller stops commanding it
+        if (!open && k >= onset && k < onset + 30 && k % 3 == 0) ton(thruster) = 0.6;  // it is needed
+      };
+      const Flow f = run_flow(p, generate(p, t), alarm);
+      const std::string what = "T" + std::to_string(thruster + 1) + " " + std::string(model::to_string(fault.kind));
+      ASSERT_GE(f.decided_at, 0) << what;
+      const DeficitDecision& d = f.state.decision;
+      EXPECT_EQ(d.thruster, thruster) << what << " gain " << d.gain << " margin " << d.margin;
+      EXPECT_EQ(d.kind, fault.kind) << what << " a " << d.a << " b " << d.b;
+    }
+  }
 }
 
 // 3. Partners (same torque, opposite force): stuck open on i and on i + 4, both silenced by the
@@ -710,12 +762,15 @@ TEST(DeficitIsolation, ClassifyEachBranchAndBoundaries) {
 // 7. validate: the defaults (with a real mass) pass; each invalid field is named.
 TEST(DeficitIsolation, ValidateNamesEachField) {
   EXPECT_TRUE(validate(msr_params()).empty());
+  EXPECT_TRUE(validate(chaser::testing::box_24_deficit_params()).empty());
   auto names = [](const DeficitIsolationParams& p, const std::string& field) {
     const std::vector<std::string> v = validate(p);
     return v.size() == 1 && v[0].rfind(field, 0) == 0;
   };
   const double nan = std::nan("");
   const std::vector<std::pair<std::string, std::function<void(DeficitIsolationParams&)>>> cases = {
+      {"lanes", [](auto& p) { p.lanes = 0; }},
+      {"lanes", [](auto& p) { p.lanes = kMaxWatchedThrusters + 1; }},
       {"mass_kg", [](auto& p) { p.mass_kg = 0.0; }},
       {"mass_kg", [&](auto& p) { p.mass_kg = nan; }},
       {"period_s", [](auto& p) { p.period_s = -0.1; }},

@@ -15,7 +15,7 @@ using Eigen::MatrixXd;
 // thrusters' LVLH force directions as faults (eq. 11, R = I) and the paper's delay range [0, T].
 TEST(DesignInputs, PositionFromScenario) {
   const model::Scenario s = testing::msr_test_scenario();
-  const WatchedConfig M = testing::msr_test_configuration(s);
+  const SchemeConfig M = testing::msr_test_configuration(s);
   const DesignInputs in = position_design_inputs(s, M);
   const double n = std::sqrt(4.282837e13 / std::pow(3889.5e3, 3));
   EXPECT_NEAR(in.A(3, 0), 3 * n * n, 1e-20);
@@ -31,7 +31,7 @@ TEST(DesignInputs, PositionFromScenario) {
 // The attitude inputs: torques through the inverse inertia (eq. 15), M_C as fault directions.
 TEST(DesignInputs, AttitudeFromScenario) {
   const model::Scenario s = testing::msr_test_scenario();
-  const WatchedConfig M = testing::msr_test_configuration(s);
+  const SchemeConfig M = testing::msr_test_configuration(s);
   const DesignInputs in = attitude_design_inputs(s, M);
   EXPECT_NEAR(in.B(3, 0), 1.0 / 2000.0, 1e-18);
   EXPECT_EQ(in.E_f, in.B * M.bottomRows(3));

@@ -13,7 +13,7 @@ namespace {
 constexpr double kT = 0.1;        // [s]
 constexpr int kFaulty = 3;
 
-std::array<double, 8> flow() {
+std::array<double, kMaxWatchedThrusters> flow() {
   model::ThrusterSetParams set;
   set.count = 8;
   return nominal_mass_flow_kgps(set, watched_set(model::all_thrusters(set)), 220.0);

@@ -36,20 +36,27 @@ namespace {
 
 using Eigen::MatrixXd;
 
-constexpr int kThrusters = kWatchedThrusters;
+constexpr int kThrusters = kSchemeThrusters;
 
 struct PositionSetup {
   ResidualDesign design;
   ResidualGeneratorParams residual;
   Mat3W thruster_inputs;  // M_F [N per unit on-time]; LVLH = body (R = I), as in the design
-  std::array<double, kThrusters> mass_flow_kgps;
+  std::array<double, kMaxWatchedThrusters> mass_flow_kgps;  // the first kThrusters lanes used
 };
+
+// The scheme's lanes at the watched set's capacity (event resolution's input).
+WatchedTon watched_lanes(const SchemeTon& ton) {
+  WatchedTon w = WatchedTon::Zero();
+  w.head<kThrusters>() = ton;
+  return w;
+}
 
 // The position design of the MSR test set-up with the delay range of the drive electronics
 // (scenario delay_max_s = 0.02 s) or the paper's [0, T).
 PositionSetup msr_position_setup(double delta_max_s, int residual_dim = 1) {
   const model::Scenario s = testing::msr_test_scenario();
-  const WatchedConfig M = testing::msr_test_configuration(s);
+  const SchemeConfig M = testing::msr_test_configuration(s);
   DesignInputs in = position_design_inputs(s, M);
   in.delta_max_s = delta_max_s;
   in.residual_dim = residual_dim;
@@ -71,7 +78,7 @@ struct RunCase {
 struct Trace {
   std::vector<Vec3> y;             // [m] measured position
   std::vector<Vec3> u_c;           // [N] commanded force, LVLH
-  std::vector<WatchedTon> ton;    // commanded on-times
+  std::vector<SchemeTon> ton;    // commanded on-times
   std::vector<double> propellant_kg;  // [kg] measured propellant used (1 g noise)
 };
 
@@ -91,16 +98,16 @@ Trace simulate(const PositionSetup& setup, const RunCase& rc) {
   Vec3 u_prev = Vec3::Zero();
   double used_kg = 0.0;
   for (int k = 0; k < rc.periods; ++k) {
-    WatchedTon ton = WatchedTon::Zero();
+    SchemeTon ton = SchemeTon::Zero();
     for (int i = 0; i < kThrusters; ++i)
       if (commands.uniform() < rc.duty_probability) ton(i) = commands.uniform(0.1, 1.0);
-    WatchedTon realised = ton;
+    SchemeTon realised = ton;
     if (rc.fault_period >= 0 && k >= rc.fault_period) realised(rc.faulty) = 1.0;
     tr.y.push_back(setup.residual.C * x +
                    Vec3(noise.normal(), noise.normal(), noise.normal()) * rc.noise_m);
     tr.u_c.push_back(setup.thruster_inputs * ton);
     tr.ton.push_back(ton);
-    used_kg += expected_propellant_increment_kg(realised, setup.mass_flow_kgps, T);
+    used_kg += expected_propellant_increment_kg(watched_lanes(realised), setup.mass_flow_kgps, T);
     tr.propellant_kg.push_back(used_kg + noise.normal(0.0, 1e-3));
     const double delta = delays.uniform(d.inputs.delta_min_s, d.inputs.delta_max_s);
     const Eigen::Matrix<double, 6, 3> gamma0 = exp_and_integral(d.inputs.A, d.inputs.B, T - delta).integral_B;
@@ -181,7 +188,7 @@ RunResult run_scheme(const FdiSchemeParams& p, const PositionSetup& setup, const
   bool was_alarm = false;
   for (std::size_t k = 0; k < tr.y.size(); ++k) {
     const double expected =
-        expected_propellant_increment_kg(tr.ton[k], setup.mass_flow_kgps, p.period_s);
+        expected_propellant_increment_kg(watched_lanes(tr.ton[k]), setup.mass_flow_kgps, p.period_s);
     const bool over = step_event_resolution(ep, es, tr.propellant_kg[k], expected, state.alarm);
     if (over && res.over_consumption_period < 0) res.over_consumption_period = static_cast<int>(k);
     const FdiSchemeOutput out = step_fdi_scheme(p, state, tr.y[k], tr.u_c[k], tr.ton[k], over);

@@ -13,11 +13,11 @@
 namespace chaser::flight::fdi {
 namespace {
 
-constexpr int kN = kWatchedThrusters;
+constexpr int kN = kSchemeThrusters;
 
 // Sparse random on-times: each thruster commanded with probability p, on-time uniform in [0.1, 1).
-WatchedTon sparse_ton(RandomStream& rng, double p) {
-  WatchedTon ton = WatchedTon::Zero();
+SchemeTon sparse_ton(RandomStream& rng, double p) {
+  SchemeTon ton = SchemeTon::Zero();
   for (int i = 0; i < kN; ++i)
     if (rng.uniform() < p) ton(i) = rng.uniform(0.1, 1.0);
   return ton;
@@ -25,7 +25,7 @@ WatchedTon sparse_ton(RandomStream& rng, double p) {
 
 struct Sample {
   double r;
-  WatchedTon ton;
+  SchemeTon ton;
 };
 
 // Eqs. 43 and 44 evaluated literally on the last N samples (full window), with the unused
@@ -93,7 +93,7 @@ TEST(Isolation, MaxCorrelationFindsTheThrusterTheResidualFollows) {
   RandomStream rng(22, "isolation/max");
   int confirmed_at = -1;
   for (int k = 0; k < 60; ++k) {
-    WatchedTon ton = WatchedTon::Zero();
+    SchemeTon ton = SchemeTon::Zero();
     ton(k % 3 == 0 ? 2 : static_cast<int>(rng.uniform(0.0, 8.0))) = rng.uniform(0.1, 1.0);
     const double r = -2.0 * ton(2) + 0.01 * rng.normal();
     const IsolationOutput out = step_isolation(p, state, Vec3(r, 0, 0), ton, k >= 20, false);
@@ -119,7 +119,7 @@ TEST(Isolation, PenaltyKeepsUnusedThrustersOut) {
   RandomStream rng(23, "isolation/penalty");
   IsolationOutput out;
   for (int k = 0; k < 30; ++k) {
-    WatchedTon ton = sparse_ton(rng, 0.5);
+    SchemeTon ton = sparse_ton(rng, 0.5);
     for (int i = 0; i < kN; ++i)
       if (ton(i) != 0.0) ton(i) = std::max(ton(i), 0.3);
     ton(3) = 0.05;
@@ -139,13 +139,13 @@ TEST(Isolation, TiesAndEmptyWindow) {
     IsolationState state;
     IsolationOutput out;
     for (int k = 0; k < 5; ++k) {
-      WatchedTon ton = WatchedTon::Zero();
+      SchemeTon ton = SchemeTon::Zero();
       ton(1) = ton(4) = ton(6) = 0.5;
       out = step_isolation(p, state, Vec3(1.0, 0, 0), ton, true, min_case);
     }
     EXPECT_EQ(out.candidate, 1);
     for (int k = 0; k < 5; ++k)
-      out = step_isolation(p, state, Vec3(1.0, 0, 0), WatchedTon::Zero(), true, min_case);
+      out = step_isolation(p, state, Vec3(1.0, 0, 0), SchemeTon::Zero(), true, min_case);
     EXPECT_EQ(out.candidate, -1);
     EXPECT_EQ(out.run_length, 0);
   }
@@ -159,7 +159,7 @@ TEST(Isolation, ConfirmationNeedsNcEqualCandidates) {
   p.confirmation = 3;
   IsolationState state;
   auto step = [&](int active) {
-    WatchedTon ton = WatchedTon::Zero();
+    SchemeTon ton = SchemeTon::Zero();
     ton(active) = 1.0;
     return step_isolation(p, state, Vec3(1.0, 0, 0), ton, true, false);
   };
@@ -180,7 +180,7 @@ TEST(Isolation, SettleDelaysTheFirstEvaluation) {
   p.settle = 4;
   IsolationState state;
   for (int k = 0; k < 20; ++k) {
-    WatchedTon ton = WatchedTon::Zero();
+    SchemeTon ton = SchemeTon::Zero();
     if (k < 5) ton(3) = 0.5;  // commanded only long before the alarm, still in the window
     const IsolationOutput out = step_isolation(p, state, Vec3(1.0, 0, 0), ton, k >= 10, false);
     EXPECT_EQ(out.candidate, k >= 14 ? 3 : -1) << "k " << k;
@@ -194,7 +194,7 @@ struct SignatureSetup {
 
 SignatureSetup msr_signature_setup(int window) {
   const model::Scenario s = testing::msr_test_scenario();
-  const WatchedConfig M = testing::msr_test_configuration(s);
+  const SchemeConfig M = testing::msr_test_configuration(s);
   const ResidualDesign d = design_residual_generator(position_design_inputs(s, M));
   SignatureSetup setup{make_residual_generator(d), {}};
   setup.params.criterion = IsolationCriterion::kSignature;
@@ -217,11 +217,11 @@ TEST(Isolation, SignatureCriterionMatchesDirectComputationAndFindsBlockedThruste
   RandomStream rng(24, "isolation/signature");
   Mat6W z = Mat6W::Zero();
   std::deque<std::pair<double, VecW>> w;  // r, s
-  std::deque<WatchedTon> tons;
+  std::deque<SchemeTon> tons;
   int wrong = 0;
   int evaluated = 0;
   for (int k = 0; k < 400; ++k) {
-    const WatchedTon ton = sparse_ton(rng, 0.05);
+    const SchemeTon ton = sparse_ton(rng, 0.05);
     const VecW s = (f.QC * z).row(0).transpose();
     const double r = -s(6) + 2e-5 * rng.normal();
     for (int i = 0; i < kN; ++i) z.col(i) = f.A_c * z.col(i) + f.B_thr.col(i) * ton(i);
@@ -251,7 +251,7 @@ TEST(Isolation, SignatureCriterionMatchesDirectComputationAndFindsBlockedThruste
       EXPECT_NEAR(out.score(i), direct, 1e-9 * std::max(direct, 1e-12)) << "k " << k << " i " << i;
     }
     bool six_used = false;
-    for (const WatchedTon& t : tons) six_used = six_used || t(6) != 0.0;
+    for (const SchemeTon& t : tons) six_used = six_used || t(6) != 0.0;
     if (six_used && out.candidate != 6) ++wrong;
     if (six_used) ++evaluated;
   }

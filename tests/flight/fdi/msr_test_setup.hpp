@@ -40,9 +40,9 @@ inline model::Scenario msr_test_scenario() {
   return s;
 }
 
-inline WatchedConfig msr_test_configuration(const model::Scenario& s) {
+inline SchemeConfig msr_test_configuration(const model::Scenario& s) {
   return model::configuration_matrix(s.thrusters, model::initial_active_set(s.thrusters), s.chaser.com_body_m)
-      .leftCols<kWatchedThrusters>();
+      .leftCols<kSchemeThrusters>();
 }
 
 }  // namespace chaser::flight::fdi::testing

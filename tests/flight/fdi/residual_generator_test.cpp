@@ -18,7 +18,7 @@ using Eigen::VectorXd;
 
 ResidualDesign msr_design(bool position, int residual_dim = 1) {
   const model::Scenario s = testing::msr_test_scenario();
-  const WatchedConfig M = testing::msr_test_configuration(s);
+  const SchemeConfig M = testing::msr_test_configuration(s);
   DesignInputs in = position ? position_design_inputs(s, M) : attitude_design_inputs(s, M);
   in.residual_dim = residual_dim;
   return design_residual_generator(in);
@@ -85,7 +85,7 @@ TEST(ResidualGenerator, ConstantFaultConvergesToTheDesignDcGain) {
     const ResidualDesign d = msr_design(position);
     const ResidualGeneratorParams p = make_residual_generator(d);
     const MatrixXd& F = d.inputs.fault_inputs;  // 3 x 8
-    for (int i = 0; i < kWatchedThrusters; ++i) {
+    for (int i = 0; i < kSchemeThrusters; ++i) {
       const Vec3 d_i = F.col(i);
       Vec6 x = Vec6::Zero();
       ResidualGeneratorState state;
