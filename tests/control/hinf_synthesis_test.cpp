@@ -59,7 +59,7 @@ void check_design(const Design& d, double tol, const char* name) {
 
 TEST(HinfSynthesis, SkogestadSisoMixedSensitivity) {
   const StateSpace g = testing::skogestad_siso_plant();
-  const MixedSensitivityWeights w{performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}};
+  const MixedSensitivityWeights w{performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}, {}};
   const double tol = 1e-4;
   const Design d = design(g, w, 20.0, tol);
   check_design(d, tol, "SISO S/KS");
@@ -69,7 +69,7 @@ TEST(HinfSynthesis, SkogestadSisoMixedSensitivity) {
 TEST(HinfSynthesis, DistillationMimoMixedSensitivity) {
   const StateSpace g = testing::distillation_plant();
   const MixedSensitivityWeights w{testing::diagonal_weight(performance_weight(2.0, 0.05, 1e-4), 2),
-                                  static_gain(1e-2 * MatrixXd::Identity(2, 2)), {}};
+                                  static_gain(1e-2 * MatrixXd::Identity(2, 2)), {}, {}};
   const double tol = 1e-4;
   const Design d = design(g, w, 20.0, tol);
   check_design(d, tol, "MIMO S/KS");
@@ -83,7 +83,7 @@ namespace {
 
 TEST(HinfSynthesis, MismatchedSizesAreNamedBeforeSlicot) {
   GeneralisedPlant gp = mixed_sensitivity_plant(
-      testing::skogestad_siso_plant(), {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}});
+      testing::skogestad_siso_plant(), {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}, {}});
   StateSpace bad = gp.p;
   bad.b.conservativeResize(bad.b.rows() - 1, Eigen::NoChange);
   HinfResult r = synthesise(bad, 1, 1, 20.0, 1e-4);
@@ -105,7 +105,7 @@ TEST(HinfSynthesis, MismatchedSizesAreNamedBeforeSlicot) {
 // INFO 12. Below the D11 bound (|W_S(inf)| = 1/M = 0.667) SB10AD refuses at once: INFO 6.
 TEST(HinfSynthesis, InfeasibleGammaMaxIsAnErrorNotACrash) {
   const GeneralisedPlant gp = mixed_sensitivity_plant(
-      testing::skogestad_siso_plant(), {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}});
+      testing::skogestad_siso_plant(), {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}, {}});
   HinfResult r = synthesise(gp.p, gp.n_meas, gp.n_ctrl, 1.3, 1e-4);
   EXPECT_EQ(r.status, HinfStatus::kNoStabilisingController);
   EXPECT_EQ(r.slicot_info, 12);
@@ -119,12 +119,12 @@ TEST(HinfSynthesis, InfeasibleGammaMaxIsAnErrorNotACrash) {
 // W_S (A = 0) puts a pole of P on the imaginary axis that w reaches and u cannot (A4 fails at 0).
 TEST(HinfSynthesis, ViolatedAssumptionsAreNamed) {
   const StateSpace g = testing::skogestad_siso_plant();
-  GeneralisedPlant gp = mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), {}, {}});
+  GeneralisedPlant gp = mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), {}, {}, {}});
   HinfResult r = synthesise(gp.p, gp.n_meas, gp.n_ctrl, 20.0, 1e-4);
   EXPECT_EQ(r.status, HinfStatus::kD12RankDeficient) << r.message;
   EXPECT_NE(r.message.find("D12 has not full column rank"), std::string::npos) << r.message;
 
-  gp = mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 0.0), static_gain(MatrixXd::Ones(1, 1)), {}});
+  gp = mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 0.0), static_gain(MatrixXd::Ones(1, 1)), {}, {}});
   r = synthesise(gp.p, gp.n_meas, gp.n_ctrl, 20.0, 1e-4);
   EXPECT_EQ(r.status, HinfStatus::kA4RankDeficient) << r.message;
   EXPECT_EQ(r.slicot_info, 2);

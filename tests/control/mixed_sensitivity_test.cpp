@@ -46,7 +46,7 @@ TEST(MixedSensitivity, LftOfThePlantIsTheWeightedSensitivityStack) {
   const StateSpace w_s = testing::diagonal_weight(performance_weight(2.0, 1.0, 1e-3), 2);
   const StateSpace w_ks = static_gain(0.5 * MatrixXd::Identity(2, 2));
   const StateSpace w_t = testing::diagonal_weight(performance_weight(0.5, 5.0, 2.0), 2);
-  const GeneralisedPlant gp = mixed_sensitivity_plant(g, {w_s, w_ks, w_t});
+  const GeneralisedPlant gp = mixed_sensitivity_plant(g, {w_s, w_ks, w_t, {}});
   ASSERT_EQ(gp.p.states(), 3 + 2 + 0 + 2);
   ASSERT_EQ(gp.p.inputs(), 4);
   ASSERT_EQ(gp.p.outputs(), 2 + 2 + 2 + 2);
@@ -100,7 +100,7 @@ TEST(MixedSensitivity, InputDisturbanceAddsTheGsBlocks) {
 TEST(MixedSensitivity, AbsentWeightsLeaveTheirRowsOut) {
   const StateSpace g = testing::skogestad_siso_plant();
   const GeneralisedPlant gp =
-      mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}});
+      mixed_sensitivity_plant(g, {performance_weight(1.5, 10.0, 1e-4), static_gain(MatrixXd::Ones(1, 1)), {}, {}});
   EXPECT_EQ(gp.p.states(), 4);   // G's 3 + W_S's 1
   EXPECT_EQ(gp.p.outputs(), 3);  // z = [W_S e; W_KS u], then e
   EXPECT_EQ(gp.p.inputs(), 2);   // [r; u]
@@ -111,7 +111,7 @@ TEST(MixedSensitivity, AbsentWeightsLeaveTheirRowsOut) {
 TEST(MixedSensitivity, WrongWeightSizesAreNamed) {
   const StateSpace g = testing::distillation_plant();
   try {
-    mixed_sensitivity_plant(g, {performance_weight(2.0, 0.05, 1e-4), {}, {}});  // SISO W_S on a 2x2 plant
+    mixed_sensitivity_plant(g, {performance_weight(2.0, 0.05, 1e-4), {}, {}, {}});  // SISO W_S on a 2x2 plant
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("W_S: must have 2 inputs"), std::string::npos) << e.what();
