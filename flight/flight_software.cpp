@@ -31,9 +31,7 @@ std::optional<SyncTransferParams> make_sync_transfer(const model::Scenario& scen
 std::optional<SyncApproachPlan> make_sync_approach(const model::Scenario& scenario) {
   const auto transfer = make_sync_transfer(scenario);
   if (!transfer || !scenario.guidance.synchronised->approach) return std::nullopt;
-  model::GuidanceParams line = scenario.guidance;
-  line.synchronised.reset();
-  return SyncApproachPlan{.line = line,
+  return SyncApproachPlan{.line = scenario.guidance,  // the line's part: guidance_reference reads no more
                           .approach = *scenario.guidance.synchronised->approach,
                           .transfer = *transfer,
                           .target_inertia_kgm2 = scenario.target.body->inertia_kgm2};

@@ -166,10 +166,10 @@ GuidanceRef sync_approach_reference(const SyncApproachPlan& plan, SyncApproachLa
   const Vec3 axis_point_inertial = plan.approach.axis_distance_m * *latch.axis_inertial;
   const PoseModel pointing_only(plan, *latch.axis_inertial, nullptr, Vec3::Zero(), Quat::Identity(), orbit);
   // p_start and the attitude offset, fixed when the rotation's synchronisation starts; near its start
-  // (t + h) they are needed before: the same from the estimate of now.
+  // (t + h) they are needed before: the same from the estimate of now. Earlier nothing reads them.
   std::optional<Vec3> start_target_m = latch.start_target_m;
   std::optional<Quat> sync_offset = latch.sync_offset;
-  if (!start_target_m && target) {
+  if (!start_target_m && target && t_s + kDifferenceStep_s >= times.rotation_start_s) {
     const Quat q_target_from_inertial = target->q_inertial_from_target.conjugate();
     start_target_m = q_target_from_inertial * axis_point_inertial;
     sync_offset = (q_target_from_inertial * pointing_only.on_axis_attitude(std::max(t_s, times.rotation_start_s)))

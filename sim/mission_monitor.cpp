@@ -71,11 +71,10 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
       f.min_target_clearance_m = clearance_m;
       f.min_target_clearance_at_s = s.t_s;
     }
-    const bool synchronised = s.t_s >= synchronised_from_s(scenario);
-    double& least = synchronised ? f.min_clearance_synchronised_m : f.min_clearance_unsynchronised_m;
+    double& least = s.synchronised ? f.min_clearance_synchronised_m : f.min_clearance_unsynchronised_m;
     if (clearance_m < least) {
       least = clearance_m;
-      (synchronised ? f.min_clearance_synchronised_at_s : f.min_clearance_unsynchronised_at_s) = s.t_s;
+      (s.synchronised ? f.min_clearance_synchronised_at_s : f.min_clearance_unsynchronised_at_s) = s.t_s;
     }
   }
   return true;

@@ -46,12 +46,13 @@ struct MonitorSample {
   Quat q_inertial_from_target = Quat::Identity();  // the truth; used with a keep-out volume only
   Vec3 omega_body_radps = Vec3::Zero();            // [rad/s] the truth's body rate (final judgement)
   Vec3 omega_ref_body_radps = Vec3::Zero();        // [rad/s] the reference's
+  bool synchronised = false;  // t_s >= synchronised_from_s (the caller's, computed once a run)
 };
 
 // From when the chaser's rotation is synchronised with the target's (COMRADE 2018 Table 4): on the
 // line from the start if the target turns with LVLH (its given rate within kSynchronisedRate_radps
 // of LVLH's: ASSIST), else never; from the start in the synchronised final approach; from the end of
-// the rotation's synchronisation with guidance.synchronised.approach. Per period: keep it cheap.
+// the rotation's synchronisation with guidance.synchronised.approach.
 inline constexpr double kSynchronisedRate_radps = 1e-7;  // [rad/s] 0.02 deg an hour
 double synchronised_from_s(const model::Scenario& scenario);
 

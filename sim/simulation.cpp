@@ -152,6 +152,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   }
   recording_ = telemetry_ || memory_;
   keep_out_ = checks_keep_out(scenario_);
+  synchronised_from_s_ = synchronised_from_s(scenario_);
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {0.0f, 0.0f, 0.0f});
@@ -179,8 +180,9 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   // the plant steps past them.
   const plant::TargetRotation target =
       recording_ || keep_out_ ? plant::target_rotation(plant_, t_s) : plant::TargetRotation{};
-  const MonitorSample sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_,
-                                              out.reference, target.q_inertial_from_target);
+  MonitorSample sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
+                                        target.q_inertial_from_target);
+  sample.synchronised = t_s >= synchronised_from_s_;
   std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
   if (shape_.slosh_tanks > 0 && recording_) slosh = plant_.state.orbit.slosh;
   begun_ = false;

@@ -78,6 +78,7 @@ class Simulation {
   bool every_channel_ = true;
   bool recording_ = false;
   bool keep_out_ = false;  // the target has a keep-out volume: its attitude is needed every period
+  double synchronised_from_s_ = 0.0;  // [s] sim::synchronised_from_s of the scenario
 
   // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
   plant::RigidState truth_;
