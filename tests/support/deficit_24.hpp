@@ -7,6 +7,7 @@
 // (tests/support/deficit_msr.hpp): inertia diag(2000, 2500, 3000) kg m^2, 2500 kg, T = 0.1 s.
 #include "flight/fdi/deficit_isolation.hpp"
 #include "model/thruster_geometry.hpp"
+#include "tests/support/deficit_msr.hpp"
 
 namespace chaser::testing {
 
@@ -28,14 +29,6 @@ inline model::ThrusterSetParams box_24_thrusters() {
 // The lane with the same torque and the opposite force: the thruster of the opposite corner, same axis.
 inline int box_24_partner(int lane) { return (7 - lane / 3) * 3 + lane % 3; }
 
-inline flight::fdi::DeficitIsolationParams box_24_deficit_params() {
-  const model::ConfigMatrix m = model::configuration_matrix(box_24_thrusters(), model::first_thrusters(24), Vec3::Zero());
-  flight::fdi::DeficitIsolationParams p;
-  p.inertia_kgm2 = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();
-  p.mass_kg = 2500.0;
-  flight::fdi::set_deficit_columns(p, m.leftCols<24>());
-  p.period_s = 0.1;
-  return p;
-}
+inline flight::fdi::DeficitIsolationParams box_24_deficit_params() { return deficit_params_for(box_24_thrusters(), 24); }
 
 }  // namespace chaser::testing

@@ -8,14 +8,17 @@
 
 namespace chaser::testing {
 
-inline flight::fdi::DeficitIsolationParams msr_deficit_params() {
-  const model::ConfigMatrix m = model::configuration_matrix(msr_branch_a_thrusters(), model::first_thrusters(8), Vec3::Zero());
+// The bank watching the first `count` thrusters of `set` on MSR's chaser (the mass properties above).
+inline flight::fdi::DeficitIsolationParams deficit_params_for(const model::ThrusterSetParams& set, int count) {
+  const model::ConfigMatrix m = model::configuration_matrix(set, model::first_thrusters(count), Vec3::Zero());
   flight::fdi::DeficitIsolationParams p;
   p.inertia_kgm2 = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();
   p.mass_kg = 2500.0;
-  flight::fdi::set_deficit_columns(p, m.leftCols<8>());
+  flight::fdi::set_deficit_columns(p, m.leftCols(count));
   p.period_s = 0.1;
   return p;
 }
+
+inline flight::fdi::DeficitIsolationParams msr_deficit_params() { return deficit_params_for(msr_branch_a_thrusters(), 8); }
 
 }  // namespace chaser::testing
