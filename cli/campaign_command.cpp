@@ -13,6 +13,8 @@
 #include "campaign/merge.hpp"
 #include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
+#include "campaign/run_one.hpp"
+#include "campaign/run_row.hpp"
 #include "campaign/summary.hpp"
 #include "campaign/table5.hpp"
 #include "campaign/target_report.hpp"
@@ -213,9 +215,50 @@ int comrade_table5(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// --rerun I: run I of the campaign the other options describe, alone, into --out: its
+// telemetry.csv and summary.json, and run.csv (the runs.csv header and the run's row, the same
+// bytes as in the campaign's runs.csv). Each run depends only on (scenario, seed, index), so a
+// campaign's odd run can be looked into without keeping every run's telemetry.
+int rerun_one(const CampaignArgs& args) {
+  if (args.mpi || !args.shard.empty() || args.resume || args.keep_telemetry != 0 || !args.targets.empty()) {
+    std::cerr << "chaser campaign: --rerun flies one run: leave out --mpi, --shard, --resume, --keep-telemetry "
+                 "and --target\n";
+    return kExitBadInput;
+  }
+  const std::optional<Prepared> prepared = prepare(args);
+  if (!prepared) return kExitBadInput;
+  const std::int64_t total = prepared->plan.layout.total_runs();
+  const std::int64_t run = *args.rerun;
+  if (run < 0 || run >= total) {
+    std::cerr << fmt::format("chaser campaign: --rerun: run index must be in [0, {}] for this campaign (got {})\n",
+                             total - 1, run);
+    return kExitBadInput;
+  }
+  const flight::FlightParams flight = flight::make_flight_params(prepared->plan.nominal);
+  const campaign::RunOutput out = campaign::run_one(prepared->plan, flight, run, args.out_dir);
+  const std::filesystem::path row_path = std::filesystem::path(args.out_dir) / "run.csv";
+  std::ofstream row_file(row_path, std::ios::binary);
+  row_file << campaign::runs_header() << '\n' << out.row << '\n';
+  if (!row_file) {
+    std::cerr << fmt::format("chaser campaign: cannot write {}\n", row_path.string());
+    return kExitFailure;
+  }
+  std::cout << fmt::format("campaign: run {}{}; wrote {}/telemetry.csv, summary.json, run.csv\n", run,
+                           out.diverged ? " (diverged or failed)" : "", args.out_dir);
+  return kExitOk;
+}
+
 }  // namespace
 
 int campaign_command(const CampaignArgs& args) {
+  if (args.rerun) {
+    if (args.preset == kPresetTable5 || !args.also.empty()) {
+      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5 or --also (rerun one case's folder: "
+                   "its scenario with --set target.body.spin_case=S1|S2|S3 --cases none)\n";
+      return kExitBadInput;
+    }
+    return rerun_one(args);
+  }
   if (args.preset == kPresetTable5) return comrade_table5(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";

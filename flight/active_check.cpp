@@ -1,6 +1,7 @@
 #include "flight/active_check.hpp"
 
 #include <bit>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,9 @@ ActiveCheckParams make_active_check_params(const model::Scenario& scenario) {
       .informative_fraction = s.informative_on_time_s / scenario.control_period_s,
       .keep_quiet_range_m = s.keep_quiet_range_m,
       .arm_range_m = s.arm_range_m,
+      // Detection off, nothing is ever suspected; the gain is then never reached either.
+      .recheck_gain = s.recheck_fraction < 1.0 ? s.recheck_fraction * scenario.fdi.deficit.detection_threshold
+                                               : std::numeric_limits<double>::infinity(),
   };
 }
 
@@ -32,6 +36,8 @@ std::vector<std::string> validate(const ActiveCheckParams& p) {
   if (!(p.arm_range_m > p.keep_quiet_range_m))
     problems.push_back(fmt::format("arm_range_m must be > keep_quiet_range_m = {} (got {})", p.keep_quiet_range_m,
                                    p.arm_range_m));
+  if (!(p.recheck_gain > 0))
+    problems.push_back(fmt::format("recheck_gain must be > 0 (got {})", p.recheck_gain));
   return problems;
 }
 
@@ -58,11 +64,14 @@ int step_active_check(const ActiveCheckParams& p, ActiveCheckState& state, const
   for (model::ThrusterMask left = state.active; left != 0; left &= left - 1) {
     const auto i = static_cast<std::size_t>(std::countr_zero(left));
     if (ton[i] >= p.informative_fraction) state.verified_s[i] = in.t_s;
+    // A suspect is unverified, whatever it fired, and stalest of all.
+    if (static_cast<int>(i) == in.suspect) state.verified_s[i] = -std::numeric_limits<double>::infinity();
     if (stalest == model::kNoThruster || state.verified_s[i] < stalest_verified_s) {
       stalest = static_cast<int>(i);
       stalest_verified_s = state.verified_s[i];
     }
   }
+  if (!in.fdi_listening) return state.next;                  // nothing a check shows would be read
   if (in.range_m < p.keep_quiet_range_m) return state.next;  // the keep-quiet zone: no check
   if (in.range_m > p.arm_range_m) return state.next;         // not yet armed
   if (stalest != model::kNoThruster && in.t_s - stalest_verified_s >= p.max_unverified_s) state.next = stalest;

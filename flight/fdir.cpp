@@ -253,6 +253,16 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
   return params.watched[static_cast<std::size_t>(state.watched)].set;
 }
 
+bool fdi_listening(const FdirState& state) { return state.armed && state.confirmed_thruster == model::kNoThruster; }
+
+int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain) {
+  const fdi::DeficitDetectorState& d = state.detector;
+  if (!params.deficit_detection || !state.armed || d.alarm || d.suspect < 0 || !(d.material_statistic >= min_gain) ||
+      d.material_statistic <= 0)
+    return model::kNoThruster;
+  return watched_set(params, state).index[static_cast<std::size_t>(d.suspect)];
+}
+
 fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& state, const model::ThrusterOnTimes& ton) {
   fdi::WatchedTon lanes = fdi::WatchedTon::Zero();
   if (params.watched.empty() || state.watched < 0) return lanes;

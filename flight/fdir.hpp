@@ -143,6 +143,16 @@ FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
 void rearm_fdir(const FdirParams& params, FdirState& state, model::ThrusterMask active, double t_s,
                 int recovered_thruster);
 
+// The thruster (index) the deficit detector holds a material deficit on, with a gain of at least
+// `min_gain`, before any alarm; kNoThruster without one (detector off, disarmed, or alarmed). The
+// active checks recheck it (flight/active_check.hpp).
+int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain);
+
+// Whether a check can still show the FDI something: it watches (armed) and has not yet confirmed a
+// fault in this watch. After a confirmation the schemes have latched until a recovery rearms them
+// on a new set, so a check would only cost propellant and disturb a flight already degraded.
+bool fdi_listening(const FdirState& state);
+
 // The lanes the FDI watches now.
 const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& state);
 

@@ -133,7 +133,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
   step_active_check(params.active_check, state.active_check,
-                    {.t_s = t_s, .range_m = out.estimate.r_lvlh_m.norm(), .active = state.thrusters.active},
+                    {.t_s = t_s,
+                     .range_m = out.estimate.r_lvlh_m.norm(),
+                     .active = state.thrusters.active,
+                     .suspect = params.active_check.enabled
+                                    ? deficit_suspect(params.fdir, state.fdir, params.active_check.recheck_gain)
+                                    : model::kNoThruster,
+                     .fdi_listening = fdi_listening(state.fdir)},
                     out.command.ton);
 
   out.command.latch_closed_groups = state.thrusters.closed_groups;

@@ -89,6 +89,7 @@ void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
   r.number("pulse_s", Range::positive(), out.pulse_s);
   r.number("keep_quiet_range_m", Range::non_negative(), out.keep_quiet_range_m);
   if (r.has("arm_range_m")) r.number("arm_range_m", Range::positive(), out.arm_range_m);
+  if (r.has("recheck_fraction")) r.number("recheck_fraction", Range::left_open(0.0, 1.0), out.recheck_fraction);
 }
 
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {

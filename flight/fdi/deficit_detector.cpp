@@ -126,6 +126,7 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   }
   state.statistic = statistic;
   state.suspect = material_suspect >= 0 ? material_suspect : suspect;
+  state.material_statistic = material_suspect >= 0 ? material_gain : 0.0;
   if (material_gain > p.threshold) {
     state.alarm = true;
     state.alarm_sample = bank.count - 1;

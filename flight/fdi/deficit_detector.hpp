@@ -85,6 +85,7 @@ struct DeficitDetectorState {
   double statistic = 0;           // [-] max_i S_i (material or not), last evaluation
   int suspect = -1;               // lane of the largest material gain (else of the largest);
                                   // a partner's twin (same torque) is as likely
+  double material_statistic = 0;  // [-] the largest material gain, last evaluation (0: no material fit)
 };
 
 // The normal equations [haa, hab, hbb, ga, gb] of the lanes' hypotheses (fit_deficits) on the rows

@@ -169,6 +169,28 @@ TEST(CampaignCli, KeepTelemetryOfTheFirstRuns) {
   EXPECT_FALSE(fs::exists(dir / "runs" / "2"));
 }
 
+// --rerun I flies run I alone: its telemetry and summary, and run.csv whose row is the campaign's own
+// row for that run, byte for byte (each run depends only on scenario, seed and index). An index
+// outside the campaign, or an option that makes no sense for one run, is refused.
+TEST(CampaignCli, RerunFliesOneRunOfTheCampaign) {
+  const fs::path dir = fresh_dir("rerun_campaign");
+  const fs::path one = fresh_dir("rerun_one");
+  ASSERT_EQ(chaser(kShort + "--cases none,loss --runs 2 --out " + dir.string()).exit_code, 0);
+  const CommandResult r = chaser(kShort + "--cases none,loss --runs 2 --rerun 3 --out " + one.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(one / "telemetry.csv"));
+  EXPECT_TRUE(fs::exists(one / "summary.json"));
+  const std::string runs = read_file(dir / "runs.csv");
+  const std::string row = read_file(one / "run.csv");
+  const std::size_t header_end = runs.find('\n');
+  EXPECT_EQ(row.substr(0, header_end + 1), runs.substr(0, header_end + 1));
+  const std::size_t row3 = runs.find("\n3,");
+  ASSERT_NE(row3, std::string::npos);
+  EXPECT_EQ(row.substr(header_end + 1), runs.substr(row3 + 1));  // run 3 is the last row
+  expect_bad("--cases none,loss --runs 2 --rerun 4", "--rerun: run index must be in [0, 3] for this campaign (got 4)");
+  expect_bad("--runs 2 --rerun 0 --shard 0/2", "--rerun flies one run");
+}
+
 }  // namespace
 
 namespace {

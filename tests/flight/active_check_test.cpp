@@ -105,6 +105,41 @@ TEST(ActiveCheck, ArmedOnlyWithinTheArmRange) {
   EXPECT_EQ(validate(p).size(), 1U);
 }
 
+// A suspect of the FDI (a material deficit short of the alarm) is unverified whatever it fired and
+// stalest of all: checked in the next period the window allows, before older stale thrusters; it
+// stays due until a pulse after the suspicion ends it.
+TEST(ActiveCheck, ASuspectIsCheckedAgainAtOnce) {
+  ActiveCheckParams p = params();
+  p.arm_range_m = 3.0;
+  ActiveCheckState s;
+  step(p, s, 0.0, command({}));
+  EXPECT_EQ(step(p, s, 5.0, command({0, 1, 2, 3, 4, 5, 6, 7})), model::kNoThruster);  // all verified at 5 s
+  const auto suspect = [&](double t_s, int who, const model::ThrusterOnTimes& ton, double range_m = 2.5) {
+    return step_active_check(p, s, {.t_s = t_s, .range_m = range_m, .active = kBranchA, .suspect = who}, ton);
+  };
+  EXPECT_EQ(suspect(6.0, 3, command({3})), 3);  // fired this period, suspected: checked next
+  EXPECT_EQ(suspect(6.1, model::kNoThruster, command({3})), model::kNoThruster);  // its check fired
+  EXPECT_EQ(suspect(6.2, 5, command({}), 3.5), model::kNoThruster);  // outside the window: waits
+  EXPECT_EQ(suspect(6.3, model::kNoThruster, command({})), 5);       // due on entering it
+  EXPECT_EQ(suspect(6.4, model::kNoThruster, command({})), 5);       // until it fires
+  EXPECT_EQ(suspect(6.5, model::kNoThruster, command({5})), model::kNoThruster);
+  EXPECT_EQ(suspect(16.0, 4, command({})), 4);  // before T1, stale since 5 s
+  EXPECT_EQ(suspect(16.1, 12, command({4})), 0);  // T5 fired; a suspect outside the mask changes nothing
+}
+
+// Once the FDI has found its fault (or while it is disarmed after a recovery) no check is fired:
+// nothing it shows would be read. The clocks keep running.
+TEST(ActiveCheck, NoCheckOnceTheFdiHasFoundItsFault) {
+  const ActiveCheckParams p = params();
+  ActiveCheckState s;
+  step(p, s, 0.0, command({}));
+  EXPECT_EQ(step_active_check(p, s, {.t_s = 20.0, .range_m = kFar_m, .active = kBranchA, .fdi_listening = false},
+                              command({1})),
+            model::kNoThruster);
+  EXPECT_EQ(step(p, s, 20.1, command({})), 0);
+  EXPECT_EQ(step(p, s, 20.2, command({0})), 2);  // T2 was verified at 20 s
+}
+
 // Disabled, nothing is ever chosen.
 TEST(ActiveCheck, DisabledChecksNothing) {
   ActiveCheckParams p = params();

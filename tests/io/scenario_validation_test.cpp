@@ -109,6 +109,8 @@ const BadCase kBadCases[] = {
   {"active_check_keep_quiet_negative", {"fdi.active_check.keep_quiet_range_m=-1"}, "fdi.active_check.keep_quiet_range_m", "must be >= 0 (got -1)"},
   {"active_check_arm_inside_keep_quiet", {"fdi.active_check.arm_range_m=1.5"}, "fdi.active_check.arm_range_m", "must be > keep_quiet_range_m = 2 (got 1.5)"},
   {"active_check_arm_zero", {"fdi.active_check.arm_range_m=0"}, "fdi.active_check.arm_range_m", "must be > 0 (got 0)"},
+  {"active_check_recheck_zero", {"fdi.active_check.recheck_fraction=0"}, "fdi.active_check.recheck_fraction", "must be in (0, 1] (got 0)"},
+  {"active_check_recheck_above_one", {"fdi.active_check.recheck_fraction=1.5"}, "fdi.active_check.recheck_fraction", "must be in (0, 1] (got 1.5)"},
   {"active_check_missing_key", {"fdi.active_check={enabled: true, max_unverified_s: 25, informative_on_time_s: 0.005, pulse_s: 0.005}"}, "fdi.active_check.keep_quiet_range_m", "missing key (expected a number >= 0)"},
   {"active_check_without_fdi", {"fdi.active_check.enabled=true", "fdi.position.enabled=false", "fdi.attitude.enabled=false", "fdi.deficit.detection=false"}, "fdi.active_check.enabled", "no FDI scheme watches the checks"},
   {"active_check_typo", {"fdi.active_check.pulse_ms=5"}, "fdi.active_check.pulse_ms", "did you mean 'pulse_s'?"},
