@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <limits>
 
 #include <yaml-cpp/yaml.h>
 
@@ -222,12 +223,13 @@ std::string without_key(const std::string& path) {
 }
 
 // The keys a scenario may leave out (docs/scenario.md): a thruster's redundancy group, the standby
-// groups, and the single-loss requirement.
+// groups, the single-loss requirement, and the active checks' window and recheck level.
 bool optional_key(const std::string& key) {
   const auto ends_with = [&](const std::string& tail) {
     return key.size() >= tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0;
   };
   return key == "thrusters.standby_groups" || key == "thrusters.tolerates_single_loss" ||
+         key == "fdi.active_check.arm_range_m" || key == "fdi.active_check.recheck_fraction" ||
          (key.rfind("thrusters.list.", 0) == 0 && ends_with(".group"));
 }
 
@@ -246,7 +248,7 @@ TEST(ScenarioValidation, EveryKeyIsRequired) {
     EXPECT_TRUE(has_error(r, key, "missing key (expected "));
     EXPECT_EQ(r.errors.size(), 1u) << key << ":\n" << format_errors(r.errors);
   }
-  EXPECT_EQ(optional, 18);  // 16 groups, standby_groups, tolerates_single_loss
+  EXPECT_EQ(optional, 20);  // 16 groups, standby_groups, tolerates_single_loss, arm_range_m, recheck_fraction
 }
 
 // The optional keys' defaults: without tolerates_single_loss nothing is required of single losses;
@@ -259,9 +261,21 @@ TEST(ScenarioValidation, OptionalThrusterKeysHaveDefaults) {
 
   std::string text = without_key("thrusters.standby_groups");
   const LoadResult one_set = load_scenario_text(text, {"fdi.recovery=none", "fdi.position.enabled=false",
-                                                       "fdi.attitude.enabled=false", "fdi.deficit.detection=false"});
+                                                       "fdi.attitude.enabled=false", "fdi.deficit.detection=false",
+                                                       "fdi.active_check.enabled=false"});
   ASSERT_TRUE(one_set.scenario.has_value()) << format_errors(one_set.errors);
   EXPECT_EQ(model::initial_active_set(one_set.scenario->thrusters), model::first_thrusters(16));
+}
+
+// Without arm_range_m the checks run all along the approach; without recheck_fraction a suspect is
+// rechecked from half the detector's threshold (docs/scenario.md).
+TEST(ScenarioValidation, OptionalActiveCheckKeysHaveDefaults) {
+  const LoadResult no_recheck = load_scenario_text(without_key("fdi.active_check.recheck_fraction"));
+  ASSERT_TRUE(no_recheck.scenario.has_value()) << format_errors(no_recheck.errors);
+  EXPECT_EQ(no_recheck.scenario->fdi.active_check.recheck_fraction, 0.5);
+  const LoadResult no_window = load_scenario_text(without_key("fdi.active_check.arm_range_m"));
+  ASSERT_TRUE(no_window.scenario.has_value()) << format_errors(no_window.errors);
+  EXPECT_EQ(no_window.scenario->fdi.active_check.arm_range_m, std::numeric_limits<double>::infinity());
 }
 
 // An unknown key is caught in every mapping of the schema, the top level and list entries included.

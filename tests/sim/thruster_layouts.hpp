@@ -42,7 +42,8 @@ inline std::string thruster_list(int count, double thrust_N = 22.0) {
 // The overrides that fly a set without standby groups: no recovery, and the eight-lane FDI off.
 inline std::vector<std::string> one_set_overrides(int count) {
   return {thruster_list(count),           "thrusters.standby_groups=[]",  "fdi.recovery=none",
-          "fdi.position.enabled=false",   "fdi.attitude.enabled=false",   "fdi.deficit.detection=false"};
+          "fdi.position.enabled=false",   "fdi.attitude.enabled=false",   "fdi.deficit.detection=false",
+          "fdi.active_check.enabled=false"};
 }
 
 }  // namespace chaser::sim::testing
