@@ -12,6 +12,8 @@
 #include "flight/fdir.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
+#include "model/fdi.hpp"
+#include "model/thrusters.hpp"
 
 namespace chaser::cli {
 
@@ -49,6 +51,17 @@ int fdi_design_command(const FdiDesignArgs& args) {
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& scenario = *loaded->scenario;
+  // Fonod 2015's residual generators have a fault column per thruster of MSR's branch of eight; on
+  // another set a design of "the first eight" would describe no scheme that flies.
+  const int active = model::thruster_count(model::initial_active_set(scenario.thrusters));
+  if (active != model::kFdiSchemeThrusters) {
+    std::cerr << fmt::format("chaser fdi design: Fonod 2015's residual generators watch exactly {} active "
+                             "thrusters; {} starts with {} (thrusters.list, thrusters.standby_groups). Chaser's "
+                             "deficit scheme watches any set and needs no offline design (docs/fdi.md, \"Any "
+                             "thruster set\")\n",
+                             model::kFdiSchemeThrusters, args.scenario_path, active);
+    return kExitBadInput;
+  }
   const flight::fdi::DesignInputs inputs = flight::scheme_design_inputs(
       scenario, args.model == "position" ? flight::FdiModel::kPosition : flight::FdiModel::kAttitude);
   flight::fdi::ResidualDesign design;

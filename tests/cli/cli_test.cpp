@@ -182,6 +182,12 @@ TEST(Cli, FdiDesignWritesTheDesign) {
   std::filesystem::remove(path);
   EXPECT_EQ(run_chaser("fdi design scenarios/msr_terminal.yaml --model velocity").exit_code, 2);
   EXPECT_EQ(run_chaser("fdi design scenarios/msr_terminal.yaml --set chaser.mass_kg=0").exit_code, 2);
+  // COMRADE's 24 thrusters: no design of the published schemes, whose columns are eight thrusters.
+  const CommandResult comrade = run_chaser("fdi design scenarios/comrade_envisat.yaml");
+  EXPECT_EQ(comrade.exit_code, 2);
+  EXPECT_NE(comrade.output.find("watch exactly 8 active thrusters; scenarios/comrade_envisat.yaml starts with 24"),
+            std::string::npos)
+      << comrade.output;
 }
 
 }  // namespace
