@@ -257,9 +257,8 @@ bool fdi_listening(const FdirState& state) { return state.armed && state.confirm
 
 int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain) {
   const fdi::DeficitDetectorState& d = state.detector;
-  if (!params.deficit_detection || !state.armed || d.alarm || d.suspect < 0 || !(d.material_statistic >= min_gain) ||
-      d.material_statistic <= 0)
-    return model::kNoThruster;
+  const bool suspected = d.material_statistic > 0 && d.material_statistic >= min_gain;  // 0: no material fit
+  if (!params.deficit_detection || !state.armed || d.alarm || d.suspect < 0 || !suspected) return model::kNoThruster;
   return watched_set(params, state).index[static_cast<std::size_t>(d.suspect)];
 }
 
