@@ -22,6 +22,22 @@ model::Scenario msr_without_recovery() {
   return s;
 }
 
+// A campaign run's truth, from its runs.csv row: its seed and dispersed chaser (mass, principal
+// inertia, centre of mass), flying `fault` for `duration_s`; a campaign flies it with flight
+// software designed for the nominal chaser.
+model::Scenario campaign_truth(const model::Scenario& nominal, std::uint64_t seed, double mass_kg,
+                               const Vec3& inertia_kgm2, const Vec3& com_body_m, const model::FaultParams& fault,
+                               double duration_s) {
+  model::Scenario truth = nominal;
+  truth.duration_s = duration_s;
+  truth.seed = seed;
+  truth.chaser.mass_kg = mass_kg;
+  truth.chaser.inertia_kgm2.diagonal() = inertia_kgm2;
+  truth.chaser.com_body_m = com_body_m;
+  truth.faults = {fault};
+  return truth;
+}
+
 // The deficit detector's gains are evaluated every second period when its window is an even number
 // of periods (the shipped 10 s: 100), else every period; both are valid parameters.
 TEST(FdirClosedLoop, DetectorCadenceFollowsTheWindowsParity) {
@@ -94,14 +110,13 @@ TEST(FdirClosedLoop, EveryThrusterAndFaultCaseIsDetectedAndIsolatedRight) {
 // (Over 300 dispersed leak runs: 8 partner confusions before, none after; docs/fdi.md.)
 TEST(FdirClosedLoop, DispersedLeakIsNotConfusedWithItsPartner) {
   const model::Scenario nominal = msr_without_recovery();
-  model::Scenario truth = nominal;
-  truth.duration_s = 1010.0;
-  truth.seed = 909671271867787876ULL;
-  truth.chaser.mass_kg = 2540.5443396736609;
-  truth.chaser.inertia_kgm2.diagonal() << 1919.8415318487027, 2571.8417331612186, 3176.1935241906131;
-  truth.chaser.com_body_m << 0.0040326617792807206, 0.00094635353984032819, -0.020779295416637047;
-  truth.faults = {model::FaultParams{.kind = model::FaultKind::kLeak, .thruster = 5, .onset_s = 1000.0,
-                                     .leak_size = 0.19181456441143682, .leak_slope_per_s = 0.1}};
+  const model::Scenario truth = campaign_truth(
+      nominal, 909671271867787876ULL, 2540.5443396736609,
+      Vec3(1919.8415318487027, 2571.8417331612186, 3176.1935241906131),
+      Vec3(0.0040326617792807206, 0.00094635353984032819, -0.020779295416637047),
+      model::FaultParams{.kind = model::FaultKind::kLeak, .thruster = 5, .onset_s = 1000.0,
+                         .leak_size = 0.19181456441143682, .leak_slope_per_s = 0.1},
+      1010.0);
   const RunResult r = run_scenario(truth, flight::make_flight_params(nominal));
   EXPECT_EQ(r.fdir.deficit.isolated_thruster, 5);  // T6
   EXPECT_EQ(r.fdir.attitude.isolated_thruster, 5);
@@ -166,14 +181,13 @@ TEST(FdirClosedLoop, ArmedChecksWaitForTheLastApproach) {
 // bound (detected 30.8 s after the onset); with them the suspect is checked again at once.
 TEST(FdirClosedLoop, AnInconclusiveCheckIsRepeatedAtOnce) {
   const model::Scenario nominal = msr_without_recovery();
-  model::Scenario truth = nominal;
-  truth.duration_s = 1040.0;
-  truth.seed = 6880154054337862346ULL;
-  truth.chaser.mass_kg = 2435.3981246670201;
-  truth.chaser.inertia_kgm2.diagonal() << 2122.6950054398922, 2445.9381260284263, 2662.004407342969;
-  truth.chaser.com_body_m << -0.0075013290838678364, -0.02752715779982538, 0.0079851558499976303;
-  truth.faults = {model::FaultParams{.kind = model::FaultKind::kLoss, .thruster = 3, .onset_s = 1000.0,
-                                     .loss_size = 0.45861967708549783}};
+  const model::Scenario truth = campaign_truth(
+      nominal, 6880154054337862346ULL, 2435.3981246670201,
+      Vec3(2122.6950054398922, 2445.9381260284263, 2662.004407342969),
+      Vec3(-0.0075013290838678364, -0.02752715779982538, 0.0079851558499976303),
+      model::FaultParams{.kind = model::FaultKind::kLoss, .thruster = 3, .onset_s = 1000.0,
+                         .loss_size = 0.45861967708549783},
+      1040.0);
   model::Scenario flown = nominal;
   flown.fdi.active_check = {.enabled = true, .max_unverified_s = 25.0, .informative_on_time_s = 0.005,
                             .pulse_s = 0.0075, .keep_quiet_range_m = 2.0, .arm_range_m = 3.0, .recheck_fraction = 1.0};
