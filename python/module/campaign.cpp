@@ -23,8 +23,12 @@
 
 #include "campaign/campaign.hpp"
 #include "campaign/csv.hpp"
+#include "campaign/plan.hpp"
 #include "campaign/run_row.hpp"
 #include "campaign/target.hpp"
+#include "flight/flight_software.hpp"
+#include "sim/run.hpp"
+#include "sim/summary.hpp"
 #include "python/module/module.hpp"
 
 namespace chaser::python {
@@ -363,6 +367,34 @@ CampaignResult run_campaign(const py::object& scenario_arg, const py::object& ru
   return result;
 }
 
+// `chaser campaign SCENARIO --runs --cases --seed --rerun I`: run I of that campaign alone, with the
+// truth the campaign gives it (dispersions, fault) and the flight software designed for the nominal
+// scenario, as chaser.run gives a run: summary.json's content and the telemetry in memory.
+RunResult campaign_run(const py::object& scenario_arg, std::int64_t run, const py::object& runs, const py::object& cases,
+                       std::optional<std::uint64_t> seed) {
+  Scenario scenario = scenario_argument(scenario_arg);
+  if (seed) scenario = with_overrides(scenario, {fmt::format("campaign.seed={}", *seed)});
+  const campaign::LayoutParse layout = campaign::parse_layout(
+      cases_text(cases), runs_text(runs), static_cast<std::int64_t>(scenario.scenario.campaign.runs_per_case));
+  if (!layout.error.empty()) throw py::value_error(layout.error);
+  const campaign::CampaignPlan plan{scenario.scenario, scenario.hash, campaign::RunLayout(layout.cases)};
+  const std::int64_t total = plan.layout.total_runs();
+  if (run < 0 || run >= total)
+    throw py::value_error(fmt::format("run: must be in [0, {}] for this campaign (got {})", total - 1, run));
+  sim::TelemetryRows memory;
+  std::string summary_json, report;
+  {
+    py::gil_scoped_release released;
+    const campaign::RunSetup setup = campaign::make_run_setup(plan, run);
+    sim::RunOptions options;
+    options.telemetry_rows = &memory;
+    const sim::RunResult result = sim::run_scenario(setup.truth, flight::make_flight_params(plan.nominal), options);
+    summary_json = sim::run_summary(setup.truth, plan.scenario_hash, result).dump(2) + "\n";
+    report = sim::summary_text(setup.truth, result);
+  }
+  return run_result(summary_json, report, memory);
+}
+
 py::object to_pandas(const CampaignResult& result) {
   py::module_ pandas;
   try {
@@ -403,6 +435,12 @@ void add_campaign(py::module_& m) {
         "progress(done, total, diverged), called at most every 0.25 s and once at the end. Keywords as the "
         "command's options: shard='I/M' (--shard), resume=True (--resume, with out), keep_telemetry=K "
         "(--keep-telemetry, with out), targets=['P_nd<=1e-3@0.95', ...] (--target, judged in summary.md).");
+  m.def("campaign_run", &campaign_run, py::arg("scenario"), py::arg("run"), py::arg("runs") = py::none(),
+        py::arg("cases") = py::none(), py::arg("seed") = py::none(),
+        "Run `run` of the campaign that chaser.campaign(scenario, runs, cases, seed=seed) flies, alone, as "
+        "`chaser campaign ... --rerun I`: its dispersed truth and fault, the flight software designed for the "
+        "nominal scenario; a RunResult as chaser.run gives (summary, telemetry in memory, report). Its figures "
+        "are the campaign's row for that run.");
 }
 
 }  // namespace chaser::python

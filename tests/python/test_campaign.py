@@ -122,6 +122,29 @@ def test_keep_telemetry_keeps_the_first_runs_files(short_msr, tmp_path):
     assert not (tmp_path / "c" / "runs" / "1").exists()
 
 
+def test_campaign_run_is_the_campaigns_run(cli, short_msr, py_campaign, tmp_path):
+    """chaser.campaign_run(scenario, I, ...) flies run I of that campaign alone: its figures are the
+    campaign's row to the bit, and its summary and telemetry are those of `chaser campaign ... --rerun I`."""
+    for i in (0, 7):  # fault-free, and a stuck-closed run
+        r = chaser.campaign_run(short_msr, i, runs=2, seed=5)
+        row = py_campaign.runs[i]
+        assert np.float64(r.summary["propellant_used_kg"]).tobytes() == np.float64(row["propellant_kg"]).tobytes()
+        assert r.summary["seed"] == int(row["seed"])
+        assert r.summary["capture_achieved"] == bool(row["capture"])
+    out = tmp_path / "rerun"
+    shown = run_cli(cli, "campaign", MSR, *set_args(SHORT_CAMPAIGN), "--runs", 2, "--seed", 5, "--rerun", 7,
+                    "--out", out)
+    assert shown.returncode == 0, shown.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    for key in ("propellant_used_kg", "final_position_error_m", "fdir", "active_check_pulses"):
+        assert summary[key] == json.loads(json.dumps(r.summary[key], default=float)), key
+    with open(out / "telemetry.csv", newline="") as f:
+        header = next(csv.reader(f))
+    assert list(r.telemetry.keys()) == header
+    with pytest.raises(ValueError, match=r"run: must be in \[0, 9\] for this campaign \(got 10\)"):
+        chaser.campaign_run(short_msr, 10, runs=2, seed=5)
+
+
 def test_one_thread_and_two_give_the_same_runs(short_msr):
     one = chaser.campaign(short_msr, runs={"none": 2, "leak": 2}, seed=9, threads=1, progress=False)
     two = chaser.campaign(short_msr, runs="none=2,leak=2", seed=9, threads=2, progress=False)
