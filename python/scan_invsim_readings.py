@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""Issue 21's targets over the `paper` reading's whole grid of free choices: an exploration, not a
+calibration (docs/invsim.md, "Which targets no reading can meet, and why").
+
+Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
+
+coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
+per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
+the six directions come within 15 % of Table 4, and x+ / x- (the paper's 2.28; 1.69-3.08 within
+15 %).
+targets: every Q of the calibration's grid at one w (the shipped 0.06 s by default), all Table 2
+and 5 modes, scored against issue 21's targets (calibrate_invsim.targets), split by whether the
+paper's four Table 5 modes are lost (target 6).
+Deterministic: fixed grids, one `chaser fmea` per point.
+"""
+import argparse
+import csv
+import itertools
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+import yaml
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import calibrate_invsim as cal  # noqa: E402
+
+COARSE_W = [0.2, 0.3, 0.5, 1.0]  # [s]; 1.0: one pulse per opening (every dtau <= the 1 s step)
+
+
+def run_fmea(chaser, scenario, w, qv, workdir, k=None):
+    doc = dict(scenario)
+    doc.pop("configurations", None)
+    doc.pop("optimize", None)
+    doc["pulses"] = dict(doc["pulses"], reading="paper",
+                         paper={"pulse_width_s": w, "state_weights": [1.0, 1.0, 1.0] + list(qv)})
+    if k is not None:
+        doc["pulses"].update(time_sensitivity=k, acceleration_sensitivity=k)
+    path = workdir / "scenario.yaml"
+    path.write_text(yaml.safe_dump(doc, sort_keys=False))
+    out = workdir / "out"
+    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2"], check=True,
+                   stdout=subprocess.DEVNULL)
+    return cal.read_layout(out / "fmea.csv")
+
+
+def grid():
+    return list(itertools.product(cal.Q_GRID, repeat=3))
+
+
+def scan_coarse(chaser, scenario, workdir, writer, k=None):
+    paper = cal.PAPER_NOMINAL
+    print("| w [s] | Q points | most directions within 15 % | x+ / x- range | within 15 % of x+ and x- both |")
+    print("|---|---|---|---|---|")
+    for w in COARSE_W:
+        best, ratios, x_both = 0, [], 0
+        for qv in grid():
+            nominal = run_fmea(chaser, scenario, w, qv, workdir, k)["nominal"]
+            counts = [int(nominal[d]) for d in cal.DIRECTIONS]
+            within = [abs(c / p - 1.0) <= 0.15 for c, p in zip(counts, paper)]
+            best = max(best, sum(within))
+            ratios.append(counts[0] / counts[1])
+            x_both += within[0] and within[1]
+            writer.writerow([w, *qv, *counts, sum(within)])
+        print(f"| {w:g} | {len(grid())} | {best} of 6 | {min(ratios):.2f}-{max(ratios):.2f} | {x_both} |")
+
+
+def scan_targets(chaser, scenario, workdir, w, writer, k=None):
+    points = []
+    for qv in grid():
+        rows = run_fmea(chaser, scenario, w, qv, workdir, k)
+        t = cal.targets(rows)
+        counts = [int(rows["nominal"][d]) for d in cal.DIRECTIONS]
+        t["z_share"] = (counts[4] + counts[5]) / sum(counts)
+        t["y_share"] = (counts[2] + counts[3]) / sum(counts)
+        points.append((qv, t))
+        writer.writerow([w, *qv, *counts, t["nominal_within"], t["k_p_within"], t["rise_within"],
+                         int(t["z_doubles_worst"]), t["table5_in_band"], len(t["table5_ratios"]),
+                         int(t["same_four_lost"]), len(t["lost"])])
+    print(f"w = {w:g} s, k = {k if k is not None else scenario['pulses']['time_sensitivity']}, {len(points)} Q points (q_vx, q_vy, q_vz each on {cal.Q_GRID})")
+    print("| subset | points | nominal within 15 % (best) | k_p within 15 % (best of 17) | "
+          "rise within 10 pt (best of 16) | z doubles worst | Table 5 in 1.3-1.6 (best) | nominal z share (largest) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for name, keep in [("all", lambda t: True), ("the paper's four lost (target 6)", lambda t: t["same_four_lost"])]:
+        sub = [(qv, t) for qv, t in points if keep(t)]
+        if not sub:
+            print(f"| {name} | 0 | | | | | | |")
+            continue
+        best = {k: max(t[k] for _, t in sub) for k in ("nominal_within", "k_p_within", "rise_within", "table5_in_band")}
+        zw = sum(t["z_doubles_worst"] for _, t in sub)
+        print(f"| {name} | {len(sub)} | {best['nominal_within']} | {best['k_p_within']} | {best['rise_within']} | "
+              f"{zw} points | {best['table5_in_band']} | {100 * max(t['z_share'] for _, t in sub):.0f} % |")
+    keep = [(qv, t) for qv, t in points if t["same_four_lost"]]
+    if keep:
+        qv, t = max(keep, key=lambda p: (p[1]["rise_within"], p[1]["k_p_within"], p[1]["table5_in_band"]))
+        print(f"best point keeping the four: q_v = {list(qv)}: rise {t['rise_within']} of 16, k_p {t['k_p_within']} "
+              f"of 17, Table 5 {min(t['table5_ratios']):.2f}-{max(t['table5_ratios']):.2f}x, "
+              f"worst four {', '.join(sorted(t['worst4']))}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("what", choices=["coarse", "targets"])
+    ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
+    ap.add_argument("--chaser", default="build/cli/chaser")
+    ap.add_argument("--width", type=float, default=0.06, help="w for `targets` [s]")
+    ap.add_argument("--k", type=float, help="k_t = k_f (default: the scenario's, Table 3's 0.35)")
+    ap.add_argument("--csv", type=pathlib.Path, help="write every point here")
+    args = ap.parse_args()
+    scenario = yaml.safe_load(pathlib.Path(args.scenario).read_text())
+    with tempfile.TemporaryDirectory() as tmp, \
+            open(args.csv or pathlib.Path(tmp) / "scan.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        if args.what == "coarse":
+            writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "within_15pc"])
+            scan_coarse(args.chaser, scenario, pathlib.Path(tmp), writer, args.k)
+        else:
+            writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "nominal_within", "k_p_within", "rise_within",
+                             "z_doubles_worst", "table5_in_band", "table5_flown", "same_four_lost", "lost"])
+            scan_targets(args.chaser, scenario, pathlib.Path(tmp), args.width, writer, args.k)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
