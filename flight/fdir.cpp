@@ -79,6 +79,10 @@ fdi::DeficitIsolationParams deficit_params(const model::Scenario& s, model::Thru
   p.lidar_sigma_m = std::max(s.sensors.lidar.noise_sigma_m, 1e-6);
   p.gyro_sigma_radps = std::max(s.sensors.gyro.noise_sigma_radps, 1e-9);
   p.pulse_uncertainty = s.fdi.deficit.pulse_uncertainty;
+  // The rows' model errors the specifications bound (deficit_isolation.hpp, "Weights").
+  p.spill_fraction = s.thrusters.delay_max_s / T;
+  p.inertia_uncertainty = s.fdi.deficit.inertia_uncertainty;
+  p.com_uncertainty_m = s.fdi.deficit.com_uncertainty_m;
   p.min_gain = s.fdi.deficit.min_gain;
   p.min_margin = s.fdi.deficit.min_margin;
   p.min_a = s.fdi.deficit.detection_min_constant;

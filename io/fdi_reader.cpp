@@ -71,6 +71,8 @@ void read_deficit(MapReader& r, model::DeficitParams& out) {
   r.number("window_after_s", Range::positive(), out.window_after_s);
   r.number("window_max_s", Range::positive(), out.window_max_s);
   r.number("pulse_uncertainty", Range::closed(0.0, 1.0), out.pulse_uncertainty);
+  if (r.has("inertia_uncertainty")) r.number("inertia_uncertainty", Range::closed(0.0, 1.0), out.inertia_uncertainty);
+  if (r.has("com_uncertainty_m")) r.number("com_uncertainty_m", Range::closed(0.0, 1.0), out.com_uncertainty_m);
   r.number("min_gain", Range::non_negative(), out.min_gain);
   r.number("min_margin", Range::non_negative(), out.min_margin);
   r.boolean("detection", out.detection);

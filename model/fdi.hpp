@@ -29,6 +29,8 @@ struct DeficitParams {
   double window_after_s = 0.5;    // [s] first evaluation this long after the alarm
   double window_max_s = 15.0;     // [s] longest window while the decision is ambiguous
   double pulse_uncertainty = 0.01;  // [-] relative 1-sigma error of a commanded pulse's torque
+  double inertia_uncertainty = 0.0; // [-] relative error bound of the nominal inertia (gyroscopic term)
+  double com_uncertainty_m = 0.0;   // [m] error bound of the nominal centre of mass per axis
   double min_gain = 50.0;         // [-] log-likelihood gain the best hypothesis must reach
   double min_margin = 25.0;       // [-] its lead over the second best
   // The deficit detector (flight/fdi/deficit_detector.hpp): a third scheme on the gyro's torque rows.

@@ -58,6 +58,9 @@ double line_part(const Window& w, double p0, double p1, double q0, double q1) {
 double build_window(const DeficitIsolationParams& p, const DeficitBankState& bank, std::int64_t first, Window& w) {
   const double T = p.period_s;
   Vec3 pos = Vec3::Zero(), vel = Vec3::Zero();
+  // The commands of the sample before the window, while the ring still holds it (delay spill).
+  WatchedTon previous_ton = WatchedTon::Zero();
+  if (first >= 1 && first - 1 >= bank.count - kMaxDeficitWindow) previous_ton = sample_at(bank, first - 1).ton;
   for (int k = 0; k < w.n; ++k) {
     const DeficitSample& s = sample_at(bank, first + k);
     w.ton[k] = s.ton;
@@ -67,8 +70,9 @@ double build_window(const DeficitIsolationParams& p, const DeficitBankState& ban
     vel += T * acc;
     if (k + 1 < w.n) {
       w.y_tau[k] = deficit_torque_row(p, s, sample_at(bank, first + k + 1));
-      w.w_tau[k] = deficit_torque_weights(p, bank, s.ton);
+      w.w_tau[k] = deficit_torque_weights(p, bank, s, previous_ton);
     }
+    previous_ton = s.ton;
   }
   // No-fault fit: r0 + v0 t per axis; what it leaves are the detrended position rows.
   w.g00 = w.n, w.g01 = 0.5 * w.n * (w.n - 1), w.g11 = (w.n - 1.0) * w.n * (2.0 * w.n - 1.0) / 6.0;
@@ -156,7 +160,10 @@ Vec3 deficit_sigma0_sq(const DeficitBankState& bank) {
   return bank.torque_mean_square.cwiseMin(bank.torque_mean_square_lagged).cwiseMax(bank.noise_floor_sq);
 }
 
-Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
+namespace {
+
+// sigma_0^2 + (epsilon |M_C| T_on)^2 per axis.
+Vec3 pulse_variance(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
   // epsilon |M_C| T_on over the commanded thrusters only: most periods command none.
   Vec3 pulse = Vec3::Zero();
   with_lanes(p.lanes, [&](auto lanes) {
@@ -164,7 +171,42 @@ Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankSt
       if (ton(i) > 0.0) pulse += ton(i) * p.torque_body_Nm.col(i).cwiseAbs();
   });
   pulse *= p.pulse_uncertainty;
-  return (deficit_sigma0_sq(bank) + pulse.cwiseProduct(pulse)).cwiseInverse();
+  return deficit_sigma0_sq(bank) + pulse.cwiseProduct(pulse);
+}
+
+// Per axis, |u| x |v| with every product counted positive: a bound of (x u) x v's component for
+// any x with |x_i| <= 1.
+Vec3 abs_cross(const Vec3& u, const Vec3& v) {
+  return Vec3(u(1) * v(2) + u(2) * v(1), u(2) * v(0) + u(0) * v(2), u(0) * v(1) + u(1) * v(0));
+}
+
+}  // namespace
+
+Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
+  return pulse_variance(p, bank, ton).cwiseInverse();
+}
+
+Vec3 deficit_model_sigma(const DeficitIsolationParams& p, const DeficitSample& now, const WatchedTon& previous_ton) {
+  // Delay spill: only pulses longer than 1 - tau_max / T of the period can end in the next one.
+  const double spill_above = 1.0 - p.spill_fraction;
+  Vec3 spill = Vec3::Zero(), force_body_N = Vec3::Zero();
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i) {
+      const double out = std::max(now.ton(i) - spill_above, 0.0), in = std::max(previous_ton(i) - spill_above, 0.0);
+      if (out + in > 0.0) spill += (out + in) * p.torque_body_Nm.col(i).cwiseAbs();
+      if (now.ton(i) > 0.0) force_body_N += now.ton(i) * p.force_body_N.col(i);
+    }
+  });
+  const Vec3 w = now.omega_body_radps.cwiseAbs();
+  const Vec3 gyroscopic = p.inertia_uncertainty * abs_cross(w, p.inertia_kgm2.cwiseAbs() * w);
+  const Vec3 com = p.com_uncertainty_m * abs_cross(Vec3::Ones(), force_body_N.cwiseAbs());
+  return (spill.cwiseAbs2() + gyroscopic.cwiseAbs2() + com.cwiseAbs2()).cwiseSqrt();
+}
+
+Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const DeficitSample& now,
+                            const WatchedTon& previous_ton) {
+  const Vec3 model = deficit_model_sigma(p, now, previous_ton);
+  return (pulse_variance(p, bank, now.ton) + model.cwiseProduct(model)).cwiseInverse();
 }
 
 namespace {
@@ -236,6 +278,9 @@ std::vector<std::string> validate(const DeficitIsolationParams& p) {
   if (!(p.lidar_sigma_m > 0.0)) problems.push_back("lidar_sigma_m: must be > 0");
   if (!(p.gyro_sigma_radps > 0.0)) problems.push_back("gyro_sigma_radps: must be > 0");
   if (!(p.pulse_uncertainty >= 0.0)) problems.push_back("pulse_uncertainty: must be >= 0");
+  if (!(p.spill_fraction >= 0.0 && p.spill_fraction <= 1.0)) problems.push_back("spill_fraction: must be in [0, 1]");
+  if (!(p.inertia_uncertainty >= 0.0) || !(p.com_uncertainty_m >= 0.0))
+    problems.push_back("inertia_uncertainty, com_uncertainty_m: must be >= 0");
   if (!(p.noise_time_constant_s > 0.0)) problems.push_back("noise_time_constant_s: must be > 0");
   if (p.noise_snapshot_periods < 1) problems.push_back("noise_snapshot_periods: must be >= 1");
   if (!(p.min_gain >= 0.0) || !(p.min_margin >= 0.0)) problems.push_back("min_gain, min_margin: must be >= 0");

@@ -26,10 +26,17 @@
 // propellant-based event resolution for the diagnosis).
 //
 // Weights: position rows 1/sigma_lidar; torque rows per axis 1/sigma with
-//   sigma^2 = sigma_0^2 + (epsilon |M_C| T_on(k))^2,
+//   sigma^2 = sigma_0^2 + (epsilon |M_C| T_on(k))^2 + sigma_model(k)^2,
 // sigma_0 the RMS of the fault-free torque rows (an exponentially weighted estimate while no alarm,
 // never below the gyro noise floor I sqrt(2) sigma_gyro / T), epsilon the relative thrust and
-// timing error of a commanded pulse (delays spill part of a pulse into the next period).
+// timing error of a commanded pulse. sigma_model (deficit_model_sigma) bounds what the rows leave
+// out and the flight software can size from its specifications, all zero in MSR's approach:
+//   the delay spill: a pulse longer than (1 - tau_max / T) of its period ends in the next period by
+//     up to T_on + tau_max / T - 1 of a period (the delay is redrawn each period, so the spill into
+//     row k from pulse k-1 and out of it from pulse k do not cancel), |M_C| times both;
+//   the inertia's uncertainty delta_I in the gyroscopic term, |omega| x |I| |omega| delta_I per axis
+//     (COMRADE's chaser turning at 2.5 deg/s: omega x I omega 0.65 N m, 20 % inertia errors ~0.3 N m);
+//   the centre of mass's uncertainty delta_c under the commanded force, delta_c (|F_j| + |F_k|).
 //
 // Computation: the r0, v0 columns are projected out in closed form (per axis, a straight-line fit
 // in t), so only 2 x 2 systems remain per hypothesis and onset: lanes x (onsets) of them per
@@ -73,6 +80,9 @@ struct DeficitIsolationParams {
   double lidar_sigma_m = 1e-3;           // [m] 1-sigma LIDAR noise per axis
   double gyro_sigma_radps = 1e-6;        // [rad/s] 1-sigma gyro noise: floor of sigma_0
   double pulse_uncertainty = 0.01;       // [-] epsilon
+  double spill_fraction = 0.0;           // [-] tau_max / T, the longest drive delay in periods (sigma_model)
+  double inertia_uncertainty = 0.0;      // [-] delta_I, relative error bound of the nominal inertia
+  double com_uncertainty_m = 0.0;        // [m] delta_c, error bound of the nominal centre of mass per axis
   double noise_time_constant_s = 20.0;   // [s] of the sigma_0 estimate
   int noise_snapshot_periods = 100;      // [periods] between snapshots of it (the lag is 1-2 of these)
   double min_gain = 50.0;     // [-] gain the best hypothesis must reach to be named
@@ -176,9 +186,16 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& param
 Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSample& now, const DeficitSample& next);
 // sigma_0^2 per axis: the smaller of the live and the lagged estimate, never below the gyro floor.
 Vec3 deficit_sigma0_sq(const DeficitBankState& bank);
-// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2).
+// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2): the rows' weights without sigma_model.
 Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
                             const WatchedTon& ton);
+// sigma_model of the row of sample `now` (header, "Weights"), whose previous sample commanded
+// `previous_ton`: zero when spill_fraction, inertia_uncertainty and com_uncertainty_m leave nothing.
+Vec3 deficit_model_sigma(const DeficitIsolationParams& params, const DeficitSample& now, const WatchedTon& previous_ton);
+// The weights with sigma_model, 1 / ((sigma_0^2 + (epsilon |M_C| T_on)^2) + sigma_model^2): the
+// same bits as deficit_torque_weights where sigma_model is zero (MSR's approach).
+Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank, const DeficitSample& now,
+                            const WatchedTon& previous_ton);
 
 // The normal equations of (a, b) for one hypothesis, and their solution with a >= 0, b <= 0.
 struct DeficitNormal {
