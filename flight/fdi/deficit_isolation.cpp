@@ -189,18 +189,30 @@ Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankSt
 Vec3 deficit_model_sigma(const DeficitIsolationParams& p, const DeficitSample& now, const WatchedTon& previous_ton) {
   // Delay spill: only pulses longer than 1 - tau_max / T of the period can end in the next one.
   const double spill_above = 1.0 - p.spill_fraction;
-  Vec3 spill = Vec3::Zero(), force_body_N = Vec3::Zero();
-  with_lanes(p.lanes, [&](auto lanes) {
+  Vec3 spill = Vec3::Zero();
+  // Most periods command no pulse that long (MSR's approach: none): one vectorised test over the
+  // whole capacity (the lanes past the set are zero, watched_set.hpp).
+  if (now.ton.cwiseMax(previous_ton).maxCoeff() > spill_above) with_lanes(p.lanes, [&](auto lanes) {
     for (int i = 0; i < lanes; ++i) {
       const double out = std::max(now.ton(i) - spill_above, 0.0), in = std::max(previous_ton(i) - spill_above, 0.0);
       if (out + in > 0.0) spill += (out + in) * p.torque_body_Nm.col(i).cwiseAbs();
-      if (now.ton(i) > 0.0) force_body_N += now.ton(i) * p.force_body_N.col(i);
     }
   });
-  const Vec3 w = now.omega_body_radps.cwiseAbs();
-  const Vec3 gyroscopic = p.inertia_uncertainty * abs_cross(w, p.inertia_kgm2.cwiseAbs() * w);
-  const Vec3 com = p.com_uncertainty_m * abs_cross(Vec3::Ones(), force_body_N.cwiseAbs());
-  return (spill.cwiseAbs2() + gyroscopic.cwiseAbs2() + com.cwiseAbs2()).cwiseSqrt();
+  Vec3 variance = spill.cwiseAbs2();
+  // The two bounds a scenario may leave at zero (MSR) cost nothing then: every period runs this.
+  if (p.inertia_uncertainty > 0.0) {
+    const Vec3 w = now.omega_body_radps.cwiseAbs();
+    variance += (p.inertia_uncertainty * abs_cross(w, p.inertia_kgm2.cwiseAbs() * w)).cwiseAbs2();
+  }
+  if (p.com_uncertainty_m > 0.0) {
+    Vec3 force_body_N = Vec3::Zero();
+    with_lanes(p.lanes, [&](auto lanes) {
+      for (int i = 0; i < lanes; ++i)
+        if (now.ton(i) > 0.0) force_body_N += now.ton(i) * p.force_body_N.col(i);
+    });
+    variance += (p.com_uncertainty_m * abs_cross(Vec3::Ones(), force_body_N.cwiseAbs())).cwiseAbs2();
+  }
+  return variance.cwiseSqrt();
 }
 
 Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const DeficitSample& now,
