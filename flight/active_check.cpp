@@ -16,9 +16,8 @@ ActiveCheckParams make_active_check_params(const model::Scenario& scenario) {
       .informative_fraction = s.informative_on_time_s / scenario.control_period_s,
       .keep_quiet_range_m = s.keep_quiet_range_m,
       .arm_range_m = s.arm_range_m,
-      // Detection off, nothing is ever suspected; the gain is then never reached either.
-      .recheck_gain = s.recheck_fraction < 1.0 ? s.recheck_fraction * scenario.fdi.deficit.detection_threshold
-                                               : std::numeric_limits<double>::infinity(),
+      // At 1 the gain of a suspect (above it) has raised the alarm: never a recheck.
+      .recheck_gain = s.recheck_fraction * scenario.fdi.deficit.detection_threshold,
   };
 }
 

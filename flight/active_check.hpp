@@ -18,7 +18,7 @@
 // One thruster at a time; checking resets its clock, so the stale ones take turns, stalest first.
 //
 // A pulse verifies only what it shows. When the deficit detector holds a material deficit on a
-// thruster with a gain of at least recheck_gain (below its alarm threshold: the evidence so far is
+// thruster with a gain above recheck_gain (below its alarm threshold: the evidence so far is
 // suggestive, not conclusive), that thruster is unverified whatever it fired, and stalest of all:
 // it is checked again in the next period the window allows, and each check adds its evidence until
 // the detector either alarms or lets the suspicion go. One check of a short pulse reads a 45 % loss
@@ -41,7 +41,7 @@ struct ActiveCheckParams {
   double keep_quiet_range_m = 2.0;  // [m] no check closer to the target than this (estimated range)
   double arm_range_m = std::numeric_limits<double>::infinity();  // [m] and none farther than this
   // [-] the deficit detector's material gain from which its suspect is rechecked at once
-  // (recheck_fraction x detection_threshold; infinity: never)
+  // (recheck_fraction x detection_threshold; the threshold itself: never)
   double recheck_gain = std::numeric_limits<double>::infinity();
 };
 
@@ -60,7 +60,7 @@ struct ActiveCheckInput {
   double t_s = 0;                  // [s] this period
   double range_m = 0;              // [m] estimated range to the target
   model::ThrusterMask active = 0;  // the active set after this period's recovery
-  int suspect = model::kNoThruster;  // the FDI's suspect at recheck_gain or above (flight/fdir.hpp deficit_suspect)
+  int suspect = model::kNoThruster;  // the FDI's suspect above recheck_gain (flight/fdir.hpp deficit_suspect)
   bool fdi_listening = true;          // false: the FDI has found its fault (or is disarmed); no check
 };
 

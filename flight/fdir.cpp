@@ -260,9 +260,11 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
 bool fdi_listening(const FdirState& state) { return state.armed && state.confirmed_thruster == model::kNoThruster; }
 
 int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain) {
+  // min_gain > 0 (validated), so a material fit leads and `suspect` is its lane. Strictly above, as
+  // the alarm is: with min_gain the threshold, the detector alarms first and nothing is suspected.
   const fdi::DeficitDetectorState& d = state.detector;
-  const bool suspected = d.material_statistic > 0 && d.material_statistic >= min_gain;  // 0: no material fit
-  if (!params.deficit_detection || !state.armed || d.alarm || d.suspect < 0 || !suspected) return model::kNoThruster;
+  if (!params.deficit_detection || !state.armed || d.alarm || !(d.material_statistic > min_gain))
+    return model::kNoThruster;
   return watched_set(params, state).index[static_cast<std::size_t>(d.suspect)];
 }
 

@@ -143,7 +143,7 @@ FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
 void rearm_fdir(const FdirParams& params, FdirState& state, model::ThrusterMask active, double t_s,
                 int recovered_thruster);
 
-// The thruster (index) the deficit detector holds a material deficit on, with a gain of at least
+// The thruster (index) the deficit detector holds a material deficit on, with a gain above
 // `min_gain`, before any alarm; kNoThruster without one (detector off, disarmed, or alarmed). The
 // active checks recheck it (flight/active_check.hpp).
 int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain);

@@ -62,7 +62,7 @@ struct ActiveCheckParams {
   // [m] checks only once the estimated range is at most this: a check just before the final phase
   // that needs every thruster, instead of all along the approach (infinity: all along; docs/fdi.md)
   double arm_range_m = std::numeric_limits<double>::infinity();
-  // [-] a thruster the deficit detector suspects (its material deficit's gain at least this fraction
+  // [-] a thruster the deficit detector suspects (its material deficit's gain above this fraction
   // of fdi.deficit.detection_threshold) is unverified whatever it fired: checked again at once, so an
   // inconclusive check is followed by another instead of waiting max_unverified_s (1: never)
   double recheck_fraction = 0.5;

@@ -34,8 +34,6 @@ DeficitNormalsW deficit_normals(const DeficitIsolationParams& bp, const DeficitD
 
 namespace {
 
-const WatchedTon kNoCommands = WatchedTon::Zero();  // before the first sample
-
 // Adds the row of a period with on-times u and weights w to `block`.
 void add_row(const DeficitIsolationParams& bp, const Vec3& y, const Vec3& w, const WatchedTon& u,
              DeficitDetectorBlock& block) {
@@ -95,9 +93,8 @@ void step_deficit_detector(const DeficitDetectorParams& p, const DeficitIsolatio
   if (bank.count < 2) return;
   // The row of the previous sample: its period has ended with this sample's gyro reading.
   const DeficitSample& now = bank.ring[static_cast<std::size_t>((bank.count - 2) % kMaxDeficitWindow)];
-  const WatchedTon& previous_ton =
-      bank.count >= 3 ? bank.ring[static_cast<std::size_t>((bank.count - 3) % kMaxDeficitWindow)].ton : kNoCommands;
-  add_row(bp, bank.last_torque_row, deficit_torque_weights(bp, bank, now, previous_ton), now.ton, state.block);
+  const Vec3 weights = deficit_torque_weights(bp, bank, now, deficit_commands_before(bank, bank.count - 2));
+  add_row(bp, bank.last_torque_row, weights, now.ton, state.block);
   ++state.rows;
   if (++state.phase < p.evaluate_every) return;
   // The block is complete: its slot, the oldest block's, takes it.

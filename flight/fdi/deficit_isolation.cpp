@@ -7,6 +7,8 @@ namespace chaser::flight::fdi {
 
 namespace {
 
+const WatchedTon kNoCommands = WatchedTon::Zero();  // before the first sample, or past the ring
+
 const DeficitSample& sample_at(const DeficitBankState& bank, std::int64_t index) {
   return bank.ring[static_cast<std::size_t>(index % kMaxDeficitWindow)];
 }
@@ -58,9 +60,7 @@ double line_part(const Window& w, double p0, double p1, double q0, double q1) {
 double build_window(const DeficitIsolationParams& p, const DeficitBankState& bank, std::int64_t first, Window& w) {
   const double T = p.period_s;
   Vec3 pos = Vec3::Zero(), vel = Vec3::Zero();
-  // The commands of the sample before the window, while the ring still holds it (delay spill).
-  WatchedTon previous_ton = WatchedTon::Zero();
-  if (first >= 1 && first - 1 >= bank.count - kMaxDeficitWindow) previous_ton = sample_at(bank, first - 1).ton;
+  WatchedTon previous_ton = deficit_commands_before(bank, first);  // delay spill into the first row
   for (int k = 0; k < w.n; ++k) {
     const DeficitSample& s = sample_at(bank, first + k);
     w.ton[k] = s.ton;
@@ -182,8 +182,9 @@ Vec3 abs_cross(const Vec3& u, const Vec3& v) {
 
 }  // namespace
 
-Vec3 deficit_torque_weights(const DeficitIsolationParams& p, const DeficitBankState& bank, const WatchedTon& ton) {
-  return pulse_variance(p, bank, ton).cwiseInverse();
+const WatchedTon& deficit_commands_before(const DeficitBankState& bank, std::int64_t sample) {
+  const bool held = sample >= 1 && sample - 1 >= bank.count - kMaxDeficitWindow;
+  return held ? sample_at(bank, sample - 1).ton : kNoCommands;
 }
 
 Vec3 deficit_model_sigma(const DeficitIsolationParams& p, const DeficitSample& now, const WatchedTon& previous_ton) {

@@ -186,14 +186,14 @@ const DeficitDecision& step_deficit_decision(const DeficitIsolationParams& param
 Vec3 deficit_torque_row(const DeficitIsolationParams& params, const DeficitSample& now, const DeficitSample& next);
 // sigma_0^2 per axis: the smaller of the live and the lagged estimate, never below the gyro floor.
 Vec3 deficit_sigma0_sq(const DeficitBankState& bank);
-// Its weights per axis, 1 / (sigma_0^2 + (epsilon |M_C| T_on)^2): the rows' weights without sigma_model.
-Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank,
-                            const WatchedTon& ton);
+// The on-times of the sample before `sample` while the ring holds it, else none (zeros): the
+// previous command a row's delay spill reads.
+const WatchedTon& deficit_commands_before(const DeficitBankState& bank, std::int64_t sample);
 // sigma_model of the row of sample `now` (header, "Weights"), whose previous sample commanded
 // `previous_ton`: zero when spill_fraction, inertia_uncertainty and com_uncertainty_m leave nothing.
 Vec3 deficit_model_sigma(const DeficitIsolationParams& params, const DeficitSample& now, const WatchedTon& previous_ton);
-// The weights with sigma_model, 1 / ((sigma_0^2 + (epsilon |M_C| T_on)^2) + sigma_model^2): the
-// same bits as deficit_torque_weights where sigma_model is zero (MSR's approach).
+// The row's weights per axis, 1 / ((sigma_0^2 + (epsilon |M_C| T_on)^2) + sigma_model^2) (header,
+// "Weights"); where sigma_model is zero (MSR's approach) the same bits as without its term.
 Vec3 deficit_torque_weights(const DeficitIsolationParams& params, const DeficitBankState& bank, const DeficitSample& now,
                             const WatchedTon& previous_ton);
 

@@ -309,6 +309,14 @@ Extras extras_of(const std::optional<std::string>& shard_text, bool resume, std:
   return Extras{*shard.shard, resume, keep_telemetry, targets_of(targets)};
 }
 
+// The campaign of a loaded scenario with --runs and --cases (its layout checked as prepare() checks it).
+campaign::CampaignPlan plan_of(const Scenario& scenario, const py::object& runs, const py::object& cases) {
+  const campaign::LayoutParse layout = campaign::parse_layout(
+      cases_text(cases), runs_text(runs), static_cast<std::int64_t>(scenario.scenario.campaign.runs_per_case));
+  if (!layout.error.empty()) throw py::value_error(layout.error);
+  return campaign::CampaignPlan{scenario.scenario, scenario.hash, campaign::RunLayout(layout.cases)};
+}
+
 // `chaser campaign SCENARIO --runs --cases --threads --seed --out --shard --resume --keep-telemetry
 // --target` (cli/campaign_command.cpp, prepare).
 CampaignResult run_campaign(const py::object& scenario_arg, const py::object& runs, const py::object& cases,
@@ -324,16 +332,13 @@ CampaignResult run_campaign(const py::object& scenario_arg, const py::object& ru
   const Extras extras = extras_of(shard, resume, keep_telemetry, target_texts);
   if (!out && (resume || keep_telemetry > 0))
     throw py::value_error("resume and keep_telemetry need out=DIR (without it the directory is a temporary one)");
-  const campaign::LayoutParse layout = campaign::parse_layout(
-      cases_text(cases), runs_text(runs), static_cast<std::int64_t>(scenario.scenario.campaign.runs_per_case));
-  if (!layout.error.empty()) throw py::value_error(layout.error);
+  const campaign::CampaignPlan plan = plan_of(scenario, runs, cases);
   const bool show = progress_wanted(progress);
 
   std::optional<TemporaryDirectory> temporary;
   if (!out) temporary.emplace();
   const std::string dir = out ? *out : temporary->path();
   ProgressShow shown(py::isinstance<py::bool_>(progress) ? py::none() : progress);
-  const campaign::CampaignPlan plan{scenario.scenario, scenario.hash, campaign::RunLayout(layout.cases)};
   campaign::CampaignOptions options{
       .out_dir = dir,
       .shard = extras.shard,
@@ -374,10 +379,7 @@ RunResult campaign_run(const py::object& scenario_arg, std::int64_t run, const p
                        std::optional<std::uint64_t> seed) {
   Scenario scenario = scenario_argument(scenario_arg);
   if (seed) scenario = with_overrides(scenario, {fmt::format("campaign.seed={}", *seed)});
-  const campaign::LayoutParse layout = campaign::parse_layout(
-      cases_text(cases), runs_text(runs), static_cast<std::int64_t>(scenario.scenario.campaign.runs_per_case));
-  if (!layout.error.empty()) throw py::value_error(layout.error);
-  const campaign::CampaignPlan plan{scenario.scenario, scenario.hash, campaign::RunLayout(layout.cases)};
+  const campaign::CampaignPlan plan = plan_of(scenario, runs, cases);
   const std::int64_t total = plan.layout.total_runs();
   if (run < 0 || run >= total)
     throw py::value_error(fmt::format("run: must be in [0, {}] for this campaign (got {})", total - 1, run));

@@ -99,7 +99,8 @@ DeficitNormalsW row_sums(const DeficitIsolationParams& p, const Vec3& y, const V
 
 // The header's statistic and suspect from the window's sums, by fit_deficit lane by lane: the largest
 // gain, and the thruster of the largest material gain (a >= min_a or b <= -min_b), else of the largest.
-int reference_suspect(const DeficitDetectorParams& dp, const DeficitNormalsW& sums, int lanes, double& best) {
+int reference_suspect(const DeficitDetectorParams& dp, const DeficitNormalsW& sums, int lanes, double& best,
+                      double& material_best) {
   best = 0.0;
   int suspect = -1, material = -1;
   double material_gain = -1.0;
@@ -109,7 +110,15 @@ int reference_suspect(const DeficitDetectorParams& dp, const DeficitNormalsW& su
     if (f.gain > best) best = f.gain, suspect = i;
     if ((f.a >= dp.min_a || f.b <= -dp.min_b) && f.gain > material_gain) material_gain = f.gain, material = i;
   }
+  material_best = material >= 0 ? material_gain : 0.0;
   return material >= 0 ? material : suspect;
+}
+
+// The weights the detector gives row k (samples k, k + 1): the bank's, with the sample before it
+// for the delay spill (none before the first).
+Vec3 row_weights(const DeficitIsolationParams& bp, const DeficitBankState& bank, const std::vector<DeficitSample>& s,
+                 int k) {
+  return deficit_torque_weights(bp, bank, s[k], k >= 1 ? s[k - 1].ton : WatchedTon::Zero());
 }
 
 // A thruster whose last pulse has left the window: its command sums in the running sums would be the
@@ -168,8 +177,7 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
       EXPECT_EQ(st.det.rows, 0);
       return;
     }
-    rows.push_back(row_sums(bp, deficit_torque_row(bp, s[k - 1], s[k]), deficit_torque_weights(bp, st.bank, s[k - 1].ton),
-                            s[k - 1].ton));
+    rows.push_back(row_sums(bp, deficit_torque_row(bp, s[k - 1], s[k]), row_weights(bp, st.bank, s, k - 1), s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window) return;
     DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
@@ -177,9 +185,10 @@ TEST(DeficitDetector, SlidingSumsAndStatisticMatchDirectRecomputation) {
     const DeficitNormalsW n = deficit_normals(bp, st.det.sums);  // rows [0, lanes) written
     const double err = ((n.topRows(kN) - direct.topRows(kN)).cwiseAbs().array() / scale.topRows(kN).array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
-    double best = 0.0;
-    const int suspect = reference_suspect(dp, direct, kN, best);
+    double best = 0.0, material_best = 0.0;
+    const int suspect = reference_suspect(dp, direct, kN, best, material_best);
     EXPECT_NEAR(st.det.statistic, best, 1e-7 * std::max(1.0, best)) << "row " << rows.size();
+    EXPECT_NEAR(st.det.material_statistic, material_best, 1e-7 * std::max(1.0, material_best)) << "row " << rows.size();
     EXPECT_EQ(st.det.suspect, suspect) << "row " << rows.size();
     ++checked;
   });
@@ -208,8 +217,7 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
       EXPECT_EQ(st.det.rows, 0);
       return;
     }
-    rows.push_back(row_sums(bp, deficit_torque_row(bp, s[k - 1], s[k]), deficit_torque_weights(bp, st.bank, s[k - 1].ton),
-                            s[k - 1].ton));
+    rows.push_back(row_sums(bp, deficit_torque_row(bp, s[k - 1], s[k]), row_weights(bp, st.bank, s, k - 1), s[k - 1].ton));
     ASSERT_EQ(st.det.rows, static_cast<std::int64_t>(rows.size()));
     if (static_cast<int>(rows.size()) < dp.window || rows.size() % every != 0) return;
     DeficitNormalsW direct = DeficitNormalsW::Zero(), scale = DeficitNormalsW::Zero();
@@ -218,9 +226,10 @@ TEST_P(DeficitDetectorBlocks, SlidingSumsAndStatisticMatchDirectRecomputation) {
     const double err =
         ((n.topRows(lanes) - direct.topRows(lanes)).cwiseAbs().array() / scale.topRows(lanes).array()).maxCoeff();
     EXPECT_LT(err, 1e-9) << "row " << rows.size();
-    double best = 0.0;
-    const int suspect = reference_suspect(dp, direct, lanes, best);
+    double best = 0.0, material_best = 0.0;
+    const int suspect = reference_suspect(dp, direct, lanes, best, material_best);
     EXPECT_NEAR(st.det.statistic, best, 1e-7 * std::max(1.0, best)) << "row " << rows.size();
+    EXPECT_NEAR(st.det.material_statistic, material_best, 1e-7 * std::max(1.0, material_best)) << "row " << rows.size();
     EXPECT_EQ(st.det.suspect, suspect) << "row " << rows.size();
     ++checked;
   });

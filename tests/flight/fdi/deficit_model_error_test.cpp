@@ -150,6 +150,14 @@ TEST(DeficitModelError, ModelSigmaTermsAreTheStatedBounds) {
   now.omega_body_radps = Vec3(0.03, 0.0, 0.04);
   const Mat3& I = bp.inertia_kgm2;  // diagonal: y is the only axis with a product w_z w_x
   EXPECT_NEAR(deficit_model_sigma(bp, now, previous)(1), 0.1 * (I(0, 0) + I(2, 2)) * 0.03 * 0.04, 1e-12);
+  // The centre of mass off by delta_c on every axis under the commanded force F: the torque error
+  // (delta_c x F) is at most delta_c (|F_y| + |F_z|) about x, and so on, written out here.
+  bp.inertia_uncertainty = 0.0, bp.com_uncertainty_m = 0.03;
+  now.ton(1) = 0.4, now.ton(2) = 0.6;  // three thrusters: a force with all three components
+  const Vec3 F = (bp.force_body_N.leftCols<3>() * now.ton.head<3>()).cwiseAbs();
+  const Vec3 expected = 0.03 * Vec3(F.y() + F.z(), F.z() + F.x(), F.x() + F.y());
+  EXPECT_LT((deficit_model_sigma(bp, now, previous) - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_GT(expected.minCoeff(), 0.0);  // every axis of the check is exercised
 }
 
 }  // namespace
