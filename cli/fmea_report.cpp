@@ -241,8 +241,17 @@ std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
   std::string md = fmt::format("# FMEA of scenario '{}' (Zhou 2018, inverse simulation)\n\n", p.name);
   md += p.pulses.reading == model::InvSimReading::kPaper
              ? fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's "
-                           "opening dtau counting ceil(dtau / {} s). ",
-                           p.pulses.paper.pulse_width_s, p.pulses.paper.pulse_width_s)
+                           "opening dtau counting ceil(dtau / {} s); {}; {}. ",
+                           p.pulses.paper.pulse_width_s, p.pulses.paper.pulse_width_s,
+                           p.pulses.paper.inverse_model == model::InvSimInverseModel::kFaulted
+                               ? "the inverse model flies the faulted spacecraft (a weakened group opens longer)"
+                               : "the inverse model flies the nominal spacecraft (the pilot does not know the fault)",
+                           p.pulses.paper.measurement_noise.enabled()
+                               ? fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg (seed {})",
+                                             p.pulses.paper.measurement_noise.range_sigma_m,
+                                             deg(p.pulses.paper.measurement_noise.angle_sigma_rad),
+                                             p.pulses.paper.measurement_noise.seed)
+                               : std::string("measurement perfect"))
              : std::string("Reading `smooth` (docs/invsim.md): a pulse is a step in which a body axis' translation "
                            "group fired in that direction. ");
   md += fmt::format(

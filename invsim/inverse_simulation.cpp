@@ -7,6 +7,7 @@
 #include "core/hill_frames.hpp"
 #include "invsim/desired_trajectory.hpp"
 #include "invsim/inverse_step.hpp"
+#include "invsim/measurement_link.hpp"
 #include "invsim/paper_reading.hpp"
 #include "invsim/phase_plane.hpp"
 #include "invsim/pulse_conversion.hpp"
@@ -25,7 +26,8 @@ using GroupWrenches = std::array<std::array<Wrench, 2>, 3>;  // [axis][0: +, 1: 
 struct RunContext {
   RvdConstants rvd;
   InverseModel inverse;
-  std::array<std::array<double, 2>, 3> u_max_nominal;  // [m/s^2] the pilot's u_max per group
+  std::array<std::array<double, 2>, 3> u_max_pilot;    // [m/s^2] the inverse model's u_max per group
+  std::array<std::array<double, 2>, 3> u_max_nominal;  // [m/s^2] the healthy group's
   Vec3 a0_radps2;                                      // attitude control accelerations
   GroupWrenches translation;                           // healthy wrenches per group
   GroupWrenches attitude;
@@ -34,6 +36,16 @@ struct RunContext {
 };
 
 int dir_index(int direction) { return direction > 0 ? 0 : 1; }
+
+bool inverts_faulted_spacecraft(const model::InvSimParams& p) {
+  return p.pulses.reading == model::InvSimReading::kPaper &&
+         p.pulses.paper.inverse_model == model::InvSimInverseModel::kFaulted;
+}
+
+model::InvSimMeasurementNoise measurement_noise(const model::InvSimParams& p) {
+  return p.pulses.reading == model::InvSimReading::kPaper ? p.pulses.paper.measurement_noise
+                                                          : model::InvSimMeasurementNoise{};
+}
 
 RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
   RunContext c{};
@@ -47,8 +59,12 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
   c.inverse = make_inverse_model(c.rvd.dynamics.orbit.mean_motion_radps(), p.step_s, p.inverse.horizon_steps, weights);
   for (int axis = 0; axis < 3; ++axis) {
     for (int d : {1, -1}) {
-      c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
       c.translation[axis][dir_index(d)] = translation_wrench(p, faults, axis, d);
+      c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
+      c.u_max_pilot[axis][dir_index(d)] =
+          inverts_faulted_spacecraft(p)
+              ? std::abs(c.translation[axis][dir_index(d)].force_body_N[axis]) / p.mass_kg
+              : c.u_max_nominal[axis][dir_index(d)];
       c.attitude[axis][dir_index(d)] = attitude_wrench(p, faults, axis, d);
     }
     const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
@@ -57,20 +73,27 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
   return c;
 }
 
-// Steps 2-3: the inverse model's acceleration and its pulses.
+// Steps 1-3: the measured state, the inverse model's acceleration and its pulses.
 std::array<Pulse, 3> inverse_link(const RunContext& c, const model::InvSimParams& p,
-                                  const RvdState& s, double t, Vec3& u_body) {
+                                  const RvdState& s, double t, MeasurementLink& link, Vec3& u_body) {
+  const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
   Vec6 x;
-  x << s.r_hill_m, s.v_hill_mps;
+  if (measurement_noise(p).enabled()) {
+    const double range_m = line_of_sight(s.r_hill_m, r_hill_from_body, p.sensor.position_body_m).range_m;
+    x << link.measured_position_hill_m(s.r_hill_m, range_m), s.v_hill_mps;
+  } else {
+    x << s.r_hill_m, s.v_hill_mps;
+  }
   const double horizon_end = t + p.step_s * p.inverse.horizon_steps;
   const Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), horizon_end);
   const Vec3 u_hill = inverse_step(c.inverse, x, x_c);
-  u_body = s.q_hill_from_body.toRotationMatrix().transpose() * u_hill;  // eq. 8 inverted
+  u_body = r_hill_from_body.transpose() * u_hill;  // eq. 8 inverted
   std::array<Pulse, 3> pulses{};
   for (int axis = 0; axis < 3; ++axis) {
-    const double u_max = c.u_max_nominal[axis][dir_index(u_body(axis) >= 0.0 ? 1 : -1)];
+    const int d = dir_index(u_body(axis) >= 0.0 ? 1 : -1);
+    const double u_max = c.u_max_pilot[axis][d];
     const PulseParams pp{u_max, p.step_s, p.pulses.time_sensitivity,
-                         p.pulses.acceleration_sensitivity};
+                         p.pulses.acceleration_sensitivity, c.u_max_nominal[axis][d]};
     pulses[axis] = u_max > 0.0 ? convert_to_pulse(pp, u_body(axis)) : Pulse{0, 0.0};
   }
   return pulses;
@@ -186,10 +209,11 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
   RvdState s = initial_state(c, p);
   InvSimResult r;
   double translation_fuel_Ns = 0.0, attitude_fuel_Ns = 0.0;
+  MeasurementLink link(measurement_noise(p));
   for (long k = 0; k < c.steps; ++k) {
     const double t = static_cast<double>(k) * p.step_s;
     Vec3 u_body;
-    const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, u_body);
+    const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, link, u_body);
     std::array<int, 3> counted{};
     for (int axis = 0; axis < 3; ++axis) {
       if (pulses[axis].direction == 0) continue;

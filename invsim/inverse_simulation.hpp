@@ -4,11 +4,13 @@
 // with the automatic attitude controller), at the IS step tau.
 //
 // Per step k (t = k tau):
-//   1. measurement: the truth state, perfect (the paper's measurement link);
+//   1. measurement: the truth state, perfect, or under the paper reading with the sensor noise it
+//      sets (the paper's measurement link, invsim/measurement_link.hpp);
 //   2. inverse model: u_hill = weighted LS over the receding horizon to x_c(t + n tau)
 //      (invsim/inverse_step.hpp), u_body = C_hb u_hill (eq. 8);
-//   3. pulse conversion per body axis (App. B) with the nominal group acceleration: the pilot does
-//      not know which thruster failed; a pulse opens its group at t for dtau;
+//   3. pulse conversion per body axis (App. B) with the nominal group acceleration (the pilot does
+//      not know which thruster failed), or under the paper reading with inverse_model: faulted the
+//      group's remaining one; a pulse opens its group at t for dtau;
 //   4. forward simulation over [t, t + tau] in attitude periods dT: the phase-plane controller
 //      (App. A) opens the attitude couples at the start of each period; every piece between valve
 //      edges is integrated with its constant wrench (invsim/relative_dynamics.hpp);

@@ -6,17 +6,24 @@
 //   eq. 3: dtau = 0 if dtau <= k_t tau           (time sensitivity)
 //   eq. 4: |u|  = 0 if |u| <= k_f u_max, else u_max (acceleration sensitivity: relay amplitude)
 // Since dtau / tau = |u| / u_max, eqs. 3 and 4 test the same ratio; the system's sensitivity is
-// k = min(k_t, k_f) (App. B), i.e. the pulse is suppressed only when both tests suppress it.
+// k = min(k_t, k_f) (App. B), i.e. the pulse is suppressed only when both tests suppress it. The
+// test is |u| / dead_zone_u_max > k, which is that ratio whenever dead_zone_u_max = u_max.
 // Above the dead zone the pulse carries exactly the commanded impulse, up to the saturation
 // dtau = tau (the group open for the whole step).
 
 namespace chaser::invsim {
 
 struct PulseParams {
-  double u_max_mps2;        // [m/s^2] acceleration of the thruster group when open (nominal)
+  double u_max_mps2;        // [m/s^2] acceleration of the thruster group when open (eq. 1)
   double step_s;            // [s] tau
   double time_sensitivity;  // k_t [-]
   double accel_sensitivity; // k_f [-]
+  // [m/s^2] the u_max the dead zone of eqs. 3-4 is measured against: the pilot's sense of a small
+  // correction. u_max_mps2 itself, except when the inverse model knows a group lost a thruster
+  // (the paper reading's inverse_model: faulted): then the nominal group's, since the sensitivity
+  // is to the offset from the desired state (App. B), which a fault does not change, while eq. 1
+  // opens the weakened group longer for the same impulse.
+  double dead_zone_u_max_mps2;
 };
 
 struct Pulse {

@@ -101,6 +101,29 @@ void read_reading(MapReader& m, model::InvSimReading& out) {
   else m.diagnostics().add(m.path_of("reading"), fmt::format("must be smooth or paper (got '{}')", text));
 }
 
+// pulses.paper.inverse_model: optional, nominal by default.
+void read_inverse_model(MapReader& m, model::InvSimInverseModel& out) {
+  if (!m.has("inverse_model")) return;
+  std::string text;
+  if (!m.text("inverse_model", text)) return;
+  if (text == "nominal") out = model::InvSimInverseModel::kNominal;
+  else if (text == "faulted") out = model::InvSimInverseModel::kFaulted;
+  else m.diagnostics().add(m.path_of("inverse_model"), fmt::format("must be nominal or faulted (got '{}')", text));
+}
+
+// pulses.paper.measurement_noise: optional (no noise); each key optional inside it.
+constexpr double kMaxRangeSigmaM = 10.0;     // [m] beyond this the sensor measures nothing useful at 10-100 m
+constexpr double kMaxAngleSigmaDeg = 5.0;    // [deg] half the field of view
+void read_measurement_noise(MapReader& m, model::InvSimMeasurementNoise& out) {
+  if (!m.has("measurement_noise")) return;
+  read_section(m, "measurement_noise", [&](MapReader& n) {
+    if (n.has("range_sigma_m")) n.number("range_sigma_m", Range::closed(0.0, kMaxRangeSigmaM), out.range_sigma_m);
+    if (n.has("angle_sigma_deg"))
+      n.angle_deg("angle_sigma_deg", Range::closed(0.0, kMaxAngleSigmaDeg), out.angle_sigma_rad);
+    if (n.has("seed")) n.count("seed", out.seed);
+  });
+}
+
 // pulses.paper: the paper reading's calibrated choices; required when pulses.reading is paper,
 // checked whenever present.
 void read_paper_reading(MapReader& m, InvSimParams& p) {
@@ -112,6 +135,8 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
   read_section(m, "paper", [&](MapReader& s) {
     s.number("pulse_width_s", Range::left_open(0.0, 60.0), p.pulses.paper.pulse_width_s);
     read_weights(s, p.pulses.paper.state_weights);
+    read_inverse_model(s, p.pulses.paper.inverse_model);
+    read_measurement_noise(s, p.pulses.paper.measurement_noise);
   });
 }
 

@@ -56,9 +56,29 @@ struct InvSimInverseParams {
 //    nominal case only (python/calibrate_invsim.py).
 enum class InvSimReading { kSmooth, kPaper };
 
+// Which spacecraft the inverse model inverts under the paper reading: the nominal one (the pilot
+// flies as if nothing had failed; feedback alone compensates) or the faulted one (inverse
+// simulation of the faulted spacecraft: the inputs it needs to fly the desired trajectory, each
+// group with the thrust it has left, so a group that lost one of its two thrusters opens twice as
+// long for the same impulse).
+enum class InvSimInverseModel { kNominal, kFaulted };
+
+// Noise of the measurement link (Zhou 2018, Fig. 3) under the paper reading: the sensor's range
+// and line-of-sight angles (eqs. 12-15) with white Gaussian errors drawn once per IS step. The
+// sequence depends on the seed only, so every fault mode of a study meets the same noise (one
+// recorded session, flown with each fault).
+struct InvSimMeasurementNoise {
+  double range_sigma_m = 0.0;    // [m] 1-sigma error of the measured range
+  double angle_sigma_rad = 0.0;  // [rad] 1-sigma error of the measured azimuth and elevation
+  std::uint64_t seed = 1;        // the noise sequence
+  bool enabled() const { return range_sigma_m > 0.0 || angle_sigma_rad > 0.0; }
+};
+
 struct InvSimPaperReadingParams {
   double pulse_width_s = 0.1;                          // [s] one counted valve opening at most
   std::array<double, 6> state_weights{1, 1, 1, 1, 1, 1};  // diagonal of Q under this reading
+  InvSimInverseModel inverse_model = InvSimInverseModel::kNominal;
+  InvSimMeasurementNoise measurement_noise;            // none unless set
 };
 
 // Pulse conversion (Zhou 2018, App. B eqs. 1-4) and the operational amount (eq. 22).

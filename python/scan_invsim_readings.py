@@ -13,6 +13,10 @@ targets: every Q of the calibration's grid at one w (the shipped 0.06 s by defau
 and 5 modes, scored against issue 21's targets (calibrate_invsim.targets), split by whether the
 paper's four Table 5 modes are lost (target 6).
 Deterministic: fixed grids, one `chaser fmea` per point.
+
+Each study replaces the scenario's pulses.paper block with {pulse_width_s, state_weights} only, so
+it scans the paper reading as it was in session 15: the nominal inverse model and a perfect
+measurement link.
 """
 import argparse
 import csv

@@ -92,6 +92,30 @@ TEST(InvSimLoader, ReadingIsSmoothByDefaultAndValidated) {
   EXPECT_NE(text.find("must be smooth or paper (got 'chatter')"), std::string::npos) << text;
 }
 
+// pulses.paper.inverse_model and pulses.paper.measurement_noise: optional (nominal, no noise: the
+// earlier paper reading), read as written, each bad value named with its key and allowed range.
+TEST(InvSimLoader, PaperInverseModelAndMeasurementNoise) {
+  const InvSimLoadResult shipped = load_invsim_file(kScenario);
+  ASSERT_TRUE(shipped.errors.empty()) << format_errors(shipped.errors);
+  const model::InvSimPaperReadingParams& paper = shipped.params->pulses.paper;
+  EXPECT_EQ(paper.inverse_model, model::InvSimInverseModel::kFaulted);
+  EXPECT_EQ(paper.measurement_noise.range_sigma_m, 0.0);
+  EXPECT_NEAR(paper.measurement_noise.angle_sigma_rad, 0.01 * kDegToRad, 1e-18);
+  EXPECT_EQ(paper.measurement_noise.seed, 1u);
+  const model::InvSimPaperReadingParams defaults;
+  EXPECT_EQ(defaults.inverse_model, model::InvSimInverseModel::kNominal);
+  EXPECT_FALSE(defaults.measurement_noise.enabled());
+  const InvSimLoadResult bad = load_invsim_file(
+      kScenario, {"pulses.paper.inverse_model=psychic", "pulses.paper.measurement_noise.range_sigma_m=-1",
+                  "pulses.paper.measurement_noise.angle_sigma_deg=6", "pulses.paper.measurement_noise.seed=-2"});
+  const std::string text = format_errors(bad.errors);
+  EXPECT_FALSE(bad.params.has_value());
+  EXPECT_NE(text.find("pulses.paper.inverse_model: must be nominal or faulted (got 'psychic')"), std::string::npos) << text;
+  EXPECT_TRUE(has_error_at(bad, "pulses.paper.measurement_noise.range_sigma_m")) << text;
+  EXPECT_TRUE(has_error_at(bad, "pulses.paper.measurement_noise.angle_sigma_deg")) << text;
+  EXPECT_TRUE(has_error_at(bad, "pulses.paper.measurement_noise.seed")) << text;
+}
+
 // A layout that cannot push along an axis is rejected before any run.
 TEST(InvSimLoader, RejectsAGroupThatDoesNotPushAlongItsAxis) {
   const InvSimLoadResult r = load_invsim_file(
