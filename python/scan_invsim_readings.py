@@ -4,6 +4,7 @@ calibration (docs/invsim.md, "Which targets no reading can meet, and why").
 
 Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
 
 coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
 per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
@@ -12,11 +13,15 @@ the six directions come within 15 % of Table 4, and x+ / x- (the paper's 2.28; 1
 targets: every Q of the calibration's grid at one w (the shipped 0.06 s by default), all Table 2
 and 5 modes, scored against issue 21's targets (calibrate_invsim.targets), split by whether the
 paper's four Table 5 modes are lost (target 6).
+faulted: the reading as shipped since session 17 (inverse_model: faulted, measurement noise on the
+angles, seed 1), every Q of the grid at each angle sigma, w = 0.1 s; k_p is compared after scaling
+every row by 0.526 / (the point's nominal k_p), i.e. with w chosen on the nominal row (counts go
+as 1 / w up to the rounding of ceil).
 Deterministic: fixed grids, one `chaser fmea` per point.
 
-Each study replaces the scenario's pulses.paper block with {pulse_width_s, state_weights} only, so
-it scans the paper reading as it was in session 15: the nominal inverse model and a perfect
-measurement link.
+coarse and targets replace the scenario's pulses.paper block with {pulse_width_s, state_weights}
+only, so they scan the paper reading as it was in session 15: the nominal inverse model and a
+perfect measurement link.
 """
 import argparse
 import csv
@@ -34,12 +39,15 @@ import calibrate_invsim as cal  # noqa: E402
 COARSE_W = [0.2, 0.3, 0.5, 1.0]  # [s]; 1.0: one pulse per opening (every dtau <= the 1 s step)
 
 
-def run_fmea(chaser, scenario, w, qv, workdir, k=None):
+def run_fmea(chaser, scenario, w, qv, workdir, k=None, angle_deg=None):
     doc = dict(scenario)
     doc.pop("configurations", None)
     doc.pop("optimize", None)
-    doc["pulses"] = dict(doc["pulses"], reading="paper",
-                         paper={"pulse_width_s": w, "state_weights": [1.0, 1.0, 1.0] + list(qv)})
+    paper = {"pulse_width_s": w, "state_weights": [1.0, 1.0, 1.0] + list(qv)}
+    if angle_deg is not None:
+        paper.update(inverse_model="faulted",
+                     measurement_noise={"range_sigma_m": 0.0, "angle_sigma_deg": angle_deg, "seed": 1})
+    doc["pulses"] = dict(doc["pulses"], reading="paper", paper=paper)
     if k is not None:
         doc["pulses"].update(time_sensitivity=k, acceleration_sensitivity=k)
     path = workdir / "scenario.yaml"
@@ -104,20 +112,68 @@ def scan_targets(chaser, scenario, workdir, w, writer, k=None):
               f"worst four {', '.join(sorted(t['worst4']))}")
 
 
+FAULTED_W = 0.1  # [s]; k_p is compared after scaling by the nominal k_p (module docstring)
+
+
+def scan_faulted(chaser, scenario, workdir, angles, writer):
+    points = []
+    for angle in angles:
+        for qv in grid():
+            rows = run_fmea(chaser, scenario, FAULTED_W, qv, workdir, angle_deg=angle)
+            t = cal.targets(rows)
+            scale = sum(cal.PAPER_NOMINAL) / 3000.0 / float(rows["nominal"]["k_p"])
+            t["k_p_within"] = sum(abs(r["k_p"] * scale / r["k_p_paper"] - 1.0) <= 0.15 for r in t["table4"])
+            counts = [int(rows["nominal"][d]) for d in cal.DIRECTIONS]
+            points.append((angle, qv, t))
+            writer.writerow([angle, *qv, *counts, t["k_p_within"], t["rise_within"], int(t["z_doubles_worst"]),
+                             t["table5_in_band"], len(t["table5_ratios"]), int(t["same_four_lost"]),
+                             f"{t['spearman']:.2f}"])
+    print(f"inverse_model faulted, w = {FAULTED_W:g} s (k_p scaled to the paper's nominal), "
+          f"{len(grid())} Q points per angle sigma")
+    print("| angle sigma [deg] | subset | points | k_p within 15 % (best of 17) | rise within 10 pt (best of 16) | "
+          "z doubles worst | Table 5 all in 1.3-1.6 | (2)-(5) all met |")
+    print("|---|---|---|---|---|---|---|---|")
+
+    def all_met(t):
+        return (t["k_p_within"] == 17 and t["rise_within"] >= 12 and t["z_doubles_worst"]
+                and t["table5_in_band"] == len(t["table5_ratios"]))
+    for angle in angles:
+        for name, keep in [("all", lambda t: True), ("the paper's four lost", lambda t: t["same_four_lost"])]:
+            sub = [t for a, _, t in points if a == angle and keep(t)]
+            if not sub:
+                print(f"| {angle:g} | {name} | 0 | | | | | |")
+                continue
+            print(f"| {angle:g} | {name} | {len(sub)} | {max(t['k_p_within'] for t in sub)} | "
+                  f"{max(t['rise_within'] for t in sub)} | {sum(t['z_doubles_worst'] for t in sub)} points | "
+                  f"{sum(t['table5_in_band'] == len(t['table5_ratios']) for t in sub)} points | "
+                  f"{sum(all_met(t) for t in sub)} points |")
+    best = max(points, key=lambda p: (p[2]["same_four_lost"], all_met(p[2]), p[2]["rise_within"], p[2]["k_p_within"]))
+    angle, qv, t = best
+    print(f"best point keeping the four: {angle:g} deg, q_v = {list(qv)}: rise {t['rise_within']} of 16, k_p "
+          f"{t['k_p_within']} of 17, z doubles worst {'yes' if t['z_doubles_worst'] else 'no'}, Table 5 "
+          f"{min(t['table5_ratios']):.2f}-{max(t['table5_ratios']):.2f}x, Spearman {t['spearman']:.2f}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("what", choices=["coarse", "targets"])
+    ap.add_argument("what", choices=["coarse", "targets", "faulted"])
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--width", type=float, default=0.06, help="w for `targets` [s]")
     ap.add_argument("--k", type=float, help="k_t = k_f (default: the scenario's, Table 3's 0.35)")
+    ap.add_argument("--angles", default="0.003,0.01,0.02,0.03", help="angle sigmas for `faulted` [deg]")
     ap.add_argument("--csv", type=pathlib.Path, help="write every point here")
     args = ap.parse_args()
     scenario = yaml.safe_load(pathlib.Path(args.scenario).read_text())
     with tempfile.TemporaryDirectory() as tmp, \
             open(args.csv or pathlib.Path(tmp) / "scan.csv", "w", newline="") as f:
         writer = csv.writer(f)
-        if args.what == "coarse":
+        if args.what == "faulted":
+            writer.writerow(["angle_sigma_deg", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "k_p_within_scaled",
+                             "rise_within", "z_doubles_worst", "table5_in_band", "table5_flown", "same_four_lost",
+                             "spearman"])
+            scan_faulted(args.chaser, scenario, pathlib.Path(tmp), [float(a) for a in args.angles.split(",")], writer)
+        elif args.what == "coarse":
             writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "within_15pc"])
             scan_coarse(args.chaser, scenario, pathlib.Path(tmp), writer, args.k)
         else:
