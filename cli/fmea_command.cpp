@@ -31,9 +31,15 @@ bool write_text(const std::filesystem::path& path, const std::string& text) {
 void print_summary(const std::vector<FmeaLayout>& layouts, double seconds, int threads) {
   std::size_t modes = 0;
   for (const FmeaLayout& layout : layouts) modes += layout.rows.size();
-  std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes) in {:.2f} s on {} thread{}; pulses.reading {}\n",
-                           modes, layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(), seconds,
-                           threads, threads == 1 ? "" : "s", invsim::reading_name(layouts.front().params.pulses.reading));
+  const model::InvSimParams& p = layouts.front().params;
+  const std::uint64_t draws = p.pulses.reading == model::InvSimReading::kPaper &&
+                                      p.pulses.paper.measurement_noise.enabled()
+                                  ? p.pulses.paper.measurement_noise.draws
+                                  : 1;
+  std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes{}) in {:.2f} s on {} thread{}; pulses.reading {}\n",
+                           modes * draws, layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(),
+                           draws > 1 ? fmt::format(" x {} noise draws", draws) : std::string(), seconds, threads,
+                           threads == 1 ? "" : "s", invsim::reading_name(p.pulses.reading));
   for (const FmeaLayout& layout : layouts) {
     const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
     std::cout << fmt::format("  {}: class I {}, class II {}, class III {}; propellant {:.1f} kg\n", layout.name,

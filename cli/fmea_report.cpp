@@ -247,10 +247,17 @@ std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
                                ? "the inverse model flies the faulted spacecraft (a weakened group opens longer)"
                                : "the inverse model flies the nominal spacecraft (the pilot does not know the fault)",
                            p.pulses.paper.measurement_noise.enabled()
-                               ? fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg (seed {})",
+                               ? fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg ({})",
                                              p.pulses.paper.measurement_noise.range_sigma_m,
                                              deg(p.pulses.paper.measurement_noise.angle_sigma_rad),
-                                             p.pulses.paper.measurement_noise.seed)
+                                             p.pulses.paper.measurement_noise.draws > 1
+                                                 ? fmt::format("seeds {} to {}, each row the mean workload and the "
+                                                               "worst deviation over the {} draws",
+                                                               p.pulses.paper.measurement_noise.seed,
+                                                               p.pulses.paper.measurement_noise.seed +
+                                                                   p.pulses.paper.measurement_noise.draws - 1,
+                                                               p.pulses.paper.measurement_noise.draws)
+                                                 : fmt::format("seed {}", p.pulses.paper.measurement_noise.seed))
                                : std::string("measurement perfect"))
              : std::string("Reading `smooth` (docs/invsim.md): a pulse is a step in which a body axis' translation "
                            "group fired in that direction. ");

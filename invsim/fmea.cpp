@@ -8,6 +8,8 @@
 #include <thread>
 #include <utility>
 
+#include "invsim/noise_draws.hpp"
+
 namespace chaser::invsim {
 
 std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults,
@@ -43,7 +45,7 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
       const model::InvSimParams& p = layouts[l];
       FmeaRow& row = rows[l][i];
       row.fmea_case = cases[i];
-      row.result = run_inverse_simulation(p, cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr);
+      row.result = run_over_noise_draws(p, cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr);
       row.deviation_ratio = deviation_ratio(p.sensor, row.result);
       row.controllable = is_controllable(row.result);
       row.risk = classify_risk(p.sensor, row.result);

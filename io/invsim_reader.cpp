@@ -114,6 +114,7 @@ void read_inverse_model(MapReader& m, model::InvSimInverseModel& out) {
 // pulses.paper.measurement_noise: optional (no noise); each key optional inside it.
 constexpr double kMaxRangeSigmaM = 10.0;     // [m] beyond this the sensor measures nothing useful at 10-100 m
 constexpr double kMaxAngleSigmaDeg = 5.0;    // [deg] half the field of view
+constexpr std::uint64_t kMaxNoiseDraws = 1000;  // a study of 123 modes x 1000 draws is minutes
 void read_measurement_noise(MapReader& m, model::InvSimMeasurementNoise& out) {
   if (!m.has("measurement_noise")) return;
   read_section(m, "measurement_noise", [&](MapReader& n) {
@@ -121,6 +122,10 @@ void read_measurement_noise(MapReader& m, model::InvSimMeasurementNoise& out) {
     if (n.has("angle_sigma_deg"))
       n.angle_deg("angle_sigma_deg", Range::closed(0.0, kMaxAngleSigmaDeg), out.angle_sigma_rad);
     if (n.has("seed")) n.count("seed", out.seed);
+    if (n.has("draws") && n.count("draws", out.draws) && (out.draws < 1 || out.draws > kMaxNoiseDraws)) {
+      n.diagnostics().add(n.path_of("draws"), fmt::format("must be in [1, {}] (got {})", kMaxNoiseDraws, out.draws));
+      out.draws = 1;
+    }
   });
 }
 

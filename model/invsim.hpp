@@ -70,7 +70,10 @@ enum class InvSimInverseModel { kNominal, kFaulted };
 struct InvSimMeasurementNoise {
   double range_sigma_m = 0.0;    // [m] 1-sigma error of the measured range
   double angle_sigma_rad = 0.0;  // [rad] 1-sigma error of the measured azimuth and elevation
-  std::uint64_t seed = 1;        // the noise sequence
+  std::uint64_t seed = 1;        // the noise sequence (the first one with draws > 1)
+  // Noise sequences flown per fault mode, seeds seed, seed + 1, ... (invsim/noise_draws.hpp): a
+  // study row is then the mean workload over the draws and the worst deviation.
+  std::uint64_t draws = 1;
   bool enabled() const { return range_sigma_m > 0.0 || angle_sigma_rad > 0.0; }
 };
 

@@ -151,7 +151,7 @@ def scan_faulted(chaser, scenario, workdir, angles, writer):
     angle, qv, t = best
     print(f"best point keeping the four: {angle:g} deg, q_v = {list(qv)}: rise {t['rise_within']} of 16, k_p "
           f"{t['k_p_within']} of 17, z doubles worst {'yes' if t['z_doubles_worst'] else 'no'}, Table 5 "
-          f"{min(t['table5_ratios']):.2f}-{max(t['table5_ratios']):.2f}x, Spearman {t['spearman']:.2f}")
+          f"{min(t['table5_ratios'], default=0):.2f}-{max(t['table5_ratios'], default=0):.2f}x, Spearman {t['spearman']:.2f}")
 
 
 def main():
