@@ -23,4 +23,14 @@ Vec6 desired_state(const model::InvSimTrajectoryParams& p, double x0, double t) 
   return x;
 }
 
+void set_lateral_return(double time_constant_s, const Vec3& r0_m, const Vec3& v0_mps, double t_s,
+                        Vec6& x_desired) {
+  const double decay = std::exp(-t_s / time_constant_s);
+  for (int axis : {1, 2}) {
+    const double slope = v0_mps(axis) + r0_m(axis) / time_constant_s;
+    x_desired(axis) = (r0_m(axis) + slope * t_s) * decay;
+    x_desired(axis + 3) = (v0_mps(axis) - slope * t_s / time_constant_s) * decay;
+  }
+}
+
 }  // namespace chaser::invsim

@@ -15,4 +15,12 @@ double approach_velocity_mps(const model::InvSimTrajectoryParams& p, double x0_m
 // [x y z x' y' z'] desired at time t [s] (t may exceed the run; the exponential continues).
 Vec6 desired_state(const model::InvSimTrajectoryParams& p, double x0_m, double t_s);
 
+// The paper reading's designed lateral trajectory (pulses.paper.lateral_time_constant_s T > 0):
+// y and z return from their initial position and velocity to 0 along the critically damped path
+//   q(t) = (q0 + (q0' + q0 / T) t) exp(-t / T),   q'(t) = (q0' - (q0' + q0 / T) t / T) exp(-t / T),
+// which starts at (q0, q0') and has no jump for the inverse model to answer at once. Sets
+// x_desired's y, z, y', z' (held at 0 by desired_state).
+void set_lateral_return(double time_constant_s, const Vec3& r0_m, const Vec3& v0_mps, double t_s,
+                        Vec6& x_desired);
+
 }  // namespace chaser::invsim

@@ -42,6 +42,15 @@ bool inverts_faulted_spacecraft(const model::InvSimParams& p) {
          p.pulses.paper.inverse_model == model::InvSimInverseModel::kFaulted;
 }
 
+// x_c of eq. 20 at time t: the approach (desired_trajectory.hpp), with the paper reading's
+// lateral return when it sets one.
+Vec6 expected_state(const model::InvSimParams& p, double t) {
+  Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), t);
+  if (p.pulses.reading == model::InvSimReading::kPaper && p.pulses.paper.lateral_time_constant_s > 0.0)
+    set_lateral_return(p.pulses.paper.lateral_time_constant_s, p.r0_hill_m, p.v0_hill_mps, t, x_c);
+  return x_c;
+}
+
 model::InvSimMeasurementNoise measurement_noise(const model::InvSimParams& p) {
   return p.pulses.reading == model::InvSimReading::kPaper ? p.pulses.paper.measurement_noise
                                                           : model::InvSimMeasurementNoise{};
@@ -85,7 +94,7 @@ std::array<Pulse, 3> inverse_link(const RunContext& c, const model::InvSimParams
     x << s.r_hill_m, s.v_hill_mps;
   }
   const double horizon_end = t + p.step_s * p.inverse.horizon_steps;
-  const Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), horizon_end);
+  const Vec6 x_c = expected_state(p, horizon_end);
   const Vec3 u_hill = inverse_step(c.inverse, x, x_c);
   u_body = r_hill_from_body.transpose() * u_hill;  // eq. 8 inverted
   std::array<Pulse, 3> pulses{};
@@ -227,7 +236,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       Vec3 euler;
       InvSimResult scratch;
       record_limits(p, s, scratch, los, euler);
-      const Vec6 x_d = desired_state(p.trajectory, p.r0_hill_m.x(), t);
+      const Vec6 x_d = expected_state(p, t);
       history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
                           {pulses[0].direction, pulses[1].direction, pulses[2].direction}, counted});

@@ -142,6 +142,8 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
     read_weights(s, p.pulses.paper.state_weights);
     read_inverse_model(s, p.pulses.paper.inverse_model);
     read_measurement_noise(s, p.pulses.paper.measurement_noise);
+    if (s.has("lateral_time_constant_s"))
+      s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), p.pulses.paper.lateral_time_constant_s);
   });
 }
 

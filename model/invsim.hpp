@@ -82,6 +82,10 @@ struct InvSimPaperReadingParams {
   std::array<double, 6> state_weights{1, 1, 1, 1, 1, 1};  // diagonal of Q under this reading
   InvSimInverseModel inverse_model = InvSimInverseModel::kNominal;
   InvSimMeasurementNoise measurement_noise;            // none unless set
+  // [s] the designed lateral trajectory: y and z return from their initial state to 0 with this
+  // critically damped time constant (invsim/desired_trajectory.hpp); 0 holds them at 0 from the
+  // start, as the smooth reading does.
+  double lateral_time_constant_s = 0.0;
 };
 
 // Pulse conversion (Zhou 2018, App. B eqs. 1-4) and the operational amount (eq. 22).

@@ -4,11 +4,12 @@
 Usage: /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check] [--q-vx-max Q]
        /usr/bin/python3 python/calibrate_invsim.py --targets DIR/fmea.csv
 
-The `paper` reading (docs/invsim.md, "Readings of App. B") leaves six choices the paper does not
+The `paper` reading (docs/invsim.md, "Readings of App. B") leaves seven choices the paper does not
 print: the width w of one counted valve opening (pulses.paper.pulse_width_s), the velocity
 weights of Q in eq. 20 per axis (pulses.paper.state_weights = [1, 1, 1, q_vx, q_vy, q_vz]; the
-position weights stay 1: only the ratio matters on each axis) and the noise of the measurement
-link (pulses.paper.measurement_noise: range_sigma_m and angle_sigma_deg; its seed and draws are
+position weights stay 1: only the ratio matters on each axis), the designed lateral trajectory's
+time constant (pulses.paper.lateral_time_constant_s, 0 = y and z held at 0) and the noise of the
+measurement link (pulses.paper.measurement_noise: range_sigma_m and angle_sigma_deg; its seed and draws are
 the scenario's: with draws N the nominal counts are the means over N noise sequences). k = 0.35, the horizon 3 and the 1 s step are Table 3's and are not calibrated; nor is
 pulses.paper.inverse_model, which no nominal run can see (it only matters with a failed thruster).
 
@@ -18,7 +19,8 @@ enters: they are predictions.
 
 Procedure (deterministic, hence repeatable): coordinate descent from w = 0.1 s, Q = I and no noise
 over fixed grids (W_GRID, Q_GRID, RANGE_GRID, ANGLE_GRID below), one parameter at a time in the
-order w, q_vx, q_vy, q_vz, range sigma, angle sigma, keeping a value only when it lowers the objective, until a sweep changes nothing (at most MAX_SWEEPS). Each
+order w, q_vx, q_vy, q_vz, range sigma, angle sigma, lateral time constant, keeping a value only
+when it lowers the objective, until a sweep changes nothing (at most MAX_SWEEPS). Each
 evaluation runs `chaser fmea` on a copy of the scenario without its configurations and optimize
 sections (41 runs, ~0.1 s) and reads the nominal row of fmea.csv.
 
@@ -67,8 +69,9 @@ W_GRID = [0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.1, 0.12, 0.15, 0.2]  # [s]
 Q_GRID = [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0]  # velocity weight [s^2/m^2] (position weight 1)
 RANGE_GRID = [0.0, 0.003, 0.01, 0.03, 0.1]  # [m] 1-sigma range error
 ANGLE_GRID = [0.0, 0.003, 0.01, 0.02, 0.03, 0.05, 0.1]  # [deg] 1-sigma azimuth / elevation error
+LATERAL_GRID = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0]  # [s] lateral return time constant (0: held at 0)
 MAX_SWEEPS = 4
-START = {"w": 0.1, "qv": [1.0, 1.0, 1.0], "range": 0.0, "angle": 0.0}
+START = {"w": 0.1, "qv": [1.0, 1.0, 1.0], "range": 0.0, "angle": 0.0, "lateral": 0.0}
 
 
 def run_nominal(chaser, scenario, params, workdir):
@@ -82,6 +85,7 @@ def run_nominal(chaser, scenario, params, workdir):
     draws = shipped_block.get("measurement_noise", {}).get("draws", 1)
     pulses["paper"] = {"pulse_width_s": params["w"], "state_weights": [1.0, 1.0, 1.0] + list(params["qv"]),
                        "inverse_model": shipped_block.get("inverse_model", "nominal"),
+                       "lateral_time_constant_s": params["lateral"],
                        "measurement_noise": {"range_sigma_m": params["range"],
                                              "angle_sigma_deg": params["angle"], "seed": seed, "draws": draws}}
     doc["pulses"] = pulses
@@ -107,11 +111,13 @@ def objective(counts, k_p):
 
 
 def describe(params):
-    return f"w={params['w']} qv={params['qv']} noise={params['range']} m, {params['angle']} deg"
+    return (f"w={params['w']} qv={params['qv']} noise={params['range']} m, {params['angle']} deg "
+            f"lateral={params['lateral']} s")
 
 
 def with_value(params, name, value):
-    out = {"w": params["w"], "qv": list(params["qv"]), "range": params["range"], "angle": params["angle"]}
+    out = {"w": params["w"], "qv": list(params["qv"]), "range": params["range"], "angle": params["angle"],
+           "lateral": params["lateral"]}
     if isinstance(name, int):
         out["qv"][name] = value
     else:
@@ -124,7 +130,7 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None):
     cache = {}
 
     def evaluate(p):
-        key = (p["w"], tuple(p["qv"]), p["range"], p["angle"])
+        key = (p["w"], tuple(p["qv"]), p["range"], p["angle"], p["lateral"])
         if key not in cache:
             counts, k_p = run_nominal(chaser, scenario, p, workdir)
             cache[key] = (objective(counts, k_p), counts, k_p)
@@ -132,7 +138,8 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None):
 
     best = evaluate(params)
     log(f"start {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
-    grids = {"w": W_GRID, 0: Q_GRID, 1: Q_GRID, 2: Q_GRID, "range": RANGE_GRID, "angle": ANGLE_GRID}
+    grids = {"w": W_GRID, 0: Q_GRID, 1: Q_GRID, 2: Q_GRID, "range": RANGE_GRID, "angle": ANGLE_GRID,
+             "lateral": LATERAL_GRID}
     for sweep in range(MAX_SWEEPS):
         changed = False
         for name, grid in grids.items():
@@ -154,12 +161,14 @@ def shipped(scenario):
     weights = paper.get("state_weights", [])
     noise = paper.get("measurement_noise", {})
     return {"w": paper.get("pulse_width_s"), "qv": [float(v) for v in weights[3:6]],
-            "range": float(noise.get("range_sigma_m", 0.0)), "angle": float(noise.get("angle_sigma_deg", 0.0))}
+            "range": float(noise.get("range_sigma_m", 0.0)), "angle": float(noise.get("angle_sigma_deg", 0.0)),
+            "lateral": float(paper.get("lateral_time_constant_s", 0.0))}
 
 
 def same_params(a, b):
     return (a["w"] == b["w"] and [float(v) for v in a["qv"]] == [float(v) for v in b["qv"]]
-            and float(a["range"]) == float(b["range"]) and float(a["angle"]) == float(b["angle"]))
+            and float(a["range"]) == float(b["range"]) and float(a["angle"]) == float(b["angle"])
+            and float(a["lateral"]) == float(b["lateral"]))
 
 
 def write_block(path, params):
@@ -167,14 +176,16 @@ def write_block(path, params):
     weights = ", ".join(str(float(v)) for v in [1.0, 1.0, 1.0] + params["qv"])
     counts = []
     for pattern, value in [(r"(\n    pulse_width_s: )[^\n#]*", params["w"]),
+                           (r"(\n    lateral_time_constant_s: )[^\n#]*", params["lateral"]),
                            (r"(\n      range_sigma_m: )[^\n#]*", params["range"]),
                            (r"(\n      angle_sigma_deg: )[^\n#]*", params["angle"])]:
         text, n = re.subn(pattern, rf"\g<1>{value}", text, count=1)
         counts.append(n)
     text, n = re.subn(r"(\n    state_weights: )\[[^\]]*\]", rf"\g<1>[{weights}]", text, count=1)
-    if counts + [n] != [1, 1, 1, 1]:
+    if counts + [n] != [1, 1, 1, 1, 1]:
         raise RuntimeError(f"{path}: no complete pulses.paper block to write (pulse_width_s, state_weights, "
-                           "measurement_noise.range_sigma_m, measurement_noise.angle_sigma_deg)")
+                           "lateral_time_constant_s, measurement_noise.range_sigma_m, "
+                           "measurement_noise.angle_sigma_deg)")
     path.write_text(text)
 
 
@@ -285,7 +296,8 @@ def main():
         params, (j, counts, k_p), runs = calibrate(args.chaser, scenario, pathlib.Path(tmp),
                                                    q_vx_max=args.q_vx_max)
     print(f"result after {runs} nominal runs: pulse_width_s={params['w']} "
-          f"state_weights={[1.0, 1.0, 1.0] + params['qv']} measurement_noise: range_sigma_m={params['range']} "
+          f"state_weights={[1.0, 1.0, 1.0] + params['qv']} lateral_time_constant_s={params['lateral']} "
+          f"measurement_noise: range_sigma_m={params['range']} "
           f"angle_sigma_deg={params['angle']} J={j:.4f}")
     print("| | x+ | x- | y+ | y- | z+ | z- | k_p |")
     print("|---|---|---|---|---|---|---|---|")

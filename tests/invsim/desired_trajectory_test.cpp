@@ -26,5 +26,36 @@ TEST(DesiredTrajectory, ContinuousAtDampingStartAndConvergesToDock) {
   EXPECT_NEAR(desired_state(p, x0, 0.0)(0), x0, 1e-15);
 }
 
+// The paper reading's lateral return: it starts at the initial state (Table 3's y, z and rates),
+// its velocity is the derivative of its position (central difference over 1 ms, 1e-9 m/s: the
+// difference's error is h^2 / 6 times the third derivative, ~1e-12), it decays as t e^(-t / T)
+// (critically damped) and it leaves x alone.
+TEST(DesiredTrajectory, LateralReturnStartsAtTheInitialStateAndDecays) {
+  const Vec3 r0(100.038, -0.0167, -0.023), v0(-0.0076, 0.131, -0.0087);
+  const double T = 50.0;
+  Vec6 x = Vec6::Constant(7.0);
+  set_lateral_return(T, r0, v0, 0.0, x);
+  EXPECT_NEAR(x(1), r0.y(), 1e-15);
+  EXPECT_NEAR(x(2), r0.z(), 1e-15);
+  EXPECT_NEAR(x(4), v0.y(), 1e-15);
+  EXPECT_NEAR(x(5), v0.z(), 1e-15);
+  EXPECT_EQ(x(0), 7.0);
+  EXPECT_EQ(x(3), 7.0);
+  for (double t : {10.0, 50.0, 200.0}) {
+    Vec6 a = x, b = x, c = x;
+    set_lateral_return(T, r0, v0, t - 1e-3, a);
+    set_lateral_return(T, r0, v0, t + 1e-3, b);
+    set_lateral_return(T, r0, v0, t, c);
+    for (int axis : {1, 2}) {
+      EXPECT_NEAR((b(axis) - a(axis)) / 2e-3, c(axis + 3), 1e-9) << t;
+      const double slope = v0(axis) + r0(axis) / T;
+      EXPECT_NEAR(c(axis), (r0(axis) + slope * t) * std::exp(-t / T), 1e-15) << t;
+    }
+  }
+  Vec6 late = x;
+  set_lateral_return(T, r0, v0, 1300.0, late);
+  EXPECT_LT(std::abs(late(1)), 1e-9);  // (0.131 + ...) 1300 e^-26
+}
+
 }  // namespace
 }  // namespace chaser::invsim
