@@ -176,13 +176,19 @@ TEST(FmeaCli, OutputDoesNotDependOnThreads) {
 }
 
 // The paper reading (docs/invsim.md, "Readings of App. B"): fmea.md prints Zhou 2018's figures
-// beside ours and names the reading; python/calibrate_invsim.py, run again on the nominal case,
+// beside ours and names the reading; the rows with their noise draws are the same on one worker;
+// python/calibrate_invsim.py, run again on the nominal case,
 // finds the scenario's shipped pulses.paper block (--check, exit 0: the calibration is repeatable);
 // an unknown reading is exit 2 naming the key and the allowed values.
 TEST(FmeaCli, PaperReadingPrintsThePaperBesideUsAndItsCalibrationIsRepeatable) {
   const fs::path out = fresh_dir("paper");
   const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --set pulses.reading=paper --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Noise draws included, the rows do not depend on the number of workers.
+  const fs::path one = fresh_dir("paper1");
+  ASSERT_EQ(chaser("fmea scenarios/manual_rvd.yaml --set pulses.reading=paper --threads 1 --out " + one.string()).exit_code, 0);
+  EXPECT_EQ(read_file(one / "fmea.csv"), read_file(out / "fmea.csv"));
+  EXPECT_NE(r.output.find("x 4 noise draws"), std::string::npos) << r.output;
   const std::string md = read_file(out / "fmea.md");
   EXPECT_NE(md.find("Reading `paper`"), std::string::npos);
   EXPECT_NE(md.find(" (114) | "), std::string::npos);   // Table 4's nominal x+
