@@ -68,6 +68,10 @@ int fmea_command(const FmeaArgs& args) {
               << io::format_errors(loaded.errors);
     return kExitBadInput;
   }
+  if (args.nominal_only && (args.optimize || args.three_axis)) {
+    std::cerr << "chaser fmea: --nominal-only flies the nominal case alone: not with --optimize or --three-axis\n";
+    return kExitBadInput;
+  }
   if (args.optimize && loaded.study.free_choices.empty()) {
     std::cerr << fmt::format("chaser fmea: --optimize: {} marks no free mounting choice (optimize.choices)\n",
                              args.scenario_path);
@@ -83,7 +87,7 @@ int fmea_command(const FmeaArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<std::vector<invsim::InvSimSample>>> histories;
   const std::vector<FmeaLayout> layouts =
-      run_fmea_layouts(loaded, args.three_axis, threads, args.history ? &histories : nullptr);
+      run_fmea_layouts(loaded, args.three_axis, threads, args.history ? &histories : nullptr, args.nominal_only);
   std::vector<invsim::LayoutCandidate> optimized;
   if (args.optimize)
     optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,

@@ -193,14 +193,16 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 }  // namespace
 
 std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
-                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories) {
+                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories,
+                                         bool nominal_only) {
   std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
   for (const model::InvSimConfiguration& c : loaded.study.configurations)
     layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
   std::vector<model::InvSimParams> params;
   for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
-  auto rows = invsim::run_fmea(params, invsim::fmea_cases(*loaded.params, loaded.faults, three_axis), threads,
-                               histories);
+  std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, three_axis);
+  if (nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
+  auto rows = invsim::run_fmea(params, cases, threads, histories);
   for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
   return layouts;
 }

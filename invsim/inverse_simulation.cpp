@@ -5,6 +5,7 @@
 
 #include "core/constants.hpp"
 #include "core/hill_frames.hpp"
+#include "invsim/carried_opening.hpp"
 #include "invsim/desired_trajectory.hpp"
 #include "invsim/inverse_step.hpp"
 #include "invsim/measurement_link.hpp"
@@ -51,6 +52,18 @@ Vec6 expected_state(const model::InvSimParams& p, double t) {
   return x_c;
 }
 
+bool carries_openings(const model::InvSimParams& p) {
+  return p.pulses.reading == model::InvSimReading::kPaper &&
+         p.pulses.paper.opening == model::InvSimOpening::kCarried;
+}
+
+// One step's pulses per body axis: what the inverse model commanded (counted under the reading)
+// and what the groups fly in the step. The same unless openings are carried.
+struct StepPulses {
+  std::array<Pulse, 3> commanded{};
+  std::array<Pulse, 3> flown{};
+};
+
 model::InvSimMeasurementNoise measurement_noise(const model::InvSimParams& p) {
   return p.pulses.reading == model::InvSimReading::kPaper ? p.pulses.paper.measurement_noise
                                                           : model::InvSimMeasurementNoise{};
@@ -83,8 +96,8 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
 }
 
 // Steps 1-3: the measured state, the inverse model's acceleration and its pulses.
-std::array<Pulse, 3> inverse_link(const RunContext& c, const model::InvSimParams& p,
-                                  const RvdState& s, double t, MeasurementLink& link, Vec3& u_body) {
+StepPulses inverse_link(const RunContext& c, const model::InvSimParams& p, const RvdState& s, double t,
+                        MeasurementLink& link, std::array<CarriedOpening, 3>& carried, Vec3& u_body) {
   const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
   Vec6 x;
   if (measurement_noise(p).enabled()) {
@@ -97,15 +110,25 @@ std::array<Pulse, 3> inverse_link(const RunContext& c, const model::InvSimParams
   const Vec6 x_c = expected_state(p, horizon_end);
   const Vec3 u_hill = inverse_step(c.inverse, x, x_c);
   u_body = r_hill_from_body.transpose() * u_hill;  // eq. 8 inverted
-  std::array<Pulse, 3> pulses{};
+  StepPulses out;
+  const bool carry = carries_openings(p);
   for (int axis = 0; axis < 3; ++axis) {
-    const int d = dir_index(u_body(axis) >= 0.0 ? 1 : -1);
+    // Carried: only what the opening under way will not give (invsim/carried_opening.hpp).
+    const double open_accel = carried[axis].direction == 0 ? 0.0 : c.u_max_pilot[axis][dir_index(carried[axis].direction)];
+    const double u = carry ? command_beyond_carried(carried[axis], open_accel, p.step_s, u_body(axis)) : u_body(axis);
+    const int d = dir_index(u >= 0.0 ? 1 : -1);
     const double u_max = c.u_max_pilot[axis][d];
     const PulseParams pp{u_max, p.step_s, p.pulses.time_sensitivity,
                          p.pulses.acceleration_sensitivity, c.u_max_nominal[axis][d]};
-    pulses[axis] = u_max > 0.0 ? convert_to_pulse(pp, u_body(axis)) : Pulse{0, 0.0};
+    if (!carry) {
+      out.commanded[axis] = u_max > 0.0 ? convert_to_pulse(pp, u) : Pulse{0, 0.0};
+      out.flown[axis] = out.commanded[axis];
+      continue;
+    }
+    out.commanded[axis] = u_max > 0.0 ? convert_to_opening(pp, u) : Pulse{0, 0.0};
+    out.flown[axis] = open_for_step(carried[axis], out.commanded[axis], c.u_max_pilot[axis], p.step_s);
   }
-  return pulses;
+  return out;
 }
 
 // Integrates one attitude period [offset, offset + h] of the step, split at every valve edge.
@@ -219,17 +242,20 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
   InvSimResult r;
   double translation_fuel_Ns = 0.0, attitude_fuel_Ns = 0.0;
   MeasurementLink link(measurement_noise(p));
+  std::array<CarriedOpening, 3> carried{};
   for (long k = 0; k < c.steps; ++k) {
     const double t = static_cast<double>(k) * p.step_s;
     Vec3 u_body;
-    const std::array<Pulse, 3> pulses = inverse_link(c, p, s, t, link, u_body);
+    const StepPulses step = inverse_link(c, p, s, t, link, carried, u_body);
+    const std::array<Pulse, 3>& pulses = step.flown;
     std::array<int, 3> counted{};
     for (int axis = 0; axis < 3; ++axis) {
-      if (pulses[axis].direction == 0) continue;
       AxisPulses& a = r.pulses[axis];
-      counted[axis] = counted_pulses(p.pulses, pulses[axis]);
-      a.count[dir_index(pulses[axis].direction)] += counted[axis];
-      a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
+      if (step.commanded[axis].direction != 0) {
+        counted[axis] = counted_pulses(p.pulses, step.commanded[axis]);
+        a.count[dir_index(step.commanded[axis].direction)] += counted[axis];
+      }
+      if (pulses[axis].direction != 0) a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
     }
     if (history != nullptr) {
       LineOfSight los{};

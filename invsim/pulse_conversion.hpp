@@ -34,4 +34,8 @@ struct Pulse {
 // The pulse for one body axis given the commanded acceleration u (signed).
 Pulse convert_to_pulse(const PulseParams& p, double u_mps2);
 
+// The same opening before the saturation: dtau = |u| tau / u_max may exceed tau (eq. 1 as
+// printed; invsim/carried_opening.hpp keeps the group open into the next steps).
+Pulse convert_to_opening(const PulseParams& p, double u_mps2);
+
 }  // namespace chaser::invsim

@@ -111,6 +111,16 @@ void read_inverse_model(MapReader& m, model::InvSimInverseModel& out) {
   else m.diagnostics().add(m.path_of("inverse_model"), fmt::format("must be nominal or faulted (got '{}')", text));
 }
 
+// pulses.paper.opening: optional, capped by default.
+void read_opening(MapReader& m, model::InvSimOpening& out) {
+  if (!m.has("opening")) return;
+  std::string text;
+  if (!m.text("opening", text)) return;
+  if (text == "capped") out = model::InvSimOpening::kCapped;
+  else if (text == "carried") out = model::InvSimOpening::kCarried;
+  else m.diagnostics().add(m.path_of("opening"), fmt::format("must be capped or carried (got '{}')", text));
+}
+
 // pulses.paper.measurement_noise: optional (no noise); each key optional inside it.
 constexpr double kMaxRangeSigmaM = 10.0;     // [m] beyond this the sensor measures nothing useful at 10-100 m
 constexpr double kMaxAngleSigmaDeg = 5.0;    // [deg] half the field of view
@@ -141,6 +151,7 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
     s.number("pulse_width_s", Range::left_open(0.0, 60.0), p.pulses.paper.pulse_width_s);
     read_weights(s, p.pulses.paper.state_weights);
     read_inverse_model(s, p.pulses.paper.inverse_model);
+    read_opening(s, p.pulses.paper.opening);
     read_measurement_noise(s, p.pulses.paper.measurement_noise);
     if (s.has("lateral_time_constant_s"))
       s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), p.pulses.paper.lateral_time_constant_s);

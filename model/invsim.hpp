@@ -77,10 +77,16 @@ struct InvSimMeasurementNoise {
   bool enabled() const { return range_sigma_m > 0.0 || angle_sigma_rad > 0.0; }
 };
 
+// What happens to an opening longer than the IS step under the paper reading
+// (invsim/carried_opening.hpp): capped at the step (the rest of the impulse is lost), or carried
+// into the next steps until the commanded impulse is given.
+enum class InvSimOpening { kCapped, kCarried };
+
 struct InvSimPaperReadingParams {
   double pulse_width_s = 0.1;                          // [s] one counted valve opening at most
   std::array<double, 6> state_weights{1, 1, 1, 1, 1, 1};  // diagonal of Q under this reading
   InvSimInverseModel inverse_model = InvSimInverseModel::kNominal;
+  InvSimOpening opening = InvSimOpening::kCapped;
   InvSimMeasurementNoise measurement_noise;            // none unless set
   // [s] the designed lateral trajectory: y and z return from their initial state to 0 with this
   // critically damped time constant (invsim/desired_trajectory.hpp); 0 holds them at 0 from the

@@ -11,18 +11,20 @@ position weights stay 1: only the ratio matters on each axis), the designed late
 time constant (pulses.paper.lateral_time_constant_s, 0 = y and z held at 0) and the noise of the
 measurement link (pulses.paper.measurement_noise: range_sigma_m and angle_sigma_deg; its seed and draws are
 the scenario's: with draws N the nominal counts are the means over N noise sequences). k = 0.35, the horizon 3 and the 1 s step are Table 3's and are not calibrated; nor is
-pulses.paper.inverse_model, which no nominal run can see (it only matters with a failed thruster).
+pulses.paper.inverse_model, which no nominal run can see (it only matters with a failed thruster),
+nor pulses.paper.opening (capped or carried: a reading of eq. 1, taken from the scenario).
 
 Objective: the sum over the six directions x+ ... z- of (ln(ours / paper))^2 for the nominal run
 only (Table 4's first row, 114/50/230/327/289/567), plus (ln(k_p ours / 0.53))^2. No fault row
 enters: they are predictions.
 
-Procedure (deterministic, hence repeatable): coordinate descent from w = 0.1 s, Q = I and no noise
-over fixed grids (W_GRID, Q_GRID, RANGE_GRID, ANGLE_GRID below), one parameter at a time in the
-order w, q_vx, q_vy, q_vz, range sigma, angle sigma, lateral time constant, keeping a value only
-when it lowers the objective, until a sweep changes nothing (at most MAX_SWEEPS). Each
-evaluation runs `chaser fmea` on a copy of the scenario without its configurations and optimize
-sections (41 runs, ~0.1 s) and reads the nominal row of fmea.csv.
+Procedure (deterministic, hence repeatable): for each lateral time constant of LATERAL_GRID, held,
+a coordinate descent from w = 0.1 s, Q = I and no noise over fixed grids (W_GRID, Q_GRID,
+RANGE_GRID, ANGLE_GRID below), one parameter at a time in the order w, q_vx, q_vy, q_vz, range
+sigma, angle sigma, keeping a value only when it lowers the objective, until a sweep changes
+nothing (at most MAX_SWEEPS); the lowest objective over the lateral values wins. Each
+evaluation runs `chaser fmea --nominal-only` on a copy of the scenario without its configurations
+and optimize sections (the nominal case over the scenario's noise draws) and reads its row.
 
 --q-vx-max Q keeps q_vx on the grid's values <= Q (issue 21, target 6: with q_vx = 10 the start is
 gentler and the paper's four lost Table 5 modes are flown; with q_vx <= 1 they are lost again).
@@ -85,6 +87,7 @@ def run_nominal(chaser, scenario, params, workdir):
     draws = shipped_block.get("measurement_noise", {}).get("draws", 1)
     pulses["paper"] = {"pulse_width_s": params["w"], "state_weights": [1.0, 1.0, 1.0] + list(params["qv"]),
                        "inverse_model": shipped_block.get("inverse_model", "nominal"),
+                       "opening": shipped_block.get("opening", "capped"),
                        "lateral_time_constant_s": params["lateral"],
                        "measurement_noise": {"range_sigma_m": params["range"],
                                              "angle_sigma_deg": params["angle"], "seed": seed, "draws": draws}}
@@ -92,7 +95,7 @@ def run_nominal(chaser, scenario, params, workdir):
     path = workdir / "scenario.yaml"
     path.write_text(yaml.safe_dump(doc, sort_keys=False))
     out = workdir / "out"
-    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2"], check=True,
+    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2", "--nominal-only"], check=True,
                    stdout=subprocess.DEVNULL)
     with open(out / "fmea.csv", newline="") as f:
         for row in csv.DictReader(f):
@@ -125,9 +128,23 @@ def with_value(params, name, value):
     return out
 
 
-def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None):
-    params = with_value(START, "w", START["w"])
+def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None):
+    """The lateral time constant is the outer choice: one coordinate descent over the other parameters
+    with it held at each value of LATERAL_GRID (or at `lateral` alone), and the lowest objective wins
+    (ties: the first). A single descent over all of them stops in a local minimum of this noisy
+    objective that depends on where the lateral time constant moves first."""
     cache = {}
+    starts = LATERAL_GRID if lateral is None else [lateral]
+    results = []
+    for start in starts:
+        log(f"-- descent from lateral = {start} s")
+        results.append(descend(chaser, scenario, workdir, log, q_vx_max, start, cache))
+    params, best = min(results, key=lambda r: r[1][0])
+    return params, best, len(cache)
+
+
+def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache):
+    params = with_value(START, "lateral", lateral)
 
     def evaluate(p):
         key = (p["w"], tuple(p["qv"]), p["range"], p["angle"], p["lateral"])
@@ -145,6 +162,8 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None):
         for name, grid in grids.items():
             if name == 0 and q_vx_max is not None:
                 grid = [q for q in grid if q <= q_vx_max]
+            if name == "lateral":
+                continue  # held: the outer choice (calibrate)
             for value in grid:
                 trial = with_value(params, name, value)
                 result = evaluate(trial)
@@ -153,7 +172,7 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None):
                     log(f"sweep {sweep + 1}: {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
         if not changed:
             break
-    return params, best, len(cache)
+    return params, best
 
 
 def shipped(scenario):
@@ -284,6 +303,8 @@ def main():
     ap.add_argument("--write", action="store_true")
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--targets", metavar="FMEA_CSV", help="only score issue 21's targets on this fmea.csv")
+    ap.add_argument("--lateral", type=float, metavar="T",
+                    help="hold the lateral time constant at T [s] instead of calibrating it (a study of its effect)")
     ap.add_argument("--q-vx-max", type=float, metavar="Q",
                     help="calibrate with q_vx <= Q only (q_vx = 1 keeps the paper's four lost modes)")
     args = ap.parse_args()
@@ -294,7 +315,7 @@ def main():
     scenario = yaml.safe_load(path.read_text())
     with tempfile.TemporaryDirectory() as tmp:
         params, (j, counts, k_p), runs = calibrate(args.chaser, scenario, pathlib.Path(tmp),
-                                                   q_vx_max=args.q_vx_max)
+                                                   q_vx_max=args.q_vx_max, lateral=args.lateral)
     print(f"result after {runs} nominal runs: pulse_width_s={params['w']} "
           f"state_weights={[1.0, 1.0, 1.0] + params['qv']} lateral_time_constant_s={params['lateral']} "
           f"measurement_noise: range_sigma_m={params['range']} "

@@ -99,19 +99,21 @@ TEST(InvSimLoader, PaperInverseModelAndMeasurementNoise) {
   ASSERT_TRUE(shipped.errors.empty()) << format_errors(shipped.errors);
   const model::InvSimPaperReadingParams& paper = shipped.params->pulses.paper;
   EXPECT_EQ(paper.inverse_model, model::InvSimInverseModel::kFaulted);
-  EXPECT_EQ(paper.measurement_noise.range_sigma_m, 0.0);
+  EXPECT_EQ(paper.measurement_noise.range_sigma_m, 0.01);
   EXPECT_NEAR(paper.measurement_noise.angle_sigma_rad, 0.01 * kDegToRad, 1e-18);
   EXPECT_EQ(paper.measurement_noise.seed, 1u);
-  EXPECT_EQ(paper.measurement_noise.draws, 4u);
-  EXPECT_EQ(paper.lateral_time_constant_s, 50.0);
+  EXPECT_EQ(paper.measurement_noise.draws, 20u);
+  EXPECT_EQ(paper.lateral_time_constant_s, 0.0);
+  EXPECT_EQ(paper.opening, model::InvSimOpening::kCarried);
   const model::InvSimPaperReadingParams defaults;
   EXPECT_EQ(defaults.inverse_model, model::InvSimInverseModel::kNominal);
   EXPECT_FALSE(defaults.measurement_noise.enabled());
   EXPECT_EQ(defaults.lateral_time_constant_s, 0.0);
+  EXPECT_EQ(defaults.opening, model::InvSimOpening::kCapped);
   const InvSimLoadResult bad = load_invsim_file(
       kScenario, {"pulses.paper.inverse_model=psychic", "pulses.paper.measurement_noise.range_sigma_m=-1",
                   "pulses.paper.measurement_noise.angle_sigma_deg=6", "pulses.paper.measurement_noise.seed=-2",
-                  "pulses.paper.lateral_time_constant_s=-5"});
+                  "pulses.paper.lateral_time_constant_s=-5", "pulses.paper.opening=leaky"});
   const std::string text = format_errors(bad.errors);
   EXPECT_FALSE(bad.params.has_value());
   EXPECT_NE(text.find("pulses.paper.inverse_model: must be nominal or faulted (got 'psychic')"), std::string::npos) << text;
@@ -119,6 +121,7 @@ TEST(InvSimLoader, PaperInverseModelAndMeasurementNoise) {
   EXPECT_TRUE(has_error_at(bad, "pulses.paper.measurement_noise.angle_sigma_deg")) << text;
   EXPECT_TRUE(has_error_at(bad, "pulses.paper.measurement_noise.seed")) << text;
   EXPECT_TRUE(has_error_at(bad, "pulses.paper.lateral_time_constant_s")) << text;
+  EXPECT_NE(text.find("pulses.paper.opening: must be capped or carried (got 'leaky')"), std::string::npos) << text;
 }
 
 // A layout that cannot push along an axis is rejected before any run.

@@ -70,6 +70,7 @@ TEST(PaperReading, SwitchChangesTheCountNotTheFlightUnderTheSameWeights) {
                                     "pulses.paper.measurement_noise.range_sigma_m=0",
                                     "pulses.paper.measurement_noise.angle_sigma_deg=0",
                                     "pulses.paper.lateral_time_constant_s=0",
+                                    "pulses.paper.opening=capped",
                                     "inverse.state_weights=[1, 1, 1, 1, 1, 1]"});
   ASSERT_TRUE(smooth.errors.empty() && paper.errors.empty());
   const InvSimResult a = run_inverse_simulation(*smooth.params, {});
@@ -87,8 +88,9 @@ TEST(PaperReading, SwitchChangesTheCountNotTheFlightUnderTheSameWeights) {
 
 // The shipped calibration, as docs/invsim.md states it: under `paper` the nominal y- count is
 // within 15 % of Table 4's 327, and a group that loses one thruster about doubles its direction's
-// count (Table 4's mechanism; shipped, four draws: d1 x+ 1.85x, f2~ z- 1.80x, e1/e1~ y- 1.86x,
-// the paper 2.02x, 1.99x, 1.97x), which `smooth` does only in part (d1 x+ 1.5x, e1/e1~ y- 1.1x).
+// count (Table 4's mechanism; shipped, 20 draws: d1 x+ 1.94x, f2~ z- 1.91x, e1/e1~ y- 2.69x (the
+// y start: docs/invsim.md), the paper 2.02x, 1.99x, 1.97x), which `smooth` does only in part (d1 x+
+// 1.5x, e1/e1~ y- 1.1x).
 TEST(PaperReading, ShippedCalibrationDoublesALosingGroupsCount) {
   const auto run = [](const std::string& reading, const std::string& faults) {
     const auto loaded = io::load_invsim_file("scenarios/manual_rvd.yaml",
@@ -101,10 +103,12 @@ TEST(PaperReading, ShippedCalibrationDoublesALosingGroupsCount) {
   const double d1 = run("paper", "d1").pulses[0].count[0] / double(nominal.pulses[0].count[0]);
   const double f2n = run("paper", "f2~").pulses[2].count[1] / double(nominal.pulses[2].count[1]);
   const double e11 = run("paper", "e1, e1~").pulses[1].count[1] / double(nominal.pulses[1].count[1]);
-  for (double ratio : {d1, f2n, e11}) {
-    EXPECT_GT(ratio, 1.5);
-    EXPECT_LT(ratio, 2.5);
+  for (double ratio : {d1, f2n}) {
+    EXPECT_GT(ratio, 1.8);
+    EXPECT_LT(ratio, 2.1);
   }
+  EXPECT_GT(e11, 2.3);  // more than doubled: the halved y- group flies Table 3's initial drift
+  EXPECT_LT(e11, 3.0);
   const InvSimResult smooth = run("smooth", "");
   EXPECT_LT(run("smooth", "e1, e1~").pulses[1].count[1], 1.4 * smooth.pulses[1].count[1]);
 }
