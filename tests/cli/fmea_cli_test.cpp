@@ -138,6 +138,20 @@ TEST(FmeaCli, ThreeAxisModesAddSixtyFourRowsPerLayout) {
   EXPECT_NE(read_file(out / "fmea.md").find("## Three-axis faults"), std::string::npos);
 }
 
+// --nominal-only flies the nominal case of each layout alone (what the calibration reads), and is
+// bad input with --optimize or --three-axis.
+TEST(FmeaCli, NominalOnlyFliesOneRowPerLayout) {
+  const fs::path out = fresh_dir("nominal_only");
+  const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --nominal-only --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> csv = lines(read_file(out / "fmea.csv"));
+  ASSERT_EQ(csv.size(), 1u + 3u);
+  EXPECT_EQ(csv[1].rfind("baseline,nominal,nominal,,41,28,37,46,8,44,", 0), 0u) << csv[1];
+  const CommandResult bad = chaser("fmea scenarios/manual_rvd.yaml --nominal-only --three-axis --out " + out.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("--nominal-only"), std::string::npos) << bad.output;
+}
+
 // A user fault set in the scenario adds one last row, named "scenario".
 TEST(FmeaCli, ScenarioFaultsAddARow) {
   const fs::path out = fresh_dir("user");
