@@ -16,6 +16,7 @@
 #include "cli/fmea_report.hpp"
 #include "invsim/fmea.hpp"
 #include "invsim/layout_study.hpp"
+#include "invsim/noise_draws.hpp"
 #include "invsim/paper_reading.hpp"
 #include "io/invsim_loader.hpp"
 
@@ -32,10 +33,7 @@ void print_summary(const std::vector<FmeaLayout>& layouts, double seconds, int t
   std::size_t modes = 0;
   for (const FmeaLayout& layout : layouts) modes += layout.rows.size();
   const model::InvSimParams& p = layouts.front().params;
-  const std::uint64_t draws = p.pulses.reading == model::InvSimReading::kPaper &&
-                                      p.pulses.paper.measurement_noise.enabled()
-                                  ? p.pulses.paper.measurement_noise.draws
-                                  : 1;
+  const std::uint64_t draws = invsim::noise_draws_per_mode(p);
   std::cout << fmt::format("chaser fmea: {} runs ({} layout{} x {} modes{}) in {:.2f} s on {} thread{}; pulses.reading {}\n",
                            modes * draws, layouts.size(), layouts.size() == 1 ? "" : "s", layouts.front().rows.size(),
                            draws > 1 ? fmt::format(" x {} noise draws", draws) : std::string(), seconds, threads,

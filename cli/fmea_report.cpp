@@ -236,33 +236,41 @@ std::string fmea_csv(const std::vector<FmeaLayout>& layouts) {
   return csv;
 }
 
+namespace {
+
+// fmea.md's first words: what one pulse is under the scenario's reading, and the paper reading's
+// flight choices (docs/invsim.md, "Readings of App. B").
+std::string reading_paragraph(const model::InvSimParams& p) {
+  if (p.pulses.reading != model::InvSimReading::kPaper)
+    return "Reading `smooth` (docs/invsim.md): a pulse is a step in which a body axis' translation group fired in "
+           "that direction. ";
+  const model::InvSimPaperReadingParams& paper = p.pulses.paper;
+  const model::InvSimMeasurementNoise& noise = paper.measurement_noise;
+  const std::string model = paper.inverse_model == model::InvSimInverseModel::kFaulted
+                                ? "the inverse model flies the faulted spacecraft (a weakened group opens longer)"
+                                : "the inverse model flies the nominal spacecraft (the pilot does not know the fault)";
+  std::string measured = "measurement perfect";
+  if (noise.enabled()) {
+    const std::string draws = noise.draws > 1 ? fmt::format("seeds {} to {}, each row the mean workload and the worst "
+                                                            "deviation over the {} draws",
+                                                            noise.seed, noise.seed + noise.draws - 1, noise.draws)
+                                              : fmt::format("seed {}", noise.seed);
+    measured = fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg ({})", noise.range_sigma_m,
+                           deg(noise.angle_sigma_rad), draws);
+  }
+  return fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's opening "
+                     "dtau counting ceil(dtau / {} s); {}; {}. ",
+                     paper.pulse_width_s, paper.pulse_width_s, model, measured);
+}
+
+}  // namespace
+
 std::string fmea_markdown(const std::vector<FmeaLayout>& layouts,
                           const std::vector<invsim::LayoutCandidate>* optimized, int keep) {
   const model::InvSimParams& p = layouts.front().params;
   const std::vector<FmeaRow>& rows = layouts.front().rows;
   std::string md = fmt::format("# FMEA of scenario '{}' (Zhou 2018, inverse simulation)\n\n", p.name);
-  md += p.pulses.reading == model::InvSimReading::kPaper
-             ? fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's "
-                           "opening dtau counting ceil(dtau / {} s); {}; {}. ",
-                           p.pulses.paper.pulse_width_s, p.pulses.paper.pulse_width_s,
-                           p.pulses.paper.inverse_model == model::InvSimInverseModel::kFaulted
-                               ? "the inverse model flies the faulted spacecraft (a weakened group opens longer)"
-                               : "the inverse model flies the nominal spacecraft (the pilot does not know the fault)",
-                           p.pulses.paper.measurement_noise.enabled()
-                               ? fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg ({})",
-                                             p.pulses.paper.measurement_noise.range_sigma_m,
-                                             deg(p.pulses.paper.measurement_noise.angle_sigma_rad),
-                                             p.pulses.paper.measurement_noise.draws > 1
-                                                 ? fmt::format("seeds {} to {}, each row the mean workload and the "
-                                                               "worst deviation over the {} draws",
-                                                               p.pulses.paper.measurement_noise.seed,
-                                                               p.pulses.paper.measurement_noise.seed +
-                                                                   p.pulses.paper.measurement_noise.draws - 1,
-                                                               p.pulses.paper.measurement_noise.draws)
-                                                 : fmt::format("seed {}", p.pulses.paper.measurement_noise.seed))
-                               : std::string("measurement perfect"))
-             : std::string("Reading `smooth` (docs/invsim.md): a pulse is a step in which a body axis' translation "
-                           "group fired in that direction. ");
+  md += reading_paragraph(p);
   md += fmt::format(
       "k_p = P / {:.0f} (eq. 22). "
       "Classes (docs/invsim.md): III uncontrollable (not docked, or the target left the {:.1f}/{:.1f} deg field "

@@ -4,15 +4,19 @@
 
 namespace chaser::invsim {
 
-double command_beyond_carried(const CarriedOpening& carried, double open_accel_mps2, double step_s,
+namespace {
+double group_accel(const std::array<double, 2>& accel_mps2, int direction) { return accel_mps2[direction > 0 ? 0 : 1]; }
+}  // namespace
+
+double command_beyond_carried(const CarriedOpening& carried, const std::array<double, 2>& accel_mps2, double step_s,
                               double u_ls_mps2) {
   if (carried.direction == 0) return u_ls_mps2;
-  return u_ls_mps2 - carried.direction * open_accel_mps2 * carried.remaining_s / step_s;
+  return u_ls_mps2 - carried.direction * group_accel(accel_mps2, carried.direction) * carried.remaining_s / step_s;
 }
 
 Pulse open_for_step(CarriedOpening& carried, const Pulse& commanded, const std::array<double, 2>& accel_mps2,
                     double step_s) {
-  const auto accel = [&](int direction) { return accel_mps2[direction > 0 ? 0 : 1]; };
+  const auto accel = [&](int direction) { return group_accel(accel_mps2, direction); };
   if (commanded.direction != 0) {
     if (carried.direction == 0 || carried.direction == commanded.direction) {
       carried.direction = commanded.direction;

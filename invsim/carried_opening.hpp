@@ -24,9 +24,9 @@ struct CarriedOpening {
 };
 
 // The acceleration the inverse model still asks for [m/s^2]: u_ls less what the opening under way
-// will give, its remaining time at the acceleration of its group (open_accel_mps2) spread over one
-// step (the step's command is u tau of impulse, eq. 1).
-double command_beyond_carried(const CarriedOpening& carried, double open_accel_mps2, double step_s,
+// will give, its remaining time at its group's acceleration (accel_mps2[0] for +1, [1] for -1)
+// spread over one step (the step's command is u tau of impulse, eq. 1).
+double command_beyond_carried(const CarriedOpening& carried, const std::array<double, 2>& accel_mps2, double step_s,
                               double u_ls_mps2);
 
 // Adds this step's new opening to the one under way and returns the opening flown in this step (at

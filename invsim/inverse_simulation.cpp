@@ -27,10 +27,11 @@ using GroupWrenches = std::array<std::array<Wrench, 2>, 3>;  // [axis][0: +, 1: 
 struct RunContext {
   RvdConstants rvd;
   InverseModel inverse;
+  model::InvSimPaperReadingParams choices;             // the reading's flight choices (paper_reading.hpp)
   std::array<std::array<double, 2>, 3> u_max_pilot;    // [m/s^2] the inverse model's u_max per group
   std::array<std::array<double, 2>, 3> u_max_nominal;  // [m/s^2] the healthy group's
   Vec3 a0_radps2;                                      // attitude control accelerations
-  GroupWrenches translation;                           // healthy wrenches per group
+  GroupWrenches translation;                           // wrenches per group, with the faults
   GroupWrenches attitude;
   long steps;
   long sub_steps;  // attitude periods per IS step
@@ -38,23 +39,13 @@ struct RunContext {
 
 int dir_index(int direction) { return direction > 0 ? 0 : 1; }
 
-bool inverts_faulted_spacecraft(const model::InvSimParams& p) {
-  return p.pulses.reading == model::InvSimReading::kPaper &&
-         p.pulses.paper.inverse_model == model::InvSimInverseModel::kFaulted;
-}
-
 // x_c of eq. 20 at time t: the approach (desired_trajectory.hpp), with the paper reading's
 // lateral return when it sets one.
-Vec6 expected_state(const model::InvSimParams& p, double t) {
+Vec6 expected_state(const RunContext& c, const model::InvSimParams& p, double t) {
   Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), t);
-  if (p.pulses.reading == model::InvSimReading::kPaper && p.pulses.paper.lateral_time_constant_s > 0.0)
-    set_lateral_return(p.pulses.paper.lateral_time_constant_s, p.r0_hill_m, p.v0_hill_mps, t, x_c);
+  if (c.choices.lateral_time_constant_s > 0.0)
+    set_lateral_return(c.choices.lateral_time_constant_s, p.r0_hill_m, p.v0_hill_mps, t, x_c);
   return x_c;
-}
-
-bool carries_openings(const model::InvSimParams& p) {
-  return p.pulses.reading == model::InvSimReading::kPaper &&
-         p.pulses.paper.opening == model::InvSimOpening::kCarried;
 }
 
 // One step's pulses per body axis: what the inverse model commanded (counted under the reading)
@@ -64,13 +55,9 @@ struct StepPulses {
   std::array<Pulse, 3> flown{};
 };
 
-model::InvSimMeasurementNoise measurement_noise(const model::InvSimParams& p) {
-  return p.pulses.reading == model::InvSimReading::kPaper ? p.pulses.paper.measurement_noise
-                                                          : model::InvSimMeasurementNoise{};
-}
-
 RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
   RunContext c{};
+  c.choices = flight_choices(p);
   c.steps = std::lround(p.duration_s / p.step_s);
   c.sub_steps = std::max(1L, std::lround(p.step_s / p.attitude.period_s));
   const double period_s = p.step_s / static_cast<double>(c.sub_steps);  // the longest piece
@@ -83,10 +70,9 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
     for (int d : {1, -1}) {
       c.translation[axis][dir_index(d)] = translation_wrench(p, faults, axis, d);
       c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
-      c.u_max_pilot[axis][dir_index(d)] =
-          inverts_faulted_spacecraft(p)
-              ? std::abs(c.translation[axis][dir_index(d)].force_body_N[axis]) / p.mass_kg
-              : c.u_max_nominal[axis][dir_index(d)];
+      c.u_max_pilot[axis][dir_index(d)] = c.choices.inverse_model == model::InvSimInverseModel::kFaulted
+                                              ? translation_accel(p, faults, axis, d)
+                                              : c.u_max_nominal[axis][dir_index(d)];
       c.attitude[axis][dir_index(d)] = attitude_wrench(p, faults, axis, d);
     }
     const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
@@ -100,33 +86,30 @@ StepPulses inverse_link(const RunContext& c, const model::InvSimParams& p, const
                         MeasurementLink& link, std::array<CarriedOpening, 3>& carried, Vec3& u_body) {
   const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
   Vec6 x;
-  if (measurement_noise(p).enabled()) {
+  if (c.choices.measurement_noise.enabled()) {
     const double range_m = line_of_sight(s.r_hill_m, r_hill_from_body, p.sensor.position_body_m).range_m;
     x << link.measured_position_hill_m(s.r_hill_m, range_m), s.v_hill_mps;
   } else {
     x << s.r_hill_m, s.v_hill_mps;
   }
   const double horizon_end = t + p.step_s * p.inverse.horizon_steps;
-  const Vec6 x_c = expected_state(p, horizon_end);
+  const Vec6 x_c = expected_state(c, p, horizon_end);
   const Vec3 u_hill = inverse_step(c.inverse, x, x_c);
   u_body = r_hill_from_body.transpose() * u_hill;  // eq. 8 inverted
   StepPulses out;
-  const bool carry = carries_openings(p);
+  const bool carry = c.choices.opening == model::InvSimOpening::kCarried;
   for (int axis = 0; axis < 3; ++axis) {
     // Carried: only what the opening under way will not give (invsim/carried_opening.hpp).
-    const double open_accel = carried[axis].direction == 0 ? 0.0 : c.u_max_pilot[axis][dir_index(carried[axis].direction)];
-    const double u = carry ? command_beyond_carried(carried[axis], open_accel, p.step_s, u_body(axis)) : u_body(axis);
+    const double u =
+        carry ? command_beyond_carried(carried[axis], c.u_max_pilot[axis], p.step_s, u_body(axis)) : u_body(axis);
     const int d = dir_index(u >= 0.0 ? 1 : -1);
     const double u_max = c.u_max_pilot[axis][d];
     const PulseParams pp{u_max, p.step_s, p.pulses.time_sensitivity,
                          p.pulses.acceleration_sensitivity, c.u_max_nominal[axis][d]};
-    if (!carry) {
-      out.commanded[axis] = u_max > 0.0 ? convert_to_pulse(pp, u) : Pulse{0, 0.0};
-      out.flown[axis] = out.commanded[axis];
-      continue;
-    }
-    out.commanded[axis] = u_max > 0.0 ? convert_to_opening(pp, u) : Pulse{0, 0.0};
-    out.flown[axis] = open_for_step(carried[axis], out.commanded[axis], c.u_max_pilot[axis], p.step_s);
+    // A group with no thrust left (faulted model): the inverse model commands nothing there.
+    out.commanded[axis] = u_max <= 0.0 ? Pulse{0, 0.0} : carry ? convert_to_opening(pp, u) : convert_to_pulse(pp, u);
+    out.flown[axis] =
+        carry ? open_for_step(carried[axis], out.commanded[axis], c.u_max_pilot[axis], p.step_s) : out.commanded[axis];
   }
   return out;
 }
@@ -241,7 +224,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
   RvdState s = initial_state(c, p);
   InvSimResult r;
   double translation_fuel_Ns = 0.0, attitude_fuel_Ns = 0.0;
-  MeasurementLink link(measurement_noise(p));
+  MeasurementLink link(c.choices.measurement_noise);
   std::array<CarriedOpening, 3> carried{};
   for (long k = 0; k < c.steps; ++k) {
     const double t = static_cast<double>(k) * p.step_s;
@@ -262,7 +245,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       Vec3 euler;
       InvSimResult scratch;
       record_limits(p, s, scratch, los, euler);
-      const Vec6 x_d = expected_state(p, t);
+      const Vec6 x_d = expected_state(c, p, t);
       history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
                           {pulses[0].direction, pulses[1].direction, pulses[2].direction}, counted});

@@ -2,18 +2,25 @@
 
 #include <cmath>
 
+#include "invsim/paper_reading.hpp"
+
 namespace chaser::invsim {
+
+std::uint64_t noise_draws_per_mode(const model::InvSimParams& params) {
+  const model::InvSimMeasurementNoise& noise = flight_choices(params).measurement_noise;
+  return noise.enabled() ? noise.draws : 1;
+}
 
 InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults,
                                   std::vector<InvSimSample>* history) {
-  const model::InvSimMeasurementNoise& noise = params.pulses.paper.measurement_noise;
-  if (params.pulses.reading != model::InvSimReading::kPaper || !noise.enabled() || noise.draws <= 1)
-    return run_inverse_simulation(params, faults, history);
+  const std::uint64_t draws = noise_draws_per_mode(params);
+  if (draws <= 1) return run_inverse_simulation(params, faults, history);
   std::vector<InvSimResult> results;
-  results.reserve(noise.draws);
+  results.reserve(draws);
   model::InvSimParams draw = params;
-  for (std::uint64_t i = 0; i < noise.draws; ++i) {
-    draw.pulses.paper.measurement_noise.seed = noise.seed + i;
+  const std::uint64_t first_seed = params.pulses.paper.measurement_noise.seed;
+  for (std::uint64_t i = 0; i < draws; ++i) {
+    draw.pulses.paper.measurement_noise.seed = first_seed + i;
     results.push_back(run_inverse_simulation(draw, faults, i == 0 ? history : nullptr));
   }
   return combine_draws(results, params.pulses.basic_pulse_amount);

@@ -20,6 +20,10 @@
 
 namespace chaser::invsim {
 
+// Noise sequences a study flies per mode: the scenario's draws under the paper reading with noise
+// on, else 1.
+std::uint64_t noise_draws_per_mode(const model::InvSimParams& params);
+
 // The row's result over the scenario's draws; one plain run (bit for bit) when the reading is not
 // paper, the noise is off or draws is 1. `history`, when asked for, is the first draw's.
 InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults,

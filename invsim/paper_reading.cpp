@@ -23,6 +23,11 @@ const std::array<double, 6>& reading_state_weights(const model::InvSimParams& p)
                                                           : p.inverse.state_weights;
 }
 
+const model::InvSimPaperReadingParams& flight_choices(const model::InvSimParams& p) {
+  static const model::InvSimPaperReadingParams kSmoothFlight{};
+  return p.pulses.reading == model::InvSimReading::kPaper ? p.pulses.paper : kSmoothFlight;
+}
+
 std::string_view reading_name(model::InvSimReading r) {
   return r == model::InvSimReading::kPaper ? "paper" : "smooth";
 }

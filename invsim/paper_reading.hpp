@@ -23,6 +23,14 @@ int counted_pulses(const model::InvSimPulseParams& p, const Pulse& pulse);
 // The diagonal of Q (eq. 20) under the scenario's reading.
 const std::array<double, 6>& reading_state_weights(const model::InvSimParams& p);
 
+// The choices that change the flight (inverse_model, opening, lateral_time_constant_s,
+// measurement_noise) as they apply to a run: the scenario's pulses.paper block under the paper
+// reading; under smooth the block's defaults, which are smooth's own flight (the nominal inverse
+// model, capped openings, y and z held at 0, a perfect measurement). The one place a run asks which
+// reading it is under for these; the block's pulse_width_s and state_weights are read through
+// counted_pulses and reading_state_weights.
+const model::InvSimPaperReadingParams& flight_choices(const model::InvSimParams& p);
+
 std::string_view reading_name(model::InvSimReading r);  // "smooth", "paper"
 
 }  // namespace chaser::invsim

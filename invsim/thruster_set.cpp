@@ -60,9 +60,13 @@ Wrench attitude_wrench(const model::InvSimParams& p, const model::InvSimFaultSet
   return group_wrench(p, faults, {0, 0, 0}, cmd);
 }
 
-double nominal_translation_accel(const model::InvSimParams& p, int axis, int direction) {
-  const Wrench w = translation_wrench(p, model::InvSimFaultSet{}, axis, direction);
+double translation_accel(const model::InvSimParams& p, const model::InvSimFaultSet& faults, int axis, int direction) {
+  const Wrench w = translation_wrench(p, faults, axis, direction);
   return std::abs(w.force_body_N[axis]) / p.mass_kg;
+}
+
+double nominal_translation_accel(const model::InvSimParams& p, int axis, int direction) {
+  return translation_accel(p, model::InvSimFaultSet{}, axis, direction);
 }
 
 Vec3 fault_disturbing_moment(const model::InvSimParams& p, std::size_t i) {

@@ -40,6 +40,10 @@ Wrench translation_wrench(const model::InvSimParams& p, const model::InvSimFault
 Wrench attitude_wrench(const model::InvSimParams& p, const model::InvSimFaultSet& faults, int axis,
                        int direction);
 
+// Acceleration [m/s^2] along `axis` of the translation group of (axis, direction) with `faults`
+// (0 when both of its thrusters failed): the u_max of the paper reading's faulted inverse model.
+double translation_accel(const model::InvSimParams& p, const model::InvSimFaultSet& faults, int axis, int direction);
+
 // Nominal acceleration [m/s^2] of the translation group of (axis, direction), all thrusters
 // healthy: the u_max the pilot's pulse conversion assumes.
 double nominal_translation_accel(const model::InvSimParams& p, int axis, int direction);

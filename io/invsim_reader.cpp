@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -91,34 +92,17 @@ void read_weights(MapReader& r, std::array<double, 6>& out) {
                 out[i]);
 }
 
-// pulses.reading: optional, smooth by default (docs/invsim.md, "Readings of App. B").
-void read_reading(MapReader& m, model::InvSimReading& out) {
-  if (!m.has("reading")) return;
+// An optional key naming one of two values; absent, `out` keeps its default. The reading's keys:
+// pulses.reading (docs/invsim.md, "Readings of App. B"), pulses.paper.inverse_model and .opening.
+template <class Choice>
+void read_either(MapReader& m, std::string_view key, std::string_view first, Choice first_value,
+                 std::string_view second, Choice second_value, Choice& out) {
+  if (!m.has(key)) return;
   std::string text;
-  if (!m.text("reading", text)) return;
-  if (text == "smooth") out = model::InvSimReading::kSmooth;
-  else if (text == "paper") out = model::InvSimReading::kPaper;
-  else m.diagnostics().add(m.path_of("reading"), fmt::format("must be smooth or paper (got '{}')", text));
-}
-
-// pulses.paper.inverse_model: optional, nominal by default.
-void read_inverse_model(MapReader& m, model::InvSimInverseModel& out) {
-  if (!m.has("inverse_model")) return;
-  std::string text;
-  if (!m.text("inverse_model", text)) return;
-  if (text == "nominal") out = model::InvSimInverseModel::kNominal;
-  else if (text == "faulted") out = model::InvSimInverseModel::kFaulted;
-  else m.diagnostics().add(m.path_of("inverse_model"), fmt::format("must be nominal or faulted (got '{}')", text));
-}
-
-// pulses.paper.opening: optional, capped by default.
-void read_opening(MapReader& m, model::InvSimOpening& out) {
-  if (!m.has("opening")) return;
-  std::string text;
-  if (!m.text("opening", text)) return;
-  if (text == "capped") out = model::InvSimOpening::kCapped;
-  else if (text == "carried") out = model::InvSimOpening::kCarried;
-  else m.diagnostics().add(m.path_of("opening"), fmt::format("must be capped or carried (got '{}')", text));
+  if (!m.text(key, text)) return;
+  if (text == first) out = first_value;
+  else if (text == second) out = second_value;
+  else m.diagnostics().add(m.path_of(key), fmt::format("must be {} or {} (got '{}')", first, second, text));
 }
 
 // pulses.paper.measurement_noise: optional (no noise); each key optional inside it.
@@ -150,8 +134,10 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
   read_section(m, "paper", [&](MapReader& s) {
     s.number("pulse_width_s", Range::left_open(0.0, 60.0), p.pulses.paper.pulse_width_s);
     read_weights(s, p.pulses.paper.state_weights);
-    read_inverse_model(s, p.pulses.paper.inverse_model);
-    read_opening(s, p.pulses.paper.opening);
+    read_either(s, "inverse_model", "nominal", model::InvSimInverseModel::kNominal, "faulted",
+                model::InvSimInverseModel::kFaulted, p.pulses.paper.inverse_model);
+    read_either(s, "opening", "capped", model::InvSimOpening::kCapped, "carried", model::InvSimOpening::kCarried,
+                p.pulses.paper.opening);
     read_measurement_noise(s, p.pulses.paper.measurement_noise);
     if (s.has("lateral_time_constant_s"))
       s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), p.pulses.paper.lateral_time_constant_s);
@@ -197,7 +183,8 @@ void read_sections(MapReader& r, InvSimParams& p) {
     read_weights(m, p.inverse.state_weights);
   });
   read_section(r, "pulses", [&](MapReader& m) {
-    read_reading(m, p.pulses.reading);
+    read_either(m, "reading", "smooth", model::InvSimReading::kSmooth, "paper", model::InvSimReading::kPaper,
+                p.pulses.reading);
     m.number("time_sensitivity", Range::right_open(0.0, 1.0), p.pulses.time_sensitivity);
     m.number("acceleration_sensitivity", Range::right_open(0.0, 1.0), p.pulses.acceleration_sensitivity);
     m.number("basic_pulse_amount", Range::positive(), p.pulses.basic_pulse_amount);

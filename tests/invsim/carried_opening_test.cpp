@@ -29,15 +29,15 @@ TEST(CarriedOpening, ALongOpeningContinuesAndIsNotAskedForTwice) {
   EXPECT_EQ(c.direction, 1);
   EXPECT_DOUBLE_EQ(c.remaining_s, 1.5);
   // The inverse model still asks for 1.5 s of the halved group's acceleration: nothing beyond it.
-  EXPECT_DOUBLE_EQ(command_beyond_carried(c, kHalvedPlus[0], kStepS, 1.5 * 0.0075), 0.0);
-  EXPECT_DOUBLE_EQ(command_beyond_carried(c, kHalvedPlus[0], kStepS, 0.02), 0.02 - 1.5 * 0.0075);
+  EXPECT_DOUBLE_EQ(command_beyond_carried(c, kHalvedPlus, kStepS, 1.5 * 0.0075), 0.0);
+  EXPECT_DOUBLE_EQ(command_beyond_carried(c, kHalvedPlus, kStepS, 0.02), 0.02 - 1.5 * 0.0075);
   EXPECT_EQ(open_for_step(c, Pulse{0, 0.0}, kHalvedPlus, kStepS).on_time_s, 1.0);
   const Pulse last = open_for_step(c, Pulse{0, 0.0}, kHalvedPlus, kStepS);
   EXPECT_EQ(last.direction, 1);
   EXPECT_DOUBLE_EQ(last.on_time_s, 0.5);
   EXPECT_EQ(c.direction, 0);
   EXPECT_EQ(open_for_step(c, Pulse{0, 0.0}, kHalvedPlus, kStepS).direction, 0);
-  EXPECT_EQ(command_beyond_carried(c, 0.0, kStepS, 0.003), 0.003);  // nothing under way
+  EXPECT_EQ(command_beyond_carried(c, kHalvedPlus, kStepS, 0.003), 0.003);  // nothing under way
 }
 
 // A command the other way shortens the opening under way impulse for impulse (the groups'
