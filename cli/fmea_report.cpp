@@ -258,9 +258,16 @@ std::string reading_paragraph(const model::InvSimParams& p) {
     measured = fmt::format("measured range and angles with 1-sigma errors {:g} m and {:g} deg ({})", noise.range_sigma_m,
                            deg(noise.angle_sigma_rad), draws);
   }
+  const std::string opening = paper.opening == model::InvSimOpening::kCarried
+                                  ? "an opening longer than the step is carried into the next steps"
+                                  : "an opening is cut at the step";
+  const std::string lateral = paper.lateral_time_constant_s > 0.0
+                                  ? fmt::format("y and z return to the axis with a {:g} s time constant",
+                                                paper.lateral_time_constant_s)
+                                  : std::string("y and z held at 0");
   return fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's opening "
-                     "dtau counting ceil(dtau / {} s); {}; {}. ",
-                     paper.pulse_width_s, paper.pulse_width_s, model, measured);
+                     "dtau counting ceil(dtau / {} s); {}; {}; {}; {}. ",
+                     paper.pulse_width_s, paper.pulse_width_s, model, opening, lateral, measured);
 }
 
 }  // namespace

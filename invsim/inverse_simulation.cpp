@@ -248,7 +248,8 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       const Vec6 x_d = expected_state(c, p, t);
       history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
-                          {pulses[0].direction, pulses[1].direction, pulses[2].direction}, counted});
+                          {step.commanded[0].direction, step.commanded[1].direction, step.commanded[2].direction},
+                          counted});
     }
     forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns);
     if (!finite_and_near(s)) {

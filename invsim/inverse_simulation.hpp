@@ -58,7 +58,7 @@ struct InvSimSample {
   double azimuth_rad;              // [rad]
   double elevation_rad;            // [rad]
   Vec3 u_body_mps2;                // [m/s^2] inverse model output
-  std::array<int, 3> pulse_direction;  // -1, 0, +1 per axis
+  std::array<int, 3> pulse_direction;  // -1, 0, +1 per axis: the step's command (what is counted)
   std::array<int, 3> pulse_count;      // pulses counted in the step per axis under the reading
 };
 

@@ -123,7 +123,8 @@ TEST(PaperReading, TheFaultedInverseModelOpensAWeakenedGroupTwiceAsLong) {
   const auto run = [](const std::string& inverse_model, const std::string& faults) {
     const auto loaded = io::load_invsim_file(
         "scenarios/manual_rvd.yaml", {"pulses.reading=paper", "pulses.paper.inverse_model=" + inverse_model,
-                                      "pulses.paper.measurement_noise.angle_sigma_deg=0", "faults=[" + faults + "]"});
+                                      "pulses.paper.measurement_noise.angle_sigma_deg=0",
+                                      "pulses.paper.measurement_noise.range_sigma_m=0", "faults=[" + faults + "]"});
     EXPECT_TRUE(loaded.errors.empty());
     return run_inverse_simulation(*loaded.params, loaded.faults);
   };
@@ -137,6 +138,33 @@ TEST(PaperReading, TheFaultedInverseModelOpensAWeakenedGroupTwiceAsLong) {
   EXPECT_TRUE(unknowing.docked);
   EXPECT_NE(unknowing.pulses[1].on_time_s[0], faulted.pulses[1].on_time_s[0]);
   EXPECT_EQ(run("nominal", "").pulses[1].on_time_s[0], nominal_y_pos_s);  // no fault: the same flight
+}
+
+}  // namespace
+}  // namespace chaser::invsim
+
+namespace chaser::invsim {
+namespace {
+
+// The history's pulses add up to the run's counts per axis and direction, as python/plot_invsim.py
+// checks against fmea.csv: under carried openings too, where a step's counted command and the
+// opening flown in it may point different ways (a command the other way shortens the opening under
+// way). Shipped paper reading, one draw (the history is a draw's), a fault that halves a group.
+TEST(PaperReading, TheHistoryCountsAddUpToTheRunsCounts) {
+  for (const char* opening : {"carried", "capped"}) for (const char* faults : {"", "f2~", "e1, e1~", "d1~"}) {
+    const auto loaded = io::load_invsim_file(
+        "scenarios/manual_rvd.yaml", {"pulses.reading=paper", std::string("pulses.paper.opening=") + opening,
+                                      "pulses.paper.measurement_noise.draws=1", std::string("faults=[") + faults + "]"});
+    ASSERT_TRUE(loaded.errors.empty());
+    std::vector<InvSimSample> history;
+    const InvSimResult r = run_inverse_simulation(*loaded.params, loaded.faults, &history);
+    std::array<std::array<int, 2>, 3> summed{};
+    for (const InvSimSample& s : history)
+      for (int axis = 0; axis < 3; ++axis)
+        if (s.pulse_direction[axis] != 0) summed[axis][s.pulse_direction[axis] > 0 ? 0 : 1] += s.pulse_count[axis];
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_EQ(summed[axis], r.pulses[axis].count) << opening << " [" << faults << "] axis " << axis;
+  }
 }
 
 }  // namespace
