@@ -155,15 +155,13 @@ def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache):
 
     best = evaluate(params)
     log(f"start {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
-    grids = {"w": W_GRID, 0: Q_GRID, 1: Q_GRID, 2: Q_GRID, "range": RANGE_GRID, "angle": ANGLE_GRID,
-             "lateral": LATERAL_GRID}
+    # The lateral time constant is held: the outer choice (calibrate).
+    grids = {"w": W_GRID, 0: Q_GRID, 1: Q_GRID, 2: Q_GRID, "range": RANGE_GRID, "angle": ANGLE_GRID}
     for sweep in range(MAX_SWEEPS):
         changed = False
         for name, grid in grids.items():
             if name == 0 and q_vx_max is not None:
                 grid = [q for q in grid if q <= q_vx_max]
-            if name == "lateral":
-                continue  # held: the outer choice (calibrate)
             for value in grid:
                 trial = with_value(params, name, value)
                 result = evaluate(trial)
