@@ -76,7 +76,10 @@ MAX_SWEEPS = 4
 START = {"w": 0.1, "qv": [1.0, 1.0, 1.0], "range": 0.0, "angle": 0.0, "lateral": 0.0}
 
 
-def run_nominal(chaser, scenario, params, workdir):
+def paper_study(scenario, params):
+    """The scenario as one study of the `paper` reading with the free choices `params`: the baseline
+    layout only (no configurations, no optimize section); seed, draws, inverse model and opening
+    rule taken from the scenario's pulses.paper block."""
     doc = dict(scenario)
     doc.pop("configurations", None)
     doc.pop("optimize", None)
@@ -92,12 +95,22 @@ def run_nominal(chaser, scenario, params, workdir):
                        "measurement_noise": {"range_sigma_m": params["range"],
                                              "angle_sigma_deg": params["angle"], "seed": seed, "draws": draws}}
     doc["pulses"] = pulses
+    return doc
+
+
+def run_fmea(chaser, doc, workdir, *flags):
+    """`chaser fmea` on the study `doc`; returns the path of its fmea.csv."""
     path = workdir / "scenario.yaml"
     path.write_text(yaml.safe_dump(doc, sort_keys=False))
     out = workdir / "out"
-    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2", "--nominal-only"], check=True,
+    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2", *flags], check=True,
                    stdout=subprocess.DEVNULL)
-    with open(out / "fmea.csv", newline="") as f:
+    return out / "fmea.csv"
+
+
+def run_nominal(chaser, scenario, params, workdir):
+    csv_path = run_fmea(chaser, paper_study(scenario, params), workdir, "--nominal-only")
+    with open(csv_path, newline="") as f:
         for row in csv.DictReader(f):
             if row["mode"] == "nominal":
                 return [int(row[d]) for d in DIRECTIONS], float(row["k_p"])

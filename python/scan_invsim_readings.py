@@ -27,7 +27,6 @@ import argparse
 import csv
 import itertools
 import pathlib
-import subprocess
 import sys
 import tempfile
 
@@ -50,12 +49,7 @@ def run_fmea(chaser, scenario, w, qv, workdir, k=None, angle_deg=None):
     doc["pulses"] = dict(doc["pulses"], reading="paper", paper=paper)
     if k is not None:
         doc["pulses"].update(time_sensitivity=k, acceleration_sensitivity=k)
-    path = workdir / "scenario.yaml"
-    path.write_text(yaml.safe_dump(doc, sort_keys=False))
-    out = workdir / "out"
-    subprocess.run([chaser, "fmea", str(path), "--out", str(out), "--threads", "2"], check=True,
-                   stdout=subprocess.DEVNULL)
-    return cal.read_layout(out / "fmea.csv")
+    return cal.read_layout(cal.run_fmea(chaser, doc, workdir))
 
 
 def grid():

@@ -1,0 +1,74 @@
+"""python/scan_invsim_mass.py: the chaser's mass and the x and y groups' lever arms against issue 21's
+target 6 (docs/invsim.md, "The chaser's mass").
+
+The layout edits are checked against the shipped scenario (its own positions are the arms 1.4 m and
+1.6 m), and two of the document's findings are flown under `smooth` (0.1 s each): the shipped layout
+loses exactly the paper's four Table 5 modes at 8,000 kg and none at 2,000 kg.
+"""
+import copy
+import sys
+
+import yaml
+
+from conftest import REPO
+
+sys.path.insert(0, str(REPO / "python"))
+import calibrate_invsim as cal  # noqa: E402
+import scan_invsim_mass as sm  # noqa: E402
+
+SCENARIO = REPO / "scenarios" / "manual_rvd.yaml"
+MOVED = {"d1", "d2", "d1~", "d2~", "e1", "e2", "e1~", "e2~"}
+
+
+def shipped():
+    return yaml.safe_load(SCENARIO.read_text())
+
+
+def test_the_shipped_layout_is_the_arms_of_1_4_and_1_6_m():
+    doc = shipped()
+    assert sm.with_arms(doc, 1.4, 1.6)["thrusters"] == doc["thrusters"]
+
+
+def test_with_arms_moves_only_the_lever_arms_of_the_x_and_y_groups():
+    doc = shipped()
+    before = copy.deepcopy(doc)
+    moved = {t["name"]: t["position_body_m"] for t in sm.with_arms(doc, 3.0, 2.5)["thrusters"]}
+    assert doc == before  # the input is not touched
+    for t in before["thrusters"]:
+        p, q = t["position_body_m"], moved[t["name"]]
+        if t["name"] not in MOVED:
+            assert q == p
+        elif t["name"].startswith("d"):  # force along x: only |y| sets the yaw moment
+            assert (q[0], abs(q[1]), q[2], q[1] * p[1] > 0) == (p[0], 3.0, p[2], True)
+        else:  # force along y: only |x| sets the yaw moment
+            assert (abs(q[0]), q[1], q[2], q[0] * p[0] > 0) == (2.5, p[1], p[2], True)
+
+
+def test_with_mass_changes_the_mass_only():
+    doc = shipped()
+    heavy = sm.with_mass(doc, 2000.0)
+    assert heavy["chaser"]["mass_kg"] == 2000.0 and doc["chaser"]["mass_kg"] == 8000.0
+    assert heavy["chaser"]["inertia_kgm2"] == doc["chaser"]["inertia_kgm2"]
+    assert {k: v for k, v in heavy.items() if k != "chaser"} == {k: v for k, v in doc.items() if k != "chaser"}
+
+
+def test_lost_table5_reads_the_multi_axis_rows_only():
+    rows = {"nominal": {"table": "nominal", "controllable": "true"},
+            "d1": {"table": "table2", "controllable": "false"},
+            "d1/d2~+e2/e1~": {"table": "table5", "controllable": "false"},
+            "d1/d1~+e1/e1~": {"table": "table5", "controllable": "true"}}
+    assert sm.lost_table5(rows) == {"d1/d2~+e2/e1~"}
+
+
+def lost_under_smooth(cli, doc, workdir):
+    study = dict(doc)
+    study.pop("configurations")
+    study.pop("optimize")
+    return sm.lost_table5(cal.read_layout(cal.run_fmea(str(cli), study, workdir)))
+
+
+def test_the_shipped_layout_loses_the_paper_four_at_8000_kg_and_none_at_2000_kg(cli, tmp_path):
+    doc = shipped()
+    assert doc["pulses"]["reading"] == "smooth"
+    assert lost_under_smooth(cli, doc, tmp_path) == cal.PAPER_LOST
+    assert lost_under_smooth(cli, sm.with_mass(doc, 2000.0), tmp_path) == set()
