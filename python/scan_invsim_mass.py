@@ -2,7 +2,7 @@
 """The chaser's mass, which Zhou 2018 does not print, against issue 21's targets: an exploration, not
 a calibration (docs/invsim.md, "The chaser's mass").
 
-Usage: /usr/bin/python3 python/scan_invsim_mass.py [SCENARIO] [--masses M,M,...] [--arms]
+Usage: /usr/bin/python3 python/scan_invsim_mass.py [SCENARIO] [--masses M,M,...] [--lateral T] [--arms]
            [--arms-d D,D,...] [--arms-e E,E,...] [--chaser BIN] [--csv OUT]
 
 For each mass (the inertia and every thrust stay the scenario's: the paper prints the thrusts, 60
@@ -60,10 +60,11 @@ def lost_table5(rows):
     return {mode for mode, row in rows.items() if row["table"] == "table5" and row["controllable"] != "true"}
 
 
-def study_mass(chaser, scenario, mass_kg, workdir):
-    """Calibrate at this mass on the nominal row, fly the baseline's modes, score the targets."""
+def study_mass(chaser, scenario, mass_kg, workdir, lateral=None):
+    """Calibrate at this mass on the nominal row (the lateral time constant held at `lateral` if
+    given), fly the baseline's modes, score the targets."""
     doc = with_mass(scenario, mass_kg)
-    params, (j, counts, k_p), runs = cal.calibrate(chaser, doc, workdir, log=lambda _line: None)
+    params, (j, counts, k_p), runs = cal.calibrate(chaser, doc, workdir, log=lambda _line: None, lateral=lateral)
     rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(doc, params), workdir))
     return doc, params, j, cal.targets(rows)
 
@@ -92,6 +93,8 @@ def main():
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--masses", type=floats, default=DEFAULT_MASSES, help="chaser masses [kg]")
+    ap.add_argument("--lateral", type=float, metavar="T",
+                    help="hold the lateral time constant at T [s] in every calibration (0: y held at 0)")
     ap.add_argument("--arms", action="store_true", help="also scan the x and y groups' lever arms")
     ap.add_argument("--arms-d", type=floats, default=DEFAULT_ARMS_D, help="|y| of d1, d2, d1~, d2~ [m]")
     ap.add_argument("--arms-e", type=floats, default=DEFAULT_ARMS_E, help="|x| of e1, e2, e1~, e2~ [m]")
@@ -109,7 +112,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         workdir = pathlib.Path(tmp)
         for mass in args.masses:
-            doc, params, j, t = study_mass(args.chaser, scenario, mass, workdir)
+            doc, params, j, t = study_mass(args.chaser, scenario, mass, workdir, args.lateral)
             nominal = t["table4"][0]["ours"]
             ratios = t["table5_ratios"]
             span = f"{min(ratios):.2f}-{max(ratios):.2f}x" if ratios else "none flown"
