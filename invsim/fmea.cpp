@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <thread>
 #include <utility>
@@ -29,6 +30,35 @@ std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<Fm
   return std::move(run_fmea(std::vector<model::InvSimParams>{p}, cases, threads).front());
 }
 
+namespace {
+
+// Runs job(k) for k = 0 .. total - 1 on `threads` workers, each taking the next k.
+template <typename Job>
+void parallel_for(std::size_t total, int threads, const Job& job) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&]() {
+    for (std::size_t k = next++; k < total; k = next++) job(k);
+  };
+  const std::size_t workers =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, std::max<std::size_t>(total, 1));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+}
+
+FmeaRow judged_row(const model::InvSimParams& p, const FmeaCase& c, InvSimResult result) {
+  FmeaRow row;
+  row.fmea_case = c;
+  row.result = std::move(result);
+  row.deviation_ratio = deviation_ratio(p.sensor, row.result);
+  row.controllable = is_controllable(row.result);
+  row.risk = classify_risk(p.sensor, row.result);
+  return row;
+}
+
+}  // namespace
+
 std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams>& layouts,
                                            const std::vector<FmeaCase>& cases, int threads,
                                            std::vector<std::vector<std::vector<InvSimSample>>>* histories) {
@@ -37,26 +67,37 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
     histories->assign(layouts.size(), std::vector<std::vector<InvSimSample>>(cases.size()));
   // Each worker takes the next (layout, case) pair; every run is independent of the others and of
   // the order, so the rows do not depend on the number of workers.
-  const std::size_t total = layouts.size() * cases.size();
-  std::atomic<std::size_t> next{0};
-  auto work = [&]() {
-    for (std::size_t k = next++; k < total; k = next++) {
-      const std::size_t l = k / cases.size(), i = k % cases.size();
-      const model::InvSimParams& p = layouts[l];
-      FmeaRow& row = rows[l][i];
-      row.fmea_case = cases[i];
-      row.result = run_over_noise_draws(p, cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr);
-      row.deviation_ratio = deviation_ratio(p.sensor, row.result);
-      row.controllable = is_controllable(row.result);
-      row.risk = classify_risk(p.sensor, row.result);
-    }
-  };
-  const std::size_t workers =
-      std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, std::max<std::size_t>(total, 1));
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  parallel_for(layouts.size() * cases.size(), threads, [&](std::size_t k) {
+    const std::size_t l = k / cases.size(), i = k % cases.size();
+    rows[l][i] = judged_row(layouts[l], cases[i],
+                            run_over_noise_draws(layouts[l], cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr));
+  });
+  for (auto& layout_rows : rows) rank_by_risk(layout_rows);
+  return rows;
+}
+
+std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<model::InvSimParams>& layouts,
+                                                             const std::vector<FmeaCase>& cases, int threads) {
+  // One flight per distinct thruster signature, in (layout, case) order of first appearance.
+  std::map<std::vector<double>, std::size_t> flight_of;
+  std::vector<std::size_t> flight(layouts.size() * cases.size());
+  std::vector<std::size_t> first_pair;
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    const std::size_t l = k / cases.size(), i = k % cases.size();
+    const auto [it, added] = flight_of.try_emplace(thruster_signature(layouts[l], cases[i].mode.faults), first_pair.size());
+    if (added) first_pair.push_back(k);
+    flight[k] = it->second;
+  }
+  std::vector<InvSimResult> results(first_pair.size());
+  parallel_for(first_pair.size(), threads, [&](std::size_t f) {
+    const std::size_t l = first_pair[f] / cases.size(), i = first_pair[f] % cases.size();
+    results[f] = run_over_noise_draws(layouts[l], cases[i].mode.faults, nullptr);
+  });
+  std::vector<std::vector<FmeaRow>> rows(layouts.size(), std::vector<FmeaRow>(cases.size()));
+  for (std::size_t k = 0; k < flight.size(); ++k) {
+    const std::size_t l = k / cases.size(), i = k % cases.size();
+    rows[l][i] = judged_row(layouts[l], cases[i], results[flight[k]]);
+  }
   for (auto& layout_rows : rows) rank_by_risk(layout_rows);
   return rows;
 }

@@ -60,6 +60,13 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
                                            const std::vector<FmeaCase>& cases, int threads,
                                            std::vector<std::vector<std::vector<InvSimSample>>>* histories = nullptr);
 
+// run_fmea's rows, bit for bit, for layouts that differ only in their thrusters (configurations of
+// one scenario: model::apply_configuration): a (layout, case) pair whose thruster signature
+// (invsim/inverse_simulation.hpp) an earlier pair has is not flown again but copied. In `chaser fmea
+// --optimize` the shipped choices leave 939 distinct flights of 1,968 (48 layouts x 41 modes).
+std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<model::InvSimParams>& layouts,
+                                                             const std::vector<FmeaCase>& cases, int threads);
+
 // Judging one result, and the ranking of all rows (sets FmeaRow::rank).
 double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResult& r);
 bool is_controllable(const InvSimResult& r);

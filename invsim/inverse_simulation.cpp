@@ -23,7 +23,8 @@ constexpr double kDivergedRangeM = 1e4;  // [m] beyond this the approach has cle
 
 using GroupWrenches = std::array<std::array<Wrench, 2>, 3>;  // [axis][0: +, 1: -]
 
-// Everything derived once from the parameters and the fault set.
+// Everything derived once from the parameters and the fault set. A field derived from the thrusters
+// belongs in thruster_signature too (the flights --optimize shares between layouts).
 struct RunContext {
   RvdConstants rvd;
   InverseModel inverse;
@@ -216,6 +217,26 @@ void finish_result(const model::InvSimParams& p, const RvdState& s, double trans
 }
 
 }  // namespace
+
+std::vector<double> thruster_signature(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
+  const RunContext c = make_context(p, faults);
+  std::vector<double> s;
+  s.reserve(2 * 3 * 2 * 7 + 3 * 2 * 2 + 3);
+  for (const GroupWrenches* groups : {&c.translation, &c.attitude})
+    for (const auto& axis : *groups)
+      for (const Wrench& w : axis) {
+        s.insert(s.end(), w.force_body_N.data(), w.force_body_N.data() + 3);
+        s.insert(s.end(), w.torque_body_Nm.data(), w.torque_body_Nm.data() + 3);
+        s.push_back(w.thrust_sum_N);
+      }
+  for (int axis = 0; axis < 3; ++axis)
+    for (int d = 0; d < 2; ++d) {
+      s.push_back(c.u_max_pilot[axis][d]);
+      s.push_back(c.u_max_nominal[axis][d]);
+    }
+  s.insert(s.end(), c.a0_radps2.data(), c.a0_radps2.data() + 3);
+  return s;
+}
 
 InvSimResult run_inverse_simulation(const model::InvSimParams& p,
                                     const model::InvSimFaultSet& faults,

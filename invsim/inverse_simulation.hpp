@@ -66,4 +66,11 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& params,
                                     const model::InvSimFaultSet& faults,
                                     std::vector<InvSimSample>* history = nullptr);
 
+// What a run takes from its thrusters and their faults: every group's wrench (force, torque, summed
+// thrust) and acceleration that the run derives from them before its first step, in a fixed order.
+// Two runs whose parameters differ only in their thrusters fly bit for bit alike when their
+// signatures are equal (==, so -0 and +0 alike): moving both thrusters of a healthy, balanced pair,
+// say, changes no wrench. `chaser fmea --optimize` flies each such flight once (invsim/fmea.hpp).
+std::vector<double> thruster_signature(const model::InvSimParams& params, const model::InvSimFaultSet& faults);
+
 }  // namespace chaser::invsim

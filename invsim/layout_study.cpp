@@ -63,7 +63,7 @@ std::vector<LayoutCandidate> search_layouts(const model::InvSimParams& base,
     configurations.push_back(model::candidate(choices, i));
     layouts.push_back(model::apply_configuration(base, configurations.back()));
   }
-  const std::vector<std::vector<FmeaRow>> rows = run_fmea(layouts, cases, threads);
+  const std::vector<std::vector<FmeaRow>> rows = run_fmea_of_configurations(layouts, cases, threads);
   std::vector<LayoutSummary> summaries;
   for (const auto& layout_rows : rows) summaries.push_back(summarize_layout(layout_rows));
   std::vector<LayoutCandidate> ranked;

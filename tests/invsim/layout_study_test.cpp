@@ -1,5 +1,9 @@
 #include "invsim/layout_study.hpp"
 
+#include <set>
+#include <string>
+#include <tuple>
+
 #include <gtest/gtest.h>
 
 #include "io/invsim_loader.hpp"
@@ -126,6 +130,85 @@ TEST(LayoutStudy, SearchIsCompleteOrderedAndThreadIndependent) {
   // Only the baseline's candidate (25 N, x-o-y) loses the mode; it must come last.
   EXPECT_EQ(one.back().configuration.name, "attitude_thrust=25N, d_forward=xoy");
   EXPECT_EQ(one.back().summary.per_class[2], 1);
+}
+
+}  // namespace
+}  // namespace chaser::invsim
+
+namespace chaser::invsim {
+namespace {
+
+std::vector<model::InvSimParams> all_candidates(const io::InvSimLoadResult& loaded) {
+  std::vector<model::InvSimParams> layouts;
+  for (std::size_t i = 0; i < model::candidate_count(loaded.study.free_choices); ++i)
+    layouts.push_back(model::apply_configuration(*loaded.params, model::candidate(loaded.study.free_choices, i)));
+  return layouts;
+}
+
+void expect_same_result(const InvSimResult& a, const InvSimResult& b, const std::string& what) {
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_EQ(a.pulses[axis].count, b.pulses[axis].count) << what;
+    EXPECT_EQ(a.pulses[axis].on_time_s, b.pulses[axis].on_time_s) << what;  // bitwise
+  }
+  EXPECT_EQ(a.k_p, b.k_p) << what;
+  EXPECT_EQ(a.propellant_kg, b.propellant_kg) << what;
+  EXPECT_EQ(a.attitude_propellant_kg, b.attitude_propellant_kg) << what;
+  EXPECT_EQ(a.peak_azimuth_rad, b.peak_azimuth_rad) << what;
+  EXPECT_EQ(a.peak_elevation_rad, b.peak_elevation_rad) << what;
+  EXPECT_EQ(a.peak_attitude_rad, b.peak_attitude_rad) << what;
+  EXPECT_EQ(a.attitude_on_time_s, b.attitude_on_time_s) << what;
+  EXPECT_EQ(a.final_r_hill_m, b.final_r_hill_m) << what;
+  EXPECT_EQ(a.final_v_hill_mps, b.final_v_hill_mps) << what;
+  EXPECT_EQ(std::make_tuple(a.target_always_in_view, a.attitude_within_limits, a.docked, a.diverged),
+            std::make_tuple(b.target_always_in_view, b.attitude_within_limits, b.docked, b.diverged))
+      << what;
+}
+
+// Moving both thrusters of a healthy pair (d1, d2 from the x-o-y into the x-o-z plane, Scheme II)
+// leaves every group's wrench as it was: the signatures are equal and the runs agree bit for bit.
+// With d1 lost the pair is no longer balanced, and the signature tells the layouts apart.
+TEST(LayoutStudy, AHealthyBalancedPairMovedKeepsTheSignatureAndTheFlight) {
+  const model::InvSimParams base = *shipped().params;
+  model::InvSimParams moved = base;
+  std::size_t d1 = 0;
+  for (std::size_t i = 0; i < moved.thrusters.size(); ++i) {
+    if (moved.thrusters[i].name == "d1") moved.thrusters[i].position_body_m = Vec3(-1.5, 0.0, 0.7), d1 = i;
+    if (moved.thrusters[i].name == "d2") moved.thrusters[i].position_body_m = Vec3(-1.5, 0.0, -0.7);
+  }
+  const model::InvSimFaultSet healthy{}, e1_lost{1ULL << (d1 + 4)}, d1_lost{1ULL << d1};
+  ASSERT_EQ(base.thrusters[d1 + 4].name, "e1");
+  for (const model::InvSimFaultSet& f : {healthy, e1_lost}) {
+    EXPECT_EQ(thruster_signature(base, f), thruster_signature(moved, f));
+    expect_same_result(run_inverse_simulation(base, f), run_inverse_simulation(moved, f), "d pair moved");
+  }
+  EXPECT_NE(thruster_signature(base, d1_lost), thruster_signature(moved, d1_lost));
+  EXPECT_NE(run_inverse_simulation(base, d1_lost).peak_attitude_rad, run_inverse_simulation(moved, d1_lost).peak_attitude_rad);
+}
+
+// The search's shared flights give run_fmea's rows bit for bit (every shipped candidate; the
+// nominal, Table 2's first seven rows and Table 5's first six), and the shipped choices leave 939
+// distinct flights of the 48 x 41 (invsim/fmea.hpp).
+TEST(LayoutStudy, SharedFlightsGiveTheRowsOfEveryFlight) {
+  const io::InvSimLoadResult loaded = shipped();
+  const std::vector<model::InvSimParams> layouts = all_candidates(loaded);
+  const std::vector<FmeaCase> all = fmea_cases(*loaded.params, {});
+  std::set<std::vector<double>> distinct;
+  for (const model::InvSimParams& p : layouts)
+    for (const FmeaCase& c : all) distinct.insert(thruster_signature(p, c.mode.faults));
+  EXPECT_EQ(layouts.size() * all.size(), 1968u);
+  EXPECT_EQ(distinct.size(), 939u);
+  std::vector<FmeaCase> cases(all.begin(), all.begin() + 8);
+  cases.insert(cases.end(), all.begin() + 25, all.begin() + 31);
+  ASSERT_EQ(cases.back().table, FmeaTable::kMultiAxis);
+  const auto every = run_fmea(layouts, cases, 2);
+  const auto shared = run_fmea_of_configurations(layouts, cases, 2);
+  for (std::size_t l = 0; l < layouts.size(); ++l)
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const std::string what = std::to_string(l) + " " + cases[i].mode.label;
+      expect_same_result(shared[l][i].result, every[l][i].result, what);
+      EXPECT_EQ(shared[l][i].rank, every[l][i].rank) << what;
+      EXPECT_EQ(shared[l][i].risk, every[l][i].risk) << what;
+    }
 }
 
 }  // namespace
