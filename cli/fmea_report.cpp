@@ -202,7 +202,10 @@ std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, boo
   for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
   std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, three_axis);
   if (nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
-  auto rows = invsim::run_fmea(params, cases, threads, histories);
+  // The layouts are configurations of one scenario: a flight they share is flown once, unless every
+  // pair's history is asked for.
+  auto rows = histories == nullptr ? invsim::run_fmea_of_configurations(params, cases, threads)
+                                   : invsim::run_fmea(params, cases, threads, histories);
   for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
   return layouts;
 }
