@@ -166,14 +166,13 @@ void record_limits(const model::InvSimParams& p, const RvdState& s, InvSimResult
   if (euler.cwiseAbs().maxCoeff() > p.sensor.attitude_limit_rad) r.attitude_within_limits = false;
 }
 
-// Step 4: the outer loop over one IS step.
+// Step 4: the outer loop over one IS step. `euler` holds the Euler angles of s on entry and on
+// return: the angles record_limits takes at the end of a period are the next period's start.
 void forward_step(const RunContext& c, const model::InvSimParams& p,
                   const std::array<Pulse, 3>& pulses, RvdState& s, InvSimResult& r,
-                  double& translation_fuel_Ns, double& attitude_fuel_Ns) {
+                  double& translation_fuel_Ns, double& attitude_fuel_Ns, Vec3& euler) {
   const double h = p.step_s / static_cast<double>(c.sub_steps);
   for (long j = 0; j < c.sub_steps; ++j) {
-    const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
-    const Vec3 euler = euler321_from_matrix(r_hill_from_body);
     const Vec3 rate = relative_rate_body(c.rvd, s);
     std::array<PhasePlaneCommand, 3> attitude{};
     for (int axis = 0; axis < 3; ++axis) {
@@ -183,8 +182,7 @@ void forward_step(const RunContext& c, const model::InvSimParams& p,
     propagate_period(c, pulses, static_cast<double>(j) * h, h, attitude, s, translation_fuel_Ns,
                      attitude_fuel_Ns);
     LineOfSight los{};
-    Vec3 e;
-    record_limits(p, s, r, los, e);
+    record_limits(p, s, r, los, euler);
   }
 }
 
@@ -247,6 +245,7 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
   double translation_fuel_Ns = 0.0, attitude_fuel_Ns = 0.0;
   MeasurementLink link(c.choices.measurement_noise);
   std::array<CarriedOpening, 3> carried{};
+  Vec3 euler = euler321_from_matrix(s.q_hill_from_body.toRotationMatrix());  // kept by forward_step
   for (long k = 0; k < c.steps; ++k) {
     const double t = static_cast<double>(k) * p.step_s;
     Vec3 u_body;
@@ -263,16 +262,16 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
     }
     if (history != nullptr) {
       LineOfSight los{};
-      Vec3 euler;
+      Vec3 sample_euler;
       InvSimResult scratch;
-      record_limits(p, s, scratch, los, euler);
+      record_limits(p, s, scratch, los, sample_euler);
       const Vec6 x_d = expected_state(c, p, t);
-      history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
+      history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), sample_euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
                           {step.commanded[0].direction, step.commanded[1].direction, step.commanded[2].direction},
                           counted});
     }
-    forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns);
+    forward_step(c, p, pulses, s, r, translation_fuel_Ns, attitude_fuel_Ns, euler);
     if (!finite_and_near(s)) {
       r.diverged = true;
       break;
