@@ -194,7 +194,7 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 
 std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
                                          std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories,
-                                         bool nominal_only) {
+                                         bool nominal_only, std::size_t* flights) {
   std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
   for (const model::InvSimConfiguration& c : loaded.study.configurations)
     layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
@@ -204,7 +204,8 @@ std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, boo
   if (nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
   // The layouts are configurations of one scenario: a flight they share is flown once, unless every
   // pair's history is asked for.
-  auto rows = histories == nullptr ? invsim::run_fmea_of_configurations(params, cases, threads)
+  if (flights != nullptr) *flights = params.size() * cases.size();
+  auto rows = histories == nullptr ? invsim::run_fmea_of_configurations(params, cases, threads, flights)
                                    : invsim::run_fmea(params, cases, threads, histories);
   for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
   return layouts;

@@ -25,10 +25,12 @@ struct FmeaLayout {
 // The FMEA of `chaser fmea` without --optimize: the scenario's own layout ("baseline") and each of
 // its configurations, every mode of invsim::fmea_cases on `threads` workers, rows ranked within each
 // layout. With `histories`, (*histories)[l][i] receives the per-step history of mode i on layout l.
-// `nominal_only`: the nominal case alone (a calibration reads nothing else).
+// `nominal_only`: the nominal case alone (a calibration reads nothing else). Without histories the
+// layouts share their flights (invsim::run_fmea_of_configurations); `flights`, when given, receives
+// the number flown.
 std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
                                          std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories,
-                                         bool nominal_only = false);
+                                         bool nominal_only = false, std::size_t* flights = nullptr);
 
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts);
 // `optimized`: the --optimize candidates, best first (nullptr: no search); `keep` of them are listed.

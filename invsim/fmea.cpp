@@ -77,7 +77,8 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
 }
 
 std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<model::InvSimParams>& layouts,
-                                                             const std::vector<FmeaCase>& cases, int threads) {
+                                                             const std::vector<FmeaCase>& cases, int threads,
+                                                             std::size_t* flights) {
   // One flight per distinct thruster signature, in (layout, case) order of first appearance.
   std::map<std::vector<double>, std::size_t> flight_of;
   std::vector<std::size_t> flight(layouts.size() * cases.size());
@@ -88,6 +89,7 @@ std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<m
     if (added) first_pair.push_back(k);
     flight[k] = it->second;
   }
+  if (flights != nullptr) *flights = first_pair.size();
   std::vector<InvSimResult> results(first_pair.size());
   parallel_for(first_pair.size(), threads, [&](std::size_t f) {
     const std::size_t l = first_pair[f] / cases.size(), i = first_pair[f] % cases.size();

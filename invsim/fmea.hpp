@@ -64,8 +64,10 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
 // one scenario: model::apply_configuration): a (layout, case) pair whose thruster signature
 // (invsim/inverse_simulation.hpp) an earlier pair has is not flown again but copied. In `chaser fmea
 // --optimize` the shipped choices leave 939 distinct flights of 1,968 (48 layouts x 41 modes).
+// `flights`, when given, receives the number flown.
 std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<model::InvSimParams>& layouts,
-                                                             const std::vector<FmeaCase>& cases, int threads);
+                                                             const std::vector<FmeaCase>& cases, int threads,
+                                                             std::size_t* flights = nullptr);
 
 // Judging one result, and the ranking of all rows (sets FmeaRow::rank).
 double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResult& r);

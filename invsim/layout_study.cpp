@@ -55,7 +55,8 @@ std::vector<std::size_t> layout_order(const std::vector<LayoutSummary>& summarie
 
 std::vector<LayoutCandidate> search_layouts(const model::InvSimParams& base,
                                             const std::vector<model::InvSimFreeChoice>& choices,
-                                            const std::vector<FmeaCase>& cases, int threads) {
+                                            const std::vector<FmeaCase>& cases, int threads,
+                                            std::size_t* flights) {
   const std::size_t n = model::candidate_count(choices);
   std::vector<model::InvSimConfiguration> configurations;
   std::vector<model::InvSimParams> layouts;
@@ -63,7 +64,7 @@ std::vector<LayoutCandidate> search_layouts(const model::InvSimParams& base,
     configurations.push_back(model::candidate(choices, i));
     layouts.push_back(model::apply_configuration(base, configurations.back()));
   }
-  const std::vector<std::vector<FmeaRow>> rows = run_fmea_of_configurations(layouts, cases, threads);
+  const std::vector<std::vector<FmeaRow>> rows = run_fmea_of_configurations(layouts, cases, threads, flights);
   std::vector<LayoutSummary> summaries;
   for (const auto& layout_rows : rows) summaries.push_back(summarize_layout(layout_rows));
   std::vector<LayoutCandidate> ranked;

@@ -41,9 +41,11 @@ struct LayoutCandidate {
 };
 
 // `chaser fmea --optimize`: every candidate of the free choices (model::candidate) flown through
-// `cases` on `threads` workers; all candidates, best first (ties in enumeration order).
+// `cases` on `threads` workers; all candidates, best first (ties in enumeration order). `flights`,
+// when given, receives the number of distinct flights flown (invsim/fmea.hpp).
 std::vector<LayoutCandidate> search_layouts(const model::InvSimParams& base,
                                             const std::vector<model::InvSimFreeChoice>& choices,
-                                            const std::vector<FmeaCase>& cases, int threads);
+                                            const std::vector<FmeaCase>& cases, int threads,
+                                            std::size_t* flights = nullptr);
 
 }  // namespace chaser::invsim

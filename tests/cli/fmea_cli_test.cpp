@@ -45,7 +45,7 @@ TEST(FmeaCli, ShippedScenarioWritesOneRowPerLayoutAndMode) {
   const fs::path out = fresh_dir("ok");
   const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --threads 2 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("123 runs (3 layouts x 41 modes)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("3 layouts x 41 modes = 123 rows, 110 flown"), std::string::npos) << r.output;
   const std::vector<std::string> csv = lines(read_file(out / "fmea.csv"));
   ASSERT_EQ(csv.size(), 1u + 3u * 41u);
   EXPECT_EQ(csv[0].rfind("configuration,mode,table,failed,x_pos,x_neg,y_pos,y_neg,z_pos,z_neg,total_pulses,k_p,", 0), 0u);
@@ -69,7 +69,7 @@ TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
   const fs::path out = fresh_dir("opt");
   const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --optimize --history --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("--optimize: 48 candidates"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--optimize: 48 candidates x 41 modes, 939 flown"), std::string::npos) << r.output;
   const std::vector<std::string> ranked = lines(read_file(out / "optimize.csv"));
   ASSERT_EQ(ranked.size(), 1u + 48u);
   EXPECT_EQ(ranked[1].rfind("1,\"attitude_thrust=", 0), 0u) << ranked[1];
