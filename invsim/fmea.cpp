@@ -85,7 +85,11 @@ std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<m
   std::vector<std::size_t> first_pair;
   for (std::size_t k = 0; k < flight.size(); ++k) {
     const std::size_t l = k / cases.size(), i = k % cases.size();
-    const auto [it, added] = flight_of.try_emplace(thruster_signature(layouts[l], cases[i].mode.faults), first_pair.size());
+    std::vector<double> signature = thruster_signature(layouts[l], cases[i].mode.faults);
+    // A non-finite value would break the map's order: such a pair is flown on its own.
+    if (!std::all_of(signature.begin(), signature.end(), [](double v) { return std::isfinite(v); }))
+      signature.assign({std::numeric_limits<double>::infinity(), static_cast<double>(k)});
+    const auto [it, added] = flight_of.try_emplace(std::move(signature), first_pair.size());
     if (added) first_pair.push_back(k);
     flight[k] = it->second;
   }

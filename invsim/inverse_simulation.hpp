@@ -68,9 +68,10 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& params,
 
 // What a run takes from its thrusters and their faults: every group's wrench (force, torque, summed
 // thrust) and acceleration that the run derives from them before its first step, in a fixed order.
-// Two runs whose parameters differ only in their thrusters fly bit for bit alike when their
-// signatures are equal (==, so -0 and +0 alike): moving both thrusters of a healthy, balanced pair,
-// say, changes no wrench. `chaser fmea --optimize` flies each such flight once (invsim/fmea.hpp).
+// Two runs whose parameters differ only in their thrusters fly alike when their signatures are
+// equal: moving both thrusters of a healthy, balanced pair, say, changes no wrench. Equal is ==, so
+// a zero of either sign matches (a zero torque adds nothing to a nonzero one; the shipped studies'
+// files are byte-identical either way). `chaser fmea` flies each such flight once (invsim/fmea.hpp).
 std::vector<double> thruster_signature(const model::InvSimParams& params, const model::InvSimFaultSet& faults);
 
 }  // namespace chaser::invsim
