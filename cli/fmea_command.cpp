@@ -31,14 +31,13 @@ bool write_text(const std::filesystem::path& path, const std::string& text) {
 
 // `flights`: the distinct flights flown for the layouts' rows (invsim::run_fmea_of_configurations).
 void print_summary(const std::vector<FmeaLayout>& layouts, std::size_t flights, double seconds, int threads) {
-  std::size_t row_count = 0;
-  for (const FmeaLayout& layout : layouts) row_count += layout.rows.size();
   const model::InvSimParams& p = layouts.front().params;
   const std::uint64_t draws = invsim::noise_draws_per_mode(p);
-  const std::size_t modes = layouts.front().rows.size();
+  const std::size_t modes = layouts.front().rows.size();  // every layout flies the same modes
   std::cout << fmt::format("chaser fmea: {} layout{} x {} mode{} = {} rows, {} flown{} in {:.2f} s on {} thread{}; "
                            "pulses.reading {}\n",
-                           layouts.size(), layouts.size() == 1 ? "" : "s", modes, modes == 1 ? "" : "s", row_count, flights,
+                           layouts.size(), layouts.size() == 1 ? "" : "s", modes, modes == 1 ? "" : "s",
+                           layouts.size() * modes, flights,
                            draws > 1 ? fmt::format(" x {} noise draws", draws) : std::string(), seconds, threads,
                            threads == 1 ? "" : "s", invsim::reading_name(p.pulses.reading));
   for (const FmeaLayout& layout : layouts) {
@@ -88,12 +87,13 @@ int fmea_command(const FmeaArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<std::vector<invsim::InvSimSample>>> histories;
   std::size_t flights = 0, search_flights = 0;
-  const std::vector<FmeaLayout> layouts = run_fmea_layouts(loaded, args.three_axis, threads,
-                                                           args.history ? &histories : nullptr, args.nominal_only, &flights);
+  const std::vector<FmeaLayout> layouts = run_fmea_layouts(
+      loaded, args.three_axis, threads, args.history ? &histories : nullptr, args.nominal_only, &flights);
   std::vector<invsim::LayoutCandidate> optimized;
-  const std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis);
   if (args.optimize)
-    optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices, cases, threads, &search_flights);
+    optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,
+                                       invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis), threads,
+                                       &search_flights);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path out(args.out_dir);
@@ -115,7 +115,8 @@ int fmea_command(const FmeaArgs& args) {
   print_summary(layouts, flights, seconds, threads);
   if (args.optimize && !optimized.empty())
     std::cout << fmt::format("  --optimize: {} candidates x {} modes, {} flown; best: {} (class III {}, {:.1f} kg)\n",
-                             optimized.size(), cases.size(), search_flights, optimized.front().configuration.name,
+                             optimized.size(), layouts.front().rows.size(), search_flights,
+                             optimized.front().configuration.name,
                              optimized.front().summary.per_class[2], optimized.front().summary.propellant_kg);
   std::cout << fmt::format("  wrote {}{}\n", (out / "fmea.md").string(),
                            args.history ? " and " + (out / "history").string() : std::string());

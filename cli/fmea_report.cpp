@@ -204,9 +204,13 @@ std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, boo
   if (nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
   // The layouts are configurations of one scenario: a flight they share is flown once, unless every
   // pair's history is asked for.
-  if (flights != nullptr) *flights = params.size() * cases.size();
-  auto rows = histories == nullptr ? invsim::run_fmea_of_configurations(params, cases, threads, flights)
-                                   : invsim::run_fmea(params, cases, threads, histories);
+  std::vector<std::vector<invsim::FmeaRow>> rows;
+  if (histories == nullptr) {
+    rows = invsim::run_fmea_of_configurations(params, cases, threads, flights);
+  } else {
+    rows = invsim::run_fmea(params, cases, threads, histories);
+    if (flights != nullptr) *flights = params.size() * cases.size();
+  }
   for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
   return layouts;
 }

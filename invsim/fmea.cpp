@@ -69,8 +69,8 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
   // the order, so the rows do not depend on the number of workers.
   parallel_for(layouts.size() * cases.size(), threads, [&](std::size_t k) {
     const std::size_t l = k / cases.size(), i = k % cases.size();
-    rows[l][i] = judged_row(layouts[l], cases[i],
-                            run_over_noise_draws(layouts[l], cases[i].mode.faults, histories ? &(*histories)[l][i] : nullptr));
+    std::vector<InvSimSample>* history = histories != nullptr ? &(*histories)[l][i] : nullptr;
+    rows[l][i] = judged_row(layouts[l], cases[i], run_over_noise_draws(layouts[l], cases[i].mode.faults, history));
   });
   for (auto& layout_rows : rows) rank_by_risk(layout_rows);
   return rows;
@@ -79,31 +79,34 @@ std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams
 std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<model::InvSimParams>& layouts,
                                                              const std::vector<FmeaCase>& cases, int threads,
                                                              std::size_t* flights) {
-  // One flight per distinct thruster signature, in (layout, case) order of first appearance.
-  std::map<std::vector<double>, std::size_t> flight_of;
-  std::vector<std::size_t> flight(layouts.size() * cases.size());
-  std::vector<std::size_t> first_pair;
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    const std::size_t l = k / cases.size(), i = k % cases.size();
-    std::vector<double> signature = thruster_signature(layouts[l], cases[i].mode.faults);
-    // A non-finite value would break the map's order: such a pair is flown on its own.
-    if (!std::all_of(signature.begin(), signature.end(), [](double v) { return std::isfinite(v); }))
-      signature.assign({std::numeric_limits<double>::infinity(), static_cast<double>(k)});
-    const auto [it, added] = flight_of.try_emplace(std::move(signature), first_pair.size());
-    if (added) first_pair.push_back(k);
-    flight[k] = it->second;
-  }
-  if (flights != nullptr) *flights = first_pair.size();
-  std::vector<InvSimResult> results(first_pair.size());
-  parallel_for(first_pair.size(), threads, [&](std::size_t f) {
-    const std::size_t l = first_pair[f] / cases.size(), i = first_pair[f] % cases.size();
-    results[f] = run_over_noise_draws(layouts[l], cases[i].mode.faults, nullptr);
+  // One flight per distinct thruster signature; flight[l][i] is the one pair (l, i) takes its row from.
+  struct Pair {
+    std::size_t layout, mode;
+  };
+  std::map<std::vector<double>, std::size_t> flight_of;  // signature -> index in `flown`
+  std::vector<Pair> flown;
+  std::vector<std::vector<std::size_t>> flight(layouts.size(), std::vector<std::size_t>(cases.size()));
+  for (std::size_t l = 0; l < layouts.size(); ++l)
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      std::vector<double> signature = thruster_signature(layouts[l], cases[i].mode.faults);
+      // A non-finite value would break the map's order: such a pair is flown on its own.
+      if (std::all_of(signature.begin(), signature.end(), [](double v) { return std::isfinite(v); })) {
+        const auto [it, added] = flight_of.try_emplace(std::move(signature), flown.size());
+        flight[l][i] = it->second;
+        if (!added) continue;
+      } else {
+        flight[l][i] = flown.size();
+      }
+      flown.push_back({l, i});
+    }
+  if (flights != nullptr) *flights = flown.size();
+  std::vector<InvSimResult> results(flown.size());
+  parallel_for(flown.size(), threads, [&](std::size_t f) {
+    results[f] = run_over_noise_draws(layouts[flown[f].layout], cases[flown[f].mode].mode.faults, nullptr);
   });
   std::vector<std::vector<FmeaRow>> rows(layouts.size(), std::vector<FmeaRow>(cases.size()));
-  for (std::size_t k = 0; k < flight.size(); ++k) {
-    const std::size_t l = k / cases.size(), i = k % cases.size();
-    rows[l][i] = judged_row(layouts[l], cases[i], results[flight[k]]);
-  }
+  for (std::size_t l = 0; l < layouts.size(); ++l)
+    for (std::size_t i = 0; i < cases.size(); ++i) rows[l][i] = judged_row(layouts[l], cases[i], results[flight[l][i]]);
   for (auto& layout_rows : rows) rank_by_risk(layout_rows);
   return rows;
 }

@@ -23,22 +23,63 @@ constexpr double kDivergedRangeM = 1e4;  // [m] beyond this the approach has cle
 
 using GroupWrenches = std::array<std::array<Wrench, 2>, 3>;  // [axis][0: +, 1: -]
 
-// Everything derived once from the parameters and the fault set. A field derived from the thrusters
-// belongs in thruster_signature too (the flights --optimize shares between layouts).
-struct RunContext {
-  RvdConstants rvd;
-  InverseModel inverse;
-  model::InvSimPaperReadingParams choices;             // the reading's flight choices (paper_reading.hpp)
+int dir_index(int direction) { return direction > 0 ? 0 : 1; }
+
+// Everything a run takes from its thrusters and their faults. thruster_signature is values(): a
+// field added here must be added there, beside it, or layouts that differ in it would share a flight.
+struct ThrusterContext {
   std::array<std::array<double, 2>, 3> u_max_pilot;    // [m/s^2] the inverse model's u_max per group
   std::array<std::array<double, 2>, 3> u_max_nominal;  // [m/s^2] the healthy group's
   Vec3 a0_radps2;                                      // attitude control accelerations
   GroupWrenches translation;                           // wrenches per group, with the faults
   GroupWrenches attitude;
+
+  std::vector<double> values() const {
+    std::vector<double> v;
+    for (const GroupWrenches* groups : {&translation, &attitude})
+      for (const auto& axis : *groups)
+        for (const Wrench& w : axis) {
+          v.insert(v.end(), w.force_body_N.data(), w.force_body_N.data() + 3);
+          v.insert(v.end(), w.torque_body_Nm.data(), w.torque_body_Nm.data() + 3);
+          v.push_back(w.thrust_sum_N);
+        }
+    for (int axis = 0; axis < 3; ++axis)
+      for (int d = 0; d < 2; ++d) {
+        v.push_back(u_max_pilot[axis][d]);
+        v.push_back(u_max_nominal[axis][d]);
+      }
+    v.insert(v.end(), a0_radps2.data(), a0_radps2.data() + 3);
+    return v;
+  }
+};
+
+ThrusterContext make_thruster_context(const model::InvSimParams& p, const model::InvSimFaultSet& faults,
+                                      model::InvSimInverseModel inverse_model) {
+  ThrusterContext t{};
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int d : {1, -1}) {
+      t.translation[axis][dir_index(d)] = translation_wrench(p, faults, axis, d);
+      t.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
+      t.u_max_pilot[axis][dir_index(d)] = inverse_model == model::InvSimInverseModel::kFaulted
+                                              ? translation_accel(p, faults, axis, d)
+                                              : t.u_max_nominal[axis][dir_index(d)];
+      t.attitude[axis][dir_index(d)] = attitude_wrench(p, faults, axis, d);
+    }
+    const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
+    t.a0_radps2(axis) = nominal.torque_body_Nm(axis) / p.inertia_kgm2(axis, axis);
+  }
+  return t;
+}
+
+// Everything derived once from the parameters and the fault set.
+struct RunContext {
+  RvdConstants rvd;
+  InverseModel inverse;
+  model::InvSimPaperReadingParams choices;  // the reading's flight choices (paper_reading.hpp)
+  ThrusterContext thrusters;
   long steps;
   long sub_steps;  // attitude periods per IS step
 };
-
-int dir_index(int direction) { return direction > 0 ? 0 : 1; }
 
 // x_c of eq. 20 at time t: the approach (desired_trajectory.hpp), with the paper reading's
 // lateral return when it sets one.
@@ -67,18 +108,7 @@ RunContext make_context(const model::InvSimParams& p, const model::InvSimFaultSe
   const std::array<double, 6>& q = reading_state_weights(p);
   for (int i = 0; i < 6; ++i) weights(i) = q[static_cast<std::size_t>(i)];
   c.inverse = make_inverse_model(c.rvd.dynamics.orbit.mean_motion_radps(), p.step_s, p.inverse.horizon_steps, weights);
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int d : {1, -1}) {
-      c.translation[axis][dir_index(d)] = translation_wrench(p, faults, axis, d);
-      c.u_max_nominal[axis][dir_index(d)] = nominal_translation_accel(p, axis, d);
-      c.u_max_pilot[axis][dir_index(d)] = c.choices.inverse_model == model::InvSimInverseModel::kFaulted
-                                              ? translation_accel(p, faults, axis, d)
-                                              : c.u_max_nominal[axis][dir_index(d)];
-      c.attitude[axis][dir_index(d)] = attitude_wrench(p, faults, axis, d);
-    }
-    const Wrench nominal = attitude_wrench(p, model::InvSimFaultSet{}, axis, 1);
-    c.a0_radps2(axis) = nominal.torque_body_Nm(axis) / p.inertia_kgm2(axis, axis);
-  }
+  c.thrusters = make_thruster_context(p, faults, c.choices.inverse_model);
   return c;
 }
 
@@ -100,17 +130,17 @@ StepPulses inverse_link(const RunContext& c, const model::InvSimParams& p, const
   StepPulses out;
   const bool carry = c.choices.opening == model::InvSimOpening::kCarried;
   for (int axis = 0; axis < 3; ++axis) {
+    const std::array<double, 2>& u_max_pilot = c.thrusters.u_max_pilot[axis];
     // Carried: only what the opening under way will not give (invsim/carried_opening.hpp).
-    const double u =
-        carry ? command_beyond_carried(carried[axis], c.u_max_pilot[axis], p.step_s, u_body(axis)) : u_body(axis);
+    const double u = carry ? command_beyond_carried(carried[axis], u_max_pilot, p.step_s, u_body(axis)) : u_body(axis);
     const int d = dir_index(u >= 0.0 ? 1 : -1);
-    const double u_max = c.u_max_pilot[axis][d];
-    const PulseParams pp{u_max, p.step_s, p.pulses.time_sensitivity,
-                         p.pulses.acceleration_sensitivity, c.u_max_nominal[axis][d]};
+    const PulseParams pp{u_max_pilot[d], p.step_s, p.pulses.time_sensitivity,
+                         p.pulses.acceleration_sensitivity, c.thrusters.u_max_nominal[axis][d]};
     // A group with no thrust left (faulted model): the inverse model commands nothing there.
-    out.commanded[axis] = u_max <= 0.0 ? Pulse{0, 0.0} : carry ? convert_to_opening(pp, u) : convert_to_pulse(pp, u);
-    out.flown[axis] =
-        carry ? open_for_step(carried[axis], out.commanded[axis], c.u_max_pilot[axis], p.step_s) : out.commanded[axis];
+    out.commanded[axis] =
+        u_max_pilot[d] <= 0.0 ? Pulse{0, 0.0} : carry ? convert_to_opening(pp, u) : convert_to_pulse(pp, u);
+    out.flown[axis] = carry ? open_for_step(carried[axis], out.commanded[axis], u_max_pilot, p.step_s)
+                            : out.commanded[axis];
   }
   return out;
 }
@@ -134,14 +164,14 @@ void propagate_period(const RunContext& c, const std::array<Pulse, 3>& translati
     for (int axis = 0; axis < 3; ++axis) {
       const Pulse& tp = translation[axis];
       if (tp.direction != 0 && start < tp.on_time_s - offset) {
-        const Wrench& g = c.translation[axis][dir_index(tp.direction)];
+        const Wrench& g = c.thrusters.translation[axis][dir_index(tp.direction)];
         w.force_body_N += g.force_body_N;
         w.torque_body_Nm += g.torque_body_Nm;
         translation_fuel_Ns += g.thrust_sum_N * (end - start);
       }
       const PhasePlaneCommand& ap = attitude[axis];
       if (ap.direction != 0 && start < ap.on_time_s) {
-        const Wrench& g = c.attitude[axis][dir_index(ap.direction)];
+        const Wrench& g = c.thrusters.attitude[axis][dir_index(ap.direction)];
         w.force_body_N += g.force_body_N;
         w.torque_body_Nm += g.torque_body_Nm;
         attitude_fuel_Ns += g.thrust_sum_N * (end - start);
@@ -152,18 +182,18 @@ void propagate_period(const RunContext& c, const std::array<Pulse, 3>& translati
   }
 }
 
-// Step 5 for one instant: line of sight and attitude against the limits.
-void record_limits(const model::InvSimParams& p, const RvdState& s, InvSimResult& r,
-                   LineOfSight& los, Vec3& euler) {
+// Step 5 for one instant: line of sight and attitude against the limits; returns the Euler angles.
+Vec3 record_limits(const model::InvSimParams& p, const RvdState& s, InvSimResult& r) {
   const Mat3 r_hill_from_body = s.q_hill_from_body.toRotationMatrix();
-  euler = euler321_from_matrix(r_hill_from_body);
-  los = line_of_sight(s.r_hill_m, r_hill_from_body, p.sensor.position_body_m);
+  const Vec3 euler = euler321_from_matrix(r_hill_from_body);
+  const LineOfSight los = line_of_sight(s.r_hill_m, r_hill_from_body, p.sensor.position_body_m);
   r.peak_azimuth_rad = std::max(r.peak_azimuth_rad, std::abs(los.azimuth_rad));
   r.peak_elevation_rad = std::max(r.peak_elevation_rad, std::abs(los.elevation_rad));
   r.peak_attitude_rad = r.peak_attitude_rad.cwiseMax(euler.cwiseAbs());
   if (!target_in_view(los, p.sensor.azimuth_limit_rad, p.sensor.elevation_limit_rad))
     r.target_always_in_view = false;
   if (euler.cwiseAbs().maxCoeff() > p.sensor.attitude_limit_rad) r.attitude_within_limits = false;
+  return euler;
 }
 
 // Step 4: the outer loop over one IS step. `euler` holds the Euler angles of s on entry and on
@@ -176,13 +206,12 @@ void forward_step(const RunContext& c, const model::InvSimParams& p,
     const Vec3 rate = relative_rate_body(c.rvd, s);
     std::array<PhasePlaneCommand, 3> attitude{};
     for (int axis = 0; axis < 3; ++axis) {
-      attitude[axis] = step_phase_plane(p.attitude, c.a0_radps2(axis), euler(axis), rate(axis));
+      attitude[axis] = step_phase_plane(p.attitude, c.thrusters.a0_radps2(axis), euler(axis), rate(axis));
       if (attitude[axis].direction != 0) r.attitude_on_time_s(axis) += std::clamp(attitude[axis].on_time_s, 0.0, h);
     }
     propagate_period(c, pulses, static_cast<double>(j) * h, h, attitude, s, translation_fuel_Ns,
                      attitude_fuel_Ns);
-    LineOfSight los{};
-    record_limits(p, s, r, los, euler);
+    euler = record_limits(p, s, r);
   }
 }
 
@@ -217,23 +246,7 @@ void finish_result(const model::InvSimParams& p, const RvdState& s, double trans
 }  // namespace
 
 std::vector<double> thruster_signature(const model::InvSimParams& p, const model::InvSimFaultSet& faults) {
-  const RunContext c = make_context(p, faults);
-  std::vector<double> s;
-  s.reserve(2 * 3 * 2 * 7 + 3 * 2 * 2 + 3);
-  for (const GroupWrenches* groups : {&c.translation, &c.attitude})
-    for (const auto& axis : *groups)
-      for (const Wrench& w : axis) {
-        s.insert(s.end(), w.force_body_N.data(), w.force_body_N.data() + 3);
-        s.insert(s.end(), w.torque_body_Nm.data(), w.torque_body_Nm.data() + 3);
-        s.push_back(w.thrust_sum_N);
-      }
-  for (int axis = 0; axis < 3; ++axis)
-    for (int d = 0; d < 2; ++d) {
-      s.push_back(c.u_max_pilot[axis][d]);
-      s.push_back(c.u_max_nominal[axis][d]);
-    }
-  s.insert(s.end(), c.a0_radps2.data(), c.a0_radps2.data() + 3);
-  return s;
+  return make_thruster_context(p, faults, flight_choices(p).inverse_model).values();
 }
 
 InvSimResult run_inverse_simulation(const model::InvSimParams& p,
@@ -261,12 +274,10 @@ InvSimResult run_inverse_simulation(const model::InvSimParams& p,
       if (pulses[axis].direction != 0) a.on_time_s[dir_index(pulses[axis].direction)] += pulses[axis].on_time_s;
     }
     if (history != nullptr) {
-      LineOfSight los{};
-      Vec3 sample_euler;
-      InvSimResult scratch;
-      record_limits(p, s, scratch, los, sample_euler);
+      const LineOfSight los =
+          line_of_sight(s.r_hill_m, s.q_hill_from_body.toRotationMatrix(), p.sensor.position_body_m);
       const Vec6 x_d = expected_state(c, p, t);
-      history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), sample_euler, los.azimuth_rad,
+      history->push_back({t, s.r_hill_m, s.v_hill_mps, x_d.head<3>(), euler, los.azimuth_rad,
                           los.elevation_rad, u_body,
                           {step.commanded[0].direction, step.commanded[1].direction, step.commanded[2].direction},
                           counted});

@@ -20,6 +20,8 @@ paper's four Table 5 modes, and only they, are lost (target 6).
 Deterministic: fixed grids, one `chaser fmea` per point.
 """
 import argparse
+import collections
+import copy
 import csv
 import itertools
 import pathlib
@@ -45,7 +47,7 @@ def with_mass(scenario, mass_kg):
 def with_arms(doc, arm_d_m, arm_e_m):
     """A copy of the study `doc` with the x group's thrusters at y = +-arm_d_m and the y group's at
     x = -+arm_e_m (signs as shipped: d1, d1~ at +y; e1, e1~ at -x), the other coordinates kept."""
-    out = yaml.safe_load(yaml.safe_dump(doc))
+    out = copy.deepcopy(doc)
     for thruster in out["thrusters"]:
         name, position = thruster["name"], thruster["position_body_m"]
         if name in ("d1", "d1~", "d2", "d2~"):
@@ -77,9 +79,7 @@ def scan_arms(chaser, study, arms_d, arms_e, workdir):
 
 def describe_arms(found):
     exact = [f"({d:g}, {e:g})" for (d, e), lost in found.items() if lost == cal.PAPER_LOST]
-    sizes = {}
-    for lost in found.values():
-        sizes[len(lost)] = sizes.get(len(lost), 0) + 1
+    sizes = collections.Counter(len(lost) for lost in found.values())
     spread = ", ".join(f"{n} lost at {count}" for n, count in sorted(sizes.items()))
     return f"the paper's four exactly at {len(exact)} of {len(found)} points {' '.join(exact)}; {spread}"
 

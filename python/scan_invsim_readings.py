@@ -38,7 +38,7 @@ import calibrate_invsim as cal  # noqa: E402
 COARSE_W = [0.2, 0.3, 0.5, 1.0]  # [s]; 1.0: one pulse per opening (every dtau <= the 1 s step)
 
 
-def run_fmea(chaser, scenario, w, qv, workdir, k=None, angle_deg=None):
+def fly_point(chaser, scenario, w, qv, workdir, k=None, angle_deg=None):
     doc = dict(scenario)
     doc.pop("configurations", None)
     doc.pop("optimize", None)
@@ -63,7 +63,7 @@ def scan_coarse(chaser, scenario, workdir, writer, k=None):
     for w in COARSE_W:
         best, ratios, x_both = 0, [], 0
         for qv in grid():
-            nominal = run_fmea(chaser, scenario, w, qv, workdir, k)["nominal"]
+            nominal = fly_point(chaser, scenario, w, qv, workdir, k)["nominal"]
             counts = [int(nominal[d]) for d in cal.DIRECTIONS]
             within = [abs(c / p - 1.0) <= 0.15 for c, p in zip(counts, paper)]
             best = max(best, sum(within))
@@ -76,7 +76,7 @@ def scan_coarse(chaser, scenario, workdir, writer, k=None):
 def scan_targets(chaser, scenario, workdir, w, writer, k=None):
     points = []
     for qv in grid():
-        rows = run_fmea(chaser, scenario, w, qv, workdir, k)
+        rows = fly_point(chaser, scenario, w, qv, workdir, k)
         t = cal.targets(rows)
         counts = [int(rows["nominal"][d]) for d in cal.DIRECTIONS]
         t["z_share"] = (counts[4] + counts[5]) / sum(counts)
@@ -113,7 +113,7 @@ def scan_faulted(chaser, scenario, workdir, angles, writer):
     points = []
     for angle in angles:
         for qv in grid():
-            rows = run_fmea(chaser, scenario, FAULTED_W, qv, workdir, angle_deg=angle)
+            rows = fly_point(chaser, scenario, FAULTED_W, qv, workdir, angle_deg=angle)
             t = cal.targets(rows)
             scale = sum(cal.PAPER_NOMINAL) / 3000.0 / float(rows["nominal"]["k_p"])
             t["k_p_within"] = sum(abs(r["k_p"] * scale / r["k_p_paper"] - 1.0) <= 0.15 for r in t["table4"])

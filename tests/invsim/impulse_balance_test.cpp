@@ -13,6 +13,7 @@
 // (the Coriolis term 2 n x' over the run); 1e-4 s more or less in one opening of a 60 N thruster on
 // 8,000 kg is 7.5e-7 m/s, and an opening reported past the step that the plant flies only within it
 // (tried: the flown opening left uncapped in invsim/carried_opening.cpp) misses by 0.08-3.9 m/s.
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@ struct Flight {
   model::InvSimParams params;
   model::InvSimFaultSet faults;
   InvSimResult result;
+  std::vector<InvSimSample> history;
 };
 
 // The shipped scenario under the paper reading without noise and with the orbit switched off. With
@@ -41,12 +43,12 @@ Flight fly(const std::string& opening, const std::string& faults) {
        "pulses.paper.measurement_noise.angle_sigma_deg=0", "pulses.paper.measurement_noise.range_sigma_m=0",
        "faults=[" + faults + "]"});
   EXPECT_TRUE(loaded.errors.empty()) << io::format_errors(loaded.errors);
-  Flight f{*loaded.params, loaded.faults, {}};
+  Flight f{*loaded.params, loaded.faults, {}, {}};
   f.params.mu_m3ps2 = 1.0;
   if (faults == "e1")
     for (model::InvSimThruster& t : f.params.thrusters)
       if (t.name == "e2") t.position_body_m = Vec3(0.0, 1.4, 0.0);
-  f.result = run_inverse_simulation(f.params, f.faults);
+  f.result = run_inverse_simulation(f.params, f.faults, &f.history);
   return f;
 }
 
@@ -80,14 +82,33 @@ TEST(ImpulseBalance, TheReportedOpeningTimesAreTheThrustTheRunFlew) {
     for (const char* faults : {"", "e1"}) expect_momentum_balance(fly(opening, faults), std::string(opening) + " [" + faults + "]");
 }
 
-// The balance above is exercised where it matters: with y held at 0 from y' = 0.131 m/s the first
-// commands ask for several times a group's thrust, so carried openings run past the step (the runs
-// differ from capped ones), and a halved group opens longer than a whole one.
-TEST(ImpulseBalance, CarriedOpeningsRunPastTheStepInTheseFlights) {
-  const Flight carried = fly("carried", "e1"), capped = fly("capped", "e1"), whole = fly("carried", "");
-  EXPECT_NE(carried.result.pulses[1].on_time_s[1], capped.result.pulses[1].on_time_s[1]);
-  EXPECT_GT(carried.result.pulses[1].on_time_s[1], 1.5 * whole.result.pulses[1].on_time_s[1]);
-  EXPECT_GT(group_thrust_N(whole, 1, -1), 1.9 * group_thrust_N(carried, 1, -1));
+// The balance above reaches the carried openings: with y held at 0 from y' = 0.131 m/s the first
+// commands ask for several times a group's thrust. A step's command counts ceil(dtau / w) pulses
+// (w = 0.1 s), so more than step / w = 10 in one step is an opening commanded past the step; capped,
+// never more. (Without noise the two rules fly alike to 12 digits here: capped, the next step asks
+// again for what was cut. They part with the measurement noise: docs/invsim.md, "Predictions".)
+TEST(ImpulseBalance, OpeningsPastTheStepAreCommandedInTheseFlights) {
+  const auto most_in_a_step = [](const Flight& f) {
+    int most = 0;
+    for (const InvSimSample& s : f.history) most = std::max(most, s.pulse_count[1]);
+    return most;
+  };
+  const double per_step = 1.0 / 0.1;  // step / w
+  ASSERT_EQ(fly("carried", "").params.pulses.paper.pulse_width_s, 0.1);
+  for (const char* faults : {"", "e1"}) {
+    EXPECT_GT(most_in_a_step(fly("carried", faults)), per_step) << faults;
+    EXPECT_LE(most_in_a_step(fly("capped", faults)), per_step) << faults;
+  }
+}
+
+// The halved y- group (e1 lost: 60 of 120 N) opens about twice as long as the whole one: 2.21 times
+// here, a little more than the same impulse would need because the slower stop of the initial drift
+// costs some correction (docs/invsim.md, "Predictions": the y start).
+TEST(ImpulseBalance, TheHalvedGroupOpensAboutTwiceAsLong) {
+  const Flight halved = fly("carried", "e1"), whole = fly("carried", "");
+  ASSERT_EQ(group_thrust_N(whole, 1, -1), 120.0);
+  ASSERT_EQ(group_thrust_N(halved, 1, -1), 60.0);
+  EXPECT_NEAR(halved.result.pulses[1].on_time_s[1] / whole.result.pulses[1].on_time_s[1], 2.2, 0.1);
 }
 
 }  // namespace
