@@ -85,7 +85,7 @@ int fmea_command(const FmeaArgs& args) {
   }
   const int threads = args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::vector<std::vector<invsim::InvSimSample>>> histories;
+  std::vector<std::vector<invsim::FmeaHistory>> histories;
   std::size_t flights = 0, search_flights = 0;
   const std::vector<FmeaLayout> layouts = run_fmea_layouts(
       loaded, args.three_axis, threads, args.history ? &histories : nullptr, args.nominal_only, &flights);

@@ -1,5 +1,6 @@
 // The per-step histories of `chaser fmea` for python/plot_invsim.py (cli/fmea_report.hpp).
 #include <fstream>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -44,10 +45,10 @@ bool write(const std::filesystem::path& path, const std::string& text, std::stri
 }  // namespace
 
 bool write_fmea_histories(const std::filesystem::path& dir, const std::vector<FmeaLayout>& layouts,
-                          const std::vector<std::vector<std::vector<invsim::InvSimSample>>>& histories,
+                          const std::vector<std::vector<invsim::FmeaHistory>>& histories,
                           std::string& error) {
   const std::filesystem::path root = dir / "history";
-  std::string index = "configuration,mode,file\n";
+  std::string index = "configuration,mode,file,draws,draw_seed\n";
   for (std::size_t l = 0; l < layouts.size() && l < histories.size(); ++l) {
     std::error_code ec;
     std::filesystem::create_directories(root / layouts[l].name, ec);
@@ -58,8 +59,10 @@ bool write_fmea_histories(const std::filesystem::path& dir, const std::vector<Fm
     for (std::size_t i = 0; i < layouts[l].rows.size() && i < histories[l].size(); ++i) {
       const std::string& label = layouts[l].rows[i].fmea_case.mode.label;
       const std::string file = layouts[l].name + "/" + file_stem(i, label) + ".csv";
-      if (!write(root / file, history_csv(histories[l][i]), error)) return false;
-      index += fmt::format("{},{},{}\n", layouts[l].name, label, file);
+      const invsim::FmeaHistory& h = histories[l][i];
+      if (!write(root / file, history_csv(h.samples), error)) return false;
+      index += fmt::format("{},{},{},{},{}\n", layouts[l].name, label, file, h.draws,
+                           h.seed ? std::to_string(*h.seed) : std::string());
     }
   }
   return write(root / "index.csv", index, error);

@@ -193,7 +193,7 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 }  // namespace
 
 std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
-                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories,
+                                         std::vector<std::vector<invsim::FmeaHistory>>* histories,
                                          bool nominal_only, std::size_t* flights) {
   std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
   for (const model::InvSimConfiguration& c : loaded.study.configurations)

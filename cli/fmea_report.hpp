@@ -24,12 +24,13 @@ struct FmeaLayout {
 
 // The FMEA of `chaser fmea` without --optimize: the scenario's own layout ("baseline") and each of
 // its configurations, every mode of invsim::fmea_cases on `threads` workers, rows ranked within each
-// layout. With `histories`, (*histories)[l][i] receives the per-step history of mode i on layout l.
+// layout. With `histories`, (*histories)[l][i] receives the history of mode i on layout l (with
+// several noise draws, the worst draw's: invsim::FmeaHistory).
 // `nominal_only`: the nominal case alone (a calibration reads nothing else). Without histories the
 // layouts share their flights (invsim::run_fmea_of_configurations); `flights`, when given, receives
 // the number flown.
 std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
-                                         std::vector<std::vector<std::vector<invsim::InvSimSample>>>* histories,
+                                         std::vector<std::vector<invsim::FmeaHistory>>* histories,
                                          bool nominal_only = false, std::size_t* flights = nullptr);
 
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts);
@@ -47,10 +48,11 @@ void append_reconfiguration(std::string& md, const std::vector<FmeaLayout>& layo
 void append_optimization(std::string& md, const std::vector<FmeaLayout>& layouts,
                          const std::vector<invsim::LayoutCandidate>& optimized, int keep);
 
-// DIR/history/index.csv (configuration,mode,file) and DIR/history/<layout>/<NN>_<mode>.csv, one row
+// DIR/history/index.csv (configuration,mode,file,draws,draw_seed: the noise draws the row combines and
+// the seed of the one shown, empty without noise) and DIR/history/<layout>/<NN>_<mode>.csv, one row
 // per IS step, for every row of every layout; false (with `error`) on an I/O failure.
 bool write_fmea_histories(const std::filesystem::path& dir, const std::vector<FmeaLayout>& layouts,
-                          const std::vector<std::vector<std::vector<invsim::InvSimSample>>>& histories,
+                          const std::vector<std::vector<invsim::FmeaHistory>>& histories,
                           std::string& error);
 
 }  // namespace chaser::cli

@@ -7,9 +7,11 @@
 #include <map>
 #include <numeric>
 #include <thread>
+#include <tuple>
 #include <utility>
 
 #include "invsim/noise_draws.hpp"
+#include "invsim/paper_reading.hpp"
 
 namespace chaser::invsim {
 
@@ -57,20 +59,33 @@ FmeaRow judged_row(const model::InvSimParams& p, const FmeaCase& c, InvSimResult
   return row;
 }
 
+// The row's result, and with `history` the worst draw's history flown again (one flight with one draw).
+InvSimResult fly_row(const model::InvSimParams& p, const model::InvSimFaultSet& faults, FmeaHistory* history) {
+  if (history == nullptr) return run_over_noise_draws(p, faults);
+  history->seed.reset();
+  if (flight_choices(p).measurement_noise.enabled()) history->seed = p.pulses.paper.measurement_noise.seed;
+  if (noise_draws_per_mode(p) <= 1) return run_inverse_simulation(p, faults, &history->samples);
+  const std::vector<InvSimResult> draws = fly_noise_draws(p, faults);
+  history->draws = draws.size();
+  history->draw = worst_draw(p.sensor, draws);
+  *history->seed += history->draw;
+  run_inverse_simulation(noise_draw(p, history->draw), faults, &history->samples);
+  return combine_draws(draws, p.pulses.basic_pulse_amount);
+}
+
 }  // namespace
 
 std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams>& layouts,
                                            const std::vector<FmeaCase>& cases, int threads,
-                                           std::vector<std::vector<std::vector<InvSimSample>>>* histories) {
+                                           std::vector<std::vector<FmeaHistory>>* histories) {
   std::vector<std::vector<FmeaRow>> rows(layouts.size(), std::vector<FmeaRow>(cases.size()));
-  if (histories != nullptr)
-    histories->assign(layouts.size(), std::vector<std::vector<InvSimSample>>(cases.size()));
+  if (histories != nullptr) histories->assign(layouts.size(), std::vector<FmeaHistory>(cases.size()));
   // Each worker takes the next (layout, case) pair; every run is independent of the others and of
   // the order, so the rows do not depend on the number of workers.
   parallel_for(layouts.size() * cases.size(), threads, [&](std::size_t k) {
     const std::size_t l = k / cases.size(), i = k % cases.size();
-    std::vector<InvSimSample>* history = histories != nullptr ? &(*histories)[l][i] : nullptr;
-    rows[l][i] = judged_row(layouts[l], cases[i], run_over_noise_draws(layouts[l], cases[i].mode.faults, history));
+    FmeaHistory* history = histories != nullptr ? &(*histories)[l][i] : nullptr;
+    rows[l][i] = judged_row(layouts[l], cases[i], fly_row(layouts[l], cases[i].mode.faults, history));
   });
   for (auto& layout_rows : rows) rank_by_risk(layout_rows);
   return rows;
@@ -102,7 +117,7 @@ std::vector<std::vector<FmeaRow>> run_fmea_of_configurations(const std::vector<m
   if (flights != nullptr) *flights = flown.size();
   std::vector<InvSimResult> results(flown.size());
   parallel_for(flown.size(), threads, [&](std::size_t f) {
-    results[f] = run_over_noise_draws(layouts[flown[f].layout], cases[flown[f].mode].mode.faults, nullptr);
+    results[f] = run_over_noise_draws(layouts[flown[f].layout], cases[flown[f].mode].mode.faults);
   });
   std::vector<std::vector<FmeaRow>> rows(layouts.size(), std::vector<FmeaRow>(cases.size()));
   for (std::size_t l = 0; l < layouts.size(); ++l)
@@ -137,6 +152,19 @@ std::vector<std::size_t> risk_order(const std::vector<FmeaRow>& rows) {
     return x.deviation_ratio > y.deviation_ratio;
   });
   return order;
+}
+
+std::size_t worst_draw(const model::InvSimSensorParams& limits, const std::vector<InvSimResult>& draws) {
+  // A diverged draw may carry non-finite peaks: they count as the worst.
+  auto finite_or_worst = [](double v) { return std::isfinite(v) ? v : std::numeric_limits<double>::infinity(); };
+  auto severity = [&](const InvSimResult& r) {
+    return std::tuple(classify_risk(limits, r), deviation_ratio(limits, r),
+                      finite_or_worst(r.peak_attitude_rad.maxCoeff()));
+  };
+  std::size_t worst = 0;
+  for (std::size_t k = 1; k < draws.size(); ++k)
+    if (severity(draws[worst]) < severity(draws[k])) worst = k;
+  return worst;
 }
 
 void rank_by_risk(std::vector<FmeaRow>& rows) {

@@ -16,6 +16,8 @@
 // Ranking, most severe first: class, then the operational amount k_p (the paper's risk is the
 // pilot's compensatory workload, section 3.2), then the deviation ratio, then the mode order.
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +47,16 @@ struct FmeaRow {
   int rank = 0;                  // 1 = most severe
 };
 
+// The per-step history of a row. With several noise draws it is the draw the row's class comes
+// from (worst_draw), flown again with the same seed: the row's counts are the draws' means, its
+// peaks their maxima, so no single history is the row; this one is its worst case.
+struct FmeaHistory {
+  std::uint64_t draws = 1;             // noise draws the row combines
+  std::uint64_t draw = 0;              // the draw shown, 0 .. draws - 1
+  std::optional<std::uint64_t> seed;   // its measurement-noise seed; empty without noise
+  std::vector<InvSimSample> samples;
+};
+
 // Nominal ("nominal"), Table 2, Table 5, with `three_axis` the 64 three-axis modes, then the
 // scenario's faults ("scenario") when not empty.
 std::vector<FmeaCase> fmea_cases(const model::InvSimParams& p, const model::InvSimFaultSet& scenario_faults,
@@ -55,10 +67,10 @@ std::vector<FmeaRow> run_fmea(const model::InvSimParams& p, const std::vector<Fm
 
 // Every case on every layout (one InvSimParams per thruster configuration), all pairs shared by
 // `threads` workers; result[l] holds layout l's rows in case order, ranked within the layout.
-// With `histories`, (*histories)[l][i] receives the per-step history of case i on layout l.
+// With `histories`, (*histories)[l][i] receives the history of case i on layout l (FmeaHistory).
 std::vector<std::vector<FmeaRow>> run_fmea(const std::vector<model::InvSimParams>& layouts,
                                            const std::vector<FmeaCase>& cases, int threads,
-                                           std::vector<std::vector<std::vector<InvSimSample>>>* histories = nullptr);
+                                           std::vector<std::vector<FmeaHistory>>* histories = nullptr);
 
 // run_fmea's rows, bit for bit, for layouts that differ only in their thrusters (configurations of
 // one scenario: model::apply_configuration): a (layout, case) pair whose thruster signature
@@ -74,6 +86,10 @@ double deviation_ratio(const model::InvSimSensorParams& limits, const InvSimResu
 bool is_controllable(const InvSimResult& r);
 RiskClass classify_risk(const model::InvSimSensorParams& limits, const InvSimResult& r);
 void rank_by_risk(std::vector<FmeaRow>& rows);
+
+// Index of the draw that decides a row (the first of equals): the most severe class, then the
+// largest deviation ratio, then the largest attitude peak.
+std::size_t worst_draw(const model::InvSimSensorParams& limits, const std::vector<InvSimResult>& draws);
 
 // Row indices, most severe first.
 std::vector<std::size_t> risk_order(const std::vector<FmeaRow>& rows);

@@ -1,6 +1,7 @@
 #include "invsim/noise_draws.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "invsim/paper_reading.hpp"
 
@@ -11,18 +12,24 @@ std::uint64_t noise_draws_per_mode(const model::InvSimParams& params) {
   return noise.enabled() ? noise.draws : 1;
 }
 
-InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults,
-                                  std::vector<InvSimSample>* history) {
+model::InvSimParams noise_draw(const model::InvSimParams& params, std::uint64_t i) {
+  model::InvSimParams draw = params;
+  draw.pulses.paper.measurement_noise.seed = params.pulses.paper.measurement_noise.seed + i;
+  return draw;
+}
+
+std::vector<InvSimResult> fly_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults) {
   const std::uint64_t draws = noise_draws_per_mode(params);
-  if (draws <= 1) return run_inverse_simulation(params, faults, history);
+  if (draws <= 1) return {run_inverse_simulation(params, faults)};
   std::vector<InvSimResult> results;
   results.reserve(draws);
-  model::InvSimParams draw = params;
-  const std::uint64_t first_seed = params.pulses.paper.measurement_noise.seed;
-  for (std::uint64_t i = 0; i < draws; ++i) {
-    draw.pulses.paper.measurement_noise.seed = first_seed + i;
-    results.push_back(run_inverse_simulation(draw, faults, i == 0 ? history : nullptr));
-  }
+  for (std::uint64_t i = 0; i < draws; ++i) results.push_back(run_inverse_simulation(noise_draw(params, i), faults));
+  return results;
+}
+
+InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults) {
+  std::vector<InvSimResult> results = fly_noise_draws(params, faults);
+  if (results.size() == 1) return std::move(results.front());
   return combine_draws(results, params.pulses.basic_pulse_amount);
 }
 

@@ -13,6 +13,7 @@
 //    any draw diverged;
 //  - final position and velocity: the first draw's (a mean of end states is no state).
 // So the risk class of a row is that of its worst draw.
+#include <cstdint>
 #include <vector>
 
 #include "invsim/inverse_simulation.hpp"
@@ -24,10 +25,15 @@ namespace chaser::invsim {
 // on, else 1.
 std::uint64_t noise_draws_per_mode(const model::InvSimParams& params);
 
-// The row's result over the scenario's draws; one plain run (bit for bit) when the reading is not
-// paper, the noise is off or draws is 1. `history`, when asked for, is the first draw's.
-InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults,
-                                  std::vector<InvSimSample>* history = nullptr);
+// The parameters of draw `i` (0 .. draws - 1): the scenario's with the noise seed seed + i.
+model::InvSimParams noise_draw(const model::InvSimParams& params, std::uint64_t i);
+
+// Each draw's own result, in draw order (one plain run when there is one draw).
+std::vector<InvSimResult> fly_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults);
+
+// The row's result over the scenario's draws: combine_draws(fly_noise_draws(...)), and one plain run
+// (bit for bit) when the reading is not paper, the noise is off or draws is 1.
+InvSimResult run_over_noise_draws(const model::InvSimParams& params, const model::InvSimFaultSet& faults);
 
 // The combination above, of one or more results (the first gives the final state).
 InvSimResult combine_draws(const std::vector<InvSimResult>& draws, double basic_pulse_amount);

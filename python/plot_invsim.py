@@ -6,7 +6,11 @@ Usage: /usr/bin/python3 python/plot_invsim.py DIR [--modes LABEL ...] [--configu
 
 DIR is the output directory of `chaser fmea SCENARIO --out DIR --history`: fmea.csv (one row per
 layout and fault mode: pulses, k_p, limits, risk class), history/index.csv (configuration, mode,
-file) and one history CSV per layout and mode (one row per 1 s inverse-simulation step).
+file; optional draws, draw_seed) and one history CSV per layout and mode (one row per 1 s
+inverse-simulation step). With several noise draws per mode (the `paper` reading) a row of fmea.csv
+combines them (mean counts, worst deviation) and its history is one draw, the one its class comes
+from: the title names it, the legend's totals are that draw's, and they are not checked against
+fmea.csv's means.
 
 Per mode of the index (all by default; --modes keeps these mode labels, --configuration this
 layout), PLOTDIR/<configuration>/<history file stem>.png (default PLOTDIR = DIR/plots), four panels:
@@ -55,7 +59,7 @@ HISTORY_HEADER = ("t_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps", "x_d
 COUNT_COLUMNS = ("count_x", "count_y", "count_z")
 HISTORY_COLUMNS = ("t_s", "x_m", "y_m", "z_m", "x_desired_m", "y_desired_m", "z_desired_m", "roll_deg",
                    "pitch_deg", "yaw_deg", "azimuth_deg", "elevation_deg", "pulse_x", "pulse_y", "pulse_z")
-INDEX_COLUMNS = ("configuration", "mode", "file")
+INDEX_COLUMNS = ("configuration", "mode", "file")  # and, optional: draws, draw_seed (noise draws)
 FMEA_NUMBERS = ("k_p", "azimuth_limit_deg", "elevation_limit_deg", "attitude_limit_deg", "propellant_kg")
 FMEA_COLUMNS = ("configuration", "mode", "failed", "risk_class", "docked", *FMEA_NUMBERS)
 PULSE_COLUMNS = ("x_pos", "x_neg", "y_pos", "y_neg", "z_pos", "z_neg")  # optional: checked when present
@@ -168,11 +172,23 @@ def yes_no(text):
     return "yes" if text.strip().lower() == "true" else ("no" if text.strip().lower() == "false" else text)
 
 
+def draws_of(row):
+    """The noise draws the fmea.csv row combines (1 when the index does not say)."""
+    try:
+        return max(1, int(row.get("draws") or 1))
+    except ValueError:
+        return 1
+
+
 def title_of(row):
     failed = row["failed"].strip() or "none"
-    return (f"{row['configuration']}: mode {row['mode']} (failed: {failed})\n"
-            f"risk class {row['risk_class']}, k_p {row['k_p']:.4f}, docked: {yes_no(row['docked'])}, "
-            f"propellant {row['propellant_kg']:.2f} kg  (after Zhou 2018, Figs. 6-16)")
+    title = (f"{row['configuration']}: mode {row['mode']} (failed: {failed})\n"
+             f"risk class {row['risk_class']}, k_p {row['k_p']:.4f}, docked: {yes_no(row['docked'])}, "
+             f"propellant {row['propellant_kg']:.2f} kg  (after Zhou 2018, Figs. 6-16)")
+    if draws_of(row) > 1:
+        title += (f"\nhistory: the noise draw of seed {row.get('draw_seed') or '?'}, the worst of "
+                  f"{draws_of(row)} (k_p and propellant: their mean)")
+    return title
 
 
 def outside_legend(ax, **kw):
@@ -268,7 +284,7 @@ def plot_pulses(ax, h, row):
             totals.append(int(count[-1]))
             ax.plot(h["t_s"], count, color=AXIS_COLOURS[axis], ls=style, lw=1.1, drawstyle="steps-post",
                     label=f"{axis}{suffix}: {totals[-1]}")
-            if column in row and row[column] != totals[-1]:
+            if column in row and draws_of(row) == 1 and row[column] != totals[-1]:
                 warn(f"{row['configuration']} {row['mode']}: {totals[-1]} {axis}{suffix} pulses in the history, "
                      f"{row[column]:g} in fmea.csv")
     ax.set_ylabel("pulses (cumulative)")
@@ -281,7 +297,7 @@ def plot_mode(row, h, path):
     """One mode's four panels (trajectory in two axes: x, then y and z)."""
     fig, axes = plt.subplots(5, 1, figsize=(11, 12.5), sharex=True,
                              gridspec_kw={"height_ratios": [1, 1, 1.3, 1.3, 1.3]})
-    fig.subplots_adjust(left=0.08, right=0.82, top=0.93, bottom=0.05, hspace=0.32)
+    fig.subplots_adjust(left=0.08, right=0.82, top=0.93 if draws_of(row) == 1 else 0.915, bottom=0.05, hspace=0.32)
     plot_trajectory(axes[0], axes[1], h)
     plot_attitude(axes[2], h, row["attitude_limit_deg"], row)
     plot_line_of_sight(axes[3], h, row["azimuth_limit_deg"], row["elevation_limit_deg"])
@@ -391,7 +407,8 @@ def load_inputs(args):
 def plot_modes(fmea, entries, args, out):
     """One PNG per index entry; returns the paths written and the unreadable history files."""
     rows = {(r["configuration"], r["mode"]): r for r in fmea}
-    jobs = [(rows[(e["configuration"], e["mode"])], args.dir / "history" / e["file"],
+    jobs = [(dict(rows[(e["configuration"], e["mode"])], draws=e.get("draws"), draw_seed=e.get("draw_seed")),
+             args.dir / "history" / e["file"],
              out / e["configuration"] / (Path(e["file"]).stem + ".png")) for e in entries]
     if args.jobs > 1:
         with multiprocessing.Pool(args.jobs) as pool:

@@ -76,8 +76,8 @@ TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
   EXPECT_NE(read_file(out / "fmea.md").find("## Optimisation"), std::string::npos);
   const std::vector<std::string> index = lines(read_file(out / "history" / "index.csv"));
   ASSERT_EQ(index.size(), 1u + 3u * 41u);
-  EXPECT_EQ(index[0], "configuration,mode,file");
-  EXPECT_EQ(index[26], "baseline,d1/d1~+e1/e1~,baseline/25_d1-d1n+e1-e1n.csv");
+  EXPECT_EQ(index[0], "configuration,mode,file,draws,draw_seed");
+  EXPECT_EQ(index[26], "baseline,d1/d1~+e1/e1~,baseline/25_d1-d1n+e1-e1n.csv,1,");  // smooth: one run, no noise
   const std::vector<std::string> history = lines(read_file(out / "history" / "baseline" / "00_nominal.csv"));
   ASSERT_EQ(history.size(), 1u + 1300u);  // one row per 1 s step of the 1300 s run
   EXPECT_EQ(history[0].rfind("t_s,x_m,y_m,z_m,", 0), 0u);
@@ -86,6 +86,28 @@ TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
   ASSERT_EQ(plot.exit_code, 0) << plot.output;
   EXPECT_TRUE(fs::exists(out / "plots" / "baseline" / "00_nominal.png")) << plot.output;
   EXPECT_TRUE(fs::exists(out / "plots" / "scheme_II" / "31_d1-d2n+e2-e1n.png")) << plot.output;
+}
+
+// Under the paper reading with several noise draws the index names the draw each history shows
+// (the worst: invsim/fmea.hpp) and its seed; the plotter says so in the title and does not hold the
+// draw's pulse totals against fmea.csv's means (no warning), where a single draw's must match.
+TEST(FmeaCli, HistoriesOfNoiseDrawsNameTheDrawAndPlotWithoutMismatch) {
+  const fs::path out = fresh_dir("draws");
+  const CommandResult r = chaser("fmea scenarios/manual_rvd.yaml --history --set pulses.reading=paper "
+                                 "--set pulses.paper.measurement_noise.draws=3 --set pulses.paper.measurement_noise.seed=4 "
+                                 "--out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> index = lines(read_file(out / "history" / "index.csv"));
+  ASSERT_EQ(index.size(), 1u + 3u * 41u);
+  for (std::size_t i = 1; i < index.size(); ++i) {
+    const std::string tail = index[i].substr(index[i].rfind(".csv,") + 5);
+    EXPECT_TRUE(tail == "3,4" || tail == "3,5" || tail == "3,6") << index[i];
+  }
+  const CommandResult plot = chaser::testing::run_shell("/usr/bin/python3 python/plot_invsim.py " + out.string() +
+                                                        " --configuration baseline --modes nominal e1/e1~ 2>&1");
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  EXPECT_EQ(plot.output.find("warning"), std::string::npos) << plot.output;
+  EXPECT_TRUE(fs::exists(out / "plots" / "baseline" / "13_e1-e1n.png")) << plot.output;
 }
 
 // python/plot_invsim.py on a small fake fmea directory (2 layouts x 3 modes: classes I-III, one

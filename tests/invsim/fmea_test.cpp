@@ -1,5 +1,6 @@
 #include "invsim/fmea.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -7,6 +8,7 @@
 
 #include "core/constants.hpp"
 #include "io/invsim_loader.hpp"
+#include "invsim/noise_draws.hpp"
 #include "model/invsim_study.hpp"
 
 namespace chaser::invsim {
@@ -103,6 +105,75 @@ TEST(Fmea, RankingOrdersByClassThenWorkloadThenDeviation) {
   EXPECT_EQ(rows[3].rank, 2);
   EXPECT_EQ(rows[2].rank, 3);
   EXPECT_EQ(rows[0].rank, 4);
+}
+
+// The draw a row's history shows: the most severe class, then the largest deviation ratio, then the
+// largest attitude peak; the first of equals; a diverged draw's non-finite peaks are the worst.
+TEST(Fmea, WorstDrawIsTheMostSevereClassThenDeviationThenAttitude) {
+  const model::InvSimSensorParams s = limits();
+  EXPECT_EQ(worst_draw(s, {result(2.0, 1.0, 0.5)}), 0u);
+  EXPECT_EQ(worst_draw(s, {result(2.0, 1.0, 0.5), result(6.0, 1.0, 0.5), result(4.0, 1.0, 0.5)}), 1u);
+  // Class II by the attitude (1.2 deg) outranks a larger line-of-sight peak still in Class I.
+  InvSimResult turned = result(2.0, 1.0, 1.2);
+  turned.attitude_within_limits = false;
+  EXPECT_EQ(worst_draw(s, {result(4.9, 1.0, 0.5), turned}), 1u);
+  InvSimResult lost = result(3.0, 1.0, 0.5);
+  lost.target_always_in_view = false;  // Class III, whatever its peaks
+  EXPECT_EQ(worst_draw(s, {result(9.0, 1.0, 3.0), lost, result(9.5, 1.0, 3.0)}), 1u);
+  EXPECT_EQ(worst_draw(s, {result(6.0, 1.0, 0.5), result(6.0, 1.0, 0.8), result(6.0, 1.0, 0.8)}), 1u);
+  EXPECT_EQ(worst_draw(s, {result(6.0, 1.0, 0.5), result(6.0, 1.0, 0.5)}), 0u);
+  InvSimResult diverged = result(1.0, 1.0, 0.5);
+  diverged.diverged = true;
+  diverged.peak_azimuth_rad = std::numeric_limits<double>::quiet_NaN();
+  diverged.peak_attitude_rad.z() = std::numeric_limits<double>::quiet_NaN();
+  InvSimResult lost_far = lost;
+  lost_far.peak_azimuth_rad = 50.0 * kDegToRad;
+  EXPECT_EQ(worst_draw(s, {lost_far, diverged}), 1u);
+}
+
+// With several noise draws a row's history is the draw its class comes from, flown again with its
+// seed: the draw's class is the row's (the combination keeps a limit only if every draw keeps it),
+// its index and seed are given, and its peaks are within the row's (the row's are the draws' maxima).
+// Shipped paper reading, 4 draws, on the modes whose classes differ most (I, II, III).
+TEST(Fmea, AHistoryWithSeveralDrawsIsTheDrawTheRowsClassComesFrom) {
+  const io::InvSimLoadResult loaded = io::load_invsim_file(
+      "scenarios/manual_rvd.yaml", {"pulses.reading=paper", "pulses.paper.measurement_noise.draws=4",
+                                    "pulses.paper.measurement_noise.seed=7"});
+  ASSERT_TRUE(loaded.errors.empty()) << io::format_errors(loaded.errors);
+  const model::InvSimParams& p = *loaded.params;
+  std::vector<FmeaCase> cases;
+  for (const FmeaCase& c : fmea_cases(p, {}))
+    for (const char* label : {"nominal", "e1/e1~", "d1/d2~+e2/e1~", "d2/d2~+e2/e1~"})
+      if (c.mode.label == label) cases.push_back(c);
+  ASSERT_EQ(cases.size(), 4u);
+  std::vector<std::vector<FmeaHistory>> histories;
+  const std::vector<FmeaRow> rows = run_fmea(std::vector<model::InvSimParams>{p}, cases, 2, &histories).front();
+  const std::vector<FmeaRow> plain = run_fmea(p, cases, 2);
+  std::vector<RiskClass> classes;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(cases[i].mode.label);
+    const FmeaHistory& h = histories[0][i];
+    EXPECT_EQ(rows[i].result.k_p, plain[i].result.k_p);  // asking for the history changes no row
+    EXPECT_EQ(rows[i].result.peak_azimuth_rad, plain[i].result.peak_azimuth_rad);
+    ASSERT_EQ(h.draws, 4u);
+    ASSERT_LT(h.draw, 4u);
+    ASSERT_TRUE(h.seed.has_value());
+    EXPECT_EQ(*h.seed, 7u + h.draw);
+    const std::vector<InvSimResult> draws = fly_noise_draws(p, cases[i].mode.faults);
+    EXPECT_EQ(classify_risk(p.sensor, draws[h.draw]), rows[i].risk);
+    for (const InvSimResult& d : draws)  // of the draws in the row's class, none deviates more
+      if (classify_risk(p.sensor, d) == rows[i].risk) {
+        EXPECT_LE(deviation_ratio(p.sensor, d), deviation_ratio(p.sensor, draws[h.draw]));
+      }
+    ASSERT_EQ(h.samples.size(), 1300u);
+    double peak_az = 0.0;
+    for (const InvSimSample& sample : h.samples) peak_az = std::max(peak_az, std::abs(sample.azimuth_rad));
+    EXPECT_LE(peak_az, rows[i].result.peak_azimuth_rad);
+    EXPECT_EQ(peak_az > p.sensor.azimuth_limit_rad, rows[i].risk == RiskClass::kUncontrollable);
+    classes.push_back(rows[i].risk);
+  }
+  EXPECT_EQ(classes.front(), RiskClass::kSmallDeviation);
+  EXPECT_EQ(classes[2], RiskClass::kUncontrollable);
 }
 
 // The runs are independent, so the rows must not depend on the number of workers; the nominal run
