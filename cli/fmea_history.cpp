@@ -18,18 +18,17 @@ std::string file_stem(std::size_t index, const std::string& label) {
 }
 
 std::string history_csv(const std::vector<invsim::InvSimSample>& samples) {
-  std::string csv =
-      "t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,x_desired_m,y_desired_m,z_desired_m,roll_deg,pitch_deg,yaw_deg,"
-      "azimuth_deg,elevation_deg,ux_mps2,uy_mps2,uz_mps2,pulse_x,pulse_y,pulse_z,count_x,count_y,count_z\n";
+  std::string csv;
+  for (std::string_view column : kHistoryColumns) csv += fmt::format("{}{}", csv.empty() ? "" : ",", column);
+  csv += '\n';
   for (const invsim::InvSimSample& s : samples) {
-    csv += fmt::format("{:.1f},{:.5f},{:.5f},{:.5f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},", s.t_s, s.r_hill_m.x(),
-                       s.r_hill_m.y(), s.r_hill_m.z(), s.v_hill_mps.x(), s.v_hill_mps.y(), s.v_hill_mps.z(),
-                       s.r_desired_hill_m.x(), s.r_desired_hill_m.y(), s.r_desired_hill_m.z());
-    csv += fmt::format("{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.6e},{},{},{},{},{},{}\n", s.euler_rad.x() / kDegToRad,
-                       s.euler_rad.y() / kDegToRad, s.euler_rad.z() / kDegToRad, s.azimuth_rad / kDegToRad,
-                       s.elevation_rad / kDegToRad, s.u_body_mps2.x(), s.u_body_mps2.y(), s.u_body_mps2.z(),
-                       s.pulse_direction[0], s.pulse_direction[1], s.pulse_direction[2], s.pulse_count[0],
-                       s.pulse_count[1], s.pulse_count[2]);
+    const auto v = history_values(s);
+    csv += fmt::format("{:.1f},{:.5f},{:.5f},{:.5f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f},{:.5f},", v[0], v[1], v[2], v[3],
+                       v[4], v[5], v[6], v[7], v[8], v[9]);
+    csv += fmt::format("{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.6e},", v[10], v[11], v[12], v[13], v[14],
+                       v[15], v[16], v[17]);
+    csv += fmt::format("{},{},{},{},{},{}\n", s.pulse_direction[0], s.pulse_direction[1], s.pulse_direction[2],
+                       s.pulse_count[0], s.pulse_count[1], s.pulse_count[2]);
   }
   return csv;
 }
@@ -43,6 +42,33 @@ bool write(const std::filesystem::path& path, const std::string& text, std::stri
 }
 
 }  // namespace
+
+std::array<double, kHistoryColumns.size()> history_values(const invsim::InvSimSample& s) {
+  return {s.t_s,
+          s.r_hill_m.x(),
+          s.r_hill_m.y(),
+          s.r_hill_m.z(),
+          s.v_hill_mps.x(),
+          s.v_hill_mps.y(),
+          s.v_hill_mps.z(),
+          s.r_desired_hill_m.x(),
+          s.r_desired_hill_m.y(),
+          s.r_desired_hill_m.z(),
+          s.euler_rad.x() / kDegToRad,
+          s.euler_rad.y() / kDegToRad,
+          s.euler_rad.z() / kDegToRad,
+          s.azimuth_rad / kDegToRad,
+          s.elevation_rad / kDegToRad,
+          s.u_body_mps2.x(),
+          s.u_body_mps2.y(),
+          s.u_body_mps2.z(),
+          static_cast<double>(s.pulse_direction[0]),
+          static_cast<double>(s.pulse_direction[1]),
+          static_cast<double>(s.pulse_direction[2]),
+          static_cast<double>(s.pulse_count[0]),
+          static_cast<double>(s.pulse_count[1]),
+          static_cast<double>(s.pulse_count[2])};
+}
 
 bool write_fmea_histories(const std::filesystem::path& dir, const std::vector<FmeaLayout>& layouts,
                           const std::vector<std::vector<invsim::FmeaHistory>>& histories,

@@ -4,8 +4,10 @@
 // scenario's own layout, then the comparison of the layouts (Schemes I and II, section 4.2) and the
 // --optimize search; optimize.csv, every candidate of the search, best first; and the per-step
 // histories that python/plot_invsim.py draws.
+#include <array>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "invsim/fmea.hpp"
@@ -47,6 +49,18 @@ void append_table6(std::string& md, const model::InvSimParams& p, const std::vec
 void append_reconfiguration(std::string& md, const std::vector<FmeaLayout>& layouts);
 void append_optimization(std::string& md, const std::vector<FmeaLayout>& layouts,
                          const std::vector<invsim::LayoutCandidate>& optimized, int keep);
+
+// The columns of a history file (DIR/history/<layout>/<NN>_<mode>.csv), in order, and one sample's
+// values in the file's units (angles in degrees; the last six, pulse_x .. count_z, integers). The
+// file rounds them (t to 0.1 s, positions to 10 um, velocities to 1 um/s, angles to 1e-5 deg, u to
+// 7 digits); chaser.fmea(history=True) gives them whole.
+inline constexpr std::array<std::string_view, 24> kHistoryColumns{
+    "t_s",         "x_m",       "y_m",         "z_m",         "vx_mps",       "vy_mps",
+    "vz_mps",      "x_desired_m", "y_desired_m", "z_desired_m", "roll_deg",     "pitch_deg",
+    "yaw_deg",     "azimuth_deg", "elevation_deg", "ux_mps2",   "uy_mps2",      "uz_mps2",
+    "pulse_x",     "pulse_y",   "pulse_z",     "count_x",     "count_y",      "count_z"};
+inline constexpr std::size_t kHistoryIntegerColumns = 6;  // the last six
+std::array<double, kHistoryColumns.size()> history_values(const invsim::InvSimSample& sample);
 
 // DIR/history/index.csv (configuration,mode,file,draws,draw_seed: the noise draws the row combines and
 // the seed of the one shown, empty without noise) and DIR/history/<layout>/<NN>_<mode>.csv, one row

@@ -1,14 +1,17 @@
 // The design-time analyses of the command line, from Python: chaser.thrusters (`chaser thrusters
 // --json`) and chaser.fdi_design (`chaser fdi design --out`) return the JSON document the command
 // writes, made by the same C++ function, as Python values with NumPy arrays for matrices;
-// chaser.fmea (`chaser fmea`) runs the command's study and returns fmea.csv as a structured array.
+// chaser.fmea (`chaser fmea`) runs the command's study and returns fmea.csv as a structured array,
+// with optimize.csv and the per-step histories when asked for.
 #include <algorithm>
+#include <cstring>
 #include <cstdint>
 #include <optional>
 #include <sstream>
 #include <thread>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -17,6 +20,7 @@
 
 #include "campaign/csv.hpp"
 #include "cli/fmea_report.hpp"
+#include "invsim/layout_study.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
 #include "flight/fdir.hpp"
@@ -104,19 +108,45 @@ py::object fdi_design(const py::object& scenario_arg, const std::string& model) 
   return json_to_python(design);
 }
 
-// A CSV text of our own writing (no quoting) as a structured array: a column whose fields are all
+// The fields of one line of a CSV text of our own writing: a field in double quotes (optimize.csv's
+// candidate names hold commas) holds no quote itself, and is given without its quotes.
+std::vector<std::string_view> split_csv_line(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (;;) {
+    if (start < line.size() && line[start] == '"') {
+      const std::size_t close = line.find('"', start + 1);
+      if (close == std::string_view::npos) throw std::runtime_error("an unclosed quote: " + std::string(line));
+      fields.push_back(line.substr(start + 1, close - start - 1));
+      start = close + 1;
+      if (start == line.size()) return fields;
+      if (line[start] != ',') throw std::runtime_error("a quote inside a field: " + std::string(line));
+      ++start;
+      continue;
+    }
+    const std::size_t comma = line.find(',', start);
+    if (comma == std::string_view::npos) {
+      fields.push_back(line.substr(start));
+      return fields;
+    }
+    fields.push_back(line.substr(start, comma - start));
+    start = comma + 1;
+  }
+}
+
+// A CSV text of our own writing (split_csv_line) as a structured array: a column whose fields are all
 // true/false is bool, all integers int64, all numbers float64, otherwise a string as wide as its
 // longest field.
 py::object csv_table(const std::string& text) {
   std::istringstream in(text);
   std::string header_line;
   std::getline(in, header_line);
-  const std::vector<std::string_view> header = campaign::split_fields(header_line);
+  const std::vector<std::string_view> header = split_csv_line(header_line);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   std::vector<std::vector<std::string_view>> cells;
   for (const std::string& line : lines) {
-    cells.push_back(campaign::split_fields(line));
+    cells.push_back(split_csv_line(line));
     if (cells.back().size() != header.size()) throw std::runtime_error("a malformed row: " + line);
   }
   const py::module_ np = py::module_::import("numpy");
@@ -147,26 +177,61 @@ py::object csv_table(const std::string& text) {
   return table;
 }
 
-// `chaser fmea SCENARIO --set ... --threads K [--three-axis]`: fmea.csv, fmea.md and the per-layout
-// figures the command prints.
-py::dict fmea(const std::string& path, const py::object& overrides, std::optional<int> threads, bool three_axis) {
+// One history (cli::kHistoryColumns) as a structured array: the file's columns, whole values.
+py::object history_table(const std::vector<invsim::InvSimSample>& samples) {
+  const py::module_ np = py::module_::import("numpy");
+  py::list fields;
+  const std::size_t first_integer = cli::kHistoryColumns.size() - cli::kHistoryIntegerColumns;
+  for (std::size_t c = 0; c < cli::kHistoryColumns.size(); ++c)
+    fields.append(py::make_tuple(std::string(cli::kHistoryColumns[c]), c < first_integer ? "<f8" : "<i8"));
+  py::array table = np.attr("zeros")(samples.size(), np.attr("dtype")(fields));
+  // Packed record of 18 doubles and 6 int64, filled in place.
+  auto* record = static_cast<char*>(table.mutable_data());
+  for (const invsim::InvSimSample& s : samples) {
+    const auto values = cli::history_values(s);
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      char* field = record + 8 * c;
+      if (c < first_integer) {
+        std::memcpy(field, &values[c], sizeof(double));
+      } else {
+        const auto integer = static_cast<std::int64_t>(values[c]);
+        std::memcpy(field, &integer, sizeof(integer));
+      }
+    }
+    record += 8 * values.size();
+  }
+  return table;
+}
+
+// `chaser fmea SCENARIO --set ... --threads K [--three-axis] [--optimize] [--history]`: fmea.csv,
+// fmea.md, the per-layout figures the command prints, optimize.csv and the histories.
+py::dict fmea(const std::string& path, const py::object& overrides, std::optional<int> threads, bool three_axis,
+              bool optimize, bool history) {
   if (threads && *threads < 1) throw py::value_error(fmt::format("threads: must be >= 1 (got {})", *threads));
   const std::vector<std::string> sets = override_strings(overrides);
   io::InvSimLoadResult loaded;
   std::vector<cli::FmeaLayout> layouts;
-  std::string csv, markdown;
+  std::vector<invsim::LayoutCandidate> optimized;
+  std::vector<std::vector<invsim::FmeaHistory>> histories;
+  std::string csv, markdown, optimize_text, problem;
   {
     py::gil_scoped_release released;
     loaded = io::load_invsim_file(path, sets);
-    if (loaded.errors.empty() && loaded.params) {
-      layouts = cli::run_fmea_layouts(
-          loaded, three_axis, threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
-          nullptr);
+    if (loaded.errors.empty() && loaded.params && optimize && loaded.study.free_choices.empty())
+      problem = fmt::format("optimize: {} marks no free mounting choice (optimize.choices)", path);
+    if (loaded.errors.empty() && loaded.params && problem.empty()) {
+      const int workers = threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+      layouts = cli::run_fmea_layouts(loaded, three_axis, workers, history ? &histories : nullptr);
+      if (optimize)
+        optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,
+                                           invsim::fmea_cases(*loaded.params, loaded.faults, three_axis), workers);
       csv = cli::fmea_csv(layouts);
-      markdown = cli::fmea_markdown(layouts, nullptr, loaded.study.optimize_keep);
+      markdown = cli::fmea_markdown(layouts, optimize ? &optimized : nullptr, loaded.study.optimize_keep);
+      if (optimize) optimize_text = cli::optimize_csv(optimized);
     }
   }
   if (!loaded.errors.empty() || !loaded.params) raise_scenario_error(loaded.errors);
+  if (!problem.empty()) throw py::value_error(problem);
   py::dict summaries;
   for (const cli::FmeaLayout& layout : layouts) {
     const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
@@ -175,7 +240,21 @@ py::dict fmea(const std::string& path, const py::object& overrides, std::optiona
                  py::arg("class_II") = s.per_class[1], py::arg("class_III") = s.per_class[2],
                  py::arg("propellant_kg") = s.propellant_kg);
   }
-  return py::dict(py::arg("rows") = csv_table(csv), py::arg("layouts") = summaries, py::arg("markdown") = markdown);
+  py::dict out(py::arg("rows") = csv_table(csv), py::arg("layouts") = summaries, py::arg("markdown") = markdown);
+  if (optimize) out["optimize"] = csv_table(optimize_text);
+  if (history) {
+    py::dict by_mode;  // (configuration, mode) -> the history, in index.csv's order
+    for (std::size_t l = 0; l < layouts.size(); ++l)
+      for (std::size_t i = 0; i < layouts[l].rows.size(); ++i) {
+        const invsim::FmeaHistory& h = histories[l][i];
+        by_mode[py::make_tuple(layouts[l].name, layouts[l].rows[i].fmea_case.mode.label)] =
+            py::dict(py::arg("draws") = h.draws,
+                     py::arg("draw_seed") = h.seed ? py::object(py::int_(*h.seed)) : py::object(py::none()),
+                     py::arg("samples") = history_table(h.samples));
+      }
+    out["histories"] = by_mode;
+  }
+  return out;
 }
 
 }  // namespace
@@ -212,11 +291,14 @@ void add_analyses(py::module_& m) {
         "--model M --out F` writes it: a dict with NumPy arrays for matrices (A_bar, L, Q, ...; complex "
         "eigenvalues as [re, im] rows). Raises ValueError where the command exits with 2.");
   m.def("fmea", &fmea, py::arg("scenario"), py::arg("overrides") = py::none(), py::arg("threads") = py::none(),
-        py::arg("three_axis") = false,
+        py::arg("three_axis") = false, py::arg("optimize") = false, py::arg("history") = false,
         "The failure-mode and effects analysis of `chaser fmea` (Zhou 2018; docs/invsim.md) for an "
         "inverse-simulation scenario file: {'rows': fmea.csv as a structured array, 'layouts': {name: "
         "{description, class_I, class_II, class_III, propellant_kg}}, 'markdown': fmea.md's text}. overrides: "
-        "as for load_scenario; threads: --threads (default every core); three_axis: --three-axis.");
+        "as for load_scenario; threads: --threads (default every core); three_axis: --three-axis; optimize: "
+        "--optimize, adds 'optimize' (optimize.csv as a structured array; ValueError without free choices); "
+        "history: --history, adds 'histories': {(configuration, mode): {draws, draw_seed, samples: the history "
+        "file's columns as a structured array, unrounded}}.");
 }
 
 }  // namespace chaser::python

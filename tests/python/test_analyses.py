@@ -104,3 +104,65 @@ def test_bad_fmea_arguments_raise(tmp_path):
         chaser.fmea(str(tmp_path / "nowhere.yaml"))
     with pytest.raises(chaser.ScenarioError):
         chaser.fmea(str(MANUAL_RVD), overrides={"nonesuch.key": 1})
+    without_choices = tmp_path / "no_choices.yaml"
+    shipped = MANUAL_RVD.read_text()
+    without_choices.write_text(shipped[:shipped.index("\noptimize:")] + "\nfaults: []\n")
+    with pytest.raises(ValueError, match="marks no free mounting choice"):
+        chaser.fmea(str(without_choices), optimize=True)
+    assert len(chaser.fmea(str(without_choices), threads=2)["rows"]) == 3 * 41
+
+
+# The precision of each history column in the file (cli/fmea_history.cpp): half its last digit.
+HISTORY_ROUNDING = {"t_s": 0.05, "vx_mps": 5e-7, "vy_mps": 5e-7, "vz_mps": 5e-7}
+
+
+def test_fmea_optimize_and_history_are_the_command_lines(cli, tmp_path):
+    shown = run_cli(cli, "fmea", MANUAL_RVD, "--out", tmp_path, "--threads", 2, "--optimize", "--history")
+    assert shown.returncode == 0, shown.stderr
+    got = chaser.fmea(str(MANUAL_RVD), threads=2, optimize=True, history=True)
+    assert got["markdown"] == (tmp_path / "fmea.md").read_text()
+    with open(tmp_path / "optimize.csv", newline="") as f:
+        expected = list(csv.DictReader(f))
+    ranked = got["optimize"]
+    assert list(ranked.dtype.names) == list(expected[0]) and len(ranked) == len(expected) == 48
+    for row, want in zip(ranked, expected):
+        for name in ranked.dtype.names:
+            value = row[name]
+            text = ("true" if value else "false") if ranked.dtype[name].kind == "b" else str(value)
+            assert (float(text) == float(want[name])) if ranked.dtype[name].kind in "if" else text == want[name], name
+    assert ranked["candidate"][0].startswith("attitude_thrust=")
+    with open(tmp_path / "history" / "index.csv", newline="") as f:
+        index = list(csv.DictReader(f))
+    histories = got["histories"]
+    assert list(histories) == [(e["configuration"], e["mode"]) for e in index]
+    for entry in index[:: 20]:
+        h = histories[(entry["configuration"], entry["mode"])]
+        assert h["draws"] == int(entry["draws"]) == 1 and h["draw_seed"] is None and entry["draw_seed"] == ""
+        with open(tmp_path / "history" / entry["file"], newline="") as f:
+            header = next(csv.reader(f))
+        table = np.loadtxt(tmp_path / "history" / entry["file"], delimiter=",", skiprows=1)
+        samples = h["samples"]
+        assert list(samples.dtype.names) == header and len(samples) == len(table) == 1300
+        for c, name in enumerate(header):
+            if samples.dtype[name].kind == "i":
+                assert np.array_equal(samples[name], table[:, c].astype(np.int64)), name
+            elif name.startswith("u"):  # written with 7 significant digits
+                assert np.allclose(samples[name], table[:, c], rtol=5e-7, atol=0), name
+            else:  # positions and angles to 5 decimals
+                assert np.max(np.abs(samples[name] - table[:, c])) <= HISTORY_ROUNDING.get(name, 5e-6) * (1 + 1e-9), name
+
+
+def test_fmea_history_under_noise_draws_is_the_worst_draw():
+    overrides = {"pulses.reading": "paper", "pulses.paper.measurement_noise.draws": 3,
+                 "pulses.paper.measurement_noise.seed": 4}
+    got = chaser.fmea(str(MANUAL_RVD), overrides=overrides, threads=2, history=True)
+    rows = {(r["configuration"], r["mode"]): r for r in got["rows"]}
+    for key, h in got["histories"].items():
+        assert h["draws"] == 3 and h["draw_seed"] in (4, 5, 6), key
+        peak = np.max(np.abs(h["samples"]["azimuth_deg"]))
+        # The draw shown is within the row's worst (fmea.csv's peak is the draws' largest, to 4 decimals),
+        # and out of view exactly where the row is Class III for the line of sight.
+        assert peak <= rows[key]["peak_azimuth_deg"] + 5e-5, key
+        if rows[key]["risk_class"] == "III" and rows[key]["docked"]:
+            assert peak > rows[key]["azimuth_limit_deg"] or \
+                np.max(np.abs(h["samples"]["elevation_deg"])) > rows[key]["elevation_limit_deg"], key
