@@ -1,8 +1,11 @@
 #include "campaign/csv.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace chaser::campaign {
 
@@ -10,13 +13,20 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t start = 0;
   for (;;) {
-    const std::size_t comma = line.find(',', start);
-    if (comma == std::string_view::npos) {
-      fields.push_back(line.substr(start));
-      return fields;
+    std::size_t end = 0;  // where the field's separator (or the line's end) is
+    if (start < line.size() && line[start] == '"') {
+      const std::size_t close = line.find('"', start + 1);
+      if (close == std::string_view::npos) throw std::runtime_error("a CSV field with no closing quote: " + std::string(line));
+      fields.push_back(line.substr(start + 1, close - start - 1));
+      end = close + 1;
+      if (end < line.size() && line[end] != ',')
+        throw std::runtime_error("a CSV field with text after its closing quote: " + std::string(line));
+    } else {
+      end = std::min(line.find(',', start), line.size());
+      fields.push_back(line.substr(start, end - start));
     }
-    fields.push_back(line.substr(start, comma - start));
-    start = comma + 1;
+    if (end >= line.size()) return fields;
+    start = end + 1;
   }
 }
 

@@ -8,6 +8,9 @@
 
 namespace chaser::campaign {
 
+// The fields of one line. A field in double quotes (optimize.csv's candidate names hold commas;
+// the campaign's files quote nothing) is given without them and holds no quote itself; a missing
+// closing quote or text after it throws std::runtime_error.
 std::vector<std::string_view> split_fields(std::string_view line);
 
 // A number as append_number writes it ({:.17g} or "nan"), the whole field; nullopt otherwise.

@@ -108,45 +108,19 @@ py::object fdi_design(const py::object& scenario_arg, const std::string& model) 
   return json_to_python(design);
 }
 
-// The fields of one line of a CSV text of our own writing: a field in double quotes (optimize.csv's
-// candidate names hold commas) holds no quote itself, and is given without its quotes.
-std::vector<std::string_view> split_csv_line(std::string_view line) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  for (;;) {
-    if (start < line.size() && line[start] == '"') {
-      const std::size_t close = line.find('"', start + 1);
-      if (close == std::string_view::npos) throw std::runtime_error("an unclosed quote: " + std::string(line));
-      fields.push_back(line.substr(start + 1, close - start - 1));
-      start = close + 1;
-      if (start == line.size()) return fields;
-      if (line[start] != ',') throw std::runtime_error("a quote inside a field: " + std::string(line));
-      ++start;
-      continue;
-    }
-    const std::size_t comma = line.find(',', start);
-    if (comma == std::string_view::npos) {
-      fields.push_back(line.substr(start));
-      return fields;
-    }
-    fields.push_back(line.substr(start, comma - start));
-    start = comma + 1;
-  }
-}
-
-// A CSV text of our own writing (split_csv_line) as a structured array: a column whose fields are all
-// true/false is bool, all integers int64, all numbers float64, otherwise a string as wide as its
-// longest field.
+// A CSV text of our own writing (fields as campaign::split_fields reads them) as a structured array:
+// a column whose fields are all true/false is bool, all integers int64, all numbers float64,
+// otherwise a string as wide as its longest field.
 py::object csv_table(const std::string& text) {
   std::istringstream in(text);
   std::string header_line;
   std::getline(in, header_line);
-  const std::vector<std::string_view> header = split_csv_line(header_line);
+  const std::vector<std::string_view> header = campaign::split_fields(header_line);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   std::vector<std::vector<std::string_view>> cells;
   for (const std::string& line : lines) {
-    cells.push_back(split_csv_line(line));
+    cells.push_back(campaign::split_fields(line));
     if (cells.back().size() != header.size()) throw std::runtime_error("a malformed row: " + line);
   }
   const py::module_ np = py::module_::import("numpy");

@@ -9,7 +9,9 @@
 
 #include "campaign/csv.hpp"
 
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace chaser::campaign {
@@ -79,6 +81,19 @@ TEST(RunRow, EveryFieldReadsBackAsItsColumnKind) {
   }
   EXPECT_EQ(column(r, "seed"), "18446744073709551557");
   EXPECT_EQ(column(r, "case"), "stuck_closed");
+}
+
+// split_fields: plain fields, empty ones kept; a field in double quotes (optimize.csv's candidate
+// names) given whole, commas and all, without its quotes; a bad quote is an error, not a guess.
+TEST(CsvFields, PlainAndQuotedFields) {
+  using V = std::vector<std::string_view>;
+  EXPECT_EQ(split_fields("a,,b,"), (V{"a", "", "b", ""}));
+  EXPECT_EQ(split_fields(""), (V{""}));
+  EXPECT_EQ(split_fields("1,\"x=1, y=2\",true"), (V{"1", "x=1, y=2", "true"}));
+  EXPECT_EQ(split_fields("\"a,b\""), (V{"a,b"}));
+  EXPECT_EQ(split_fields("\"\",z"), (V{"", "z"}));
+  EXPECT_THROW(split_fields("1,\"open"), std::runtime_error);
+  EXPECT_THROW(split_fields("\"a\"b,c"), std::runtime_error);
 }
 
 }  // namespace
