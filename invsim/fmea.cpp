@@ -59,17 +59,23 @@ FmeaRow judged_row(const model::InvSimParams& p, const FmeaCase& c, InvSimResult
   return row;
 }
 
-// The row's result, and with `history` the worst draw's history flown again (one flight with one draw).
+// The row's result; with `history`, also the history of the draw the row's class comes from, that
+// draw flown once more to record it (a single draw is recorded as it flies).
 InvSimResult fly_row(const model::InvSimParams& p, const model::InvSimFaultSet& faults, FmeaHistory* history) {
   if (history == nullptr) return run_over_noise_draws(p, faults);
-  history->seed.reset();
-  if (flight_choices(p).measurement_noise.enabled()) history->seed = p.pulses.paper.measurement_noise.seed;
-  if (noise_draws_per_mode(p) <= 1) return run_inverse_simulation(p, faults, &history->samples);
+  if (noise_draws_per_mode(p) <= 1) {
+    history->draws = 1;
+    history->draw = 0;
+    history->seed.reset();
+    if (flight_choices(p).measurement_noise.enabled()) history->seed = p.pulses.paper.measurement_noise.seed;
+    return run_inverse_simulation(p, faults, &history->samples);
+  }
   const std::vector<InvSimResult> draws = fly_noise_draws(p, faults);
   history->draws = draws.size();
   history->draw = worst_draw(p.sensor, draws);
-  *history->seed += history->draw;
-  run_inverse_simulation(noise_draw(p, history->draw), faults, &history->samples);
+  const model::InvSimParams shown = noise_draw(p, history->draw);
+  history->seed = shown.pulses.paper.measurement_noise.seed;
+  run_inverse_simulation(shown, faults, &history->samples);
   return combine_draws(draws, p.pulses.basic_pulse_amount);
 }
 
