@@ -3,6 +3,7 @@
 
 Usage: /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check] [--q-vx-max Q]
        /usr/bin/python3 python/calibrate_invsim.py --targets DIR/fmea.csv
+       /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] --global N [--seed S]
 
 The `paper` reading (docs/invsim.md, "Readings of App. B") leaves seven choices the paper does not
 print: the width w of one counted valve opening (pulses.paper.pulse_width_s), the velocity
@@ -30,7 +31,9 @@ and optimize sections (the nominal case over the scenario's noise draws) and rea
 gentler and the paper's four lost Table 5 modes are flown; with q_vx <= 1 they are lost again).
 --write puts the result into the scenario's pulses.paper block; --check exits 1 when the
 scenario's block differs from what the procedure finds (the shipped values are reproducible).
-Prints each accepted step and the final nominal figures beside the paper's. --targets scores an
+Prints each accepted step and the final nominal figures beside the paper's. --global N checks the
+procedure's result against N points drawn from the whole product of the grids and descents from
+the best five (an exploration: prints, writes nothing). --targets scores an
 existing fmea.csv (baseline layout) against issue 21's targets: the fault rows' predictions beside
 Tables 4 and 5.
 """
@@ -38,6 +41,7 @@ import argparse
 import csv
 import math
 import pathlib
+import random
 import re
 import subprocess
 import sys
@@ -156,15 +160,20 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None)
     return params, best, len(cache)
 
 
-def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache):
-    params = with_value(START, "lateral", lateral)
+def evaluate(chaser, scenario, workdir, params, cache):
+    """(J, counts, k_p) of the nominal row under `params`, each point flown once (`cache`)."""
+    key = (params["w"], tuple(params["qv"]), params["range"], params["angle"], params["lateral"])
+    if key not in cache:
+        counts, k_p = run_nominal(chaser, scenario, params, workdir)
+        cache[key] = (objective(counts, k_p), counts, k_p)
+    return cache[key]
+
+
+def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=START):
+    params = with_value(start, "lateral", lateral)
 
     def evaluate(p):
-        key = (p["w"], tuple(p["qv"]), p["range"], p["angle"], p["lateral"])
-        if key not in cache:
-            counts, k_p = run_nominal(chaser, scenario, p, workdir)
-            cache[key] = (objective(counts, k_p), counts, k_p)
-        return cache[key]
+        return globals()["evaluate"](chaser, scenario, workdir, p, cache)
 
     best = evaluate(params)
     log(f"start {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
@@ -184,6 +193,31 @@ def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache):
         if not changed:
             break
     return params, best
+
+
+def global_search(chaser, scenario, workdir, samples, seed=1, starts=5, log=print):
+    """A check of the coordinate descent's result against the whole grid: `samples` points drawn
+    uniformly (random.Random(seed)) from the product of W_GRID, Q_GRID^3, RANGE_GRID, ANGLE_GRID and
+    LATERAL_GRID (792,330 points), each scored on the nominal row, then the descent (lateral held)
+    from the best `starts` of them. Deterministic. Returns [(J, params, counts, k_p)] of the descents'
+    ends, best first, and the number of nominal studies flown."""
+    rng = random.Random(seed)
+    cache = {}
+    drawn = []
+    for _ in range(samples):
+        params = {"w": rng.choice(W_GRID), "qv": [rng.choice(Q_GRID) for _ in range(3)],
+                  "range": rng.choice(RANGE_GRID), "angle": rng.choice(ANGLE_GRID), "lateral": rng.choice(LATERAL_GRID)}
+        drawn.append((evaluate(chaser, scenario, workdir, params, cache)[0], params))
+    drawn.sort(key=lambda d: d[0])
+    log(f"{samples} points drawn: best J {drawn[0][0]:.4f} ({describe(drawn[0][1])}); "
+        f"median {drawn[len(drawn) // 2][0]:.4f}; below 0.1: {sum(d[0] < 0.1 for d in drawn)}")
+    ends = []
+    for j, params in drawn[:starts]:
+        log(f"-- descent from {describe(params)} (J {j:.4f})")
+        end, best = descend(chaser, scenario, workdir, log, None, params["lateral"], cache, start=params)
+        ends.append((best[0], end, best[1], best[2]))
+    ends.sort(key=lambda e: e[0])
+    return ends, len(cache)
 
 
 def shipped(scenario):
@@ -318,9 +352,25 @@ def main():
                     help="hold the lateral time constant at T [s] instead of calibrating it (a study of its effect)")
     ap.add_argument("--q-vx-max", type=float, metavar="Q",
                     help="calibrate with q_vx <= Q only (q_vx = 1 keeps the paper's four lost modes)")
+    ap.add_argument("--global", dest="global_samples", type=int, metavar="N",
+                    help="also check the descent against N points drawn from the whole grid and descents from "
+                         "the best five of them (prints; --seed S draws another set)")
+    ap.add_argument("--seed", type=int, default=1, help="seed of the --global draw (default 1)")
     args = ap.parse_args()
     if args.targets:
         score_targets(args.targets)
+        return 0
+    if args.global_samples is not None:
+        if args.global_samples < 1:
+            ap.error(f"--global: N must be >= 1 (got {args.global_samples})")
+        scenario = yaml.safe_load(pathlib.Path(args.scenario).read_text())
+        with tempfile.TemporaryDirectory() as tmp:
+            ends, runs = global_search(args.chaser, scenario, pathlib.Path(tmp), args.global_samples, args.seed)
+        print(f"global check after {runs} nominal studies; the descents' ends, best first:")
+        for j, params, counts, k_p in ends:
+            print(f"  J={j:.4f} {describe(params)} counts {counts} k_p {k_p:.3f}")
+        have = shipped(scenario)
+        print(f"the scenario's block: {describe(have)}")
         return 0
     path = pathlib.Path(args.scenario)
     scenario = yaml.safe_load(path.read_text())
