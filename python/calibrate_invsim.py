@@ -160,7 +160,7 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None)
     return params, best, len(cache)
 
 
-def evaluate(chaser, scenario, workdir, params, cache):
+def scored(chaser, scenario, workdir, params, cache):
     """(J, counts, k_p) of the nominal row under `params`, each point flown once (`cache`)."""
     key = (params["w"], tuple(params["qv"]), params["range"], params["angle"], params["lateral"])
     if key not in cache:
@@ -173,7 +173,7 @@ def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=STAR
     params = with_value(start, "lateral", lateral)
 
     def evaluate(p):
-        return globals()["evaluate"](chaser, scenario, workdir, p, cache)
+        return scored(chaser, scenario, workdir, p, cache)
 
     best = evaluate(params)
     log(f"start {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
@@ -207,7 +207,7 @@ def global_search(chaser, scenario, workdir, samples, seed=1, starts=5, log=prin
     for _ in range(samples):
         params = {"w": rng.choice(W_GRID), "qv": [rng.choice(Q_GRID) for _ in range(3)],
                   "range": rng.choice(RANGE_GRID), "angle": rng.choice(ANGLE_GRID), "lateral": rng.choice(LATERAL_GRID)}
-        drawn.append((evaluate(chaser, scenario, workdir, params, cache)[0], params))
+        drawn.append((scored(chaser, scenario, workdir, params, cache)[0], params))
     drawn.sort(key=lambda d: d[0])
     log(f"{samples} points drawn: best J {drawn[0][0]:.4f} ({describe(drawn[0][1])}); "
         f"median {drawn[len(drawn) // 2][0]:.4f}; below 0.1: {sum(d[0] < 0.1 for d in drawn)}")
