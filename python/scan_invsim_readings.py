@@ -5,6 +5,7 @@ calibration (docs/invsim.md, "Which targets no reading can meet, and why").
 Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT]
 
 coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
 per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
@@ -17,6 +18,9 @@ faulted: the reading as shipped since session 17 (inverse_model: faulted, measur
 angles, seed 1), every Q of the grid at each angle sigma, w = 0.1 s; k_p is compared after scaling
 every row by 0.526 / (the point's nominal k_p), i.e. with w chosen on the nominal row (counts go
 as 1 / w up to the rounding of ceil).
+shipped: the reading as shipped (the scenario's pulses.paper block), every Q of the grid: which Q
+lose exactly the paper's four Table 5 modes (target 6), the best nominal objective J each of them
+reaches over the calibration's widths, and the best one scored on every target.
 Deterministic: fixed grids, one `chaser fmea` per point.
 
 coarse and targets replace the scenario's pulses.paper block with {pulse_width_s, state_weights}
@@ -148,9 +152,47 @@ def scan_faulted(chaser, scenario, workdir, angles, writer):
           f"{min(t['table5_ratios'], default=0):.2f}-{max(t['table5_ratios'], default=0):.2f}x, Spearman {t['spearman']:.2f}")
 
 
+def scan_shipped(chaser, scenario, workdir, writer):
+    """Target (6) against the nominal fit, in the reading as shipped (the scenario's pulses.paper
+    block: opening, inverse model, noise and draws, lateral return), over every Q of the grid: which
+    Q lose exactly the paper's four (the classes do not depend on w, which only counts), and the
+    best nominal objective each of those reaches over W_GRID; the best of them is then scored on
+    every target at its w."""
+    have = cal.shipped(scenario)
+    kept = []
+    for qv in grid():
+        params = dict(have, qv=list(qv))
+        rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, params), workdir))
+        t = cal.targets(rows)
+        best = None
+        if t["same_four_lost"]:
+            for w in cal.W_GRID:
+                counts, k_p = cal.run_nominal(chaser, scenario, dict(params, w=w), workdir)
+                j = cal.objective(counts, k_p)
+                if best is None or j < best[0]:
+                    best = (j, w, counts, k_p)
+            kept.append((best, qv))
+        writer.writerow([*qv, len(t["lost"]), int(t["same_four_lost"]), *(best[:2] if best else ("", ""))])
+    print(f"shipped reading (w, noise, lateral as in the scenario: {cal.describe(have)}), {len(grid())} Q points")
+    print(f"the paper's four lost, and only they (target 6): {len(kept)} Q points")
+    if not kept:
+        return
+    kept.sort(key=lambda k: k[0][0])
+    for (j, w, counts, k_p), qv in kept[:5]:
+        print(f"  J {j:.4f} at w = {w:g} s, q_v = {list(qv)}: nominal {counts}, k_p {k_p:.3f}")
+    (j, w, counts, k_p), qv = kept[0]
+    rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, dict(have, qv=list(qv), w=w)), workdir))
+    t = cal.targets(rows)
+    ratios = t["table5_ratios"]
+    print(f"best of them scored: nominal within 15 % {t['nominal_within']} of 6, k_p {t['k_p_within']} of 17, "
+          f"rise {t['rise_within']} of 16, z doubles worst {'yes' if t['z_doubles_worst'] else 'no'}, Table 5 "
+          f"{min(ratios, default=0):.2f}-{max(ratios, default=0):.2f}x ({t['table5_in_band']} of {len(ratios)} in band), "
+          f"lost {', '.join(sorted(t['lost']))}, Spearman {t['spearman']:.2f}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("what", choices=["coarse", "targets", "faulted"])
+    ap.add_argument("what", choices=["coarse", "targets", "faulted", "shipped"])
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--width", type=float, default=0.06, help="w for `targets` [s]")
@@ -167,6 +209,9 @@ def main():
                              "rise_within", "z_doubles_worst", "table5_in_band", "table5_flown", "same_four_lost",
                              "spearman"])
             scan_faulted(args.chaser, scenario, pathlib.Path(tmp), [float(a) for a in args.angles.split(",")], writer)
+        elif args.what == "shipped":
+            writer.writerow(["q_vx", "q_vy", "q_vz", "lost", "same_four_lost", "best_J", "best_w_s"])
+            scan_shipped(args.chaser, scenario, pathlib.Path(tmp), writer)
         elif args.what == "coarse":
             writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "within_15pc"])
             scan_coarse(args.chaser, scenario, pathlib.Path(tmp), writer, args.k)
