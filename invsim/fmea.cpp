@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -59,24 +60,24 @@ FmeaRow judged_row(const model::InvSimParams& p, const FmeaCase& c, InvSimResult
   return row;
 }
 
-// The row's result; with `history`, also the history of the draw the row's class comes from, that
-// draw flown once more to record it (a single draw is recorded as it flies).
+// The row's result; with `history`, also the history of the draw the row's class comes from: a
+// single draw is recorded as it flies, of several the worst is flown once more to record it.
 InvSimResult fly_row(const model::InvSimParams& p, const model::InvSimFaultSet& faults, FmeaHistory* history) {
   if (history == nullptr) return run_over_noise_draws(p, faults);
-  if (noise_draws_per_mode(p) <= 1) {
-    history->draws = 1;
-    history->draw = 0;
-    history->seed.reset();
-    if (flight_choices(p).measurement_noise.enabled()) history->seed = p.pulses.paper.measurement_noise.seed;
-    return run_inverse_simulation(p, faults, &history->samples);
+  history->draws = noise_draws_per_mode(p);
+  std::uint64_t shown = 0;
+  InvSimResult result;
+  if (history->draws <= 1) {
+    result = run_inverse_simulation(p, faults, &history->samples);
+  } else {
+    const std::vector<InvSimResult> draws = fly_noise_draws(p, faults);
+    shown = worst_draw(p.sensor, draws);
+    run_inverse_simulation(noise_draw(p, shown), faults, &history->samples);
+    result = combine_draws(draws, p.pulses.basic_pulse_amount);
   }
-  const std::vector<InvSimResult> draws = fly_noise_draws(p, faults);
-  history->draws = draws.size();
-  history->draw = worst_draw(p.sensor, draws);
-  const model::InvSimParams shown = noise_draw(p, history->draw);
-  history->seed = shown.pulses.paper.measurement_noise.seed;
-  run_inverse_simulation(shown, faults, &history->samples);
-  return combine_draws(draws, p.pulses.basic_pulse_amount);
+  history->seed.reset();
+  if (flight_choices(p).measurement_noise.enabled()) history->seed = noise_draw_seed(p, shown);
+  return result;
 }
 
 }  // namespace

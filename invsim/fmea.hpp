@@ -52,8 +52,7 @@ struct FmeaRow {
 // peaks their maxima, so no single history is the row; this one is its worst case.
 struct FmeaHistory {
   std::uint64_t draws = 1;             // noise draws the row combines
-  std::uint64_t draw = 0;              // the draw shown, 0 .. draws - 1
-  std::optional<std::uint64_t> seed;   // its measurement-noise seed; empty without noise
+  std::optional<std::uint64_t> seed;   // the measurement-noise seed of the draw shown; empty without noise
   std::vector<InvSimSample> samples;
 };
 

@@ -12,9 +12,13 @@ std::uint64_t noise_draws_per_mode(const model::InvSimParams& params) {
   return noise.enabled() ? noise.draws : 1;
 }
 
+std::uint64_t noise_draw_seed(const model::InvSimParams& params, std::uint64_t i) {
+  return params.pulses.paper.measurement_noise.seed + i;
+}
+
 model::InvSimParams noise_draw(const model::InvSimParams& params, std::uint64_t i) {
   model::InvSimParams draw = params;
-  draw.pulses.paper.measurement_noise.seed = params.pulses.paper.measurement_noise.seed + i;
+  draw.pulses.paper.measurement_noise.seed = noise_draw_seed(params, i);
   return draw;
 }
 

@@ -25,7 +25,10 @@ namespace chaser::invsim {
 // on, else 1.
 std::uint64_t noise_draws_per_mode(const model::InvSimParams& params);
 
-// The parameters of draw `i` (0 .. draws - 1): the scenario's with the noise seed seed + i.
+// The measurement-noise seed of draw `i` (0 .. draws - 1): the scenario's seed + i.
+std::uint64_t noise_draw_seed(const model::InvSimParams& params, std::uint64_t i);
+
+// The parameters of draw `i`: the scenario's with noise_draw_seed(params, i).
 model::InvSimParams noise_draw(const model::InvSimParams& params, std::uint64_t i);
 
 // Each draw's own result, in draw order (one plain run when there is one draw).
