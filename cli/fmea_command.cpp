@@ -68,13 +68,10 @@ int fmea_command(const FmeaArgs& args) {
               << io::format_errors(loaded.errors);
     return kExitBadInput;
   }
-  if (args.nominal_only && (args.optimize || args.three_axis)) {
-    std::cerr << "chaser fmea: --nominal-only flies the nominal case alone: not with --optimize or --three-axis\n";
-    return kExitBadInput;
-  }
-  if (args.optimize && loaded.study.free_choices.empty()) {
-    std::cerr << fmt::format("chaser fmea: --optimize: {} marks no free mounting choice (optimize.choices)\n",
-                             args.scenario_path);
+  const FmeaOptions options{args.three_axis, args.optimize, args.history, args.nominal_only,
+                            args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))};
+  if (const std::string problem = fmea_options_problem(loaded, args.scenario_path, options); !problem.empty()) {
+    std::cerr << "chaser fmea: " << problem << "\n";
     return kExitBadInput;
   }
   std::error_code ec;
@@ -83,41 +80,29 @@ int fmea_command(const FmeaArgs& args) {
     std::cerr << fmt::format("chaser fmea: cannot create output directory {}: {}\n", args.out_dir, ec.message());
     return kExitFailure;
   }
-  const int threads = args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::vector<invsim::FmeaHistory>> histories;
-  std::size_t flights = 0, search_flights = 0;
-  const std::vector<FmeaLayout> layouts = run_fmea_layouts(
-      loaded, args.three_axis, threads, args.history ? &histories : nullptr, args.nominal_only, &flights);
-  std::vector<invsim::LayoutCandidate> optimized;
-  if (args.optimize)
-    optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,
-                                       invsim::fmea_cases(*loaded.params, loaded.faults, args.three_axis), threads,
-                                       &search_flights);
+  const FmeaStudy study = run_fmea_study(loaded, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path out(args.out_dir);
-  std::vector<std::pair<std::string, std::string>> files{
-      {"fmea.csv", fmea_csv(layouts)},
-      {"fmea.md", fmea_markdown(layouts, args.optimize ? &optimized : nullptr, loaded.study.optimize_keep)}};
-  if (args.optimize) files.emplace_back("optimize.csv", optimize_csv(optimized));
-  for (const auto& [name, text] : files) {
+  for (const auto& [name, text] : fmea_files(study, loaded.study.optimize_keep)) {
     if (!write_text(out / name, text)) {
       std::cerr << fmt::format("chaser fmea: cannot write {}\n", (out / name).string());
       return kExitFailure;
     }
   }
   std::string error;
-  if (args.history && !write_fmea_histories(out, layouts, histories, error)) {
+  if (args.history && !write_fmea_histories(out, study.layouts, study.histories, error)) {
     std::cerr << "chaser fmea: " << error << "\n";
     return kExitFailure;
   }
-  print_summary(layouts, flights, seconds, threads);
-  if (args.optimize && !optimized.empty())
+  print_summary(study.layouts, study.flights, seconds, options.threads);
+  if (study.optimized && !study.optimized->empty()) {
+    const invsim::LayoutCandidate& best = study.optimized->front();
     std::cout << fmt::format("  --optimize: {} candidates x {} modes, {} flown; best: {} (class III {}, {:.1f} kg)\n",
-                             optimized.size(), layouts.front().rows.size(), search_flights,
-                             optimized.front().configuration.name,
-                             optimized.front().summary.per_class[2], optimized.front().summary.propellant_kg);
+                             study.optimized->size(), study.layouts.front().rows.size(), study.search_flights,
+                             best.configuration.name, best.summary.per_class[2], best.summary.propellant_kg);
+  }
   std::cout << fmt::format("  wrote {}{}\n", (out / "fmea.md").string(),
                            args.history ? " and " + (out / "history").string() : std::string());
   return kExitOk;

@@ -192,27 +192,46 @@ void ranking(std::string& md, const std::vector<FmeaRow>& rows) {
 
 }  // namespace
 
-std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
-                                         std::vector<std::vector<invsim::FmeaHistory>>* histories,
-                                         bool nominal_only, std::size_t* flights) {
-  std::vector<FmeaLayout> layouts{{"baseline", "the scenario's thrusters", *loaded.params, {}}};
+std::string fmea_options_problem(const io::InvSimLoadResult& loaded, const std::string& scenario_path,
+                                 const FmeaOptions& options) {
+  if (options.nominal_only && (options.optimize || options.three_axis))
+    return "--nominal-only flies the nominal case alone: not with --optimize or --three-axis";
+  if (options.optimize && loaded.study.free_choices.empty())
+    return fmt::format("--optimize: {} marks no free mounting choice (optimize.choices)", scenario_path);
+  return "";
+}
+
+FmeaStudy run_fmea_study(const io::InvSimLoadResult& loaded, const FmeaOptions& options) {
+  FmeaStudy study;
+  study.layouts.push_back({"baseline", "the scenario's thrusters", *loaded.params, {}});
   for (const model::InvSimConfiguration& c : loaded.study.configurations)
-    layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
+    study.layouts.push_back({c.name, c.description, model::apply_configuration(*loaded.params, c), {}});
   std::vector<model::InvSimParams> params;
-  for (const FmeaLayout& layout : layouts) params.push_back(layout.params);
-  std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, three_axis);
-  if (nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
+  for (const FmeaLayout& layout : study.layouts) params.push_back(layout.params);
+  std::vector<invsim::FmeaCase> cases = invsim::fmea_cases(*loaded.params, loaded.faults, options.three_axis);
+  if (options.nominal_only) cases.resize(1);  // fmea_cases puts the nominal case first
   // The layouts are configurations of one scenario: a flight they share is flown once, unless every
   // pair's history is asked for.
   std::vector<std::vector<invsim::FmeaRow>> rows;
-  if (histories == nullptr) {
-    rows = invsim::run_fmea_of_configurations(params, cases, threads, flights);
+  if (options.history) {
+    rows = invsim::run_fmea(params, cases, options.threads, &study.histories);
+    study.flights = params.size() * cases.size();
   } else {
-    rows = invsim::run_fmea(params, cases, threads, histories);
-    if (flights != nullptr) *flights = params.size() * cases.size();
+    rows = invsim::run_fmea_of_configurations(params, cases, options.threads, &study.flights);
   }
-  for (std::size_t l = 0; l < layouts.size(); ++l) layouts[l].rows = std::move(rows[l]);
-  return layouts;
+  for (std::size_t l = 0; l < study.layouts.size(); ++l) study.layouts[l].rows = std::move(rows[l]);
+  if (options.optimize)
+    study.optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices, cases, options.threads,
+                                             &study.search_flights);
+  return study;
+}
+
+std::vector<std::pair<std::string, std::string>> fmea_files(const FmeaStudy& study, int keep) {
+  const std::vector<invsim::LayoutCandidate>* optimized = study.optimized ? &*study.optimized : nullptr;
+  std::vector<std::pair<std::string, std::string>> files{{"fmea.csv", fmea_csv(study.layouts)},
+                                                         {"fmea.md", fmea_markdown(study.layouts, optimized, keep)}};
+  if (optimized != nullptr) files.emplace_back("optimize.csv", optimize_csv(*optimized));
+  return files;
 }
 
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts) {

@@ -6,8 +6,10 @@
 // histories that python/plot_invsim.py draws.
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "invsim/fmea.hpp"
@@ -24,16 +26,38 @@ struct FmeaLayout {
   std::vector<invsim::FmeaRow> rows;
 };
 
-// The FMEA of `chaser fmea` without --optimize: the scenario's own layout ("baseline") and each of
-// its configurations, every mode of invsim::fmea_cases on `threads` workers, rows ranked within each
-// layout. With `histories`, (*histories)[l][i] receives the history of mode i on layout l (with
-// several noise draws, the worst draw's: invsim::FmeaHistory).
-// `nominal_only`: the nominal case alone (a calibration reads nothing else). Without histories the
-// layouts share their flights (invsim::run_fmea_of_configurations); `flights`, when given, receives
-// the number flown.
-std::vector<FmeaLayout> run_fmea_layouts(const io::InvSimLoadResult& loaded, bool three_axis, int threads,
-                                         std::vector<std::vector<invsim::FmeaHistory>>* histories,
-                                         bool nominal_only = false, std::size_t* flights = nullptr);
+struct FmeaOptions {
+  bool three_axis = false;    // --three-axis
+  bool optimize = false;      // --optimize
+  bool history = false;       // --history
+  bool nominal_only = false;  // --nominal-only: the nominal case alone (a calibration reads nothing else)
+  int threads = 1;            // workers
+};
+
+// What `chaser fmea` computes, for the command and for chaser.fmea alike.
+struct FmeaStudy {
+  // The scenario's own layout ("baseline") and each of its configurations, every mode of
+  // invsim::fmea_cases, rows ranked within each layout.
+  std::vector<FmeaLayout> layouts;
+  // With `history`: [l][i] the history of mode i on layout l (with several noise draws, the worst
+  // draw's: invsim::FmeaHistory). Without, the layouts share their flights
+  // (invsim::run_fmea_of_configurations).
+  std::vector<std::vector<invsim::FmeaHistory>> histories;
+  std::size_t flights = 0;  // distinct flights flown for the layouts' rows
+  // With `optimize`: every candidate of the scenario's free choices, best first (invsim::search_layouts).
+  std::optional<std::vector<invsim::LayoutCandidate>> optimized;
+  std::size_t search_flights = 0;  // distinct flights of the search
+};
+
+// Why `options` cannot run on this (loaded, valid) scenario, or "": --optimize without free
+// choices, --nominal-only with --optimize or --three-axis. Named as the command's options.
+std::string fmea_options_problem(const io::InvSimLoadResult& loaded, const std::string& scenario_path,
+                                 const FmeaOptions& options);
+FmeaStudy run_fmea_study(const io::InvSimLoadResult& loaded, const FmeaOptions& options);
+
+// The study's files by name: fmea.csv, fmea.md (`keep` candidates of the search listed) and, with
+// the search, optimize.csv. (The histories: write_fmea_histories.)
+std::vector<std::pair<std::string, std::string>> fmea_files(const FmeaStudy& study, int keep);
 
 std::string fmea_csv(const std::vector<FmeaLayout>& layouts);
 // `optimized`: the --optimize candidates, best first (nullptr: no search); `keep` of them are listed.

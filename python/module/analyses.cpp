@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -20,7 +21,6 @@
 
 #include "campaign/csv.hpp"
 #include "cli/fmea_report.hpp"
-#include "invsim/layout_study.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
 #include "flight/fdir.hpp"
@@ -184,44 +184,44 @@ py::dict fmea(const std::string& path, const py::object& overrides, std::optiona
   if (threads && *threads < 1) throw py::value_error(fmt::format("threads: must be >= 1 (got {})", *threads));
   const std::vector<std::string> sets = override_strings(overrides);
   io::InvSimLoadResult loaded;
-  std::vector<cli::FmeaLayout> layouts;
-  std::vector<invsim::LayoutCandidate> optimized;
-  std::vector<std::vector<invsim::FmeaHistory>> histories;
-  std::string csv, markdown, optimize_text, problem;
+  cli::FmeaStudy study;
+  std::vector<std::pair<std::string, std::string>> files;  // the command's files by name
+  std::string problem;
   {
     py::gil_scoped_release released;
     loaded = io::load_invsim_file(path, sets);
-    if (loaded.errors.empty() && loaded.params && optimize && loaded.study.free_choices.empty())
-      problem = fmt::format("optimize: {} marks no free mounting choice (optimize.choices)", path);
-    if (loaded.errors.empty() && loaded.params && problem.empty()) {
-      const int workers = threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
-      layouts = cli::run_fmea_layouts(loaded, three_axis, workers, history ? &histories : nullptr);
-      if (optimize)
-        optimized = invsim::search_layouts(*loaded.params, loaded.study.free_choices,
-                                           invsim::fmea_cases(*loaded.params, loaded.faults, three_axis), workers);
-      csv = cli::fmea_csv(layouts);
-      markdown = cli::fmea_markdown(layouts, optimize ? &optimized : nullptr, loaded.study.optimize_keep);
-      if (optimize) optimize_text = cli::optimize_csv(optimized);
+    if (loaded.errors.empty() && loaded.params) {
+      const cli::FmeaOptions options{three_axis, optimize, history, false,
+                                     threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))};
+      problem = cli::fmea_options_problem(loaded, path, options);
+      if (problem.empty()) {
+        study = cli::run_fmea_study(loaded, options);
+        files = cli::fmea_files(study, loaded.study.optimize_keep);
+      }
     }
   }
   if (!loaded.errors.empty() || !loaded.params) raise_scenario_error(loaded.errors);
   if (!problem.empty()) throw py::value_error(problem);
+  const auto file = [&](const std::string& name) {
+    return std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.first == name; })->second;
+  };
   py::dict summaries;
-  for (const cli::FmeaLayout& layout : layouts) {
+  for (const cli::FmeaLayout& layout : study.layouts) {
     const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
     summaries[py::str(layout.name)] =
         py::dict(py::arg("description") = layout.description, py::arg("class_I") = s.per_class[0],
                  py::arg("class_II") = s.per_class[1], py::arg("class_III") = s.per_class[2],
                  py::arg("propellant_kg") = s.propellant_kg);
   }
-  py::dict out(py::arg("rows") = csv_table(csv), py::arg("layouts") = summaries, py::arg("markdown") = markdown);
-  if (optimize) out["optimize"] = csv_table(optimize_text);
+  py::dict out(py::arg("rows") = csv_table(file("fmea.csv")), py::arg("layouts") = summaries,
+               py::arg("markdown") = file("fmea.md"));
+  if (optimize) out["optimize"] = csv_table(file("optimize.csv"));
   if (history) {
     py::dict by_mode;  // (configuration, mode) -> the history, in index.csv's order
-    for (std::size_t l = 0; l < layouts.size(); ++l)
-      for (std::size_t i = 0; i < layouts[l].rows.size(); ++i) {
-        const invsim::FmeaHistory& h = histories[l][i];
-        by_mode[py::make_tuple(layouts[l].name, layouts[l].rows[i].fmea_case.mode.label)] =
+    for (std::size_t l = 0; l < study.layouts.size(); ++l)
+      for (std::size_t i = 0; i < study.layouts[l].rows.size(); ++i) {
+        const invsim::FmeaHistory& h = study.histories[l][i];
+        by_mode[py::make_tuple(study.layouts[l].name, study.layouts[l].rows[i].fmea_case.mode.label)] =
             py::dict(py::arg("draws") = h.draws,
                      py::arg("draw_seed") = h.seed ? py::object(py::int_(*h.seed)) : py::object(py::none()),
                      py::arg("samples") = history_table(h.samples));
