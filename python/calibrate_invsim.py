@@ -200,7 +200,8 @@ def global_search(chaser, scenario, workdir, samples, seed=1, starts=5, log=prin
     uniformly (random.Random(seed)) from the product of W_GRID, Q_GRID^3, RANGE_GRID, ANGLE_GRID and
     LATERAL_GRID (792,330 points), each scored on the nominal row, then the descent (lateral held)
     from the best `starts` of them. Deterministic. Returns [(J, params, counts, k_p)] of the descents'
-    ends, best first, and the number of nominal studies flown."""
+    ends, best first; [(J, params)] of the points drawn, best first; and the number of nominal studies
+    flown."""
     rng = random.Random(seed)
     cache = {}
     drawn = []
@@ -217,7 +218,7 @@ def global_search(chaser, scenario, workdir, samples, seed=1, starts=5, log=prin
         end, best = descend(chaser, scenario, workdir, log, None, params["lateral"], cache, start=params)
         ends.append((best[0], end, best[1], best[2]))
     ends.sort(key=lambda e: e[0])
-    return ends, len(cache)
+    return ends, drawn, len(cache)
 
 
 def shipped(scenario):
@@ -365,7 +366,7 @@ def main():
             ap.error(f"--global: N must be >= 1 (got {args.global_samples})")
         scenario = yaml.safe_load(pathlib.Path(args.scenario).read_text())
         with tempfile.TemporaryDirectory() as tmp:
-            ends, runs = global_search(args.chaser, scenario, pathlib.Path(tmp), args.global_samples, args.seed)
+            ends, _, runs = global_search(args.chaser, scenario, pathlib.Path(tmp), args.global_samples, args.seed)
         print(f"global check after {runs} nominal studies; the descents' ends, best first:")
         for j, params, counts, k_p in ends:
             print(f"  J={j:.4f} {describe(params)} counts {counts} k_p {k_p:.3f}")
