@@ -23,4 +23,14 @@ Vec6 desired_state(const model::InvSimTrajectoryParams& p, double x0_m, double t
 void set_lateral_return(double time_constant_s, const Vec3& r0_m, const Vec3& v0_mps, double t_s,
                         Vec6& x_desired);
 
+// The same with a brake first (pulses.paper.lateral_brake_mps2 a > 0): each lateral axis's initial
+// velocity q0' is cancelled at the constant deceleration a,
+//   q(t) = q0 + q0' t - sgn(q0') a t^2 / 2,   q'(t) = q0' - sgn(q0') a t,   t <= t_stop = |q0'| / a,
+// the way a pilot nulls a drift before steering back, then the critically damped return above
+// starts from the stopping point (q0 + q0' t_stop / 2, 0). Position and velocity are continuous.
+// With a no larger than what a group that lost one of its two thrusters can give, such a group
+// flies the same path as the healthy one (docs/invsim.md, "A designed lateral brake").
+void set_lateral_brake_then_return(double brake_mps2, double time_constant_s, const Vec3& r0_m,
+                                   const Vec3& v0_mps, double t_s, Vec6& x_desired);
+
 }  // namespace chaser::invsim

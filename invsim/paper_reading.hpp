@@ -23,7 +23,7 @@ int counted_pulses(const model::InvSimPulseParams& p, const Pulse& pulse);
 // The diagonal of Q (eq. 20) under the scenario's reading.
 const std::array<double, 6>& reading_state_weights(const model::InvSimParams& p);
 
-// The choices that change the flight (inverse_model, opening, lateral_time_constant_s,
+// The choices that change the flight (inverse_model, opening, lateral_time_constant_s, lateral_brake_mps2,
 // measurement_noise) as they apply to a run: the scenario's pulses.paper block under the paper
 // reading; under smooth the block's defaults, which are smooth's own flight (the nominal inverse
 // model, capped openings, y and z held at 0, a perfect measurement). The one place a run asks which

@@ -109,6 +109,7 @@ void read_either(MapReader& m, std::string_view key, std::string_view first, Cho
 constexpr double kMaxRangeSigmaM = 10.0;     // [m] beyond this the sensor measures nothing useful at 10-100 m
 constexpr double kMaxAngleSigmaDeg = 5.0;    // [deg] half the field of view
 constexpr std::uint64_t kMaxNoiseDraws = 1000;  // a study of 123 modes x 1000 draws is minutes
+constexpr double kMaxLateralBrakeMps2 = 10.0;  // [m/s^2] 1 g: beyond any reaction-control thruster
 void read_measurement_noise(MapReader& m, model::InvSimMeasurementNoise& out) {
   if (!m.has("measurement_noise")) return;
   read_section(m, "measurement_noise", [&](MapReader& n) {
@@ -139,8 +140,15 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
     read_either(s, "opening", "capped", model::InvSimOpening::kCapped, "carried", model::InvSimOpening::kCarried,
                 p.pulses.paper.opening);
     read_measurement_noise(s, p.pulses.paper.measurement_noise);
+    model::InvSimPaperReadingParams& paper = p.pulses.paper;
     if (s.has("lateral_time_constant_s"))
-      s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), p.pulses.paper.lateral_time_constant_s);
+      s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), paper.lateral_time_constant_s);
+    if (s.has("lateral_brake_mps2") &&
+        s.number("lateral_brake_mps2", Range::closed(0.0, kMaxLateralBrakeMps2), paper.lateral_brake_mps2) &&
+        paper.lateral_brake_mps2 > 0.0 && !(paper.lateral_time_constant_s > 0.0))
+      s.diagnostics().add(s.path_of("lateral_brake_mps2"),
+                          fmt::format("needs lateral_time_constant_s > 0: the return after the brake (got {} s)",
+                                      format_number(paper.lateral_time_constant_s)));
   });
 }
 

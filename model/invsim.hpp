@@ -92,6 +92,10 @@ struct InvSimPaperReadingParams {
   // critically damped time constant (invsim/desired_trajectory.hpp); 0 holds them at 0 from the
   // start, as the smooth reading does.
   double lateral_time_constant_s = 0.0;
+  // [m/s^2] with a lateral return, the designed trajectory first brakes each lateral axis's
+  // initial velocity at this constant deceleration, then returns from where it stopped; 0: no
+  // brake (the return starts at once from the initial state). Needs lateral_time_constant_s > 0.
+  double lateral_brake_mps2 = 0.0;
 };
 
 // Pulse conversion (Zhou 2018, App. B eqs. 1-4) and the operational amount (eq. 22).

@@ -124,6 +124,30 @@ TEST(InvSimLoader, PaperInverseModelAndMeasurementNoise) {
   EXPECT_NE(text.find("pulses.paper.opening: must be capped or carried (got 'leaky')"), std::string::npos) << text;
 }
 
+// pulses.paper.lateral_brake_mps2: optional (0, no brake), read as written, needs the return's
+// time constant, and a bad value is named with its key and range.
+TEST(InvSimLoader, PaperLateralBrake) {
+  EXPECT_EQ(load_invsim_file(kScenario).params->pulses.paper.lateral_brake_mps2, 0.0);
+  const InvSimLoadResult ok = load_invsim_file(
+      kScenario, {"pulses.paper.lateral_brake_mps2=0.0075", "pulses.paper.lateral_time_constant_s=100"});
+  ASSERT_TRUE(ok.errors.empty()) << format_errors(ok.errors);
+  EXPECT_EQ(ok.params->pulses.paper.lateral_brake_mps2, 0.0075);
+  EXPECT_EQ(ok.params->pulses.paper.lateral_time_constant_s, 100.0);
+  const InvSimLoadResult no_return = load_invsim_file(kScenario, {"pulses.paper.lateral_brake_mps2=0.0075"});
+  EXPECT_FALSE(no_return.params.has_value());
+  EXPECT_NE(format_errors(no_return.errors)
+                .find("pulses.paper.lateral_brake_mps2: needs lateral_time_constant_s > 0: the return after the "
+                      "brake (got 0 s)"),
+            std::string::npos)
+      << format_errors(no_return.errors);
+  for (const char* value : {"-0.01", "11", "fast"}) {
+    const InvSimLoadResult bad = load_invsim_file(
+        kScenario, {std::string("pulses.paper.lateral_brake_mps2=") + value, "pulses.paper.lateral_time_constant_s=100"});
+    EXPECT_FALSE(bad.params.has_value()) << value;
+    EXPECT_TRUE(has_error_at(bad, "pulses.paper.lateral_brake_mps2")) << value << format_errors(bad.errors);
+  }
+}
+
 // A layout that cannot push along an axis is rejected before any run.
 TEST(InvSimLoader, RejectsAGroupThatDoesNotPushAlongItsAxis) {
   const InvSimLoadResult r = load_invsim_file(
