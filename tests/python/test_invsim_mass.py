@@ -4,9 +4,11 @@ target 6 (docs/invsim.md, "The chaser's mass").
 The layout edits are checked against the shipped scenario (its own positions are the arms 1.4 m and
 1.6 m), and two of the document's findings are flown under `smooth` (0.1 s each): the shipped layout
 loses exactly the paper's four Table 5 modes at 8,000 kg and none at 2,000 kg. Also
-calibrate_invsim.py's --global check (the calibration's descent against the whole grid), on small grids.
+calibrate_invsim.py's --global check (the calibration's descent against the whole grid), on small grids,
+and its handling of a designed lateral brake.
 """
 import copy
+import subprocess
 import sys
 
 import yaml
@@ -101,3 +103,33 @@ def test_the_global_check_draws_from_the_grids_and_its_descents_only_improve(cli
     assert 6 <= runs <= 64  # the small grids hold 64 points; the cache flies each once
     again, _, _ = cal.global_search(str(cli), doc, tmp_path, samples=6, seed=3, starts=2, log=lambda _: None)
     assert again == ends
+
+
+def test_a_brake_design_is_written_read_and_flown_as_the_scenario_key(cli, tmp_path):
+    """calibrate_invsim with a lateral brake (pulses.paper.lateral_brake_mps2): the designs --lateral
+    and --brake leave, a block written into a copy of the scenario and read back as the same
+    parameters, and the study's nominal row flown by the calibration equal to `chaser fmea --set`'s."""
+    assert cal.lateral_designs() == [(t, 0.0) for t in cal.LATERAL_GRID]
+    assert cal.lateral_designs(lateral=20.0) == [(20.0, 0.0)]
+    assert cal.lateral_designs(brake=0.0075) == [(t, 0.0075) for t in cal.BRAKE_RETURN_GRID]
+    assert cal.lateral_designs(brake=0.0) == [(t, 0.0) for t in cal.LATERAL_GRID]
+    assert cal.lateral_designs(lateral=100.0, brake=0.0075) == [(100.0, 0.0075)]
+    doc = shipped()
+    assert cal.shipped(doc)["brake"] == 0.0
+    params = dict(cal.shipped(doc), lateral=100.0, brake=0.0075)
+    copy_path = tmp_path / "manual_rvd.yaml"
+    copy_path.write_text(SCENARIO.read_text())
+    cal.write_block(copy_path, params)
+    assert cal.same_params(cal.shipped(yaml.safe_load(copy_path.read_text())), params)
+    assert not cal.same_params(cal.shipped(doc), params)
+    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    counts, k_p = cal.run_nominal(str(cli), doc, params, tmp_path)
+    out = tmp_path / "direct"
+    sets = ["pulses.reading=paper", "pulses.paper.lateral_brake_mps2=0.0075", "pulses.paper.lateral_time_constant_s=100",
+            "pulses.paper.measurement_noise.draws=2"]
+    subprocess.run([str(cli), "fmea", str(SCENARIO), "--nominal-only", "--out", str(out),
+                    *[a for s in sets for a in ("--set", s)]], check=True, stdout=subprocess.DEVNULL)
+    row = cal.read_layout(out / "fmea.csv")["nominal"]
+    assert [int(row[d]) for d in cal.DIRECTIONS] == counts and float(row["k_p"]) == k_p
+    held, _ = cal.run_nominal(str(cli), doc, cal.shipped(shipped()), tmp_path)
+    assert held != counts  # the brake flies another path
