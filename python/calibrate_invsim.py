@@ -2,7 +2,7 @@
 """Calibration of the `paper` reading of Zhou 2018's inverse simulation on the NOMINAL case only.
 
 Usage: /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check] [--q-vx-max Q]
-                                                   [--lateral T] [--brake A]
+                                                   [--lateral T] [--brake A] [--thorough]
        /usr/bin/python3 python/calibrate_invsim.py --targets DIR/fmea.csv
        /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] --global N [--seed S]
 
@@ -25,11 +25,15 @@ Procedure (deterministic, hence repeatable): for each lateral time constant of L
 and z held at 0; or a return), held, a coordinate descent from w = 0.1 s, Q = I and no noise over fixed grids (W_GRID, Q_GRID,
 RANGE_GRID, ANGLE_GRID below), one parameter at a time in the order w, q_vx, q_vy, q_vz, range
 sigma, angle sigma, keeping a value only when it lowers the objective, until a sweep changes
-nothing (at most MAX_SWEEPS); the lowest objective over the lateral values wins. A brake of the
-drift before the return (lateral_brake_mps2) is not searched by default: from this start its
-descents stop in the basin of J ~ 1.3, and from the shipped block, at their best, at 0.11-0.13 on
-seed 1 and 0.17 on average over eight blocks of seeds, where held gives 0.076 (scan_invsim_readings.py
-brake); --brake A holds it at A (with --lateral T, or after each return of BRAKE_RETURN_GRID). Each
+nothing (at most MAX_SWEEPS); the lowest objective over the lateral values wins. --brake A holds a
+brake of the drift before the return (lateral_brake_mps2) at A (with --lateral T, or after each
+return of BRAKE_RETURN_GRID).
+
+--thorough widens the procedure (about 4 min instead of 24 s; the shipped block is its result too):
+the velocity weights on FINE_Q_GRID (1-2-5 steps instead of half decades), the brake designs
+(BRAKE_GRID x BRAKE_RETURN_GRID) beside LATERAL_GRID, and a second descent for every design from
+the best point of the first (a brake design's descent from the procedure's start stops in the
+basin of J ~ 1.3 that a low angle sigma opens). Each
 evaluation runs `chaser fmea --nominal-only` on a copy of the scenario without its configurations
 and optimize sections (the nominal case over the scenario's noise draws) and reads its row.
 
@@ -79,6 +83,7 @@ PAPER_NOMINAL = PAPER_TABLE4["nominal"]
 DIRECTIONS = ["x_pos", "x_neg", "y_pos", "y_neg", "z_pos", "z_neg"]
 W_GRID = [0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.1, 0.12, 0.15, 0.2]  # [s]
 Q_GRID = [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0]  # velocity weight [s^2/m^2] (position weight 1)
+FINE_Q_GRID = [0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0]  # --thorough
 RANGE_GRID = [0.0, 0.003, 0.01, 0.03, 0.1]  # [m] 1-sigma range error
 ANGLE_GRID = [0.0, 0.003, 0.01, 0.02, 0.03, 0.05, 0.1]  # [deg] 1-sigma azimuth / elevation error
 LATERAL_GRID = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0]  # [s] lateral return time constant (0: held at 0)
@@ -157,27 +162,38 @@ def with_value(params, name, value):
     return out
 
 
-def lateral_designs(lateral=None, brake=None):
-    """The (time constant, brake) pairs the calibration tries: each of LATERAL_GRID without a brake;
-    with `lateral` alone that time constant; with `brake` alone that brake after each return of
-    BRAKE_RETURN_GRID (0: each of LATERAL_GRID); both: that pair."""
+def lateral_designs(lateral=None, brake=None, thorough=False):
+    """The (time constant, brake) pairs the calibration tries: each of LATERAL_GRID without a brake
+    (thorough: and each brake of BRAKE_GRID after each return of BRAKE_RETURN_GRID); with `lateral`
+    alone that time constant; with `brake` alone that brake after each return of BRAKE_RETURN_GRID
+    (0: each of LATERAL_GRID); both: that pair."""
     if lateral is None and brake is None:
-        return [(t, 0.0) for t in LATERAL_GRID]
+        brakes = [(t, b) for b in BRAKE_GRID for t in BRAKE_RETURN_GRID] if thorough else []
+        return [(t, 0.0) for t in LATERAL_GRID] + brakes
     if lateral is None:
         return [(t, brake) for t in (LATERAL_GRID if brake == 0.0 else BRAKE_RETURN_GRID)]
     return [(lateral, 0.0 if brake is None else brake)]
 
 
-def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None, brake=None):
+def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None, brake=None, thorough=False):
     """The lateral design is the outer choice: one coordinate descent over the other parameters with
-    it held at each pair of lateral_designs(lateral, brake), and the lowest objective wins (ties: the first). A single descent over all of them
-    stops in a local minimum of this noisy objective that depends on where the lateral design moves
-    first."""
+    it held at each pair of lateral_designs(lateral, brake, thorough), and the lowest objective wins
+    (ties: the first). A single descent over all of them stops in a local minimum of this noisy
+    objective that depends on where the lateral design moves first. Thorough: the velocity weights
+    on FINE_Q_GRID, and a second descent for each design from the first round's best point."""
     cache = {}
+    q_grid = FINE_Q_GRID if thorough else Q_GRID
+    designs = lateral_designs(lateral, brake, thorough)
     results = []
-    for t, b in lateral_designs(lateral, brake):
+    for t, b in designs:
         log(f"-- descent from lateral = {t} s" + (f", brake {b} m/s^2" if b > 0.0 else ""))
-        results.append(descend(chaser, scenario, workdir, log, q_vx_max, t, cache, brake=b))
+        results.append(descend(chaser, scenario, workdir, log, q_vx_max, t, cache, brake=b, q_grid=q_grid))
+    if thorough:
+        first_best = min(results, key=lambda r: r[1][0])[0]
+        for t, b in designs:
+            log(f"-- descent from the first round's best, lateral = {t} s" + (f", brake {b} m/s^2" if b > 0.0 else ""))
+            results.append(descend(chaser, scenario, workdir, log, q_vx_max, t, cache, start=first_best, brake=b,
+                                   q_grid=q_grid))
     params, best = min(results, key=lambda r: r[1][0])
     return params, best, len(cache)
 
@@ -192,7 +208,7 @@ def scored(chaser, scenario, workdir, params, cache):
     return cache[key]
 
 
-def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=START, brake=0.0):
+def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=START, brake=0.0, q_grid=None):
     params = with_value(with_value(start, "lateral", lateral), "brake", brake)
 
     def evaluate(p):
@@ -201,7 +217,8 @@ def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=STAR
     best = evaluate(params)
     log(f"start {describe(params)}: J={best[0]:.4f} {best[1]} k_p={best[2]:.3f}")
     # The lateral design is held: the outer choice (calibrate).
-    grids = {"w": W_GRID, 0: Q_GRID, 1: Q_GRID, 2: Q_GRID, "range": RANGE_GRID, "angle": ANGLE_GRID}
+    q_grid = Q_GRID if q_grid is None else q_grid
+    grids = {"w": W_GRID, 0: q_grid, 1: q_grid, 2: q_grid, "range": RANGE_GRID, "angle": ANGLE_GRID}
     for sweep in range(MAX_SWEEPS):
         changed = False
         for name, grid in grids.items():
@@ -380,6 +397,8 @@ def main():
                     help="hold the lateral time constant at T [s] instead of calibrating it (a study of its effect)")
     ap.add_argument("--brake", type=float, metavar="A",
                     help="hold the lateral brake at A [m/s^2] (0: none) instead of calibrating it")
+    ap.add_argument("--thorough", action="store_true",
+                    help="finer velocity weights, the brake designs and a second descent per design (about 4 min)")
     ap.add_argument("--q-vx-max", type=float, metavar="Q",
                     help="calibrate with q_vx <= Q only (q_vx = 1 keeps the paper's four lost modes)")
     ap.add_argument("--global", dest="global_samples", type=int, metavar="N",
@@ -406,7 +425,8 @@ def main():
     scenario = yaml.safe_load(path.read_text())
     with tempfile.TemporaryDirectory() as tmp:
         params, (j, counts, k_p), runs = calibrate(args.chaser, scenario, pathlib.Path(tmp),
-                                                   q_vx_max=args.q_vx_max, lateral=args.lateral, brake=args.brake)
+                                                   q_vx_max=args.q_vx_max, lateral=args.lateral, brake=args.brake,
+                                                   thorough=args.thorough)
     print(f"result after {runs} nominal runs: pulse_width_s={params['w']} "
           f"state_weights={[1.0, 1.0, 1.0] + params['qv']} lateral_time_constant_s={params['lateral']} "
           f"lateral_brake_mps2={params['brake']} "

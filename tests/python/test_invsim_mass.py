@@ -133,3 +133,31 @@ def test_a_brake_design_is_written_read_and_flown_as_the_scenario_key(cli, tmp_p
     assert [int(row[d]) for d in cal.DIRECTIONS] == counts and float(row["k_p"]) == k_p
     held, _ = cal.run_nominal(str(cli), doc, cal.shipped(shipped()), tmp_path)
     assert held != counts  # the brake flies another path
+
+
+def test_the_thorough_calibration_adds_the_brakes_and_a_second_descent_from_the_best(cli, tmp_path, monkeypatch):
+    """calibrate_invsim.calibrate(thorough=True) on small grids (two noise draws): it tries the brake
+    designs beside the lateral grid, descends a second time for every design from the first round's
+    best point, ends no worse than any descent of the default procedure on the same grids, and flies
+    each of the grids' points at most once."""
+    monkeypatch.setattr(cal, "W_GRID", [0.1])
+    monkeypatch.setattr(cal, "Q_GRID", [1.0, 10.0])
+    monkeypatch.setattr(cal, "FINE_Q_GRID", [0.5, 1.0, 10.0])
+    monkeypatch.setattr(cal, "RANGE_GRID", [0.01])
+    monkeypatch.setattr(cal, "ANGLE_GRID", [0.01])
+    monkeypatch.setattr(cal, "LATERAL_GRID", [0.0])
+    monkeypatch.setattr(cal, "BRAKE_GRID", [0.0075])
+    monkeypatch.setattr(cal, "BRAKE_RETURN_GRID", [100.0])
+    monkeypatch.setattr(cal, "START", dict(cal.START, range=0.01, angle=0.01))
+    doc = shipped()
+    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    assert cal.lateral_designs(thorough=True) == [(0.0, 0.0), (100.0, 0.0075)]
+    lines = []
+    params, (j, counts, k_p), runs = cal.calibrate(str(cli), doc, tmp_path, log=lines.append, thorough=True)
+    starts = [line for line in lines if line.startswith("-- descent")]
+    assert len(starts) == 4 and sum("first round's best" in line for line in starts) == 2
+    assert sum("brake 0.0075" in line for line in starts) == 2
+    assert params["qv"][0] in cal.FINE_Q_GRID and j == cal.objective(counts, k_p)
+    assert runs <= 2 * 3 ** 3  # two designs x the fine grid's 27 weight triples
+    default, (j_default, _, _), _ = cal.calibrate(str(cli), doc, tmp_path, log=lambda _: None)
+    assert default["brake"] == 0.0 and j <= j_default
