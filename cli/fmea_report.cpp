@@ -288,12 +288,13 @@ std::string reading_paragraph(const model::InvSimParams& p) {
   const std::string opening = paper.opening == model::InvSimOpening::kCarried
                                   ? "an opening longer than the step is carried into the next steps"
                                   : "an opening is cut at the step";
+  // The loader accepts a brake only with a return (io/invsim_reader.cpp).
+  const std::string back = fmt::format("return to the axis with a {:g} s time constant", paper.lateral_time_constant_s);
   std::string lateral = "y and z held at 0";
-  if (paper.lateral_time_constant_s > 0.0)
-    lateral = fmt::format("y and z return to the axis with a {:g} s time constant", paper.lateral_time_constant_s);
   if (paper.lateral_brake_mps2 > 0.0)
-    lateral = fmt::format("y and z brake their initial drift at {:g} m/s^2, then {}", paper.lateral_brake_mps2,
-                          lateral.substr(std::string("y and z ").size()));
+    lateral = fmt::format("y and z brake their initial drift at {:g} m/s^2, then {}", paper.lateral_brake_mps2, back);
+  else if (paper.lateral_time_constant_s > 0.0)
+    lateral = "y and z " + back;
   return fmt::format("Reading `paper` (docs/invsim.md): a pulse is one valve opening of at most {} s, a step's opening "
                      "dtau counting ceil(dtau / {} s); {}; {}; {}; {}. ",
                      paper.pulse_width_s, paper.pulse_width_s, model, opening, lateral, measured);

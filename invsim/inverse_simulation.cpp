@@ -85,11 +85,11 @@ struct RunContext {
 // lateral return (and brake) when it sets one.
 Vec6 expected_state(const RunContext& c, const model::InvSimParams& p, double t) {
   Vec6 x_c = desired_state(p.trajectory, p.r0_hill_m.x(), t);
-  const model::InvSimPaperReadingParams& k = c.choices;
-  if (k.lateral_brake_mps2 > 0.0)
-    set_lateral_brake_then_return(k.lateral_brake_mps2, k.lateral_time_constant_s, p.r0_hill_m, p.v0_hill_mps, t, x_c);
-  else if (k.lateral_time_constant_s > 0.0)
-    set_lateral_return(k.lateral_time_constant_s, p.r0_hill_m, p.v0_hill_mps, t, x_c);
+  const double brake = c.choices.lateral_brake_mps2, time_constant = c.choices.lateral_time_constant_s;
+  if (brake > 0.0)
+    set_lateral_brake_then_return(brake, time_constant, p.r0_hill_m, p.v0_hill_mps, t, x_c);
+  else if (time_constant > 0.0)
+    set_lateral_return(time_constant, p.r0_hill_m, p.v0_hill_mps, t, x_c);
   return x_c;
 }
 

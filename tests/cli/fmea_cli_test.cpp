@@ -211,6 +211,26 @@ TEST(FmeaCli, OutputDoesNotDependOnThreads) {
   EXPECT_FALSE(read_file(one / "fmea.csv").empty());
 }
 
+// fmea.md's reading paragraph names the paper reading's lateral design: y held (shipped), a return,
+// or a brake then a return (--nominal-only: the nominal case alone, 20 draws, a fraction of a second).
+TEST(FmeaCli, PaperReadingNamesTheLateralDesign) {
+  const auto paragraph = [](const std::string& sets) {
+    const fs::path out = fresh_dir("lateral");
+    const CommandResult r =
+        chaser("fmea scenarios/manual_rvd.yaml --nominal-only --set pulses.reading=paper " + sets + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_file(out / "fmea.md");
+  };
+  EXPECT_NE(paragraph("").find("; y and z held at 0;"), std::string::npos);
+  EXPECT_NE(paragraph("--set pulses.paper.lateral_time_constant_s=50")
+                .find("; y and z return to the axis with a 50 s time constant;"),
+            std::string::npos);
+  EXPECT_NE(paragraph("--set pulses.paper.lateral_time_constant_s=200 --set pulses.paper.lateral_brake_mps2=0.0075")
+                .find("; y and z brake their initial drift at 0.0075 m/s^2, then return to the axis with a 200 s "
+                      "time constant;"),
+            std::string::npos);
+}
+
 // The paper reading (docs/invsim.md, "Readings of App. B"): fmea.md prints Zhou 2018's figures
 // beside ours and names the reading; the rows with their noise draws are the same on one worker;
 // python/calibrate_invsim.py, run again on the nominal case,

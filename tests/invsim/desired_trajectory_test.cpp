@@ -59,7 +59,7 @@ TEST(DesiredTrajectory, LateralReturnStartsAtTheInitialStateAndDecays) {
 
 // The brake before the return: a closed form to check against. From Table 3's y' = +0.131 m/s at
 // a = 0.0075 m/s^2 (half a y group's 120 N on 8,000 kg) the drift stops at t = 17.47 s after
-// y' t / 2 = 1.144 m; before that the path is the uniformly decelerated one (its second
+// y' t / 2 = 1.144 m, at y = -0.0167 + 1.14407 = 1.12737 m; before that the path is the uniformly decelerated one (its second
 // difference over 1 ms is -a to 1e-6 m/s^2: rounding of 1e-15 m over 1e-6 s^2), after it the
 // critically damped return from the stopping point at rest. Position and velocity are continuous at
 // the stop (1e-12), and z (z' = -0.0087 m/s) brakes the other way (+a) and stops after 1.16 s.
@@ -83,10 +83,10 @@ TEST(DesiredTrajectory, LateralBrakeStopsTheDriftThenReturns) {
     EXPECT_NEAR(x(4), 0.131 - a * t, 1e-15) << t;
     EXPECT_NEAR((at(t + 1e-3)(1) - 2.0 * x(1) + at(t - 1e-3)(1)) / 1e-6, -a, 1e-6) << t;
   }
+  EXPECT_NEAR(at(t_stop)(1), 1.12737, 1e-5);  // the hand figure above, to its digits
   EXPECT_NEAR(at(t_stop - 1e-9)(1), y_stop, 1e-12);
   EXPECT_NEAR(at(t_stop + 1e-9)(1), y_stop, 1e-12);
   EXPECT_NEAR(at(t_stop + 1e-9)(4), 0.0, 1e-12);
-  EXPECT_NEAR(y_stop, 1.1274, 1e-4);
   for (double tau : {10.0, 100.0, 400.0}) {
     const Vec6 x = at(t_stop + tau);
     EXPECT_NEAR(x(1), y_stop * (1.0 + tau / T) * std::exp(-tau / T), 1e-15) << tau;
