@@ -29,7 +29,7 @@ nothing (at most MAX_SWEEPS); the lowest objective over the lateral values wins.
 brake of the drift before the return (lateral_brake_mps2) at A (with --lateral T, or after each
 return of BRAKE_RETURN_GRID).
 
---thorough widens the procedure (about 4 min instead of 24 s; the shipped block is its result too):
+--thorough widens the procedure (2.5 min on a quiet 2-core machine instead of 24 s; the shipped block is its result too):
 the velocity weights on FINE_Q_GRID (1-2-5 steps instead of half decades), the brake designs
 (BRAKE_GRID x BRAKE_RETURN_GRID) beside LATERAL_GRID, and a second descent for every design from
 the best point of the first (a brake design's descent from the procedure's start stops in the
@@ -111,7 +111,7 @@ def paper_study(scenario, params):
                        "inverse_model": shipped_block.get("inverse_model", "nominal"),
                        "opening": shipped_block.get("opening", "capped"),
                        "lateral_time_constant_s": params["lateral"],
-                       "lateral_brake_mps2": params.get("brake", 0.0),
+                       "lateral_brake_mps2": params["brake"],
                        "measurement_noise": {"range_sigma_m": params["range"],
                                              "angle_sigma_deg": params["angle"], "seed": seed, "draws": draws}}
     doc["pulses"] = pulses
@@ -147,14 +147,14 @@ def objective(counts, k_p):
 
 
 def describe(params):
-    brake = f" after a {params['brake']} m/s^2 brake" if params.get("brake", 0.0) > 0.0 else ""
+    brake = f" after a {params['brake']} m/s^2 brake" if params["brake"] > 0.0 else ""
     return (f"w={params['w']} qv={params['qv']} noise={params['range']} m, {params['angle']} deg "
             f"lateral={params['lateral']} s{brake}")
 
 
 def with_value(params, name, value):
-    out = {"w": params["w"], "qv": list(params["qv"]), "range": params["range"], "angle": params["angle"],
-           "lateral": params["lateral"], "brake": params.get("brake", 0.0)}
+    """A copy of `params` with `name` (a key, or 0-2: q_vx, q_vy, q_vz) set to `value`."""
+    out = dict(params, qv=list(params["qv"]))
     if isinstance(name, int):
         out["qv"][name] = value
     else:
@@ -185,31 +185,38 @@ def calibrate(chaser, scenario, workdir, log=print, q_vx_max=None, lateral=None,
     q_grid = FINE_Q_GRID if thorough else Q_GRID
     designs = lateral_designs(lateral, brake, thorough)
     results = []
-    for t, b in designs:
-        log(f"-- descent from lateral = {t} s" + (f", brake {b} m/s^2" if b > 0.0 else ""))
-        results.append(descend(chaser, scenario, workdir, log, q_vx_max, t, cache, brake=b, q_grid=q_grid))
+    for design in designs:
+        log(f"-- descent, lateral design {design}")
+        results.append(descend(chaser, scenario, workdir, log, q_vx_max, design, cache, q_grid=q_grid))
     if thorough:
         first_best = min(results, key=lambda r: r[1][0])[0]
-        for t, b in designs:
-            log(f"-- descent from the first round's best, lateral = {t} s" + (f", brake {b} m/s^2" if b > 0.0 else ""))
-            results.append(descend(chaser, scenario, workdir, log, q_vx_max, t, cache, start=first_best, brake=b,
+        for design in designs:
+            log(f"-- descent from the first round's best, lateral design {design}")
+            results.append(descend(chaser, scenario, workdir, log, q_vx_max, design, cache, start=first_best,
                                    q_grid=q_grid))
     params, best = min(results, key=lambda r: r[1][0])
     return params, best, len(cache)
 
 
+def point(params):
+    """The calibration point `params` names, as one comparable tuple."""
+    return (float(params["w"]), tuple(float(q) for q in params["qv"]), float(params["range"]),
+            float(params["angle"]), float(params["lateral"]), float(params["brake"]))
+
+
 def scored(chaser, scenario, workdir, params, cache):
     """(J, counts, k_p) of the nominal row under `params`, each point flown once (`cache`)."""
-    key = (params["w"], tuple(params["qv"]), params["range"], params["angle"], params["lateral"],
-           params.get("brake", 0.0))
+    key = point(params)
     if key not in cache:
         counts, k_p = run_nominal(chaser, scenario, params, workdir)
         cache[key] = (objective(counts, k_p), counts, k_p)
     return cache[key]
 
 
-def descend(chaser, scenario, workdir, log, q_vx_max, lateral, cache, start=START, brake=0.0, q_grid=None):
-    params = with_value(with_value(start, "lateral", lateral), "brake", brake)
+def descend(chaser, scenario, workdir, log, q_vx_max, design, cache, start=START, q_grid=None):
+    """A coordinate descent from `start` with the lateral design (time constant, brake) held."""
+    lateral, brake = design
+    params = dict(start, qv=list(start["qv"]), lateral=lateral, brake=brake)
 
     def evaluate(p):
         return scored(chaser, scenario, workdir, p, cache)
@@ -256,7 +263,8 @@ def global_search(chaser, scenario, workdir, samples, seed=1, starts=5, log=prin
     ends = []
     for j, params in drawn[:starts]:
         log(f"-- descent from {describe(params)} (J {j:.4f})")
-        end, best = descend(chaser, scenario, workdir, log, None, params["lateral"], cache, start=params)
+        end, best = descend(chaser, scenario, workdir, log, None, (params["lateral"], params["brake"]), cache,
+                            start=params)
         ends.append((best[0], end, best[1], best[2]))
     ends.sort(key=lambda e: e[0])
     return ends, drawn, len(cache)
@@ -273,10 +281,7 @@ def shipped(scenario):
 
 
 def same_params(a, b):
-    return (a["w"] == b["w"] and [float(v) for v in a["qv"]] == [float(v) for v in b["qv"]]
-            and float(a["range"]) == float(b["range"]) and float(a["angle"]) == float(b["angle"])
-            and float(a["lateral"]) == float(b["lateral"])
-            and float(a.get("brake", 0.0)) == float(b.get("brake", 0.0)))
+    return point(a) == point(b)
 
 
 def write_block(path, params):
@@ -285,7 +290,7 @@ def write_block(path, params):
     counts = []
     for pattern, value in [(r"(\n    pulse_width_s: )[^\s#]*", params["w"]),
                            (r"(\n    lateral_time_constant_s: )[^\s#]*", params["lateral"]),
-                           (r"(\n    lateral_brake_mps2: )[^\s#]*", params.get("brake", 0.0)),
+                           (r"(\n    lateral_brake_mps2: )[^\s#]*", params["brake"]),
                            (r"(\n      range_sigma_m: )[^\s#]*", params["range"]),
                            (r"(\n      angle_sigma_deg: )[^\s#]*", params["angle"])]:
         text, n = re.subn(pattern, rf"\g<1>{value}", text, count=1)
@@ -398,7 +403,7 @@ def main():
     ap.add_argument("--brake", type=float, metavar="A",
                     help="hold the lateral brake at A [m/s^2] (0: none) instead of calibrating it")
     ap.add_argument("--thorough", action="store_true",
-                    help="finer velocity weights, the brake designs and a second descent per design (about 4 min)")
+                    help="finer velocity weights, the brake designs and a second descent per design (2.5 min)")
     ap.add_argument("--q-vx-max", type=float, metavar="Q",
                     help="calibrate with q_vx <= Q only (q_vx = 1 keeps the paper's four lost modes)")
     ap.add_argument("--global", dest="global_samples", type=int, metavar="N",

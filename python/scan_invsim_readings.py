@@ -210,10 +210,9 @@ def with_seed(scenario, seed):
     return doc
 
 
-def mean_objective(chaser, scenario, params, workdir):
-    """The nominal objective J of `params` averaged over SEED_BLOCKS."""
-    js = [cal.objective(*cal.run_nominal(chaser, with_seed(scenario, seed), params, workdir)) for seed in SEED_BLOCKS]
-    return sum(js) / len(js), min(js), max(js)
+def block_objectives(chaser, scenario, params, workdir):
+    """The nominal objective J of `params` on each block of SEED_BLOCKS, in its order."""
+    return [cal.objective(*cal.run_nominal(chaser, with_seed(scenario, seed), params, workdir)) for seed in SEED_BLOCKS]
 
 
 def meets_fault_targets(t):
@@ -232,7 +231,7 @@ def scan_brake(chaser, scenario, workdir, writer):
     """Target (6) and the nominal fit with a designed lateral brake (see the module's docstring)."""
     have = cal.shipped(scenario)
     designs = [(have["lateral"], have["brake"])] + [(t, b) for b in cal.BRAKE_GRID for t in cal.BRAKE_RETURN_GRID]
-    print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; J on seed block "
+    print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; J on the block from seed "
           f"{SEED_BLOCKS[0]} and over {len(SEED_BLOCKS)} blocks of seeds; the targets at each design's lowest mean J")
     print("| brake [m/s^2] | return [s] | q_vy | J seed 1 | J mean (range) | nominal | (1) | (2) | (3) | (4) | (5) "
           "| lost | Spearman |")
@@ -242,8 +241,8 @@ def scan_brake(chaser, scenario, workdir, writer):
         looks = []
         for q_vy in Q_VY_LOOK:
             params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
-            j = cal.objective(*cal.run_nominal(chaser, scenario, params, workdir))
-            mean_j = mean_objective(chaser, scenario, params, workdir)
+            js = block_objectives(chaser, scenario, params, workdir)
+            j, mean_j = js[0], (sum(js) / len(js), min(js), max(js))
             writer.writerow([brake, lateral, q_vy, j, *mean_j])
             looks.append((mean_j, j, params))
         mean_j, j, params = min(looks, key=lambda look: look[0][0])

@@ -156,7 +156,7 @@ def test_the_thorough_calibration_adds_the_brakes_and_a_second_descent_from_the_
     params, (j, counts, k_p), runs = cal.calibrate(str(cli), doc, tmp_path, log=lines.append, thorough=True)
     starts = [line for line in lines if line.startswith("-- descent")]
     assert len(starts) == 4 and sum("first round's best" in line for line in starts) == 2
-    assert sum("brake 0.0075" in line for line in starts) == 2
+    assert sum("(100.0, 0.0075)" in line for line in starts) == 2
     assert params["qv"][0] in cal.FINE_Q_GRID and j == cal.objective(counts, k_p)
     assert runs <= 2 * 3 ** 3  # two designs x the fine grid's 27 weight triples
     default, (j_default, _, _), _ = cal.calibrate(str(cli), doc, tmp_path, log=lambda _: None)
