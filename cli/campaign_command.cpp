@@ -4,7 +4,6 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -20,6 +19,7 @@
 #include "campaign/target_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_input.hpp"
+#include "core/worker_threads.hpp"
 
 namespace chaser::cli {
 
@@ -121,7 +121,7 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
     return std::nullopt;
   }
   // With --mpi every rank is one process per core by default: one worker thread each.
-  const int default_threads = args.mpi ? 1 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int default_threads = args.mpi ? 1 : default_worker_threads();
   return Prepared{campaign::CampaignPlan{*loaded->scenario, loaded->hash, campaign::RunLayout(layout.cases)},
                   campaign::CampaignOptions{.out_dir = args.out_dir,
                                             .shard = *shard.shard,

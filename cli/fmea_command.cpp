@@ -7,13 +7,13 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "cli/fmea_report.hpp"
+#include "core/worker_threads.hpp"
 #include "invsim/fmea.hpp"
 #include "invsim/layout_study.hpp"
 #include "invsim/noise_draws.hpp"
@@ -69,7 +69,7 @@ int fmea_command(const FmeaArgs& args) {
     return kExitBadInput;
   }
   const FmeaOptions options{args.three_axis, args.optimize, args.history, args.nominal_only,
-                            args.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))};
+                            args.threads.value_or(default_worker_threads())};
   if (const std::string problem = fmea_options_problem(loaded, args.scenario_path, options); !problem.empty()) {
     std::cerr << "chaser fmea: " << problem << "\n";
     return kExitBadInput;

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
-#include <thread>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,6 +20,7 @@
 
 #include "campaign/csv.hpp"
 #include "cli/fmea_report.hpp"
+#include "core/worker_threads.hpp"
 #include "flight/fdi/residual_design.hpp"
 #include "flight/fdi/residual_design_json.hpp"
 #include "flight/fdir.hpp"
@@ -192,7 +192,7 @@ py::dict fmea(const std::string& path, const py::object& overrides, std::optiona
     loaded = io::load_invsim_file(path, sets);
     if (loaded.errors.empty() && loaded.params) {
       const cli::FmeaOptions options{three_axis, optimize, history, false,
-                                     threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))};
+                                     threads.value_or(default_worker_threads())};
       problem = cli::fmea_options_problem(loaded, path, options);
       if (problem.empty()) {
         study = cli::run_fmea_study(loaded, options);

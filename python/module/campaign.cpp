@@ -13,7 +13,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -26,6 +25,7 @@
 #include "campaign/plan.hpp"
 #include "campaign/run_row.hpp"
 #include "campaign/target.hpp"
+#include "core/worker_threads.hpp"
 #include "flight/flight_software.hpp"
 #include "sim/run.hpp"
 #include "sim/summary.hpp"
@@ -342,7 +342,7 @@ CampaignResult run_campaign(const py::object& scenario_arg, const py::object& ru
   campaign::CampaignOptions options{
       .out_dir = dir,
       .shard = extras.shard,
-      .threads = threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      .threads = threads.value_or(default_worker_threads()),
       .resume = extras.resume,
       .keep_telemetry = extras.keep_telemetry,
       .progress = show,
