@@ -7,6 +7,7 @@ Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--
        /usr/bin/python3 python/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py brake [--chaser BIN] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py tie [--chaser BIN] [--csv OUT]
 
 coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
 per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
@@ -29,6 +30,11 @@ over eight (SEED_BLOCKS), every target at each design's lowest mean J, and, for 
 with the lowest mean J among those that meet targets (2) to (5) (a question about the fault rows,
 not a calibration), the lever arms of the d and e thrusters (1.4-2.0 m and 1.6-2.2 m, 0.1 m steps)
 that lose Table 5 modes: how many, and whether exactly the paper's four.
+tie: the designs of `brake` again, the nominal row only, with a precise objective: J over blocks of
+TIE_DRAWS draws (TIE_SEED_BLOCKS, 4,000 draws per design, against `brake`'s 20 per block), q_vy from
+Q_VY_LOOK chosen on the first block, and each design's J minus the shipped design's on the same
+seeds (paired, so the seeds' common part cancels): whether the nominal row chooses between y held
+and a brake, or between brakes, once 20 draws' noise is gone.
 Deterministic: fixed grids, one `chaser fmea` per point.
 
 coarse and targets replace the scenario's pulses.paper block with {pulse_width_s, state_weights}
@@ -202,17 +208,23 @@ def scan_shipped(chaser, scenario, workdir, writer):
 SEED_BLOCKS = [1, 21, 41, 61, 81, 101, 121, 141]  # first seeds of eight blocks of 20 draws
 
 
-def with_seed(scenario, seed):
+def with_seed(scenario, seed, draws=None):
+    """A copy of `scenario` whose paper reading draws its noise from `seed` (and `draws` sequences)."""
     doc = dict(scenario)
     doc["pulses"] = dict(doc["pulses"])
     doc["pulses"]["paper"] = dict(doc["pulses"]["paper"])
-    doc["pulses"]["paper"]["measurement_noise"] = dict(doc["pulses"]["paper"]["measurement_noise"], seed=seed)
+    noise = dict(doc["pulses"]["paper"]["measurement_noise"], seed=seed)
+    if draws is not None:
+        noise["draws"] = draws
+    doc["pulses"]["paper"]["measurement_noise"] = noise
     return doc
 
 
-def block_objectives(chaser, scenario, params, workdir):
-    """The nominal objective J of `params` on each block of SEED_BLOCKS, in its order."""
-    return [cal.objective(*cal.run_nominal(chaser, with_seed(scenario, seed), params, workdir)) for seed in SEED_BLOCKS]
+def block_objectives(chaser, scenario, params, workdir, blocks=None, draws=None):
+    """The nominal objective J of `params` on each block of seeds (first seeds `blocks`, default
+    SEED_BLOCKS; `draws` draws each, default the scenario's), in its order."""
+    return [cal.objective(*cal.run_nominal(chaser, with_seed(scenario, seed, draws), params, workdir))
+            for seed in (SEED_BLOCKS if blocks is None else blocks)]
 
 
 def meets_fault_targets(t):
@@ -272,9 +284,46 @@ def scan_brake(chaser, scenario, workdir, writer):
         print(f"  d {d_m:.1f} m, e 1.6-2.2 m: lost " + " ".join(line))
 
 
+TIE_DRAWS = 1000  # draws per block in `tie`: the loader's most (io/invsim_reader.cpp, kMaxNoiseDraws)
+TIE_SEED_BLOCKS = [1, 1001, 2001, 3001]  # first seeds of `tie`'s blocks: 4,000 draws per design
+
+
+def paired_differences(js, reference):
+    """Per block, J of a design minus J of the reference design on the same seeds."""
+    return [j - r for j, r in zip(js, reference)]
+
+
+def scan_tie(chaser, scenario, workdir, writer, draws=TIE_DRAWS, blocks=TIE_SEED_BLOCKS):
+    """Whether the nominal row chooses between y held and a brake once its objective is precise
+    (see the module's docstring)."""
+    have = cal.shipped(scenario)
+    designs = [(have["lateral"], have["brake"])] + [(t, b) for b in cal.BRAKE_GRID for t in cal.BRAKE_RETURN_GRID]
+    print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; q_vy chosen on the "
+          f"first block; J on {len(blocks)} blocks of {draws} draws (first seeds {', '.join(map(str, blocks))}); "
+          "the difference to the shipped design on the same seeds")
+    print("| brake [m/s^2] | return [s] | q_vy | J per block | J mean | minus shipped: mean (range) |")
+    print("|---|---|---|---|---|---|")
+    reference = None
+    for lateral, brake in designs:
+        looks = []
+        for q_vy in Q_VY_LOOK:
+            params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+            looks.append((block_objectives(chaser, scenario, params, workdir, blocks[:1], draws)[0], params))
+        first, params = min(looks, key=lambda look: look[0])
+        js = [first] + block_objectives(chaser, scenario, params, workdir, blocks[1:], draws)
+        if reference is None:  # the shipped design comes first
+            reference = js
+        diff = paired_differences(js, reference)
+        mean = sum(js) / len(js)
+        writer.writerow([brake, lateral, params["qv"][1], *js, mean, sum(diff) / len(diff)])
+        print(f"| {'none, y held' if brake == 0 else f'{brake:g}'} | {lateral:g} | {params['qv'][1]:g} | "
+              f"{' '.join(f'{j:.4f}' for j in js)} | {mean:.4f} | {sum(diff) / len(diff):+.4f} "
+              f"({min(diff):+.4f} to {max(diff):+.4f}) |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("what", choices=["coarse", "targets", "faulted", "shipped", "brake"])
+    ap.add_argument("what", choices=["coarse", "targets", "faulted", "shipped", "brake", "tie"])
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--width", type=float, default=0.06, help="w for `targets` [s]")
@@ -297,6 +346,10 @@ def main():
         elif args.what == "brake":
             writer.writerow(["brake_mps2", "lateral_time_constant_s", "q_vy", "J_seed1", "J_mean", "J_min", "J_max"])
             scan_brake(args.chaser, scenario, pathlib.Path(tmp), writer)
+        elif args.what == "tie":
+            writer.writerow(["brake_mps2", "lateral_time_constant_s", "q_vy",
+                             *[f"J_seed{seed}" for seed in TIE_SEED_BLOCKS], "J_mean", "minus_shipped_mean"])
+            scan_tie(args.chaser, scenario, pathlib.Path(tmp), writer)
         elif args.what == "coarse":
             writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "within_15pc"])
             scan_coarse(args.chaser, scenario, pathlib.Path(tmp), writer, args.k)

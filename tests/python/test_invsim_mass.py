@@ -161,3 +161,21 @@ def test_the_thorough_calibration_adds_the_brakes_and_a_second_descent_from_the_
     assert runs <= 2 * 3 ** 3  # two designs x the fine grid's 27 weight triples
     default, (j_default, _, _), _ = cal.calibrate(str(cli), doc, tmp_path, log=lambda _: None)
     assert default["brake"] == 0.0 and j <= j_default
+
+
+def test_a_tie_in_the_nominal_objective_goes_to_the_design_with_fewer_free_choices():
+    """calibrate_invsim.pick: the lowest J wins unless a simpler lateral design (y held: none; a
+    return: one; a brake and its return: two) is within TIE_J, the objective's resolution."""
+    held = dict(cal.START)
+    ret = dict(cal.START, lateral=100.0)
+    brake = dict(cal.START, lateral=100.0, brake=0.0075)
+    assert [cal.free_choices(p) for p in (held, ret, brake)] == [0, 1, 2]
+
+    def ends(j_held, j_return, j_brake):
+        return [(held, (j_held, [], 0.0)), (ret, (j_return, [], 0.0)), (brake, (j_brake, [], 0.0))]
+
+    assert cal.pick(ends(0.0731, 0.0800, 0.0710))[0] is brake  # 0.0021 apart: not a tie
+    assert cal.pick(ends(0.0720, 0.0800, 0.0710))[0] is held  # 0.0010 apart: the simpler
+    assert cal.pick(ends(0.0740, 0.0715, 0.0710))[0] is ret  # the return ties, y held does not
+    assert cal.pick(ends(0.0710, 0.0800, 0.0710))[0] is held
+    assert cal.pick(ends(0.0800, 0.0700, 0.0710))[0] is ret  # the lowest, and simpler than the brake

@@ -53,3 +53,38 @@ def test_the_fault_targets_rule_needs_every_one_of_2_to_5():
     for key, value in [("k_p_within", 16), ("rise_within", 11), ("z_doubles_worst", False), ("table5_in_band", 1)]:
         assert not sr.meets_fault_targets(dict(met, **{key: value})), key
     assert not sr.meets_fault_targets(dict(met, table5_ratios=[], table5_in_band=0))  # nothing flown
+
+
+def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(cli, tmp_path, monkeypatch):
+    """`tie` (docs/invsim.md, "A designed lateral brake"): q_vy is the lowest J on the first block,
+    every block's J is the one block_objectives flies, and each design's difference is taken to the
+    shipped design's J on the same block (the shipped design's own is zero)."""
+    monkeypatch.setattr(sr, "Q_VY_LOOK", [0.6, 1.0])
+    monkeypatch.setattr(cal, "BRAKE_GRID", [0.0075])
+    monkeypatch.setattr(cal, "BRAKE_RETURN_GRID", [200.0])
+    doc = yaml.safe_load(SCENARIO.read_text())
+    blocks, draws = [1, 7], 2
+    rows = []
+
+    class Rows:
+        def writerow(self, row):
+            rows.append(row)
+
+    sr.scan_tie(str(cli), doc, tmp_path, Rows(), draws=draws, blocks=blocks)
+    assert [row[:2] for row in rows] == [[0.0, 0.0], [0.0075, 200.0]]  # y held (shipped), then the brake
+    have = cal.shipped(doc)
+    shipped_js = None
+    for row in rows:
+        brake, lateral, q_vy, *js = row[:3 + len(blocks)]
+        firsts = {q: sr.block_objectives(str(cli), doc, dict(have, lateral=lateral, brake=brake,
+                                                               qv=[have["qv"][0], q, have["qv"][2]]),
+                                         tmp_path, blocks[:1], draws)[0] for q in sr.Q_VY_LOOK}
+        assert q_vy == min(firsts, key=firsts.get)
+        params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+        assert js == sr.block_objectives(str(cli), doc, params, tmp_path, blocks, draws)
+        if shipped_js is None:  # the shipped design's row comes first
+            shipped_js = js
+        assert row[-2] == sum(js) / len(js)
+        assert row[-1] == sum(sr.paired_differences(js, shipped_js)) / len(js)
+    assert rows[0][-1] == 0.0
+    assert rows[1][-1] != 0.0  # the brake flies another path
