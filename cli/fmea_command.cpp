@@ -30,16 +30,21 @@ bool write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 // `flights`: the distinct flights flown for the layouts' rows (invsim::run_fmea_of_configurations).
-void print_summary(const std::vector<FmeaLayout>& layouts, std::size_t flights, double seconds, int threads) {
+// With `histories` and several noise draws each row's worst draw is flown once more to record it
+// (invsim/fmea.cpp, fly_row): the line counts those flights too.
+void print_summary(const std::vector<FmeaLayout>& layouts, std::size_t flights, bool histories, double seconds,
+                   int threads) {
   const model::InvSimParams& p = layouts.front().params;
   const std::uint64_t draws = invsim::noise_draws_per_mode(p);
   const std::size_t modes = layouts.front().rows.size();  // every layout flies the same modes
-  std::cout << fmt::format("chaser fmea: {} layout{} x {} mode{} = {} rows, {} flown{} in {:.2f} s on {} thread{}; "
+  const std::size_t row_count = layouts.size() * modes;
+  std::string flown = fmt::format("{} flown", flights);
+  if (draws > 1) flown += fmt::format(" x {} noise draws", draws);
+  if (draws > 1 && histories) flown += fmt::format(", and {} worst draws again for their histories", row_count);
+  std::cout << fmt::format("chaser fmea: {} layout{} x {} mode{} = {} rows, {} in {:.2f} s on {} thread{}; "
                            "pulses.reading {}\n",
-                           layouts.size(), layouts.size() == 1 ? "" : "s", modes, modes == 1 ? "" : "s",
-                           layouts.size() * modes, flights,
-                           draws > 1 ? fmt::format(" x {} noise draws", draws) : std::string(), seconds, threads,
-                           threads == 1 ? "" : "s", invsim::reading_name(p.pulses.reading));
+                           layouts.size(), layouts.size() == 1 ? "" : "s", modes, modes == 1 ? "" : "s", row_count, flown,
+                           seconds, threads, threads == 1 ? "" : "s", invsim::reading_name(p.pulses.reading));
   for (const FmeaLayout& layout : layouts) {
     const invsim::LayoutSummary s = invsim::summarize_layout(layout.rows);
     std::cout << fmt::format("  {}: class I {}, class II {}, class III {}; propellant {:.1f} kg\n", layout.name,
@@ -96,7 +101,7 @@ int fmea_command(const FmeaArgs& args) {
     std::cerr << "chaser fmea: " << error << "\n";
     return kExitFailure;
   }
-  print_summary(study.layouts, study.flights, seconds, options.threads);
+  print_summary(study.layouts, study.flights, args.history, seconds, options.threads);
   if (study.optimized && !study.optimized->empty()) {
     const invsim::LayoutCandidate& best = study.optimized->front();
     std::cout << fmt::format("  --optimize: {} candidates x {} modes, {} flown; best: {} (class III {}, {:.1f} kg)\n",

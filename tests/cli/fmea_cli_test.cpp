@@ -89,7 +89,7 @@ TEST(FmeaCli, OptimizeAndHistoryForThePlots) {
 }
 
 // Under the paper reading with several noise draws the index names the draw each history shows
-// (the worst: invsim/fmea.hpp) and its seed; the plotter says so in the title and does not hold the
+// (the worst: invsim/fmea.hpp) and its seed, and the summary counts its flight; the plotter says so in the title and does not hold the
 // draw's pulse totals against fmea.csv's means (no warning), where a single draw's must match.
 TEST(FmeaCli, HistoriesOfNoiseDrawsNameTheDrawAndPlotWithoutMismatch) {
   const fs::path out = fresh_dir("draws");
@@ -97,6 +97,9 @@ TEST(FmeaCli, HistoriesOfNoiseDrawsNameTheDrawAndPlotWithoutMismatch) {
                                  "--set pulses.paper.measurement_noise.draws=3 --set pulses.paper.measurement_noise.seed=4 "
                                  "--out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Every row flown (no sharing between layouts with histories), and its worst draw once more.
+  EXPECT_NE(r.output.find("= 123 rows, 123 flown x 3 noise draws, and 123 worst draws again for their histories in "),
+            std::string::npos) << r.output;
   const std::vector<std::string> index = lines(read_file(out / "history" / "index.csv"));
   ASSERT_EQ(index.size(), 1u + 3u * 41u);
   for (std::size_t i = 1; i < index.size(); ++i) {
