@@ -239,10 +239,21 @@ def meets_fault_targets(t):
 Q_VY_LOOK = [0.3, 0.4, 0.5, 0.6, 0.7, 1.0]  # y velocity weights the brake mode tries [s^2/m^2]
 
 
+def compared_designs(have):
+    """The lateral designs `brake` and `tie` compare: the shipped block's own (time constant, brake)
+    first, then each brake of calibrate_invsim.BRAKE_GRID after each return of BRAKE_RETURN_GRID."""
+    return [(have["lateral"], have["brake"])] + [(t, b) for b in cal.BRAKE_GRID for t in cal.BRAKE_RETURN_GRID]
+
+
+def with_lateral_design(have, lateral, brake, q_vy):
+    """The calibration point `have` with its lateral design and y velocity weight replaced."""
+    return dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+
+
 def scan_brake(chaser, scenario, workdir, writer):
     """Target (6) and the nominal fit with a designed lateral brake (see the module's docstring)."""
     have = cal.shipped(scenario)
-    designs = [(have["lateral"], have["brake"])] + [(t, b) for b in cal.BRAKE_GRID for t in cal.BRAKE_RETURN_GRID]
+    designs = compared_designs(have)
     print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; J on the block from seed "
           f"{SEED_BLOCKS[0]} and over {len(SEED_BLOCKS)} blocks of seeds; the targets at each design's lowest mean J")
     print("| brake [m/s^2] | return [s] | q_vy | J seed 1 | J mean (range) | nominal | (1) | (2) | (3) | (4) | (5) "
@@ -252,7 +263,7 @@ def scan_brake(chaser, scenario, workdir, writer):
     for lateral, brake in designs:
         looks = []
         for q_vy in Q_VY_LOOK:
-            params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+            params = with_lateral_design(have, lateral, brake, q_vy)
             js = block_objectives(chaser, scenario, params, workdir)
             j, mean_j = js[0], (sum(js) / len(js), min(js), max(js))
             writer.writerow([brake, lateral, q_vy, j, *mean_j])
@@ -297,7 +308,7 @@ def scan_tie(chaser, scenario, workdir, writer, draws=TIE_DRAWS, blocks=TIE_SEED
     """Whether the nominal row chooses between y held and a brake once its objective is precise
     (see the module's docstring)."""
     have = cal.shipped(scenario)
-    designs = [(have["lateral"], have["brake"])] + [(t, b) for b in cal.BRAKE_GRID for t in cal.BRAKE_RETURN_GRID]
+    designs = compared_designs(have)
     print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; q_vy chosen on the "
           f"first block; J on {len(blocks)} blocks of {draws} draws (first seeds {', '.join(map(str, blocks))}); "
           "the difference to the shipped design on the same seeds")
@@ -307,7 +318,7 @@ def scan_tie(chaser, scenario, workdir, writer, draws=TIE_DRAWS, blocks=TIE_SEED
     for lateral, brake in designs:
         looks = []
         for q_vy in Q_VY_LOOK:
-            params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+            params = with_lateral_design(have, lateral, brake, q_vy)
             looks.append((block_objectives(chaser, scenario, params, workdir, blocks[:1], draws)[0], params))
         first, params = min(looks, key=lambda look: look[0])
         js = [first] + block_objectives(chaser, scenario, params, workdir, blocks[1:], draws)

@@ -76,11 +76,11 @@ def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(c
     shipped_js = None
     for row in rows:
         brake, lateral, q_vy, *js = row[:3 + len(blocks)]
-        firsts = {q: sr.block_objectives(str(cli), doc, dict(have, lateral=lateral, brake=brake,
-                                                               qv=[have["qv"][0], q, have["qv"][2]]),
-                                         tmp_path, blocks[:1], draws)[0] for q in sr.Q_VY_LOOK}
+        firsts = {q: sr.block_objectives(str(cli), doc, sr.with_lateral_design(have, lateral, brake, q), tmp_path,
+                                         blocks[:1], draws)[0] for q in sr.Q_VY_LOOK}
         assert q_vy == min(firsts, key=firsts.get)
-        params = dict(have, lateral=lateral, brake=brake, qv=[have["qv"][0], q_vy, have["qv"][2]])
+        params = sr.with_lateral_design(have, lateral, brake, q_vy)
+        assert params["qv"] == [have["qv"][0], q_vy, have["qv"][2]] and params["w"] == have["w"]
         assert js == sr.block_objectives(str(cli), doc, params, tmp_path, blocks, draws)
         if shipped_js is None:  # the shipped design's row comes first
             shipped_js = js
