@@ -8,6 +8,7 @@ Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--
        /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py brake [--chaser BIN] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py tie [--chaser BIN] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py separation [--chaser BIN] [--csv OUT]
 
 coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
 per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
@@ -35,6 +36,13 @@ TIE_DRAWS draws (TIE_SEED_BLOCKS, 4,000 draws per design, against `brake`'s 20 p
 Q_VY_LOOK chosen on the first block, and each design's J minus the shipped design's on the same
 seeds (paired, so the seeds' common part cancels): whether the nominal row chooses between y held
 and a brake, or between brakes, once 20 draws' noise is gone.
+separation: target (6) against (2)-(5) over start designs: y held and every brake of
+SEPARATION_BRAKES (those a halved group can give, the healthy group's, and harder ones up to
+0.1 m/s^2) after each return of BRAKE_RETURN_GRID, at each q_vy of SEPARATION_Q_VY, the whole study
+on the shipped layout: four_separation (how far the paper's four lost modes stand out of the other
+Table 5 modes; (6) at any lever arms that scale the excursions alike needs it above 1) and
+twin_margin (each of the four against the mode that differs from it only in the x+ thruster lost)
+beside targets (2) to (5).
 Deterministic: fixed grids, one `chaser fmea` per point.
 
 coarse and targets replace the scenario's pulses.paper block with {pulse_width_s, state_weights}
@@ -332,9 +340,66 @@ def scan_tie(chaser, scenario, workdir, writer, draws=TIE_DRAWS, blocks=TIE_SEED
               f"({min(diff):+.4f} to {max(diff):+.4f}) |")
 
 
+# [m/s^2]: 0.0075 is what a halved group gives the shipped 8,000 kg, 0.015 the healthy group; past it
+# the start saturates as with y held
+SEPARATION_BRAKES = [0.005, 0.006, 0.007, 0.0075, 0.008, 0.009, 0.01, 0.015, 0.02, 0.03, 0.05, 0.1]
+SEPARATION_Q_VY = [0.6, 1.0]  # the brakes' and y held's best y velocity weights [s^2/m^2] (`tie`)
+
+
+def four_separation(rows):
+    """How far the paper's four lost Table 5 modes stand out: the smallest deviation ratio (peak
+    azimuth or elevation over its limit) among the four over the largest among the other Table 5
+    modes, and that mode. Lever arms that scale every mode's excursion alike can lose exactly the
+    four (target 6) only where this exceeds 1."""
+    table5 = {m: float(r["deviation_ratio"]) for m, r in rows.items() if r["table"] == "table5"}
+    four = min(table5[m] for m in cal.PAPER_LOST)
+    other, worst = max((v, m) for m, v in table5.items() if m not in cal.PAPER_LOST)
+    return four / other, worst
+
+
+def twin(mode):
+    """The Table 5 mode that loses the same x- and y thrusters as `mode` and the other x+ thruster
+    (d1 <-> d2): the paper flies the twins of its four lost modes."""
+    x_pair, y_pair = mode.split("+")
+    return {"d1/d2~": "d2/d2~", "d2/d2~": "d1/d2~", "d2/d1~": "d1/d1~", "d1/d1~": "d2/d1~"}[x_pair] + "+" + y_pair
+
+
+def twin_margin(rows):
+    """The least, over the paper's four lost modes, of its peak azimuth minus its twin's [deg], and
+    that mode: where it is 0 the x+ thruster that tells them apart did not act before the peak."""
+    return min((float(rows[m]["peak_azimuth_deg"]) - float(rows[twin(m)]["peak_azimuth_deg"]), m)
+               for m in sorted(cal.PAPER_LOST))
+
+
+def scan_separation(chaser, scenario, workdir, writer):
+    """Target (6) against (2)-(5) over start designs (see the module's docstring)."""
+    have = cal.shipped(scenario)
+    print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed, shipped layout; "
+          "separation: the paper's four modes' smallest deviation ratio over the other Table 5 modes' largest")
+    print("| brake [m/s^2] | return [s] | q_vy | separation | the largest other | least margin over the twin [deg] "
+          "| (2) | (3) | (4) | (5) | lost |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    designs = [(have["lateral"], have["brake"], have["qv"][1])] + [
+        (t, b, q) for b in SEPARATION_BRAKES for t in cal.BRAKE_RETURN_GRID for q in SEPARATION_Q_VY]
+    for lateral, brake, q_vy in designs:
+        params = with_lateral_design(have, lateral, brake, q_vy)
+        rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, params), workdir))
+        t = cal.targets(rows)
+        separation, worst = four_separation(rows)
+        margin, closest = twin_margin(rows)
+        ratios = t["table5_ratios"]
+        writer.writerow([brake, lateral, q_vy, separation, worst, margin, closest, t["k_p_within"], t["rise_within"],
+                         t["z_doubles_worst"], t["table5_in_band"], len(ratios), len(t["lost"])])
+        print(f"| {'none, y held' if brake == 0 else f'{brake:g}'} | {lateral:g} | {q_vy:g} | {separation:.3f} | "
+              f"{worst} | {margin:.2f} ({closest}) | {t['k_p_within']} | {t['rise_within']} | "
+              f"{'yes' if t['z_doubles_worst'] else 'no'} | "
+              f"{t['table5_in_band']} of {len(ratios)} ({min(ratios, default=0):.2f}-{max(ratios, default=0):.2f}x) | "
+              f"{len(t['lost'])} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("what", choices=["coarse", "targets", "faulted", "shipped", "brake", "tie"])
+    ap.add_argument("what", choices=["coarse", "targets", "faulted", "shipped", "brake", "tie", "separation"])
     ap.add_argument("scenario", nargs="?", default="scenarios/manual_rvd.yaml")
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--width", type=float, default=0.06, help="w for `targets` [s]")
@@ -361,6 +426,10 @@ def main():
             writer.writerow(["brake_mps2", "lateral_time_constant_s", "q_vy",
                              *[f"J_seed{seed}" for seed in TIE_SEED_BLOCKS], "J_mean", "minus_shipped_mean"])
             scan_tie(args.chaser, scenario, pathlib.Path(tmp), writer)
+        elif args.what == "separation":
+            writer.writerow(["brake_mps2", "lateral_time_constant_s", "q_vy", "separation", "largest_other",
+                             "twin_margin_deg", "closest_to_its_twin", "k_p_within", "rise_within", "z_doubles_worst", "table5_in_band", "table5_flown", "lost"])
+            scan_separation(args.chaser, scenario, pathlib.Path(tmp), writer)
         elif args.what == "coarse":
             writer.writerow(["w_s", "q_vx", "q_vy", "q_vz", *cal.DIRECTIONS, "within_15pc"])
             scan_coarse(args.chaser, scenario, pathlib.Path(tmp), writer, args.k)

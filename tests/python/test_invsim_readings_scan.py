@@ -88,3 +88,61 @@ def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(c
         assert row[-1] == sum(sr.paired_differences(js, shipped_js)) / len(js)
     assert rows[0][-1] == 0.0
     assert rows[1][-1] != 0.0  # the brake flies another path
+
+
+def test_the_four_separation_is_the_paper_fours_least_deviation_over_the_others_largest():
+    """four_separation (docs/invsim.md, "Target (6) over the start designs"): the ratio of the
+    smallest deviation ratio among the paper's four lost Table 5 modes to the largest among the
+    other Table 5 modes, whatever the Table 4 rows do; above 1 only where a threshold separates them."""
+    rows = {m: {"table": "table5", "deviation_ratio": "1.2"} for m in cal.PAPER_LOST}
+    rows["d1/d1~+e1/e1~"] = {"table": "table5", "deviation_ratio": "0.8"}
+    rows["d2/d2~+e2/e1~"] = {"table": "table5", "deviation_ratio": "0.96"}
+    rows["f2/f2~"] = {"table": "table2", "deviation_ratio": "5.0"}  # not Table 5: not compared
+    four = sorted(cal.PAPER_LOST)
+    rows[four[0]]["deviation_ratio"] = "0.9"
+    separation, worst = sr.four_separation(rows)
+    assert separation == 0.9 / 0.96 and worst == "d2/d2~+e2/e1~"
+    rows[four[0]]["deviation_ratio"] = "1.1"
+    assert sr.four_separation(rows) == (1.1 / 0.96, "d2/d2~+e2/e1~")
+
+
+def test_the_separation_scan_scores_the_study_chaser_fmea_flies(cli, tmp_path, monkeypatch):
+    """scan_separation on one brake design (two noise draws): y held first, then the brake, each
+    row's separation and targets those of `chaser fmea --set` flown with the same design."""
+    monkeypatch.setattr(sr, "SEPARATION_BRAKES", [0.0075])
+    monkeypatch.setattr(sr, "SEPARATION_Q_VY", [0.6])
+    monkeypatch.setattr(cal, "BRAKE_RETURN_GRID", [200.0])
+    doc = yaml.safe_load(SCENARIO.read_text())
+    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    rows = []
+
+    class Rows:
+        def writerow(self, row):
+            rows.append(row)
+
+    sr.scan_separation(str(cli), doc, tmp_path, Rows())
+    assert [row[:3] for row in rows] == [[0.0, 0.0, 1.0], [0.0075, 200.0, 0.6]]
+    out = tmp_path / "direct"
+    sets = ["pulses.reading=paper", "pulses.paper.lateral_brake_mps2=0.0075", "pulses.paper.lateral_time_constant_s=200",
+            "pulses.paper.state_weights=[1,1,1,10,0.6,0.01]", "pulses.paper.measurement_noise.draws=2"]
+    subprocess.run([str(cli), "fmea", str(SCENARIO), "--out", str(out), *[a for s in sets for a in ("--set", s)]],
+                   check=True, stdout=subprocess.DEVNULL)
+    flown = cal.read_layout(out / "fmea.csv")
+    t = cal.targets(flown)
+    assert rows[1][3:5] == list(sr.four_separation(flown))
+    assert rows[1][5:7] == list(sr.twin_margin(flown))
+    assert rows[1][7:] == [t["k_p_within"], t["rise_within"], t["z_doubles_worst"], t["table5_in_band"],
+                           len(t["table5_ratios"]), len(t["lost"])]
+    assert rows[0][3] != rows[1][3]  # y held turns the chaser otherwise
+
+
+def test_a_paper_modes_twin_loses_the_other_x_plus_thruster_and_the_margin_is_the_least_over_the_four():
+    assert sr.twin("d1/d2~+e2/e1~") == "d2/d2~+e2/e1~" and sr.twin("d2/d2~+e2/e1~") == "d1/d2~+e2/e1~"
+    assert sr.twin("d2/d1~+e1/e2~") == "d1/d1~+e1/e2~"
+    assert {sr.twin(m) for m in cal.PAPER_LOST}.isdisjoint(cal.PAPER_LOST)  # the twins are flown in the paper
+    rows = {}
+    for m in cal.PAPER_LOST:
+        rows[m] = {"peak_azimuth_deg": "12.0"}
+        rows[sr.twin(m)] = {"peak_azimuth_deg": "9.0"}
+    rows["d2/d2~+e2/e2~"]["peak_azimuth_deg"] = "11.5"  # the twin of d1/d2~+e2/e2~
+    assert sr.twin_margin(rows) == (0.5, "d1/d2~+e2/e2~")
