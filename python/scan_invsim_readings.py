@@ -5,7 +5,7 @@ calibration (docs/invsim.md, "Which targets no reading can meet, and why").
 Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT]
+       /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT] [--lateral-design T,A]
        /usr/bin/python3 python/scan_invsim_readings.py brake [--chaser BIN] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py tie [--chaser BIN] [--csv OUT]
        /usr/bin/python3 python/scan_invsim_readings.py separation [--chaser BIN] [--csv OUT]
@@ -23,7 +23,8 @@ every row by 0.526 / (the point's nominal k_p), i.e. with w chosen on the nomina
 as 1 / w up to the rounding of ceil).
 shipped: the reading as shipped (the scenario's pulses.paper block), every Q of the grid: which Q
 lose exactly the paper's four Table 5 modes (target 6), the best nominal objective J each of them
-reaches over the calibration's widths, and the best one scored on every target.
+reaches over the calibration's widths, and the best one scored on every target (--lateral-design
+T,A: with the lateral return T after the brake A instead of the scenario's design).
 brake: the shipped block with its lateral design replaced by a brake (pulses.paper.lateral_brake_mps2,
 each of calibrate_invsim.BRAKE_GRID after each return of BRAKE_RETURN_GRID) and q_vy by each of
 Q_VY_LOOK (the shipped design too): the nominal objective J on the first seed block and averaged
@@ -50,6 +51,7 @@ only, so they scan the paper reading as it was in session 15: the nominal invers
 perfect measurement link.
 """
 import argparse
+import collections
 import csv
 import itertools
 import pathlib
@@ -177,16 +179,22 @@ def scan_faulted(chaser, scenario, workdir, angles, writer):
 
 def scan_shipped(chaser, scenario, workdir, writer):
     """Target (6) against the nominal fit, in the reading as shipped (the scenario's pulses.paper
-    block: opening, inverse model, noise and draws, lateral return), over every Q of the grid: which
-    Q lose exactly the paper's four (the classes do not depend on w, which only counts), and the
-    best nominal objective each of those reaches over W_GRID; the best of them is then scored on
-    every target at its w."""
+    block: opening, inverse model, noise and draws, lateral design), over every Q of the grid: which
+    Q lose exactly the paper's four (the classes do not depend on w, which only counts), which put
+    the four above every other Table 5 mode (four_separation above 1), and the best nominal
+    objective each Q that loses the four reaches over W_GRID; each of those is then scored on every
+    target at its w."""
     have = cal.shipped(scenario)
     kept = []
+    separations = []
+    lost_sets = collections.Counter()
     for qv in grid():
         params = dict(have, qv=list(qv))
         rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, params), workdir))
         t = cal.targets(rows)
+        separation, _ = four_separation(rows)
+        separations.append(separation)
+        lost_sets[tuple(sorted(t["lost"]))] += 1
         best = None
         if t["same_four_lost"]:
             for w in cal.W_GRID:
@@ -195,22 +203,34 @@ def scan_shipped(chaser, scenario, workdir, writer):
                 if best is None or j < best[0]:
                     best = (j, w, counts, k_p)
             kept.append((best, qv))
-        writer.writerow([*qv, len(t["lost"]), int(t["same_four_lost"]), *(best[:2] if best else ("", ""))])
+        writer.writerow([*qv, len(t["lost"]), int(t["same_four_lost"]), *(best[:2] if best else ("", "")), separation])
     print(f"shipped reading (w, noise, lateral as in the scenario: {cal.describe(have)}), {len(grid())} Q points")
+    print(f"the four above every other Table 5 mode (separation above 1): {sum(v > 1 for v in separations)} Q points "
+          f"(largest separation {max(separations):.3f})")
+    print("modes lost, the most frequent sets: " + "; ".join(
+        f"{n} Q {', '.join(modes) if modes else 'none'}" for modes, n in lost_sets.most_common(3)))
     print(f"the paper's four lost, and only they (target 6): {len(kept)} Q points")
     if not kept:
         return
     kept.sort(key=lambda k: k[0][0])
     for (j, w, counts, k_p), qv in kept[:5]:
         print(f"  J {j:.4f} at w = {w:g} s, q_v = {list(qv)}: nominal {counts}, k_p {k_p:.3f}")
-    (j, w, counts, k_p), qv = kept[0]
-    rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, dict(have, qv=list(qv), w=w)), workdir))
-    t = cal.targets(rows)
-    ratios = t["table5_ratios"]
-    print(f"best of them scored: nominal within 15 % {t['nominal_within']} of 6, k_p {t['k_p_within']} of 17, "
-          f"rise {t['rise_within']} of 16, z doubles worst {'yes' if t['z_doubles_worst'] else 'no'}, Table 5 "
-          f"{min(ratios, default=0):.2f}-{max(ratios, default=0):.2f}x ({t['table5_in_band']} of {len(ratios)} in band), "
-          f"lost {', '.join(sorted(t['lost']))}, Spearman {t['spearman']:.2f}")
+    scored = []
+    for (j, w, counts, k_p), qv in kept:
+        rows = cal.read_layout(cal.run_fmea(chaser, cal.paper_study(scenario, dict(have, qv=list(qv), w=w)), workdir))
+        scored.append((j, w, qv, cal.targets(rows)))
+    for title, points in [("best of them scored", scored[:1]),
+                          ("the lowest J of them that also meets (4) and (5)",
+                           [p for p in scored if p[3]["z_doubles_worst"] and p[3]["table5_ratios"]
+                            and p[3]["table5_in_band"] == len(p[3]["table5_ratios"])][:1])]:
+        for j, w, qv, t in points:
+            ratios = t["table5_ratios"]
+            print(f"{title} (J {j:.3f}, w = {w:g} s, q_v = {list(qv)}): nominal within 15 % {t['nominal_within']} "
+                  f"of 6, k_p {t['k_p_within']} of 17, rise {t['rise_within']} of 16, z doubles worst "
+                  f"{'yes' if t['z_doubles_worst'] else 'no'}, Table 5 {min(ratios, default=0):.2f}-"
+                  f"{max(ratios, default=0):.2f}x ({t['table5_in_band']} of {len(ratios)} in band), lost "
+                  f"{', '.join(sorted(t['lost']))}, Spearman {t['spearman']:.2f}")
+    print(f"of them meeting (2) to (5) as well: {sum(meets_fault_targets(t) for _, _, _, t in scored)} Q points")
 
 
 SEED_BLOCKS = [1, 21, 41, 61, 81, 101, 121, 141]  # first seeds of eight blocks of 20 draws
@@ -225,6 +245,15 @@ def with_seed(scenario, seed, draws=None):
     if draws is not None:
         noise["draws"] = draws
     doc["pulses"]["paper"]["measurement_noise"] = noise
+    return doc
+
+
+def with_lateral_block(scenario, lateral, brake):
+    """A copy of `scenario` whose paper reading flies the lateral return `lateral` [s] after the
+    brake `brake` [m/s^2]."""
+    doc = dict(scenario)
+    doc["pulses"] = dict(doc["pulses"])
+    doc["pulses"]["paper"] = dict(doc["pulses"]["paper"], lateral_time_constant_s=lateral, lateral_brake_mps2=brake)
     return doc
 
 
@@ -406,8 +435,15 @@ def main():
     ap.add_argument("--k", type=float, help="k_t = k_f (default: the scenario's, Table 3's 0.35)")
     ap.add_argument("--angles", default="0.003,0.01,0.02,0.03", help="angle sigmas for `faulted` [deg]")
     ap.add_argument("--csv", type=pathlib.Path, help="write every point here")
+    ap.add_argument("--lateral-design", metavar="T,A",
+                    help="for `shipped`: the scenario's block with the lateral return T [s] after a brake A [m/s^2]")
     args = ap.parse_args()
     scenario = yaml.safe_load(pathlib.Path(args.scenario).read_text())
+    if args.lateral_design is not None:
+        if args.what != "shipped":
+            ap.error("--lateral-design goes with `shipped` (the other modes choose their own lateral designs)")
+        lateral, brake = (float(v) for v in args.lateral_design.split(","))
+        scenario = with_lateral_block(scenario, lateral, brake)
     with tempfile.TemporaryDirectory() as tmp, \
             open(args.csv or pathlib.Path(tmp) / "scan.csv", "w", newline="") as f:
         writer = csv.writer(f)
@@ -417,7 +453,7 @@ def main():
                              "spearman"])
             scan_faulted(args.chaser, scenario, pathlib.Path(tmp), [float(a) for a in args.angles.split(",")], writer)
         elif args.what == "shipped":
-            writer.writerow(["q_vx", "q_vy", "q_vz", "lost", "same_four_lost", "best_J", "best_w_s"])
+            writer.writerow(["q_vx", "q_vy", "q_vz", "lost", "same_four_lost", "best_J", "best_w_s", "separation"])
             scan_shipped(args.chaser, scenario, pathlib.Path(tmp), writer)
         elif args.what == "brake":
             writer.writerow(["brake_mps2", "lateral_time_constant_s", "q_vy", "J_seed1", "J_mean", "J_min", "J_max"])

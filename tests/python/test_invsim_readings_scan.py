@@ -146,3 +146,44 @@ def test_a_paper_modes_twin_loses_the_other_x_plus_thruster_and_the_margin_is_th
         rows[sr.twin(m)] = {"peak_azimuth_deg": "9.0"}
     rows["d2/d2~+e2/e2~"]["peak_azimuth_deg"] = "11.5"  # the twin of d1/d2~+e2/e2~
     assert sr.twin_margin(rows) == (0.5, "d1/d2~+e2/e2~")
+
+
+def test_the_lateral_design_option_changes_a_copy_of_the_block_and_goes_with_shipped_only():
+    doc = yaml.safe_load(SCENARIO.read_text())
+    before = copy.deepcopy(doc)
+    moved = sr.with_lateral_block(doc, 200.0, 0.0075)
+    assert doc == before
+    assert cal.shipped(moved)["lateral"] == 200.0 and cal.shipped(moved)["brake"] == 0.0075
+    moved["pulses"]["paper"]["lateral_time_constant_s"] = before["pulses"]["paper"]["lateral_time_constant_s"]
+    moved["pulses"]["paper"]["lateral_brake_mps2"] = before["pulses"]["paper"]["lateral_brake_mps2"]
+    assert moved == before
+    refused = subprocess.run([sys.executable, str(REPO / "python" / "scan_invsim_readings.py"), "tie",
+                              "--lateral-design", "200,0.0075"], capture_output=True, text=True)
+    assert refused.returncode == 2 and "--lateral-design goes with `shipped`" in refused.stderr
+
+
+def test_the_shipped_scan_reports_each_q_separation_and_the_modes_it_loses(cli, tmp_path, monkeypatch, capsys):
+    """scan_shipped on two weight points (two noise draws): each row's separation is the study's
+    four_separation, and the summary counts the points above 1 and the sets of modes lost."""
+    points = [(10.0, 1.0, 0.01), (1.0, 3.0, 0.01)]
+    monkeypatch.setattr(sr, "grid", lambda: points)
+    monkeypatch.setattr(cal, "W_GRID", [0.1])
+    doc = yaml.safe_load(SCENARIO.read_text())
+    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    rows = []
+
+    class Rows:
+        def writerow(self, row):
+            rows.append(row)
+
+    sr.scan_shipped(str(cli), doc, tmp_path, Rows())
+    have = cal.shipped(doc)
+    separations = []
+    for row, qv in zip(rows, points):
+        flown = cal.read_layout(cal.run_fmea(str(cli), cal.paper_study(doc, dict(have, qv=list(qv))), tmp_path))
+        separations.append(sr.four_separation(flown)[0])
+        assert row[:3] == list(qv) and row[-1] == separations[-1]
+        assert row[3] == len(cal.targets(flown)["lost"])
+    out = capsys.readouterr().out
+    assert f"(separation above 1): {sum(v > 1 for v in separations)} Q points" in out
+    assert "modes lost, the most frequent sets: " in out
