@@ -233,6 +233,12 @@ def scan_shipped(chaser, scenario, workdir, writer):
     print(f"of them meeting (2) to (5) as well: {sum(meets_fault_targets(t) for _, _, _, t in scored)} Q points")
 
 
+def print_table_header(*columns):
+    """A markdown table's header and rule."""
+    print("| " + " | ".join(columns) + " |")
+    print("|" + "---|" * len(columns))
+
+
 SEED_BLOCKS = [1, 21, 41, 61, 81, 101, 121, 141]  # first seeds of eight blocks of 20 draws
 
 
@@ -293,9 +299,8 @@ def scan_brake(chaser, scenario, workdir, writer):
     designs = compared_designs(have)
     print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; J on the block from seed "
           f"{SEED_BLOCKS[0]} and over {len(SEED_BLOCKS)} blocks of seeds; the targets at each design's lowest mean J")
-    print("| brake [m/s^2] | return [s] | q_vy | J seed 1 | J mean (range) | nominal | (1) | (2) | (3) | (4) | (5) "
-          "| lost | Spearman |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print_table_header("brake [m/s^2]", "return [s]", "q_vy", "J seed 1", "J mean (range)", "nominal", "(1)", "(2)", "(3)",
+                       "(4)", "(5)", "lost", "Spearman")
     best_design = None
     for lateral, brake in designs:
         looks = []
@@ -349,8 +354,7 @@ def scan_tie(chaser, scenario, workdir, writer, draws=TIE_DRAWS, blocks=TIE_SEED
     print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed; q_vy chosen on the "
           f"first block; J on {len(blocks)} blocks of {draws} draws (first seeds {', '.join(map(str, blocks))}); "
           "the difference to the shipped design on the same seeds")
-    print("| brake [m/s^2] | return [s] | q_vy | J per block | J mean | minus shipped: mean (range) |")
-    print("|---|---|---|---|---|---|")
+    print_table_header("brake [m/s^2]", "return [s]", "q_vy", "J per block", "J mean", "minus shipped: mean (range)")
     reference = None
     for lateral, brake in designs:
         looks = []
@@ -405,9 +409,8 @@ def scan_separation(chaser, scenario, workdir, writer):
     have = cal.shipped(scenario)
     print(f"the shipped block ({cal.describe(have)}) with its lateral design and q_vy changed, shipped layout; "
           "separation: the paper's four modes' smallest deviation ratio over the other Table 5 modes' largest")
-    print("| brake [m/s^2] | return [s] | q_vy | separation | the largest other | least margin over the twin [deg] "
-          "| (2) | (3) | (4) | (5) | lost |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print_table_header("brake [m/s^2]", "return [s]", "q_vy", "separation", "the largest other",
+                       "least margin over the twin [deg]", "(2)", "(3)", "(4)", "(5)", "lost")
     designs = [(have["lateral"], have["brake"], have["qv"][1])] + [
         (t, b, q) for b in SEPARATION_BRAKES for t in cal.BRAKE_RETURN_GRID for q in SEPARATION_Q_VY]
     for lateral, brake, q_vy in designs:

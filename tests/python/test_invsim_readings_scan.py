@@ -17,6 +17,20 @@ import scan_invsim_readings as sr  # noqa: E402
 SCENARIO = REPO / "scenarios" / "manual_rvd.yaml"
 
 
+class RowsWritten(list):
+    """A csv writer's stand-in that keeps the rows a scan writes."""
+
+    def writerow(self, row):
+        self.append(row)
+
+
+def with_two_draws():
+    """The shipped scenario with two noise draws per mode: a scan's whole study in a fraction of a second."""
+    doc = yaml.safe_load(SCENARIO.read_text())
+    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    return doc
+
+
 def test_with_seed_changes_a_copy_only():
     doc = yaml.safe_load(SCENARIO.read_text())
     before = copy.deepcopy(doc)
@@ -29,8 +43,7 @@ def test_with_seed_changes_a_copy_only():
 
 def test_the_block_objectives_are_the_objectives_flown_seed_by_seed(cli, tmp_path, monkeypatch):
     monkeypatch.setattr(sr, "SEED_BLOCKS", [1, 7])
-    doc = yaml.safe_load(SCENARIO.read_text())
-    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
+    doc = with_two_draws()
     params = dict(cal.shipped(doc), lateral=100.0, brake=0.0075)
     objectives = []
     for seed in (1, 7):
@@ -64,13 +77,8 @@ def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(c
     monkeypatch.setattr(cal, "BRAKE_RETURN_GRID", [200.0])
     doc = yaml.safe_load(SCENARIO.read_text())
     blocks, draws = [1, 7], 2
-    rows = []
-
-    class Rows:
-        def writerow(self, row):
-            rows.append(row)
-
-    sr.scan_tie(str(cli), doc, tmp_path, Rows(), draws=draws, blocks=blocks)
+    rows = RowsWritten()
+    sr.scan_tie(str(cli), doc, tmp_path, rows, draws=draws, blocks=blocks)
     assert [row[:2] for row in rows] == [[0.0, 0.0], [0.0075, 200.0]]  # y held (shipped), then the brake
     have = cal.shipped(doc)
     shipped_js = None
@@ -112,15 +120,9 @@ def test_the_separation_scan_scores_the_study_chaser_fmea_flies(cli, tmp_path, m
     monkeypatch.setattr(sr, "SEPARATION_BRAKES", [0.0075])
     monkeypatch.setattr(sr, "SEPARATION_Q_VY", [0.6])
     monkeypatch.setattr(cal, "BRAKE_RETURN_GRID", [200.0])
-    doc = yaml.safe_load(SCENARIO.read_text())
-    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
-    rows = []
-
-    class Rows:
-        def writerow(self, row):
-            rows.append(row)
-
-    sr.scan_separation(str(cli), doc, tmp_path, Rows())
+    doc = with_two_draws()
+    rows = RowsWritten()
+    sr.scan_separation(str(cli), doc, tmp_path, rows)
     assert [row[:3] for row in rows] == [[0.0, 0.0, 1.0], [0.0075, 200.0, 0.6]]
     out = tmp_path / "direct"
     sets = ["pulses.reading=paper", "pulses.paper.lateral_brake_mps2=0.0075", "pulses.paper.lateral_time_constant_s=200",
@@ -168,15 +170,9 @@ def test_the_shipped_scan_reports_each_q_separation_and_the_modes_it_loses(cli, 
     points = [(10.0, 1.0, 0.01), (1.0, 3.0, 0.01)]
     monkeypatch.setattr(sr, "grid", lambda: points)
     monkeypatch.setattr(cal, "W_GRID", [0.1])
-    doc = yaml.safe_load(SCENARIO.read_text())
-    doc["pulses"]["paper"]["measurement_noise"]["draws"] = 2
-    rows = []
-
-    class Rows:
-        def writerow(self, row):
-            rows.append(row)
-
-    sr.scan_shipped(str(cli), doc, tmp_path, Rows())
+    doc = with_two_draws()
+    rows = RowsWritten()
+    sr.scan_shipped(str(cli), doc, tmp_path, rows)
     have = cal.shipped(doc)
     separations = []
     for row, qv in zip(rows, points):
