@@ -242,25 +242,27 @@ def print_table_header(*columns):
 SEED_BLOCKS = [1, 21, 41, 61, 81, 101, 121, 141]  # first seeds of eight blocks of 20 draws
 
 
-def with_seed(scenario, seed, draws=None):
-    """A copy of `scenario` whose paper reading draws its noise from `seed` (and `draws` sequences)."""
+def with_paper_block(scenario, noise=None, **keys):
+    """A copy of `scenario` whose pulses.paper block has `keys` (and its measurement_noise `noise`)
+    changed; the scenario itself is left as it was."""
     doc = dict(scenario)
     doc["pulses"] = dict(doc["pulses"])
-    doc["pulses"]["paper"] = dict(doc["pulses"]["paper"])
-    noise = dict(doc["pulses"]["paper"]["measurement_noise"], seed=seed)
-    if draws is not None:
-        noise["draws"] = draws
-    doc["pulses"]["paper"]["measurement_noise"] = noise
+    paper = dict(doc["pulses"]["paper"], **keys)
+    if noise:
+        paper["measurement_noise"] = dict(paper["measurement_noise"], **noise)
+    doc["pulses"]["paper"] = paper
     return doc
+
+
+def with_seed(scenario, seed, draws=None):
+    """A copy of `scenario` whose paper reading draws its noise from `seed` (and `draws` sequences)."""
+    return with_paper_block(scenario, noise=dict(seed=seed) if draws is None else dict(seed=seed, draws=draws))
 
 
 def with_lateral_block(scenario, lateral, brake):
     """A copy of `scenario` whose paper reading flies the lateral return `lateral` [s] after the
     brake `brake` [m/s^2]."""
-    doc = dict(scenario)
-    doc["pulses"] = dict(doc["pulses"])
-    doc["pulses"]["paper"] = dict(doc["pulses"]["paper"], lateral_time_constant_s=lateral, lateral_brake_mps2=brake)
-    return doc
+    return with_paper_block(scenario, lateral_time_constant_s=lateral, lateral_brake_mps2=brake)
 
 
 def block_objectives(chaser, scenario, params, workdir, blocks=None, draws=None):

@@ -8,9 +8,11 @@ calibrate_invsim.py's --global check (the calibration's descent against the whol
 and its handling of a designed lateral brake.
 """
 import copy
+import math
 import subprocess
 import sys
 
+import pytest
 import yaml
 
 from conftest import REPO
@@ -179,3 +181,14 @@ def test_a_tie_in_the_nominal_objective_goes_to_the_design_with_fewer_free_choic
     assert cal.pick(ends(0.0740, 0.0715, 0.0710))[0] is ret  # the return ties, y held does not
     assert cal.pick(ends(0.0710, 0.0800, 0.0710))[0] is held
     assert cal.pick(ends(0.0800, 0.0700, 0.0710))[0] is ret  # the lowest, and simpler than the brake
+
+
+def test_the_tie_width_is_one_whole_pulse_of_x_at_the_calibrated_nominal():
+    """TIE_J is the objective's resolution: fmea.csv counts whole pulses, and at the calibrated
+    nominal (docs/invsim.md: 98/90/228/316/327/471, k_p 0.510) one pulse more of x+ moves J by
+    d/dc ln(c / 164)^2 at c = 188.5 (x+ + x- against the paper's 164), 0.0015; the tie must be no narrower than that (else a
+    rounding decides it) and not much wider (else real differences would be called ties)."""
+    counts, k_p = [98, 90, 228, 316, 327, 471], 0.510
+    one_pulse = cal.objective([99] + counts[1:], k_p) - cal.objective(counts, k_p)
+    assert one_pulse == pytest.approx(2 * math.log(188.5 / 164) / 188.5, rel=0.01)
+    assert one_pulse <= cal.TIE_J <= 1.1 * one_pulse
