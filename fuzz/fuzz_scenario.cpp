@@ -1,11 +1,15 @@
-// libFuzzer harness: scenario text -> io::load_scenario_text (limits, parse, hash, read, validate;
-// never run). A finding is a crash, a sanitizer report, a leak, an input slower than -timeout, or
-// a broken contract of LoadResult (a scenario exactly when there are no errors).
+// libFuzzer harness: scenario text -> io::load_scenario_text (limits, parse, hash, read, validate)
+// and, for an accepted scenario, the run's derived timing (model::run_timing: the clock every
+// folder counts periods on); never run. A finding is a crash (an integer division by a period that
+// rounded to 0 ns was one), a sanitizer report, a leak, an input slower than -timeout, a broken
+// contract of LoadResult (a scenario exactly when there are no errors), or a timing that breaks
+// model::check(RunTiming).
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "io/scenario_loader.hpp"
+#include "model/run_timing.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
@@ -13,5 +17,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (r.scenario.has_value() == !r.errors.empty()) __builtin_trap();
   for (const chaser::io::ScenarioError& e : r.errors)
     if (e.message.empty()) __builtin_trap();
+  if (r.scenario && !chaser::model::check(chaser::model::run_timing(*r.scenario)).empty()) __builtin_trap();
   return 0;
 }

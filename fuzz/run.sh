@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer harness of fuzz/ for SECONDS, one worker, on the seeds of fuzz/corpus/<target>
-# and the corpus it grew before (BUILD/corpus/<target>). Findings go to BUILD/findings/; the
-# exit status is non-zero if any target found one. Usage: fuzz/run.sh BUILD SECONDS [TARGET...]
+# (and, for the loaders, scenarios/) and the corpus it grew before (BUILD/corpus/<target>).
+# Findings go to BUILD/findings/; the exit status is non-zero if any target found one.
+# Usage: fuzz/run.sh BUILD SECONDS [TARGET...]
 set -uo pipefail
 build=$1
 seconds=$2
@@ -17,7 +18,11 @@ for t in "${targets[@]}"; do
   echo "fuzz: $t for ${seconds} s (corpus $corpus, seeds fuzz/corpus/$t)" >&2
   # -timeout=2: an input that takes 2 s is a finding (the loader must answer in well under one).
   # -rss_limit_mb: a document that needs 2 GB is a finding too.
-  "$build/fuzz/chaser_fuzz_$t" "$corpus" "$here/corpus/$t" \
+  # The shipped scenarios seed the scenario and invsim loaders too: a malformed variant of a real
+  # file reaches validation and the derived timing, where a variant of a toy stops at parsing.
+  seeds=("$here/corpus/$t")
+  [ "$t" != overrides ] && seeds+=("$here/../scenarios")
+  "$build/fuzz/chaser_fuzz_$t" "$corpus" "${seeds[@]}" \
     -max_total_time="$seconds" -timeout=2 -rss_limit_mb=2048 -max_len=65536 \
     -artifact_prefix="$build/findings/$t-" -print_final_stats=1 || status=1
 done

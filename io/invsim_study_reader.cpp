@@ -3,12 +3,13 @@
 #include "io/invsim_study_reader.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <set>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include "core/plain_name.hpp"
 
 namespace chaser::io {
 namespace {
@@ -99,12 +100,9 @@ void read_configurations(MapReader& root, const InvSimParams& p, std::vector<Inv
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string item_path = join_path(path, std::to_string(i));
     InvSimConfiguration c = read_configuration((*list)[i], item_path, p, false, root.diagnostics());
-    const bool file_safe = std::all_of(c.name.begin(), c.name.end(), [](char ch) {
-      return std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '_' || ch == '-' || ch == '.';
-    });
-    if (!file_safe || c.name == "." || c.name == "..")
+    if (!c.name.empty() && !is_plain_name(c.name))
       root.diagnostics().add(join_path(item_path, "name"),
-                             fmt::format("must use only letters, digits, '_', '-' and '.' (it names a directory; got '{}')", c.name));
+                             fmt::format("must be a plain name: {} (it names a directory; got '{}')", kPlainNameRule, c.name));
     else if (!c.name.empty() && !names.insert(c.name).second)
       root.diagnostics().add(join_path(item_path, "name"),
                              fmt::format("'{}' is taken (by 'baseline' or an earlier configuration)", c.name));

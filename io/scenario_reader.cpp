@@ -2,6 +2,7 @@
 // environment, sensors.
 #include <fmt/format.h>
 
+#include "core/plain_name.hpp"
 #include "io/scenario_sections.hpp"
 
 namespace chaser::io {
@@ -13,10 +14,11 @@ model::Scenario read_scenario(const YAML::Node& root, const std::string& source,
     return s;
   }
   MapReader r(root, "", diag);
-  r.text("name", s.name);
+  if (r.text("name", s.name) && !is_plain_name(s.name))  // it names a campaign case's folder (--preset comrade-table5)
+    diag.add("name", fmt::format("must be a plain name: {} (got '{}')", kPlainNameRule, s.name));
   r.count("seed", s.seed);
   r.number("duration_s", Range::left_open(0.0, kMaxDurationS), s.duration_s);
-  r.number("control_period_s", Range::left_open(0.0, kMaxControlPeriodS), s.control_period_s);
+  r.number("control_period_s", Range::closed(kMinControlPeriodS, kMaxControlPeriodS), s.control_period_s);
   read_section(r, "orbit", [&](MapReader& m) { read_orbit(m, s.orbit); });
   read_section(r, "chaser", [&](MapReader& m) { read_chaser(m, s.chaser); });
   read_section(r, "target", [&](MapReader& m) { read_target(m, s.target); });

@@ -14,6 +14,9 @@ namespace chaser::io {
 // Upper bounds that keep every time representable as int64 nanoseconds with margin.
 inline constexpr double kMaxDurationS = 1e8;      // [s] about three years
 inline constexpr double kMaxControlPeriodS = 10.0;  // [s]
+// The clock's tick: a run counts time in whole nanoseconds (core/time.hpp), so a shorter period would
+// round to none (and divide by zero wherever a time is counted in periods).
+inline constexpr double kMinControlPeriodS = 1e-9;  // [s]
 // Thruster positions and the centre of mass lie within this of the layout origin, per axis: no
 // spacecraft is 2 km across, and torques stay within a few orders of magnitude of forces.
 inline constexpr double kMaxLayoutExtentM = 1e3;  // [m]

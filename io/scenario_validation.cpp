@@ -116,7 +116,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
   }
   if (d.clean("duration_s")) {
     const auto duration_ns = whole_ns(s.duration_s);
-    if (!duration_ns || *duration_ns % *period_ns != 0)
+    if (!duration_ns || *duration_ns <= 0 || *duration_ns % *period_ns != 0)
       d.add("duration_s", fmt::format("must be a positive multiple of control_period_s = {} (got {})",
                                       format_number(period), format_number(s.duration_s)));
   }

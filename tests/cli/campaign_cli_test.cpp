@@ -96,6 +96,24 @@ TEST(CampaignCli, ComradeTable5WritesACaseFolderPerSpinCaseAndTheTable) {
   fs::remove_all(dir);
 }
 
+// A scenario's name becomes its case folder under --out (--preset comrade-table5, --also): a name
+// that climbs out of --out or replaces it is refused at the key before anything is written.
+TEST(CampaignCli, ComradeTable5RefusesAScenarioNameThatIsNotAPlainName) {
+  const fs::path root = fresh_dir("name_escape");
+  const fs::path out = root / "a" / "b";
+  for (const std::string& name : std::vector<std::string>{"../../escaped", root.string() + "/absolute", ".."}) {
+    const CommandResult r = chaser("campaign scenarios/comrade_sync.yaml --preset comrade-table5 --also "
+                                   "scenarios/comrade_assist.yaml --runs 1 --set 'name=" + name + "' --out " +
+                                   out.string());
+    EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("name: must be a plain name"), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(root / "escaped"));
+  EXPECT_FALSE(fs::exists(root / "absolute"));
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(root);
+}
+
 // Runs a campaign in a child process and kills it with SIGKILL once `rows` rows are on disk.
 // Returns false if the campaign finished before it could be killed.
 bool kill_campaign_midway(const std::string& args, const fs::path& dir, std::size_t rows) {

@@ -45,6 +45,16 @@ TEST(Cli, ValidateReportsEveryProblemWithExitCode2) {
   EXPECT_NE(r.output.find("T17"), std::string::npos) << r.output;
 }
 
+// A period below the clock's nanosecond rounded to 0 ns, and validation then divided by it: the
+// process died of SIGFPE (a held-out fuzz of comrade_sync.yaml found it). Now refused at its key.
+TEST(Cli, ValidateRefusesAPeriodBelowOneNanosecondAtItsKey) {
+  for (const char* scenario : {"scenarios/comrade_sync.yaml", "scenarios/msr_terminal.yaml"}) {
+    const CommandResult r = run_chaser(std::string("validate ") + scenario + " --set control_period_s=1e-320");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("control_period_s: must be in [1e-09, 10] (got 1e-320)"), std::string::npos) << r.output;
+  }
+}
+
 TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
   EXPECT_EQ(run_chaser("validate no/such/file.yaml").exit_code, 2);
   EXPECT_EQ(run_chaser("run").exit_code, 2);
