@@ -2,14 +2,26 @@
 // The truth side of one run: motion, environment, thruster hardware with its faults, sensors.
 // make_plant builds it from a scenario and a run seed; each control period the simulator calls
 // sense_plant at the period start and step_plant to propagate to the next period start.
-#include <optional>
+//
+// The seam: what carries the bodies between thrust edges is a motion model, one alternative of
+// MotionParams / MotionState (today the circular orbit's relative motion and the perturbed Earth
+// orbit; the capture adds a multibody hub, arm and target). Everything else (thrusters and their
+// faults, sensors, disturbances, propellant) is the plant's own and does not change with it. A
+// motion model is one file that defines XParams (with `using State = XState`) and XState, and
+// overloads propagate_period, target_rotation, q_inertial_from_lvlh and slosh_states; adding one
+// is one alternative in each variant below and one branch in make_plant (docs/architecture.md,
+// "How to add a plant"). Outside plant/ the chaser's state is read with chaser_state().
+#include <span>
+#include <variant>
 #include <vector>
 
 #include "core/random.hpp"
 #include "core/time.hpp"
 #include "model/messages.hpp"
 #include "model/scenario.hpp"
-#include "plant/orbit_plant.hpp"
+#include "model/target_orbit.hpp"
+#include "plant/circular_orbit_motion.hpp"
+#include "plant/earth_orbit_motion.hpp"
 #include "plant/propagator.hpp"
 #include "plant/sensors.hpp"
 #include "plant/target.hpp"
@@ -17,12 +29,13 @@
 
 namespace chaser::plant {
 
+// Index i of MotionState is the state of index i of MotionParams.
+using MotionParams = std::variant<CircularOrbitParams, EarthOrbitParams>;
+using MotionState = std::variant<CircularOrbitState, EarthOrbitState>;
+
 struct PlantParams {
-  DynamicsParams dynamics;              // the circular orbit's (Fonod 2015, eq. 8)
-  std::optional<OrbitPlantParams> earth;  // set: a perturbed Earth orbit instead (issue 17)
-  model::TargetParams target;
-  ThrusterHardware thrusters;          // dispersed once per run
-  std::vector<model::FaultParams> faults;
+  MotionParams motion;
+  ThrusterHardware thrusters;  // dispersed once per run
   model::SensorParams sensors;
   model::EnvironmentParams environment;
   TimeNs period_ns = 0;
@@ -37,11 +50,12 @@ struct PlantStreams {
 };
 
 struct PlantState {
-  RigidState rigid;  // the chaser; with an Earth orbit its r_lvlh_m, v_lvlh_mps are derived from `orbit`
-  OrbitState orbit;  // Earth orbit only: both bodies in ECI, the target's attitude
-  EphemerisSamples ephemeris;  // Earth orbit only: the Sun's and the Moon's last samples
-  SlowEnvironmentSample slow_environment;  // Earth orbit only: the slow terms of the current window
+  MotionState motion;
+  RigidState chaser;  // read outside plant/ through chaser_state()
   ThrusterState thrusters;
+  // The faults the hardware has, each from its onset: the scenario's, and any injected during the
+  // run (inject_fault). State, not parameters: a fault happens to the plant.
+  std::vector<model::FaultParams> faults;
   SensorState sensors;
   PlantStreams streams;
   ThrustProfile last_profile;     // the thrust profile of the last period, for telemetry
@@ -56,10 +70,29 @@ struct Plant {
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed);
 
+// Calls f(params, state) with the motion model's own types.
+template <class F>
+decltype(auto) visit_motion(const PlantParams& params, const PlantState& state, F&& f) {
+  return std::visit(
+      [&](const auto& p) -> decltype(auto) {
+        return f(p, std::get<typename std::decay_t<decltype(p)>::State>(state.motion));
+      },
+      params.motion);
+}
+
+// The chaser at the time the plant is at (the period start between steps).
+inline const RigidState& chaser_state(const Plant& plant) { return plant.state.chaser; }
+
 // The target's attitude and the target's LVLH at run time t_s (the period start the state is at):
 // integrated or from the circle's constant-rate model, as the plant flies it.
 TargetRotation target_rotation(const Plant& plant, double t_s);
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s);
+
+// The chaser's slosh masses now (none without chaser.slosh).
+std::span<const SloshState> slosh_states(const Plant& plant);
+
+// A fault from its onset on (not before the plant's time: the caller checks).
+void inject_fault(Plant& plant, const model::FaultParams& fault);
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t);
 

@@ -164,7 +164,7 @@ Simulation::~Simulation() = default;
 const model::SensorMeasurements& Simulation::begin_period() {
   if (begun_) return measurements_;
   begun_ = true;
-  truth_ = plant_.state.rigid;
+  truth_ = plant::chaser_state(plant_);
   measurements_ = plant::sense_plant(plant_.params, plant_.state, k_ * period_ns_);
   // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
   watched_ = recording_ && !flight_params_.fdir.watched.empty() && flight_state_.fdir.watched >= 0
@@ -183,8 +183,8 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   MonitorSample sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                         target.q_inertial_from_target);
   sample.synchronised = t_s >= synchronised_from_s_;
-  std::array<plant::SloshState, plant::kMaxSloshTanks> slosh;
-  if (shape_.slosh_tanks > 0 && recording_) slosh = plant_.state.orbit.slosh;
+  std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
+  if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), slosh.begin());
   begun_ = false;
   if (flight_params_.approach) last_reference_ = out.reference;
   if (!monitor_period(scenario_, sample, result_.figures)) {
@@ -241,7 +241,7 @@ flight::GuidanceRef Simulation::final_reference(double t_end_s) const {
 RunResult Simulation::finish() {
   const double t_end_s = t_s();
   monitor_final(scenario_,
-                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant_.state.rigid,
+                monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant::chaser_state(plant_),
                                final_reference(t_end_s)),
                 result_.figures);
 

@@ -46,7 +46,7 @@ class Simulation {
   void end_period(const flight::FlightOutput& out);
 
   // A fault added to the plant's from now on (its onset is not before t_s(), checked by the caller).
-  void add_fault(const model::FaultParams& fault) { plant_.params.faults.push_back(fault); }
+  void add_fault(const model::FaultParams& fault) { plant::inject_fault(plant_, fault); }
 
   // The end of the run: the final monitor sample, the FDIR's diagnoses, the timings, the telemetry
   // file finished. Called once, when done().

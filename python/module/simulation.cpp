@@ -75,15 +75,15 @@ class Simulation {
   bool done() const { return sim_->done(); }
 
   py::dict truth() const {
-    const plant::PlantState& s = sim_->plant().state;
+    const plant::RigidState& chaser = plant::chaser_state(sim_->plant());
     py::dict d;
     d["t_s"] = sim_->t_s();
-    d["r_lvlh_m"] = array(s.rigid.r_lvlh_m);
-    d["v_lvlh_mps"] = array(s.rigid.v_lvlh_mps);
-    d["q_inertial_from_body"] = quaternion(s.rigid.q_inertial_from_body);
-    d["omega_body_radps"] = array(s.rigid.omega_body_radps);
-    d["mass_kg"] = s.rigid.mass_kg;
-    d["propellant_used_kg"] = s.propellant_used_kg;
+    d["r_lvlh_m"] = array(chaser.r_lvlh_m);
+    d["v_lvlh_mps"] = array(chaser.v_lvlh_mps);
+    d["q_inertial_from_body"] = quaternion(chaser.q_inertial_from_body);
+    d["omega_body_radps"] = array(chaser.omega_body_radps);
+    d["mass_kg"] = chaser.mass_kg;
+    d["propellant_used_kg"] = sim_->plant().state.propellant_used_kg;
     return d;
   }
 

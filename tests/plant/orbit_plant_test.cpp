@@ -62,10 +62,10 @@ TEST(OrbitPlant, InitialStateReadsBackInLvlh) {
   initial.r_lvlh_m = Vec3(3.0, -100.0, 2.0);
   initial.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
   const Plant plant = make_plant(s, initial, 1);
-  ASSERT_TRUE(plant.params.earth.has_value());
-  EXPECT_NEAR(plant.state.orbit.r_t_eci_m.norm(), 6378137.0 + 765e3, 1e-6);
-  EXPECT_LT((plant.state.rigid.r_lvlh_m - initial.r_lvlh_m).norm(), 1e-12);
-  EXPECT_LT((plant.state.rigid.v_lvlh_mps - initial.v_lvlh_mps).norm(), 1e-15);
+  ASSERT_TRUE(std::holds_alternative<EarthOrbitParams>(plant.params.motion));
+  EXPECT_NEAR(std::get<EarthOrbitState>(plant.state.motion).orbit.r_t_eci_m.norm(), 6378137.0 + 765e3, 1e-6);
+  EXPECT_LT((chaser_state(plant).r_lvlh_m - initial.r_lvlh_m).norm(), 1e-12);
+  EXPECT_LT((chaser_state(plant).v_lvlh_mps - initial.v_lvlh_mps).norm(), 1e-15);
   // The run's inertial axes are the target's LVLH at t = 0.
   const Quat q0 = q_inertial_from_lvlh(plant, model::TargetOrbit(s.orbit), 0.0);
   EXPECT_LT(q0.angularDistance(Quat::Identity()), 1e-15);

@@ -1,0 +1,39 @@
+#pragma once
+// A plant's bodies handed from one motion model to another (a phase that changes the plant: the
+// capture hands the rigid chaser and the target to a multibody plant when the arm wakes). The
+// hand-over is relative to LVLH at its time, so neither side's inertial frame leaks into the
+// other (the circle's is LVLH at t = 0, the Earth orbit's is the target's LVLH at t = 0 too but
+// turns with the real orbit); the thrusters, their faults, the sensors, the noise streams and the
+// propellant used are the plant's own and carry on unchanged.
+#include <optional>
+#include <string>
+
+#include "core/types.hpp"
+#include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
+#include "plant/plant.hpp"
+
+namespace chaser::plant {
+
+struct HandoverState {
+  double t_s = 0;                               // [s] run time
+  Vec3 r_lvlh_m = Vec3::Zero();                 // [m] chaser relative to the target, LVLH
+  Vec3 v_lvlh_mps = Vec3::Zero();               // [m/s] its rate in the rotating frame
+  Quat q_lvlh_from_body = Quat::Identity();     // chaser attitude
+  Vec3 omega_body_radps = Vec3::Zero();         // [rad/s] chaser inertial rate, body axes
+  double mass_kg = 0;                           // [kg] chaser
+  Quat q_lvlh_from_target = Quat::Identity();   // target attitude
+  Vec3 omega_target_body_radps = Vec3::Zero();  // [rad/s] target inertial rate, target axes
+};
+
+// The bodies of `plant` at run time t_s (the time it is at), read through the seam.
+HandoverState handover_state(const Plant& plant, const model::TargetOrbit& circle, double t_s);
+
+// Replaces the plant's motion model by the one `scenario` describes, its bodies placed as `h`
+// says. The circular orbit's target keeps the hand-over's inertial rate from then on (its model is
+// a constant-rate spin). The perturbed Earth orbit starts its target from the scenario's orbital
+// elements at t = 0, so it takes over at t = 0 only. Returns the reason it cannot, or nothing.
+std::optional<std::string> hand_over(Plant& plant, const model::Scenario& scenario, const HandoverState& h,
+                                     const model::TargetOrbit& circle);
+
+}  // namespace chaser::plant
