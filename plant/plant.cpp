@@ -1,5 +1,6 @@
 #include "plant/plant.hpp"
 
+#include "model/run_timing.hpp"
 #include "plant/target.hpp"
 
 namespace chaser::plant {
@@ -13,7 +14,7 @@ PlantStreams::PlantStreams(std::uint64_t seed)
       sensors(make_sensor_noise(seed)) {}
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed) {
-  const TimeNs period_ns = from_seconds(scenario.control_period_s);
+  const TimeNs period_ns = model::run_timing(scenario).control_period_ns;
   RandomStream dispersion(seed, "thrusters/dispersion");
   PlantParams params{
       .motion = make_circular_orbit_params(scenario),

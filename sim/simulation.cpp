@@ -5,62 +5,13 @@
 #include <cmath>
 
 #include "core/rotation.hpp"
-#include "plant/orbit_plant.hpp"
 #include "plant/target.hpp"
+#include "model/run_timing.hpp"
+#include "sim/initial_truth.hpp"
 
 namespace chaser::sim {
 
 namespace {
-
-// The synchronised reference from the truth (the target's true attitude, rate and Euler's rate
-// derivative), for the run's start and its final judgement: the flight software's own follows its
-// estimate instead.
-flight::GuidanceRef true_sync_reference(const model::Scenario& s, const model::TargetOrbit& orbit,
-                                        const plant::TargetRotation& target, double t_s,
-                                        const std::optional<Vec3>& start_target_m = std::nullopt) {
-  const Mat3& inertia = s.target.body->inertia_kgm2;
-  flight::TargetEstimate truth;
-  truth.t_s = t_s;
-  truth.q_inertial_from_target = target.q_inertial_from_target;
-  truth.omega_target_radps = target.omega_body_radps;
-  truth.omega_dot_target_radps2 = -inertia.inverse() * target.omega_body_radps.cross(inertia * target.omega_body_radps);
-  flight::SyncTransferParams transfer = *flight::make_sync_transfer(s);
-  if (start_target_m) transfer.start_target_m = *start_target_m;
-  return flight::sync_reference(transfer, truth, orbit.lvlh_at(t_s), t_s);
-}
-
-// The chaser's truth at t = 0: on the approach axis at the start distance, at rest and pointing at
-// the target (or, in the synchronised approach, at its start point turning with the target),
-// unless the scenario gives the state explicitly.
-plant::RigidState initial_truth(const model::Scenario& s, const model::TargetOrbit& orbit) {
-  const model::InitialState& init = s.initial;
-  plant::RigidState x{};
-  x.mass_kg = s.chaser.mass_kg;
-  if (init.use_guidance_start) {
-    plant::TargetRotation target;
-    // With the synchronisation's approach steps the run starts on the line (flight/sync_approach.hpp).
-    const bool synchronised_start = s.guidance.synchronised && !s.guidance.synchronised->approach;
-    if (synchronised_start) {
-      const plant::TargetSpin spin = plant::initial_target_spin(s.target);
-      target = {spin.q_inertial_from_target, spin.omega_target_body_radps};
-    }
-    const flight::GuidanceRef ref = synchronised_start ? true_sync_reference(s, orbit, target, 0.0)
-                                                       : flight::guidance_reference(s.guidance, orbit, 0.0);
-    x.r_lvlh_m = ref.r_lvlh_m;
-    x.v_lvlh_mps = ref.v_lvlh_mps;
-    x.q_inertial_from_body = ref.q_inertial_from_body;
-    x.omega_body_radps = ref.omega_body_radps;
-  } else {
-    x.r_lvlh_m = init.r_lvlh_m;
-    x.v_lvlh_mps = init.v_lvlh_mps;
-    x.q_inertial_from_body = orbit.q_inertial_from_lvlh(0.0) * init.q_lvlh_from_body;
-    x.omega_body_radps = init.omega_body_radps;
-  }
-  // Only when dispersed: + 0.0 would turn the guidance start's -0.0 into +0.0 in telemetry.
-  if (!init.offset_r_lvlh_m.isZero(0.0)) x.r_lvlh_m += init.offset_r_lvlh_m;
-  if (!init.offset_v_lvlh_mps.isZero(0.0)) x.v_lvlh_mps += init.offset_v_lvlh_mps;
-  return x;
-}
 
 MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const plant::RigidState& x,
                              const flight::GuidanceRef& ref, const Quat& q_inertial_from_target = Quat::Identity()) {
@@ -135,8 +86,8 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
       flight_params_(flight_params),
       options_(options),
       orbit_(truth.orbit),
-      period_ns_(from_seconds(truth.control_period_s)),
-      periods_(from_seconds(truth.duration_s) / period_ns_),
+      period_ns_(model::run_timing(truth).control_period_ns),
+      periods_(model::run_timing(truth).periods),
       shape_(telemetry_shape(truth)),
       plant_(plant::make_plant(truth, initial_truth(truth, orbit_), truth.seed)),
       memory_(options.telemetry_rows),
@@ -173,26 +124,44 @@ const model::SensorMeasurements& Simulation::begin_period() {
   return measurements_;
 }
 
+// A period's end as named stages: what the truth was at t_k (sampled before the plant steps past
+// it), the mission's judgement of it, the plant propagated under the command, the run's tallies,
+// and the telemetry row.
 void Simulation::end_period(const flight::FlightOutput& out) {
   const TimeNs t_k = k_ * period_ns_;
   const double t_s = to_seconds(t_k);
-  // The target's attitude and rate and the slosh at t_k, for telemetry and the keep-out check, before
-  // the plant steps past them.
-  const plant::TargetRotation target =
-      recording_ || keep_out_ ? plant::target_rotation(plant_, t_s) : plant::TargetRotation{};
-  MonitorSample sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
-                                        target.q_inertial_from_target);
-  sample.synchronised = t_s >= synchronised_from_s_;
-  std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
-  if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), slosh.begin());
+  const PeriodTruth truth = sample_truth(out, t_s);
   begun_ = false;
   if (flight_params_.approach) last_reference_ = out.reference;
-  if (!monitor_period(scenario_, sample, result_.figures)) {
+  if (!judge(truth.sample)) {
     done_ = true;
     return;
   }
-  plant::step_plant(plant_.params, plant_.state, out.command, t_k);
+  propagate(out.command, t_k);
+  tally(out, t_s);
+  if (memory_ || (telemetry_ && telemetry_->ok())) record(out, truth, t_s);
+  done_ = ++k_ >= periods_;
+}
 
+// The target's attitude and rate and the slosh at t_k are needed for telemetry and the keep-out
+// check only; the monitor's sample is the truth at t_k against the flight software's reference.
+Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out, double t_s) const {
+  PeriodTruth truth;
+  if (recording_ || keep_out_) truth.target = plant::target_rotation(plant_, t_s);
+  truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
+                                truth.target.q_inertial_from_target);
+  truth.sample.synchronised = t_s >= synchronised_from_s_;
+  if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), truth.slosh.begin());
+  return truth;
+}
+
+bool Simulation::judge(const MonitorSample& sample) { return monitor_period(scenario_, sample, result_.figures); }
+
+void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
+  plant::step_plant(plant_.params, plant_.state, command, t_k);
+}
+
+void Simulation::tally(const flight::FlightOutput& out, double t_s) {
   result_.infeasible_allocations += !out.allocation_feasible;
   result_.active_checks += out.checked_thruster != model::kNoThruster;
   const double largest =  // Eigen's packet reduction: a fraction of a scalar loop's cost over 16-24 thrusters
@@ -205,24 +174,24 @@ void Simulation::end_period(const flight::FlightOutput& out) {
     second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
     second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
   }
-  if (memory_ || (telemetry_ && telemetry_->ok())) {
-    const PeriodRecord record{
-        .t_s = t_s,
-        .truth = &truth_,
-        .plant = &plant_.state,
-        .flight = &out,
-        .flight_state = &flight_state_,
-        .watched = &watched_,
-        .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth_.q_inertial_from_body),
-        .q_inertial_from_target = target.q_inertial_from_target,
-        .omega_target_body_radps = target.omega_body_radps,
-        .slosh = std::span<const plant::SloshState>(slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks))};
-    double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
-    if (every_channel_) record_every_channel(record, shape_, row);
-    else record_period(channels_, record, row);
-    if (memory_ && telemetry_ && telemetry_->ok()) std::copy_n(row, channels_.size(), telemetry_->new_row().data());
-  }
-  done_ = ++k_ >= periods_;
+}
+
+void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& truth, double t_s) {
+  const PeriodRecord record{
+      .t_s = t_s,
+      .truth = &truth_,
+      .plant = &plant_.state,
+      .flight = &out,
+      .flight_state = &flight_state_,
+      .watched = &watched_,
+      .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth_.q_inertial_from_body),
+      .q_inertial_from_target = truth.target.q_inertial_from_target,
+      .omega_target_body_radps = truth.target.omega_body_radps,
+      .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks))};
+  double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
+  if (every_channel_) record_every_channel(record, shape_, row);
+  else record_period(channels_, record, row);
+  if (memory_ && telemetry_ && telemetry_->ok()) std::copy_n(row, channels_.size(), telemetry_->new_row().data());
 }
 
 // What the end is judged against: the line's capture point, or the synchronised reference from the

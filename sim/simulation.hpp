@@ -4,6 +4,7 @@
 // A control period is begin_period (the truth at its start, the sensors' measurements), a flight
 // output computed from those measurements only, and end_period (the mission monitor, the plant's
 // propagation under the command, telemetry). step() is the three with Chaser's flight software.
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -91,7 +92,17 @@ class Simulation {
   bool begun_ = false;  // begin_period has sensed period k_
   bool done_ = false;
 
-  void record(const flight::FlightOutput& out, double t_s);
+  // The stages of end_period, in order.
+  struct PeriodTruth {
+    MonitorSample sample;
+    plant::TargetRotation target;
+    std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
+  };
+  PeriodTruth sample_truth(const flight::FlightOutput& out, double t_s) const;
+  bool judge(const MonitorSample& sample);
+  void propagate(const model::ThrusterCommand& command, TimeNs t_k);
+  void tally(const flight::FlightOutput& out, double t_s);
+  void record(const flight::FlightOutput& out, const PeriodTruth& truth, double t_s);
 };
 
 }  // namespace chaser::sim
