@@ -9,6 +9,7 @@
 #include "flight/flight_software.hpp"
 #include "model/scenario.hpp"
 #include "sim/mission_monitor.hpp"
+#include "sim/phase_sequence.hpp"
 #include "sim/telemetry.hpp"
 
 namespace chaser::sim {
@@ -70,6 +71,9 @@ struct RunResult {
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole
   // second of the run, [position, attitude, deficit] per second (index floor(t)); 0 for a disabled scheme.
   std::vector<std::array<float, 3>> glr_max_per_s;
+  // The phases flown in order, with their start and end times and the reason each ended
+  // (sim/run_phases.hpp); a run ended early ends its last phase there.
+  std::vector<FlownPhase> phases;
 };
 
 // One run where the flight software is built from the same scenario as the plant (nominal = truth).

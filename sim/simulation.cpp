@@ -8,6 +8,7 @@
 #include "plant/target.hpp"
 #include "model/run_timing.hpp"
 #include "sim/initial_truth.hpp"
+#include "sim/run_phases.hpp"
 
 namespace chaser::sim {
 
@@ -89,6 +90,8 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
       period_ns_(model::run_timing(truth).control_period_ns),
       periods_(model::run_timing(truth).periods),
       shape_(telemetry_shape(truth)),
+      phase_params_(run_phases(truth)),
+      phase_state_(init_phases(phase_params_, 0)),
       plant_(plant::make_plant(truth, initial_truth(truth, orbit_), truth.seed)),
       memory_(options.telemetry_rows),
       every_channel_(options.telemetry_channels.empty()) {  // the whole table, record_every_channel
@@ -108,6 +111,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {0.0f, 0.0f, 0.0f});
   done_ = periods_ <= 0;
+  step_phases(phase_params_, phase_state_, 0, 0, 0);
 }
 
 Simulation::~Simulation() = default;
@@ -141,6 +145,7 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   tally(out, t_s);
   if (memory_ || (telemetry_ && telemetry_->ok())) record(out, truth, t_s);
   done_ = ++k_ >= periods_;
+  if (!done_) step_phases(phase_params_, phase_state_, k_ * period_ns_, 0, 0);  // the next period's phase
 }
 
 // The target's attitude and rate and the slosh at t_k are needed for telemetry and the keep-out
@@ -187,7 +192,8 @@ void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& trut
       .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth_.q_inertial_from_body),
       .q_inertial_from_target = truth.target.q_inertial_from_target,
       .omega_target_body_radps = truth.target.omega_body_radps,
-      .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks))};
+      .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks)),
+      .phase = phase_state_.phase};
   double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
   if (every_channel_) record_every_channel(record, shape_, row);
   else record_period(channels_, record, row);
@@ -216,6 +222,8 @@ RunResult Simulation::finish() {
 
   RunResult result = std::move(result_);
   result.fdir = fdir_result(flight_params_, flight_state_);
+  finish_phases(phase_params_, phase_state_, k_ * period_ns_);
+  result.phases = flown_phases(phase_params_, phase_state_);
   result.propellant_used_kg = plant_.state.propellant_used_kg;
   result.simulated_s = t_end_s;
   result.periods = k_;

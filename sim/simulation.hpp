@@ -15,6 +15,7 @@
 #include "model/scenario.hpp"
 #include "model/target_orbit.hpp"
 #include "plant/plant.hpp"
+#include "sim/phase_sequence.hpp"
 #include "sim/run.hpp"
 #include "sim/telemetry.hpp"
 #include "sim/telemetry_channels.hpp"
@@ -54,6 +55,10 @@ class Simulation {
   RunResult finish();
 
   const plant::Plant& plant() const { return plant_; }
+  // The phase of the period starting at t_s() (decided at its start: sim/run_phases.hpp), and the
+  // run's phases.
+  int phase() const { return phase_state_.phase; }
+  const PhaseSequenceParams& phases() const { return phase_params_; }
   const flight::FlightParams& flight_params() const { return flight_params_; }
   flight::FlightState& flight_state() { return flight_state_; }
 
@@ -67,6 +72,8 @@ class Simulation {
   const TimeNs period_ns_;
   const std::int64_t periods_;
   const TelemetryShape shape_;
+  const PhaseSequenceParams phase_params_;
+  PhaseSequenceState phase_state_;
 
   plant::Plant plant_;
   flight::FlightState flight_state_;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "sim/run_phases.hpp"
 
 namespace chaser::sim {
 
@@ -25,34 +26,17 @@ nlohmann::json finite_or_null(bool exists, double value) {
 // The guidance's phases and their times (COMRADE 2018 sec. 2.1 with guidance.synchronised.approach;
 // the line and its hold otherwise), each ending where the next starts and the last at duration_s.
 nlohmann::json phases_json(const model::Scenario& s) {
-  const model::GuidanceParams& g = s.guidance;
-  std::vector<std::pair<const char*, double>> starts;  // name, start
-  if (g.synchronised && g.synchronised->approach) {
-    const model::SyncApproachParams& a = *g.synchronised->approach;
-    const double axis = a.fly_around_start_s + a.fly_around_duration_s;
-    const double rotation = axis + a.axis_approach_duration_s;
-    const double transfer = g.synchronised->transfer_start_s;
-    starts = {{"line", 0.0},
-              {"line_end_hold", g.approach_duration_s},
-              {"fly_around", a.fly_around_start_s},
-              {"axis_approach", axis},
-              {"rotation_synchronisation", rotation},
-              {"axis_hold", a.rotation_sync_end_s()},
-              {"transfer", transfer},
-              {"capture_point_hold", transfer + g.synchronised->transfer_duration_s}};
-  } else if (g.synchronised) {
-    starts = {{"start_point_hold", 0.0},
-              {"transfer", g.synchronised->transfer_start_s},
-              {"capture_point_hold", g.synchronised->transfer_start_s + g.synchronised->transfer_duration_s}};
-  } else {
-    starts = {{"line", 0.0}, {"capture_point_hold", g.approach_duration_s}};
-  }
   nlohmann::json out = nlohmann::json::array();
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    const double start = std::min(starts[i].second, s.duration_s);
-    const double end = std::min(i + 1 < starts.size() ? starts[i + 1].second : s.duration_s, s.duration_s);
-    if (end > start) out.push_back({{"name", starts[i].first}, {"start_s", start}, {"duration_s", end - start}});
-  }
+  for (const PlannedPhase& p : planned_phases(s))
+    out.push_back({{"name", p.name}, {"start_s", p.start_s}, {"duration_s", p.duration_s}});
+  return out;
+}
+
+// The phases as flown: a run ended early ends its last phase there.
+nlohmann::json phases_flown_json(const RunResult& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const FlownPhase& p : r.phases)
+    out.push_back({{"name", p.name}, {"start_s", p.start_s}, {"end_s", p.end_s}, {"end_reason", p.end_reason}});
   return out;
 }
 
@@ -211,6 +195,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"max_thruster_on_fraction", r.max_on_fraction},
       {"thruster_saturated_s", static_cast<double>(r.saturated_periods) * scenario.control_period_s},
       {"phases", phases_json(scenario)},
+      {"phases_flown", phases_flown_json(r)},
       {"fdir", fdir_json(scenario, r.fdir)},
   };
 }

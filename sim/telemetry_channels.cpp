@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/rotation.hpp"
+#include "sim/run_phases.hpp"
 
 namespace chaser::sim {
 
@@ -64,7 +65,8 @@ TelemetryShape telemetry_shape(const model::Scenario& scenario) {
   const auto& slosh = scenario.chaser.slosh;
   return {.thrusters = scenario.thrusters.count,
           .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0,
-          .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value()};
+          .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value(),
+          .phases = static_cast<int>(run_phases(scenario).phases.size())};
 }
 
 namespace {
@@ -136,6 +138,7 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
     t.push_back({"target_est_rate_err_radps", "radps", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[1]; }, 0});
     t.push_back({"target_est_att_sigma_rad", "rad", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[2]; }, 0});
   }
+  if (shape.phases > 1) t.push_back({"phase", "", [](const PeriodRecord& r, int) { return static_cast<double>(r.phase); }, 0});
   return t;
 }
 
@@ -234,6 +237,7 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
     const std::array<double, 3> e = target_estimate_errors(r);
     *row++ = e[0], *row++ = e[1], *row++ = e[2];
   }
+  if (shape.phases > 1) *row++ = static_cast<double>(r.phase);
 }
 
 }  // namespace chaser::sim

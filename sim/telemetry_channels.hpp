@@ -29,6 +29,7 @@ struct PeriodRecord {
   Quat q_inertial_from_target = Quat::Identity();   // at the period start
   Vec3 omega_target_body_radps = Vec3::Zero();      // [rad/s] the target's inertial rate, its body axes
   std::span<const plant::SloshState> slosh;         // each tank's slosh state at the period start
+  int phase = 0;                                    // the phase flown in this period (its index)
 };
 
 // What the table has channels for, from the scenario: its thrusters and its slosh tanks.
@@ -36,6 +37,7 @@ struct TelemetryShape {
   int thrusters = 0;    // ton_cmd_1..N, ton_real_1..N
   int slosh_tanks = 0;  // slosh1_s_body_x_m .. per tank of chaser.slosh (none without it)
   bool target_estimator = false;  // target_est_att_err_rad, target_est_rate_err_radps, target_est_att_sigma_rad
+  int phases = 1;       // the run's phases (sim/run_phases.hpp); with more than one, the phase channel
 };
 TelemetryShape telemetry_shape(const model::Scenario& scenario);
 
@@ -50,7 +52,8 @@ struct TelemetryChannel {
 // T1..TN (ton_cmd_1 .. ton_cmd_N); the FDI's candidate and confirmed thrusters are numbers 1..N,
 // 0 for none; active_thrusters is the active set's mask (bit i: T(i+1)). Slosh channels follow the
 // tanks' order in chaser.slosh.tanks: slosh1_s_body_x_m (the mass's displacement from its rest
-// point, chaser body axes) and slosh1_s_dot_body_x_mps (its rate in the body frame).
+// point, chaser body axes) and slosh1_s_dot_body_x_mps (its rate in the body frame). A run of
+// several phases ends with `phase`, the index of the phase flown (summary.json's phases name them).
 std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape);
 
 std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);

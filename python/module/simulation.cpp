@@ -71,6 +71,10 @@ class Simulation {
   }
 
   double t() const { return sim_->t_s(); }
+  // The mission phase of the next period (sim/run_phases.hpp): the one the run is in.
+  std::string phase() const {
+    return sim_->phases().phases[static_cast<std::size_t>(sim_->phase())].name;
+  }
   std::int64_t period() const { return sim_->period(); }
   bool done() const { return sim_->done(); }
 
@@ -266,6 +270,8 @@ void add_simulation(py::module_& m) {
            "returning a body-axes wrench [Fx, Fy, Fz, Cx, Cy, Cz] (N, N m) or the thrusters' on-times (0..1).")
       .def_property_readonly("t", &Simulation::t, "[s] the time of the next period's start")
       .def_property_readonly("period", &Simulation::period, "index of the next period to fly")
+      .def_property_readonly("phase", &Simulation::phase,
+                             "the mission phase the run is in (summary's phases_flown lists those flown)")
       .def_property_readonly("done", &Simulation::done, "every period flown, or the run stopped (diverged)")
       .def_property_readonly("thruster_count", &Simulation::thruster_count)
       .def_property_readonly("control_period_s", &Simulation::control_period_s)

@@ -182,3 +182,19 @@ def test_an_exception_in_the_callback_comes_out():
 
     with pytest.raises(KeyError, match="mine"):
         sim.step(1, flight=flight)
+
+
+def test_phase_is_the_mission_phase_of_the_next_period_and_the_summary_lists_those_flown():
+    scenario = chaser.load_scenario(str(MSR))
+    sim = chaser.Simulation(scenario, seed=3)
+    assert sim.phase == "line"
+    while sim.phase == "line":
+        sim.step()
+    switched_at = sim.t
+    while not sim.done:
+        sim.step(1000)
+    flown = sim.result().summary["phases_flown"]
+    assert [p["name"] for p in flown] == ["line", "capture_point_hold"]
+    assert flown[1]["start_s"] == pytest.approx(switched_at, abs=1e-9)
+    assert flown[0]["end_reason"] == "time" and flown[1]["end_reason"] == "run end"
+    assert flown[1]["end_s"] == 1200.0

@@ -1,0 +1,60 @@
+#include "sim/run_phases.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace chaser::sim {
+
+namespace {
+
+// Each phase's name and planned start, in order.
+std::vector<std::pair<const char*, double>> phase_starts(const model::GuidanceParams& g) {
+  if (g.synchronised && g.synchronised->approach) {
+    const model::SyncApproachParams& a = *g.synchronised->approach;
+    const double axis = a.fly_around_start_s + a.fly_around_duration_s;
+    const double rotation = axis + a.axis_approach_duration_s;
+    const double transfer = g.synchronised->transfer_start_s;
+    return {{"line", 0.0},
+            {"line_end_hold", g.approach_duration_s},
+            {"fly_around", a.fly_around_start_s},
+            {"axis_approach", axis},
+            {"rotation_synchronisation", rotation},
+            {"axis_hold", a.rotation_sync_end_s()},
+            {"transfer", transfer},
+            {"capture_point_hold", transfer + g.synchronised->transfer_duration_s}};
+  }
+  if (g.synchronised)
+    return {{"start_point_hold", 0.0},
+            {"transfer", g.synchronised->transfer_start_s},
+            {"capture_point_hold", g.synchronised->transfer_start_s + g.synchronised->transfer_duration_s}};
+  return {{"line", 0.0}, {"capture_point_hold", g.approach_duration_s}};
+}
+
+}  // namespace
+
+std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
+  const auto starts = phase_starts(s.guidance);
+  std::vector<PlannedPhase> out;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const double start = std::min(starts[i].second, s.duration_s);
+    const double end = std::min(i + 1 < starts.size() ? starts[i + 1].second : s.duration_s, s.duration_s);
+    if (end > start) out.push_back({starts[i].first, start, end - start});
+  }
+  return out;
+}
+
+PhaseSequenceParams run_phases(const model::Scenario& scenario) {
+  const std::vector<PlannedPhase> plan = planned_phases(scenario);
+  PhaseSequenceParams p;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    PhaseSpec phase{.name = plan[i].name, .exits = {}};
+    if (i + 1 < plan.size())
+      phase.exits.push_back({.condition = at_time(from_seconds(plan[i + 1].start_s)),
+                             .to_phase = static_cast<int>(i + 1),
+                             .reason = "time"});
+    p.phases.push_back(std::move(phase));
+  }
+  return p;
+}
+
+}  // namespace chaser::sim

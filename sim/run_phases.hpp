@@ -1,0 +1,31 @@
+#pragma once
+// The phases a scenario's run flies, as its guidance plans them, in one list for summary.json's
+// plan ("phases") and for the run's phase sequence (sim/phase_sequence.hpp, "phases_flown"):
+//   the line (MSR, ASSIST's approach): "line", then "capture_point_hold";
+//   the synchronised transfer: "start_point_hold", "transfer", "capture_point_hold";
+//   COMRADE's synchronisation with its approach steps (flight/sync_approach.hpp): "line",
+//   "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "axis_hold",
+//   "transfer", "capture_point_hold".
+// Each starts at its planned time, the first period at or after it on the integer clock; a phase
+// of no length (its successor starts when it does) or past the run's end is left out. The flight
+// software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
+// The capture's phases (reach, grasp, rigidise, ...) will add transitions on events and on
+// requirements held for a dwell.
+#include <vector>
+
+#include "model/scenario.hpp"
+#include "sim/phase_sequence.hpp"
+
+namespace chaser::sim {
+
+struct PlannedPhase {
+  const char* name = "";
+  double start_s = 0;     // [s]
+  double duration_s = 0;  // [s] > 0
+};
+
+std::vector<PlannedPhase> planned_phases(const model::Scenario& scenario);
+
+PhaseSequenceParams run_phases(const model::Scenario& scenario);
+
+}  // namespace chaser::sim

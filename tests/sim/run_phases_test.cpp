@@ -1,0 +1,89 @@
+// The run's phases: summary.json's plan and the phase sequence are one list, and in COMRADE's
+// synchronisation the phases switch in the very periods the flight software's guidance switches
+// its steps (flight/sync_approach.hpp), so a phase names what the chaser was doing.
+#include "sim/run_phases.hpp"
+
+#include <gtest/gtest.h>
+
+#include "flight/sync_approach.hpp"
+#include "io/scenario_loader.hpp"
+#include "sim/simulation.hpp"
+
+namespace chaser::sim {
+namespace {
+
+model::Scenario load(const char* path) {
+  const io::LoadResult loaded = io::load_scenario_file(path);
+  EXPECT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
+  return *loaded.scenario;
+}
+
+TEST(RunPhases, ThePlanAndThePhaseSequenceAreOneList) {
+  for (const char* path : {"scenarios/msr_terminal.yaml", "scenarios/comrade_sync.yaml", "scenarios/comrade_assist.yaml"}) {
+    const model::Scenario s = load(path);
+    const std::vector<PlannedPhase> plan = planned_phases(s);
+    const PhaseSequenceParams p = run_phases(s);
+    EXPECT_TRUE(validate(p).empty()) << path;
+    ASSERT_EQ(p.phases.size(), plan.size()) << path;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      EXPECT_EQ(p.phases[i].name, plan[i].name);
+      if (i + 1 < plan.size()) {
+        ASSERT_EQ(p.phases[i].exits.size(), 1u);
+        EXPECT_EQ(p.phases[i].exits[0].condition.at_ns, from_seconds(plan[i + 1].start_s));
+        EXPECT_EQ(p.phases[i].exits[0].to_phase, static_cast<int>(i + 1));
+      } else {
+        EXPECT_TRUE(p.phases[i].exits.empty());  // the last lasts to the run's end
+      }
+    }
+  }
+}
+
+// The guidance's five steps over the eight phases: the line and its hold are its line, the axis
+// hold, the transfer and the capture point's hold its transfer.
+flight::SyncStep step_of(const std::string& phase) {
+  if (phase == "line" || phase == "line_end_hold") return flight::SyncStep::kLine;
+  if (phase == "fly_around") return flight::SyncStep::kFlyAround;
+  if (phase == "axis_approach") return flight::SyncStep::kAxisApproach;
+  if (phase == "rotation_synchronisation") return flight::SyncStep::kRotationSync;
+  return flight::SyncStep::kTransfer;
+}
+
+TEST(RunPhases, ComradeSyncPhasesSwitchInThePeriodsTheGuidanceSwitchesItsSteps) {
+  const model::Scenario s = load("scenarios/comrade_sync.yaml");
+  const flight::FlightParams flight_params = flight::make_flight_params(s);
+  ASSERT_TRUE(flight_params.approach);
+  Simulation sim(s, flight_params, {});
+  int mismatches = 0;
+  while (!sim.done()) {
+    sim.begin_period();
+    const std::string& phase = sim.phases().phases[static_cast<std::size_t>(sim.phase())].name;
+    mismatches += step_of(phase) != flight::sync_step(*flight_params.approach, sim.t_s());
+    sim.step();
+  }
+  EXPECT_EQ(mismatches, 0);
+  const RunResult r = sim.finish();
+  const std::vector<PlannedPhase> plan = planned_phases(s);
+  ASSERT_EQ(r.phases.size(), plan.size());
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    EXPECT_EQ(r.phases[i].name, plan[i].name);
+    EXPECT_EQ(r.phases[i].start_s, plan[i].start_s);
+    EXPECT_EQ(r.phases[i].end_s, plan[i].start_s + plan[i].duration_s);
+    EXPECT_EQ(r.phases[i].end_reason, i + 1 < plan.size() ? "time" : std::string(kRunEndReason));
+  }
+}
+
+// A run ended early (diverged, or stepped from outside and finished) ends its phase there.
+TEST(RunPhases, ARunStoppedEarlyEndsItsLastPhaseThere) {
+  const model::Scenario s = load("scenarios/msr_terminal.yaml");
+  const flight::FlightParams flight_params = flight::make_flight_params(s);  // outlives the simulation
+  Simulation sim(s, flight_params, {});
+  for (int k = 0; k < 50; ++k) sim.step();
+  const RunResult r = sim.finish();
+  ASSERT_EQ(r.phases.size(), 1u);
+  EXPECT_EQ(r.phases[0].name, "line");
+  EXPECT_EQ(r.phases[0].end_s, 5.0);
+  EXPECT_EQ(r.phases[0].end_reason, kRunEndReason);
+}
+
+}  // namespace
+}  // namespace chaser::sim
