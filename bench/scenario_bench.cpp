@@ -274,7 +274,7 @@ void BM_FdirPeriod(benchmark::State& state, Fdi fdi) {
     benchmark::DoNotOptimize(out);
     if (++k == trace.size()) {
       state.PauseTiming();
-      alarms += out.position.alarm || out.attitude.alarm || out.detector.alarm;
+      alarms += std::any_of(out.schemes.begin(), out.schemes.end(), [](const auto& s) { return s.alarm; });
       *fdir = start;
       k = 0;
       state.ResumeTiming();

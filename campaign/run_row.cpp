@@ -51,7 +51,8 @@ SchemeOutcome judge_fdir(const sim::FdirResult& f, const RunRecord& r) {
   const bool recovered = f.recovery_s >= 0.0;
   return judge(f.detection_s, recovered ? f.recovery_s : f.isolation_s,
                recovered ? f.recovered_thruster : f.isolated_thruster, r.fault_thruster, r.onset_s,
-               std::max(r.position.glr_max_before_onset, r.attitude.glr_max_before_onset));
+               std::max(r.schemes[flight::kPositionScheme].glr_max_before_onset,
+                        r.schemes[flight::kAttitudeScheme].glr_max_before_onset));
 }
 
 RunRecord base_record(const RunSetup& setup) {
@@ -77,14 +78,34 @@ void integer(std::string& out, std::int64_t v) { fmt::format_to(std::back_insert
 // A thruster in a numeric table: n of its name Tn, 0 for none (docs/style.md, "Naming and layout").
 void thruster_number(std::string& out, int index) { integer(out, model::thruster_number(index)); }
 
-// One scheme's seven columns, in the spec's order.
-#define CHASER_SCHEME_COLUMNS(scheme)                                                                                             \
-  {#scheme "_detection_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.detection_s); }},     \
-  {#scheme "_isolation_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.scheme.isolation_s); }},     \
-  {#scheme "_isolated", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.scheme.isolated); }}, \
-  {#scheme "_false_alarm", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.false_alarm); }},         \
-  {#scheme "_missed", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.missed); }},                   \
-  {#scheme "_wrong_isolation", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.scheme.wrong_isolation); }}
+// A scheme's outcome by its slot, -1 the FDIR's as a whole.
+const SchemeOutcome& outcome(const RunRecord& r, int s) { return s < 0 ? r.fdir : r.schemes[static_cast<std::size_t>(s)]; }
+
+// One scheme's columns, in the spec's order: six, and for a diagnosis scheme (not the FDIR as a
+// whole) the largest GLR statistic before the onset.
+void scheme_columns(std::vector<RunColumn>& columns, const std::string& name, int s) {
+  columns.push_back({name + "_detection_s", ColumnKind::kNumber,
+                     [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).detection_s); }, s});
+  columns.push_back({name + "_isolation_s", ColumnKind::kNumber,
+                     [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).isolation_s); }, s});
+  columns.push_back({name + "_isolated", ColumnKind::kInteger,
+                     [](const RunRecord& r, int i, std::string& o) { thruster_number(o, outcome(r, i).isolated); }, s});
+  columns.push_back({name + "_false_alarm", ColumnKind::kFlag,
+                     [](const RunRecord& r, int i, std::string& o) { flag(o, outcome(r, i).false_alarm); }, s});
+  columns.push_back({name + "_missed", ColumnKind::kFlag,
+                     [](const RunRecord& r, int i, std::string& o) { flag(o, outcome(r, i).missed); }, s});
+  columns.push_back({name + "_wrong_isolation", ColumnKind::kFlag,
+                     [](const RunRecord& r, int i, std::string& o) { flag(o, outcome(r, i).wrong_isolation); }, s});
+  if (s >= 0)
+    columns.push_back({name + "_glr_max_before_onset", ColumnKind::kNumber,
+                       [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).glr_max_before_onset); }, s});
+}
+
+// A column that reads the record alone.
+template <class F>
+RunColumn column(const char* name, ColumnKind kind, F) {
+  return {name, kind, [](const RunRecord& r, int, std::string& o) { F{}(r, o); }, 0};
+}
 
 }  // namespace
 
@@ -110,9 +131,8 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
   const double half_period_s = 0.5 * setup.truth.control_period_s;
   const bool short_run = result.simulated_s < planned_s - half_period_s;
   r.status = result.figures.diverged || short_run || !finite_figures(result) ? RunStatus::kDiverged : RunStatus::kOk;
-  r.position = judge_scheme(result.fdir.position, r, glr_before(result, 0, r.onset_s));
-  r.attitude = judge_scheme(result.fdir.attitude, r, glr_before(result, 1, r.onset_s));
-  r.deficit = judge_scheme(result.fdir.deficit, r, glr_before(result, 2, r.onset_s));
+  for (std::size_t i = 0; i < result.fdir.schemes.size(); ++i)
+    r.schemes[i] = judge_scheme(result.fdir.schemes[i], r, glr_before(result, static_cast<int>(i), r.onset_s));
   r.fdir = judge_fdir(result.fdir, r);
   r.recovery_s = result.fdir.recovery_s >= 0.0 ? result.fdir.recovery_s : kNaN;
   r.capture = result.figures.capture_achieved;
@@ -134,7 +154,8 @@ RunRecord error_record(const RunSetup& setup) {
   RunRecord r = base_record(setup);
   r.status = RunStatus::kError;
   const SchemeOutcome empty{kNaN, kNaN, model::kNoThruster, false, false, false, kNaN};
-  r.position = r.attitude = r.deficit = r.fdir = empty;
+  r.schemes.fill(empty);
+  r.fdir = empty;
   r.recovery_s = kNaN;
   r.propellant_kg = kNaN;
   r.final_position_error_m = r.final_speed_mps = r.final_attitude_error_deg = r.final_rate_error_deg_s = kNaN;
@@ -142,47 +163,53 @@ RunRecord error_record(const RunSetup& setup) {
   return r;
 }
 
-const std::vector<RunColumn>& run_columns() {
-  // The one table of runs.csv columns (docs/campaigns.md), in file order.
-  static const std::vector<RunColumn> columns = {
-      {"run", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { integer(o, r.run); }},
-      {"seed", ColumnKind::kUnsigned, [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
-      {"case", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }},
-      {"status", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.status); }},
-      {"fault_thruster", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }},
-      {"fault_size", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }},
-      {"onset_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }},
-      {"mass_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }},
-      {"inertia_xx_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }},
-      {"inertia_yy_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }},
-      {"inertia_zz_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }},
-      {"com_x_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }},
-      {"com_y_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }},
-      {"com_z_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }},
-      CHASER_SCHEME_COLUMNS(position),
-      {"position_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.position.glr_max_before_onset); }},
-      CHASER_SCHEME_COLUMNS(attitude),
-      {"attitude_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.attitude.glr_max_before_onset); }},
-      CHASER_SCHEME_COLUMNS(deficit),
-      {"deficit_glr_max_before_onset", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.deficit.glr_max_before_onset); }},
-      CHASER_SCHEME_COLUMNS(fdir),
-      {"recovery_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }},
-      {"capture", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.capture); }},
-      {"corridor_kept", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }},
-      {"target_in_view", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }},
-      {"propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }},
-      {"simulated_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }},
-      {"final_position_error_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_position_error_m); }},
-      {"final_speed_mps", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_speed_mps); }},
-      {"final_attitude_error_deg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_attitude_error_deg); }},
-      {"final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_rate_error_deg_s); }},
-      {"min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }},
-      {"min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_synchronised_m); }},
+namespace {
+
+// The one table of runs.csv columns (docs/campaigns.md), in file order.
+std::vector<RunColumn> build_run_columns(const std::vector<flight::DiagnosisScheme>& schemes) {
+  std::vector<RunColumn> columns = {
+      column("run", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { integer(o, r.run); }),
+      column("seed", ColumnKind::kUnsigned, [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }),
+      column("case", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }),
+      column("status", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.status); }),
+      column("fault_thruster", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }),
+      column("fault_size", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }),
+      column("onset_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }),
+      column("mass_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }),
+      column("inertia_xx_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }),
+      column("inertia_yy_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }),
+      column("inertia_zz_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }),
+      column("com_x_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }),
+      column("com_y_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }),
+      column("com_z_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }),
   };
+  for (std::size_t i = 0; i < schemes.size(); ++i) scheme_columns(columns, schemes[i].name, static_cast<int>(i));
+  scheme_columns(columns, "fdir", -1);
+  for (RunColumn& c : std::vector<RunColumn>{
+      column("recovery_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }),
+      column("capture", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.capture); }),
+      column("corridor_kept", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }),
+      column("target_in_view", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }),
+      column("propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }),
+      column("simulated_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }),
+      column("final_position_error_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_position_error_m); }),
+      column("final_speed_mps", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_speed_mps); }),
+      column("final_attitude_error_deg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_attitude_error_deg); }),
+      column("final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_rate_error_deg_s); }),
+      column("min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }),
+      column("min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_synchronised_m); }),
+  })
+    columns.push_back(std::move(c));
   return columns;
 }
 
-#undef CHASER_SCHEME_COLUMNS
+}  // namespace
+
+const std::vector<RunColumn>& run_columns() {
+  // The diagnosis schemes' columns come from their table, read once (flight/diagnosis_schemes.hpp).
+  static const std::vector<RunColumn> columns = build_run_columns(flight::diagnosis_schemes());
+  return columns;
+}
 
 std::string runs_header() {
   std::string out;
@@ -200,7 +227,7 @@ std::string format_row(const RunRecord& r) {
   for (const RunColumn& c : run_columns()) {
     if (!first) out += ',';
     first = false;
-    c.write(r, out);
+    c.write(r, c.index, out);
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // One runs.csv row (docs/campaigns.md, "runs.csv"): what a run was (seed, dispersed chaser, fault) and
 // what the FDI schemes and the mission made of it. The columns live in ONE table (run_row.cpp,
 // run_columns): adding a column is adding one line there.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -36,7 +37,9 @@ struct RunRecord {
   double fault_size = 0;       // [-] leak or loss size, 1 stuck, 0 none
   double onset_s = 0;          // [s] NaN for case none
   model::SpacecraftParams chaser;
-  SchemeOutcome position{}, attitude{}, deficit{}, fdir{};
+  // Each diagnosis scheme's, by slot (flight/diagnosis_schemes.hpp), and the FDIR's as a whole.
+  std::array<SchemeOutcome, flight::kMaxDiagnosisSchemes> schemes{};
+  SchemeOutcome fdir{};
   double recovery_s = 0;       // [s] run time of the recovery, NaN: none
   bool capture = false, corridor_kept = false, target_in_view = false;
   double propellant_kg = 0;    // [kg]
@@ -64,9 +67,10 @@ enum class ColumnKind {
 };
 
 struct RunColumn {
-  std::string_view name;
+  std::string name;
   ColumnKind kind;
-  void (*write)(const RunRecord& r, std::string& out);
+  void (*write)(const RunRecord& r, int index, std::string& out);
+  int index = 0;  // passed to write: a scheme's slot (-1: the FDIR's) for a scheme's columns
 };
 const std::vector<RunColumn>& run_columns();
 

@@ -18,6 +18,16 @@ double RunningStats::sample_std() const {
   return n_ > 1 ? std::sqrt(m2_ / static_cast<double>(n_ - 1)) : std::numeric_limits<double>::quiet_NaN();
 }
 
+const std::vector<std::string>& statistics_schemes() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const flight::DiagnosisScheme& s : flight::diagnosis_schemes()) n.push_back(s.name);
+    n.emplace_back("fdir");
+    return n;
+  }();
+  return names;
+}
+
 CampaignStats::CampaignStats(std::vector<FaultCase> cases)
     : cases_(std::move(cases)), stats_(cases_.size()), diverged_(cases_.size(), 0), errors_(cases_.size(), 0) {}
 
@@ -28,7 +38,7 @@ void CampaignStats::add(const RowFacts& row) {
   diverged_[c] += row.diverged;
   errors_[c] += row.error;
   if (!row.counted) return;
-  for (std::size_t k = 0; k < kSchemes.size(); ++k) {
+  for (std::size_t k = 0; k < statistics_schemes().size(); ++k) {
     const SchemeFacts& f = row.schemes[k];
     SchemeCaseStats& s = stats_[c][k];
     ++s.runs;

@@ -6,10 +6,12 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "campaign/cases.hpp"
+#include "flight/diagnosis_schemes.hpp"
 #include "model/thrusters.hpp"
 
 namespace chaser::campaign {
@@ -28,7 +30,10 @@ class RunningStats {
   double m2_ = 0.0;
 };
 
-inline constexpr std::array<std::string_view, 4> kSchemes = {"position", "attitude", "deficit", "fdir"};
+// The schemes a campaign reports, in order: every diagnosis scheme (flight/diagnosis_schemes.hpp),
+// then "fdir", the FDIR as a whole.
+inline constexpr std::size_t kMaxStatisticsSchemes = flight::kMaxDiagnosisSchemes + 1;
+const std::vector<std::string>& statistics_schemes();
 
 // What the summary reads of one scheme in one runs.csv row.
 struct SchemeFacts {
@@ -43,7 +48,7 @@ struct RowFacts {
   bool counted;        // status ok or diverged; error runs carry no figures
   bool diverged, error;
   int fault_thruster;  // thruster index, model::kNoThruster: case none
-  std::array<SchemeFacts, kSchemes.size()> schemes;  // kSchemes order
+  std::array<SchemeFacts, kMaxStatisticsSchemes> schemes;  // statistics_schemes() order
   bool capture, corridor_kept;
   double propellant_kg;
 };
@@ -66,7 +71,7 @@ class CampaignStats {
 
  private:
   std::vector<FaultCase> cases_;
-  std::vector<std::array<SchemeCaseStats, kSchemes.size()>> stats_;
+  std::vector<std::array<SchemeCaseStats, kMaxStatisticsSchemes>> stats_;
   std::vector<std::int64_t> diverged_, errors_;
 };
 

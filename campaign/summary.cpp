@@ -23,7 +23,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Column indices of what the summary reads, found by name in the header.
 struct FactColumns {
   int fault_case, status, fault_thruster, capture, corridor, propellant;
-  std::array<std::array<int, 5>, kSchemes.size()> scheme;  // detection, isolation, isolated, false alarm, missed
+  std::array<std::array<int, 5>, kMaxStatisticsSchemes> scheme;  // detection, isolation, isolated, false alarm, missed
   bool complete() const {
     bool ok = fault_case >= 0 && status >= 0 && fault_thruster >= 0 && capture >= 0 && corridor >= 0 && propellant >= 0;
     for (const auto& s : scheme)
@@ -35,8 +35,8 @@ struct FactColumns {
 FactColumns fact_columns(const std::vector<std::string_view>& h) {
   FactColumns c{column_index(h, "case"), column_index(h, "status"), column_index(h, "fault_thruster"),
                 column_index(h, "capture"), column_index(h, "corridor_kept"), column_index(h, "propellant_kg"), {}};
-  for (std::size_t k = 0; k < kSchemes.size(); ++k) {
-    const std::string s(kSchemes[k]);
+  for (std::size_t k = 0; k < statistics_schemes().size(); ++k) {
+    const std::string& s = statistics_schemes()[k];
     c.scheme[k] = {column_index(h, s + "_detection_s"), column_index(h, s + "_isolation_s"),
                    column_index(h, s + "_isolated"), column_index(h, s + "_false_alarm"), column_index(h, s + "_missed")};
   }
@@ -58,7 +58,7 @@ std::optional<RowFacts> row_facts(const std::vector<std::string_view>& f, const 
   r.capture = f[c.capture] == "1";
   r.corridor_kept = f[c.corridor] == "1";
   r.propellant_kg = *propellant;
-  for (std::size_t k = 0; k < kSchemes.size(); ++k) {
+  for (std::size_t k = 0; k < statistics_schemes().size(); ++k) {
     const auto& i = c.scheme[k];
     const auto td = parse_number(f[i[0]]), ti = parse_number(f[i[1]]);
     const auto isolated = parse_integer(f[i[2]]);
@@ -107,7 +107,7 @@ void append_intervals(std::string& out, const SchemeCaseStats& s, FaultCase faul
 }
 
 void markdown_scheme(std::string& out, const CampaignStats& stats, std::size_t k) {
-  fmt::format_to(std::back_inserter(out), "\n### Scheme: {}\n\n| criterion |", kSchemes[k]);
+  fmt::format_to(std::back_inserter(out), "\n### Scheme: {}\n\n| criterion |", statistics_schemes()[k]);
   for (FaultCase c : stats.cases()) fmt::format_to(std::back_inserter(out), " {} |", to_string(c));
   out += "\n|---|";
   for (std::size_t i = 0; i < stats.cases().size(); ++i) out += "---|";
@@ -161,7 +161,7 @@ void markdown_threshold(std::string& out, const SummaryContext& ctx, const GlrEn
                  "fdi.glr_threshold = {}.\n\n| scheme | envelope max | suggested J_th |\n|---|---|---|\n",
                  envelope.runs(), ctx.threshold_margin, ctx.glr_threshold);
   for (int k = 0; k < 2; ++k)
-    fmt::format_to(std::back_inserter(out), "| {} | {:.4g} | {:.4g} |\n", kSchemes[k], peak[k],
+    fmt::format_to(std::back_inserter(out), "| {} | {:.4g} | {:.4g} |\n", statistics_schemes()[k], peak[k],
                    ctx.threshold_margin * peak[k]);
 }
 
@@ -190,10 +190,10 @@ std::string summary_csv(const CampaignStats& stats) {
       "mean_propellant_kg";
   for (std::string_view name : kRateNames) fmt::format_to(std::back_inserter(out), ",{0}_lo95,{0}_hi95", name);
   out += '\n';
-  for (std::size_t k = 0; k < kSchemes.size(); ++k)
+  for (std::size_t k = 0; k < statistics_schemes().size(); ++k)
     for (std::size_t c = 0; c < stats.cases().size(); ++c) {
       const std::vector<double> v = row_values(stats.at(c, k), stats.cases()[c] != FaultCase::kNone);
-      fmt::format_to(std::back_inserter(out), "{},{},{},{}", kSchemes[k], to_string(stats.cases()[c]),
+      fmt::format_to(std::back_inserter(out), "{},{},{},{}", statistics_schemes()[k], to_string(stats.cases()[c]),
                      stats.at(c, k).runs, stats.at(c, k).detected);
       for (std::size_t i = 2; i < v.size(); ++i) {
         out += ',';
@@ -217,7 +217,7 @@ std::string summary_markdown(const CampaignStats& stats, const SummaryContext& c
       "bound. Bounds are rounded outward. summary.csv has the two-sided interval of each (columns `*_lo95`, "
       "`*_hi95`).\n",
       context.scenario);
-  for (std::size_t k = 0; k < kSchemes.size(); ++k) markdown_scheme(out, stats, k);
+  for (std::size_t k = 0; k < statistics_schemes().size(); ++k) markdown_scheme(out, stats, k);
   markdown_mission(out, stats);
   if (envelope && !envelope->empty()) markdown_threshold(out, context, *envelope);
   out += targets_markdown(stats, context.targets);

@@ -73,9 +73,9 @@ std::string targets_markdown(const CampaignStats& stats, const std::vector<Targe
     for (std::size_t i = 0; i < stats.cases().size(); ++i) out += "---|";
     out += '\n';
     // The mission rates are the same whatever the scheme (statistics.cpp): one row.
-    const std::size_t rows = is_mission(t.index) ? 1 : kSchemes.size();
+    const std::size_t rows = is_mission(t.index) ? 1 : statistics_schemes().size();
     for (std::size_t k = 0; k < rows; ++k) {
-      fmt::format_to(std::back_inserter(out), "| {} |", is_mission(t.index) ? "all schemes" : kSchemes[k]);
+      fmt::format_to(std::back_inserter(out), "| {} |", is_mission(t.index) ? "all schemes" : statistics_schemes()[k]);
       for (std::size_t c = 0; c < stats.cases().size(); ++c) {
         const auto v = verdict(t, stats.at(c, k), stats.cases()[c], true);
         fmt::format_to(std::back_inserter(out), " {} |", v.value_or("-"));
@@ -90,12 +90,12 @@ std::string targets_text(const CampaignStats& stats, const std::vector<Target>& 
   std::string out;
   for (const Target& t : targets) {
     fmt::format_to(std::back_inserter(out), "target {}\n", heading(t, t.text));
-    const std::size_t rows = is_mission(t.index) ? 1 : kSchemes.size();
+    const std::size_t rows = is_mission(t.index) ? 1 : statistics_schemes().size();
     for (std::size_t k = 0; k < rows; ++k)
       for (std::size_t c = 0; c < stats.cases().size(); ++c)
         if (const auto v = verdict(t, stats.at(c, k), stats.cases()[c], false))
           fmt::format_to(std::back_inserter(out), "  {}{}: {}\n",
-                         is_mission(t.index) ? "" : std::string(kSchemes[k]) + " ", to_string(stats.cases()[c]), *v);
+                         is_mission(t.index) ? "" : statistics_schemes()[k] + " ", to_string(stats.cases()[c]), *v);
   }
   return out;
 }

@@ -145,11 +145,12 @@ void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& st
   fdi::step_deficit_detector(p.detector, w.deficit, state.deficit_bank, state.detector);
   const fdi::DeficitDecision& d = fdi::step_deficit_decision(w.deficit, state.deficit_bank, state.detector_deficit,
                                                              state.detector.alarm ? state.detector.alarm_sample : -1);
-  out.detector.glr = fdi::GlrStatistic::of_value(state.detector.statistic);
-  out.detector.alarm = state.detector.alarm;
-  out.detector.candidate = state.detector.suspect;
-  out.detector.confirmed = d.thruster;
-  out.detector.alarm_time_s =
+  fdi::FdiSchemeOutput& detector = out.schemes[kDeficitScheme];
+  detector.glr = fdi::GlrStatistic::of_value(state.detector.statistic);
+  detector.alarm = state.detector.alarm;
+  detector.candidate = state.detector.suspect;
+  detector.confirmed = d.thruster;
+  detector.alarm_time_s =
       state.detector.alarm ? static_cast<double>(state.detector.alarm_sample + state.bank_first_period) * p.period_s
                            : -1.0;
   if (d.thruster >= 0 && state.detector_isolated_s < 0) state.detector_isolated_s = in.t_s;
@@ -165,11 +166,33 @@ void start_watch(FdirState& state, std::int64_t period, double t_s) {
   state.detector = {};
   state.position_deficit = state.attitude_deficit = state.detector_deficit = {};
   state.position_isolated_s = state.attitude_isolated_s = state.detector_isolated_s = -1;
+  state.latches = {};
   state.confirmed_thruster = model::kNoThruster;
   state.confirmed_s = -1;
   fdi::FdiSchemeOutput ignored;
   clear_latches(state.position, ignored);
   clear_latches(state.attitude, ignored);
+}
+
+// The registered schemes (flight/diagnosis_schemes.hpp), after the three built in: each period's
+// output, cleared while disarmed as theirs are, and its first alarm and confirmation latched.
+void step_registered_schemes(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
+                             const FdirInput& in, FdirOutput& out) {
+  const std::vector<DiagnosisScheme>& schemes = diagnosis_schemes();
+  for (std::size_t i = kDeficitScheme + 1; i < schemes.size(); ++i) {
+    if (!schemes[i].enabled(p)) continue;
+    fdi::FdiSchemeOutput& o = out.schemes[i];
+    schemes[i].step(p, meas, in, o);
+    if (!state.armed) {
+      o.alarm = false;
+      o.candidate = o.confirmed = -1;
+      o.alarm_time_s = -1.0;
+      continue;
+    }
+    SchemeLatch& l = state.latches[i];
+    if (o.alarm && l.alarm_s < 0) l.alarm_s = in.t_s;
+    if (o.confirmed >= 0 && l.confirmed < 0) l.confirmed = o.confirmed, l.isolated_s = in.t_s;
+  }
 }
 
 SchemeSummary summary_of(const FdiWatchedParams& w, bool alarm, double alarm_s, int confirmed_lane, double isolated_s,
@@ -297,36 +320,39 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     if (p.deficit_detection) step_detector(p, w, state, in, out);
   }
 
+  fdi::FdiSchemeOutput& position = out.schemes[kPositionScheme];
+  fdi::FdiSchemeOutput& attitude = out.schemes[kAttitudeScheme];
   if (p.position_enabled) {
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
     fdi::step_fdi_scheme(w.position, state.position, meas.r_lvlh_m, u_c, in.ton.head<fdi::kSchemeThrusters>(),
-                         out.over_consumption, out.position);
-    if (!state.armed) clear_latches(state.position, out.position);
-    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.position_deficit, state.position, out.position);
-    if (out.position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
+                         out.over_consumption, position);
+    if (!state.armed) clear_latches(state.position, position);
+    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.position_deficit, state.position, position);
+    if (position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
   }
   if (p.attitude_enabled) {
     // Eq. 16-17: u_c = M_C T_on; y is the measured attitude about the target-pointing reference,
     // the small angles of the linearised model (eq. 15): 2 vec(q), equal to them to first order.
     const Vec3 angles = small_angle_error_body(in.q_ref_inertial_from_body, meas.q_inertial_from_body);
     fdi::step_fdi_scheme(w.attitude, state.attitude, angles, Vec3(wrench.tail<3>()),
-                         in.ton.head<fdi::kSchemeThrusters>(), out.over_consumption, out.attitude);
-    if (!state.armed) clear_latches(state.attitude, out.attitude);
-    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, out.attitude);
-    if (out.attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
+                         in.ton.head<fdi::kSchemeThrusters>(), out.over_consumption, attitude);
+    if (!state.armed) clear_latches(state.attitude, attitude);
+    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, attitude);
+    if (attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }
+  step_registered_schemes(p, state, meas, in, out);
   if (!state.armed) return out;
 
   // The fault-free noise estimate of the deficit bank must not learn from the fault.
   if (state.position.alarm || state.attitude.alarm || state.detector.alarm) state.deficit_bank.frozen = true;
 
-  // The first confirmation by any scheme is the watch's confirmed thruster.
+  // The first confirmation by any scheme, in slot order, is the watch's confirmed thruster.
   if (state.confirmed_thruster == model::kNoThruster) {
     int lane = -1;
-    for (const fdi::FdiSchemeOutput* scheme : {&out.position, &out.attitude, &out.detector})
-      if (lane < 0) lane = scheme->confirmed;
+    const int schemes = static_cast<int>(diagnosis_schemes().size());
+    for (int i = 0; i < schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(i)].confirmed;
     if (lane >= 0) {
       state.confirmed_thruster = w.set.index[static_cast<std::size_t>(lane)];
       state.confirmed_s = in.t_s;
@@ -343,14 +369,20 @@ FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {
   const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(f.watched)];
   e.watched = w.set.mask;
   const double T = p.period_s;
-  e.position = summary_of(w, p.position_enabled && f.position.alarm, static_cast<double>(f.position.alarm_period) * T,
+  e.schemes[kPositionScheme] = summary_of(w, p.position_enabled && f.position.alarm, static_cast<double>(f.position.alarm_period) * T,
                           f.position.confirmed, f.position_isolated_s, f.position_deficit.decision, f.bank_first_period, T);
-  e.attitude = summary_of(w, p.attitude_enabled && f.attitude.alarm, static_cast<double>(f.attitude.alarm_period) * T,
+  e.schemes[kAttitudeScheme] = summary_of(w, p.attitude_enabled && f.attitude.alarm, static_cast<double>(f.attitude.alarm_period) * T,
                           f.attitude.confirmed, f.attitude_isolated_s, f.attitude_deficit.decision, f.bank_first_period, T);
-  e.detector = summary_of(w, p.deficit_detection && f.detector.alarm,
+  e.schemes[kDeficitScheme] = summary_of(w, p.deficit_detection && f.detector.alarm,
                           static_cast<double>(f.detector.alarm_sample + f.bank_first_period) * T,
                           f.detector_deficit.decision.thruster, f.detector_isolated_s, f.detector_deficit.decision,
                           f.bank_first_period, T);
+  const std::vector<DiagnosisScheme>& schemes = diagnosis_schemes();
+  for (std::size_t i = kDeficitScheme + 1; i < schemes.size(); ++i) {
+    const SchemeLatch& l = f.latches[i];
+    e.schemes[i] = summary_of(w, schemes[i].enabled(p) && l.alarm_s >= 0, l.alarm_s, l.confirmed, l.isolated_s,
+                              fdi::DeficitDecision{}, f.bank_first_period, T);
+  }
   return e;
 }
 

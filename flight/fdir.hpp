@@ -13,9 +13,11 @@
 //
 // The residual generators are designed in memory from the scenario when a run starts
 // (make_fdir_params), so dispersed campaigns never fly a stale design.
+#include <array>
 #include <vector>
 
 #include "core/types.hpp"
+#include "flight/diagnosis_schemes.hpp"
 #include "flight/fdi/deficit_detector.hpp"
 #include "flight/fdi/deficit_isolation.hpp"
 #include "flight/fdi/design_inputs.hpp"
@@ -81,12 +83,20 @@ struct SchemeSummary {
 struct FdirEpisode {
   double armed_s = 0;            // [s]
   model::ThrusterMask watched = 0;
-  SchemeSummary position, attitude, detector;
+  std::array<SchemeSummary, kMaxDiagnosisSchemes> schemes{};  // by slot (flight/diagnosis_schemes.hpp)
   double recovery_s = -1;        // [s] -1: none
   int recovered_thruster = model::kNoThruster;  // index
 };
 
 inline constexpr int kMaxFdirEpisodes = 8;
+
+// What step_fdir latches for a registered scheme (one with a `step`): its first alarm and its
+// first confirmation in the current watch.
+struct SchemeLatch {
+  double alarm_s = -1;     // [s] -1: none
+  int confirmed = -1;      // lane, -1: none
+  double isolated_s = -1;  // [s] -1: none
+};
 
 struct FdirState {
   int watched = 0;                  // index into FdirParams::watched
@@ -105,6 +115,7 @@ struct FdirState {
   double detector_isolated_s = -1;
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
+  std::array<SchemeLatch, kMaxDiagnosisSchemes> latches{};  // registered schemes' slots
   int confirmed_thruster = model::kNoThruster;  // index: the first confirmation of this watch
   double confirmed_s = -1;          // [s]
   std::array<FdirEpisode, kMaxFdirEpisodes> episodes{};  // finished diagnoses (a recovery ended them)
@@ -112,9 +123,9 @@ struct FdirState {
 };
 
 struct FdirOutput {
-  fdi::FdiSchemeOutput position;  // candidate and confirmed: lanes of the watched set
-  fdi::FdiSchemeOutput attitude;
-  fdi::FdiSchemeOutput detector;  // the deficit detector: glr = its statistic, candidate = its suspect
+  // By slot (flight/diagnosis_schemes.hpp); candidate and confirmed: lanes of the watched set. The
+  // deficit detector's glr is its statistic, its candidate its suspect.
+  std::array<fdi::FdiSchemeOutput, kMaxDiagnosisSchemes> schemes{};
   bool over_consumption = false;  // event resolution: cases 1/3 (true) or 2/4
   int confirmed_now = model::kNoThruster;  // index of a thruster first confirmed this period
 };

@@ -15,6 +15,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+const SchemeResult& scheme_result(const FdirResult& fdir, std::string_view name) {
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  std::size_t i = 0;
+  while (i < schemes.size() && schemes[i].name != name) ++i;
+  return fdir.schemes.at(i);  // a name not in the table: out of range, a programming error
+}
+
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const flight::FlightParams flight_params = flight::make_flight_params(scenario);

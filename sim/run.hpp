@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flight/flight_software.hpp"
@@ -36,8 +37,8 @@ struct SchemeResult {
 };
 
 struct FdirResult {
-  SchemeResult position, attitude;
-  SchemeResult deficit;          // the deficit detector, the third scheme (enabled with isolation_method deficit)
+  // Each scheme's, in the order of flight::diagnosis_schemes() (position, attitude, deficit, ...).
+  std::vector<SchemeResult> schemes;
   // The FDIR as a whole: the first alarm of any scheme, the first confirmed thruster.
   double detection_s = -1;       // [s] -1: none
   double isolation_s = -1;       // [s] -1: none
@@ -69,12 +70,15 @@ struct RunResult {
   bool telemetry_ok = true;
   FdirResult fdir;
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole
-  // second of the run, [position, attitude, deficit] per second (index floor(t)); 0 for a disabled scheme.
-  std::vector<std::array<float, 3>> glr_max_per_s;
+  // second of the run, by scheme slot per second (index floor(t)); 0 for a disabled scheme.
+  std::vector<std::array<float, flight::kMaxDiagnosisSchemes>> glr_max_per_s;
   // The phases flown in order, with their start and end times and the reason each ended
   // (sim/run_phases.hpp); a run ended early ends its last phase there.
   std::vector<FlownPhase> phases;
 };
+
+// A scheme's result by its name (flight/diagnosis_schemes.hpp); the name must be in the table.
+const SchemeResult& scheme_result(const FdirResult& fdir, std::string_view name);
 
 // One run where the flight software is built from the same scenario as the plant (nominal = truth).
 RunResult run_scenario(const model::Scenario& scenario, const RunOptions& options = {});

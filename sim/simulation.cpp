@@ -31,7 +31,7 @@ MonitorSample monitor_sample(double t_s, const Quat& q_inertial_from_lvlh, const
   };
 }
 
-SchemeResult scheme_result(bool enabled, const flight::SchemeSummary& s) {
+SchemeResult result_of(bool enabled, const flight::SchemeSummary& s) {
   SchemeResult r;
   r.enabled = enabled;
   r.alarm_s = s.alarm_s;
@@ -46,18 +46,15 @@ SchemeResult scheme_result(bool enabled, const flight::SchemeSummary& s) {
 }
 
 FdirResult episode_result(const flight::FlightParams& p, const flight::FdirEpisode& e) {
-  FdirResult r{
-      .position = scheme_result(p.fdir.position_enabled, e.position),
-      .attitude = scheme_result(p.fdir.attitude_enabled, e.attitude),
-      .deficit = scheme_result(p.fdir.deficit_detection, e.detector),
-      .recovery_s = e.recovery_s,
-      .recovered_thruster = e.recovered_thruster,
-      .episodes = {},
-  };
-  for (const SchemeResult* scheme : {&r.position, &r.attitude, &r.deficit}) {
-    if (scheme->alarm_s >= 0 && (r.detection_s < 0 || scheme->alarm_s < r.detection_s)) r.detection_s = scheme->alarm_s;
-    if (scheme->isolated_s >= 0 && (r.isolation_s < 0 || scheme->isolated_s < r.isolation_s))
-      r.isolation_s = scheme->isolated_s, r.isolated_thruster = scheme->isolated_thruster;
+  FdirResult r;
+  r.recovery_s = e.recovery_s;
+  r.recovered_thruster = e.recovered_thruster;
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t i = 0; i < schemes.size(); ++i) r.schemes.push_back(result_of(schemes[i].enabled(p.fdir), e.schemes[i]));
+  for (const SchemeResult& scheme : r.schemes) {
+    if (scheme.alarm_s >= 0 && (r.detection_s < 0 || scheme.alarm_s < r.detection_s)) r.detection_s = scheme.alarm_s;
+    if (scheme.isolated_s >= 0 && (r.isolation_s < 0 || scheme.isolated_s < r.isolation_s))
+      r.isolation_s = scheme.isolated_s, r.isolated_thruster = scheme.isolated_thruster;
   }
   return r;
 }
@@ -109,7 +106,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   synchronised_from_s_ = synchronised_from_s(scenario_);
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
-    result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {0.0f, 0.0f, 0.0f});
+    result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {});
   done_ = periods_ <= 0;
   step_phases(phase_params_, phase_state_, 0, 0, 0);
 }
@@ -174,10 +171,9 @@ void Simulation::tally(const flight::FlightOutput& out, double t_s) {
   result_.max_on_fraction = std::max(result_.max_on_fraction, largest);
   result_.saturated_periods += largest >= 1.0;
   if (options_.record_glr_per_second) {
-    std::array<float, 3>& second = result_.glr_max_per_s[static_cast<std::size_t>(t_s)];
-    second[0] = std::max(second[0], static_cast<float>(out.fdir.position.glr.value()));
-    second[1] = std::max(second[1], static_cast<float>(out.fdir.attitude.glr.value()));
-    second[2] = std::max(second[2], static_cast<float>(out.fdir.detector.glr.value()));
+    auto& second = result_.glr_max_per_s[static_cast<std::size_t>(t_s)];
+    for (std::size_t i = 0; i < flight::diagnosis_schemes().size(); ++i)
+      second[i] = std::max(second[i], static_cast<float>(out.fdir.schemes[i].glr.value()));
   }
 }
 

@@ -95,26 +95,23 @@ nlohmann::json watch_scheme_json(const SchemeResult& r) {
 // from the start of the run, each later one from its re-arming after a recovery.
 nlohmann::json diagnoses_json(const FdirResult& f) {
   nlohmann::json list = nlohmann::json::array();
-  for (const FdirResult& e : f.episodes)
-    list.push_back(nlohmann::json{
-        {"position_scheme", watch_scheme_json(e.position)},
-        {"attitude_scheme", watch_scheme_json(e.attitude)},
-        {"deficit_scheme", watch_scheme_json(e.deficit)},
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (const FdirResult& e : f.episodes) {
+    nlohmann::json watch{
         {"detection_s", e.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.detection_s)},
         {"isolation_s", e.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.isolation_s)},
-        {"isolated_thruster",
-         thruster_json(e.isolated_thruster)},
+        {"isolated_thruster", thruster_json(e.isolated_thruster)},
         {"recovery_s", e.recovery_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(e.recovery_s)},
-    });
+    };
+    for (std::size_t i = 0; i < schemes.size(); ++i) watch[schemes[i].name + "_scheme"] = watch_scheme_json(e.schemes[i]);
+    list.push_back(std::move(watch));
+  }
   return list;
 }
 
 nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   const double onset = first_onset_s(scenario);
-  return nlohmann::json{
-      {"position_scheme", scheme_json(f.position, onset)},
-      {"attitude_scheme", scheme_json(f.attitude, onset)},
-      {"deficit_scheme", scheme_json(f.deficit, onset)},
+  nlohmann::json out{
       {"glr_threshold", scenario.fdi.glr_threshold},                   // position and attitude schemes
       {"deficit_threshold", scenario.fdi.deficit.detection_threshold}, // deficit scheme
       {"detection_time_s", f.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.detection_s - onset)},
@@ -125,10 +122,13 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
        thruster_json(f.recovered_thruster)},
       {"diagnoses", diagnoses_json(f)},
   };
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t i = 0; i < schemes.size(); ++i) out[schemes[i].name + "_scheme"] = scheme_json(f.schemes[i], onset);
+  return out;
 }
 
 // faulty_thruster: the truth's index, model::kNoThruster when the run has no fault.
-std::string scheme_text(const char* name, const SchemeResult& r, double onset_s, int faulty_thruster) {
+std::string scheme_text(const std::string& name, const SchemeResult& r, double onset_s, int faulty_thruster) {
   const bool has_fault = faulty_thruster != model::kNoThruster;
   if (!r.enabled) return fmt::format("  {} scheme: off\n", name);
   if (r.alarm_s < 0) return fmt::format("  {} scheme: no alarm\n", name);
@@ -233,9 +233,8 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                        f.final_rate_error_radps * kRadToDeg);
   const double onset = first_onset_s(scenario);
   const int faulty = scenario.faults.empty() ? model::kNoThruster : scenario.faults.front().thruster;
-  out += scheme_text("position", r.fdir.position, onset, faulty);
-  out += scheme_text("attitude", r.fdir.attitude, onset, faulty);
-  out += scheme_text("deficit", r.fdir.deficit, onset, faulty);
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t i = 0; i < schemes.size(); ++i) out += scheme_text(schemes[i].name, r.fdir.schemes[i], onset, faulty);
   for (std::size_t i = 0; i < r.fdir.episodes.size(); ++i) {
     const FdirResult& e = r.fdir.episodes[i];
     if (i > 0 && e.detection_s >= 0)

@@ -39,17 +39,17 @@ double thruster_number(const PeriodRecord& r, int lane) {
   return model::thruster_number(lane >= 0 ? r.watched->index[static_cast<std::size_t>(lane)] : model::kNoThruster);
 }
 
-// The position, attitude and deficit-detector schemes' outputs, by a scheme index.
+// A diagnosis scheme's outputs, by its slot (flight/diagnosis_schemes.hpp).
 const flight::fdi::FdiSchemeOutput& scheme(const PeriodRecord& r, int s) {
-  return s == 0 ? r.flight->fdir.position : (s == 1 ? r.flight->fdir.attitude : r.flight->fdir.detector);
+  return r.flight->fdir.schemes[static_cast<std::size_t>(s)];
 }
 
-// The residual channels of a scheme (three components) pack the scheme in the index: 3 s + i.
-void fdi_scheme(Channels& t, const char* name, int s) {
-  if (s < 2)
-    for (int i = 0; i < 3; ++i)
-      t.push_back({fmt::format("residual_{}_{}", name, i + 1), "",
-                   [](const PeriodRecord& r, int k) { return scheme(r, k / 3).residual[k % 3]; }, 3 * s + i});
+// The residual channels of a scheme (up to three components) pack the scheme in the index: 3 s + i.
+void fdi_scheme(Channels& t, const flight::DiagnosisScheme& d, int s) {
+  const std::string& name = d.name;
+  for (int i = 0; i < d.residual_channels; ++i)
+    t.push_back({fmt::format("residual_{}_{}", name, i + 1), "",
+                 [](const PeriodRecord& r, int k) { return scheme(r, k / 3).residual[k % 3]; }, 3 * s + i});
   t.push_back({fmt::format("glr_{}", name), "", [](const PeriodRecord& r, int k) { return scheme(r, k).glr.value(); }, s});
   t.push_back({fmt::format("alarm_{}", name), "",
                [](const PeriodRecord& r, int k) { return scheme(r, k).alarm ? 1.0 : 0.0; }, s});
@@ -110,9 +110,8 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
     t.push_back({fmt::format("ton_real_{}", i + 1), "",
                  [](const PeriodRecord& r, int k) { return r.plant->last_profile.ton_realised[static_cast<std::size_t>(k)]; },
                  i});
-  fdi_scheme(t, "position", 0);
-  fdi_scheme(t, "attitude", 1);
-  fdi_scheme(t, "deficit", 2);
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t s = 0; s < schemes.size(); ++s) fdi_scheme(t, schemes[s], static_cast<int>(s));
   scalar(t, "over_consumption", "", [](const PeriodRecord& r, int) { return r.flight->fdir.over_consumption ? 1.0 : 0.0; });
   // Exact: a 32-bit mask is an integer below 2^53, which a double holds and the writer round-trips.
   scalar(t, "active_thrusters", "",
@@ -215,10 +214,10 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
   put3(f.commanded_wrench.tail<3>());
   for (int i = 0; i < thrusters; ++i) *row++ = f.command.ton[static_cast<std::size_t>(i)];
   for (int i = 0; i < thrusters; ++i) *row++ = r.plant->last_profile.ton_realised[static_cast<std::size_t>(i)];
-  for (int s = 0; s < 3; ++s) {
-    const flight::fdi::FdiSchemeOutput& o = scheme(r, s);
-    if (s < 2)
-      for (int i = 0; i < 3; ++i) *row++ = o.residual[i];
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t s = 0; s < schemes.size(); ++s) {
+    const flight::fdi::FdiSchemeOutput& o = scheme(r, static_cast<int>(s));
+    for (int i = 0; i < schemes[s].residual_channels; ++i) *row++ = o.residual[i];
     *row++ = o.glr.value();
     *row++ = o.alarm ? 1.0 : 0.0;
     *row++ = thruster_number(r, o.candidate);

@@ -44,7 +44,7 @@ TEST(RunRow, ThrustersAreWrittenAsTheNumberOfTheirNameAndZeroForNone) {
   EXPECT_EQ(column(r, "fault_thruster"), "3");  // T3
   for (const char* scheme : {"position", "attitude", "deficit", "fdir"})
     EXPECT_EQ(column(r, std::string(scheme) + "_isolated"), "0") << scheme;
-  r.attitude.isolated = 7;
+  r.schemes[flight::kAttitudeScheme].isolated = 7;
   EXPECT_EQ(column(r, "attitude_isolated"), "8");  // T8
 
   const RunRecord none = error_record(RunSetup{});

@@ -60,10 +60,10 @@ TEST(FdirClosedLoop, StuckOpenIsDetectedByBothSchemesWithinSeconds) {
   for (int thruster = 0; thruster < 8; ++thruster) {
     scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = thruster}};
     const RunResult r = run_scenario(scenario);
-    EXPECT_GE(r.fdir.position.alarm_s, 1000.0) << "T" << thruster + 1;
-    EXPECT_LT(r.fdir.position.alarm_s, 1004.0) << "T" << thruster + 1;
-    EXPECT_GE(r.fdir.attitude.alarm_s, 1000.0) << "T" << thruster + 1;
-    EXPECT_LT(r.fdir.attitude.alarm_s, 1001.5) << "T" << thruster + 1;
+    EXPECT_GE(scheme_result(r.fdir, "position").alarm_s, 1000.0) << "T" << thruster + 1;
+    EXPECT_LT(scheme_result(r.fdir, "position").alarm_s, 1004.0) << "T" << thruster + 1;
+    EXPECT_GE(scheme_result(r.fdir, "attitude").alarm_s, 1000.0) << "T" << thruster + 1;
+    EXPECT_LT(scheme_result(r.fdir, "attitude").alarm_s, 1001.5) << "T" << thruster + 1;
   }
 }
 
@@ -89,7 +89,7 @@ TEST(FdirClosedLoop, EveryThrusterAndFaultCaseIsDetectedAndIsolatedRight) {
       const std::string name = std::string(model::to_string(kind)) + " T" + std::to_string(thruster + 1);
       EXPECT_GE(r.fdir.detection_s, 1000.0) << name;
       EXPECT_EQ(r.fdir.isolated_thruster, thruster) << name;
-      for (const SchemeResult* scheme : {&r.fdir.position, &r.fdir.attitude, &r.fdir.deficit}) {
+      for (const SchemeResult* scheme : {&r.fdir.schemes[0], &r.fdir.schemes[1], &r.fdir.schemes[2]}) {
         if (scheme->isolated_thruster == model::kNoThruster) continue;
         EXPECT_EQ(scheme->isolated_thruster, thruster) << name;
         ASSERT_TRUE(scheme->diagnosed_kind.has_value()) << name;
@@ -118,10 +118,10 @@ TEST(FdirClosedLoop, DispersedLeakIsNotConfusedWithItsPartner) {
                          .leak_size = 0.19181456441143682, .leak_slope_per_s = 0.1},
       1010.0);
   const RunResult r = run_scenario(truth, flight::make_flight_params(nominal));
-  EXPECT_EQ(r.fdir.deficit.isolated_thruster, 5);  // T6
-  EXPECT_EQ(r.fdir.attitude.isolated_thruster, 5);
-  ASSERT_TRUE(r.fdir.deficit.diagnosed_kind.has_value());
-  EXPECT_EQ(*r.fdir.deficit.diagnosed_kind, model::FaultKind::kLeak);
+  EXPECT_EQ(scheme_result(r.fdir, "deficit").isolated_thruster, 5);  // T6
+  EXPECT_EQ(scheme_result(r.fdir, "attitude").isolated_thruster, 5);
+  ASSERT_TRUE(scheme_result(r.fdir, "deficit").diagnosed_kind.has_value());
+  EXPECT_EQ(*scheme_result(r.fdir, "deficit").diagnosed_kind, model::FaultKind::kLeak);
 }
 
 // Issue 20's active checks in the loop. T4 is not commanded between about 56 s and 1168 s of the

@@ -1,0 +1,35 @@
+#include "flight/diagnosis_schemes.hpp"
+
+#include <algorithm>
+
+#include "core/plain_name.hpp"
+#include "flight/fdir.hpp"
+
+namespace chaser::flight {
+
+namespace {
+
+std::vector<DiagnosisScheme>& table() {
+  static std::vector<DiagnosisScheme> schemes = {
+      {.name = "position", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.position_enabled; }},
+      {.name = "attitude", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.attitude_enabled; }},
+      {.name = "deficit", .residual_channels = 0, .enabled = [](const FdirParams& p) { return p.deficit_detection; }},
+  };
+  return schemes;
+}
+
+}  // namespace
+
+const std::vector<DiagnosisScheme>& diagnosis_schemes() { return table(); }
+
+int register_diagnosis_scheme(DiagnosisScheme scheme) {
+  std::vector<DiagnosisScheme>& schemes = table();
+  const bool taken = std::any_of(schemes.begin(), schemes.end(), [&](const DiagnosisScheme& s) { return s.name == scheme.name; });
+  if (taken || !is_plain_name(scheme.name) || !scheme.enabled || !scheme.step ||
+      static_cast<int>(schemes.size()) >= kMaxDiagnosisSchemes)
+    return -1;
+  schemes.push_back(std::move(scheme));
+  return static_cast<int>(schemes.size()) - 1;
+}
+
+}  // namespace chaser::flight
