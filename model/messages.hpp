@@ -1,6 +1,8 @@
 #pragma once
 // The plain structs that cross between plant (truth) and flight software. Nothing else crosses.
+#include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/time.hpp"
 #include "core/types.hpp"
@@ -15,6 +17,38 @@ struct TargetPoseMeasurement {
   Quat q_body_from_target = Quat::Identity();  // the target's attitude in the chaser's body axes
 };
 
+// A relative pose sample of a camera (the arm camera's view of the grasp fixture), delivered after
+// its latency.
+struct RelativePoseMeasurement {
+  bool valid = false;                          // a sample was delivered this period
+  double taken_s = 0;                          // [s] run time the sample was taken
+  Vec3 r_camera_m = Vec3::Zero();              // [m] the fixture's origin, camera axes
+  Quat q_camera_from_fixture = Quat::Identity();
+};
+
+// A 7-DOF arm's joints (COMRADE 2018, sec. 4; joint sensors at 1 kHz, sec. 6.2.1).
+inline constexpr int kMaxArmJoints = 7;
+using JointArray = std::array<double, kMaxArmJoints>;
+
+// Plant -> flight, when the plant has an arm: the joint sensors, the gripper, the arm camera.
+struct ArmMeasurements {
+  int joints = 0;                   // entries used in each array
+  JointArray q_rad{};               // [rad] joint angles
+  JointArray q_dot_radps{};         // [rad/s] joint rates
+  JointArray torque_Nm{};           // [N m] joint torques measured
+  bool gripper_closed = false;      // the gripper holds (its switches)
+  double gripper_opening_m = 0;     // [m]
+  RelativePoseMeasurement fixture;  // the grasp fixture seen by the arm camera
+};
+
+// Flight -> plant, when the plant has an arm.
+struct ArmCommand {
+  int joints = 0;
+  JointArray torque_Nm{};       // [N m] joint torque demands to the inner torque loops
+  bool close_gripper = false;
+  bool engage_brakes = false;   // the joints' brakes (rigidisation)
+};
+
 // Plant -> flight: what the sensors deliver at the start of a control period.
 struct SensorMeasurements {
   TimeNs t = 0;                                    // [ns] time of delivery
@@ -23,6 +57,7 @@ struct SensorMeasurements {
   Vec3 omega_body_radps = Vec3::Zero();            // gyro
   double propellant_used_kg = 0;                   // [kg] tank gauging: propellant used so far
   TargetPoseMeasurement target_pose{};             // pose sensor, when the scenario has one
+  std::optional<ArmMeasurements> arm{};            // a plant with an arm only (disengaged: nothing copied)
 };
 
 // Flight -> plant: commanded on-times for the coming period, by thruster index (0 for the idle
@@ -30,6 +65,7 @@ struct SensorMeasurements {
 struct ThrusterCommand {
   ThrusterOnTimes ton{};  // [-] on-time as a fraction of the control period, 0..1
   std::uint32_t latch_closed_groups = 0;  // bit g set: group g's latch valve is closed, cutting its flow
+  std::optional<ArmCommand> arm{};        // to a plant with an arm only
 };
 
 }  // namespace chaser::model
