@@ -15,7 +15,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= scenario overrides invsim
 
-SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_io test_flight test_fdi
+SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_io test_flight test_fdi test_fdi_design
 
 .PHONY: all deps configure build test demo fmea servicing bench sanitize sanitize-fast fuzz clean
 

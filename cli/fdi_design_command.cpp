@@ -10,8 +10,8 @@
 #include "cli/output_file.hpp"
 #include "cli/scenario_input.hpp"
 #include "flight/fdir.hpp"
-#include "flight/fdi/residual_design.hpp"
-#include "flight/fdi/residual_design_json.hpp"
+#include "flight/fdi/design/residual_design.hpp"
+#include "flight/fdi/design/residual_design_json.hpp"
 #include "model/fdi.hpp"
 #include "model/thrusters.hpp"
 

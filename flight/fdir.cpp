@@ -6,8 +6,8 @@
 #include <future>
 
 #include "core/rotation.hpp"
-#include "flight/fdi/design_inputs.hpp"
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/design_inputs.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 #include "flight/fdi/residual_generator.hpp"
 #include "flight/guidance.hpp"
 #include "model/recovery.hpp"

@@ -20,7 +20,7 @@
 #include "flight/diagnosis_schemes.hpp"
 #include "flight/fdi/deficit_detector.hpp"
 #include "flight/fdi/deficit_isolation.hpp"
-#include "flight/fdi/design_inputs.hpp"
+#include "flight/fdi/design/design_inputs.hpp"
 #include "flight/fdi/event_resolution.hpp"
 #include "flight/fdi/fdi_scheme.hpp"
 #include "model/messages.hpp"

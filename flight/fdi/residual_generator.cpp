@@ -3,7 +3,7 @@
 #include <Eigen/LU>
 #include <stdexcept>
 
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 
 namespace chaser::flight::fdi {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/random.hpp"
-#include "flight/fdi/residual_design.hpp"
-#include "flight/fdi/delay_discretization.hpp"
+#include "flight/fdi/design/residual_design.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
 #include "flight/fdi/event_resolution.hpp"
 #include "msr_test_setup.hpp"
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "core/random.hpp"
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 #include "msr_test_setup.hpp"
 
 namespace chaser::flight::fdi {

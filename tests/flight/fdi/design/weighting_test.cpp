@@ -1,4 +1,4 @@
-#include "flight/fdi/weighting.hpp"
+#include "flight/fdi/design/weighting.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "flight/fdi/delay_discretization.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>
 

@@ -1,4 +1,4 @@
-#include "flight/fdi/design_figures.hpp"
+#include "flight/fdi/design/design_figures.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>

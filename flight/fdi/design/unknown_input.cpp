@@ -1,4 +1,4 @@
-#include "flight/fdi/unknown_input.hpp"
+#include "flight/fdi/design/unknown_input.hpp"
 
 #include <Eigen/QR>
 #include <Eigen/SVD>

@@ -1,13 +1,13 @@
-#include "flight/fdi/cayley_hamilton_polytope.hpp"
+#include "flight/fdi/design/cayley_hamilton_polytope.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "flight/fdi/delay_discretization.hpp"
-#include "flight/fdi/fdi_models.hpp"
-#include "flight/fdi/polytope.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
+#include "flight/fdi/design/polytope.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

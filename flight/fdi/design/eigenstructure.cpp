@@ -1,4 +1,4 @@
-#include "flight/fdi/eigenstructure.hpp"
+#include "flight/fdi/design/eigenstructure.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/QR>

@@ -1,4 +1,4 @@
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "msr_test_setup.hpp"
+#include "../msr_test_setup.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "flight/fdi/design_figures.hpp"
-#include "flight/fdi/unknown_input.hpp"
-#include "flight/fdi/weighting.hpp"
+#include "flight/fdi/design/design_figures.hpp"
+#include "flight/fdi/design/unknown_input.hpp"
+#include "flight/fdi/design/weighting.hpp"
 #include "model/scenario.hpp"
 #include "flight/fdi/watched_set.hpp"
 

@@ -1,4 +1,4 @@
-#include "flight/fdi/eigenstructure.hpp"
+#include "flight/fdi/design/eigenstructure.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "flight/fdi/delay_discretization.hpp"
-#include "flight/fdi/fdi_models.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

@@ -1,4 +1,4 @@
-#include "flight/fdi/taylor_polytope.hpp"
+#include "flight/fdi/design/taylor_polytope.hpp"
 
 #include <Eigen/SVD>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "flight/fdi/residual_design_json.hpp"
+#include "flight/fdi/design/residual_design_json.hpp"
 
 #include <gtest/gtest.h>
 
-#include "msr_test_setup.hpp"
+#include "../msr_test_setup.hpp"
 
 namespace chaser::flight::fdi {
 namespace {

@@ -1,10 +1,10 @@
-#include "flight/fdi/design_inputs.hpp"
+#include "flight/fdi/design/design_inputs.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "msr_test_setup.hpp"
+#include "../msr_test_setup.hpp"
 
 namespace chaser::flight::fdi {
 namespace {

@@ -1,8 +1,8 @@
-#include "flight/fdi/design_inputs.hpp"
+#include "flight/fdi/design/design_inputs.hpp"
 
 #include <utility>
 
-#include "flight/fdi/fdi_models.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
 
 namespace chaser::flight::fdi {
 

@@ -1,12 +1,12 @@
-#include "flight/fdi/taylor_polytope.hpp"
+#include "flight/fdi/design/taylor_polytope.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flight/fdi/delay_discretization.hpp"
-#include "flight/fdi/fdi_models.hpp"
-#include "flight/fdi/polytope.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
+#include "flight/fdi/design/polytope.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

@@ -1,4 +1,4 @@
-#include "flight/fdi/fdi_models.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
 
 #include "core/linear_models.hpp"
 

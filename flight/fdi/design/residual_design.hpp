@@ -12,12 +12,12 @@
 // r(k) = Q (y(k) - C x_hat(k)) (eq. 30).
 #include <Eigen/Core>
 
-#include "flight/fdi/cayley_hamilton_polytope.hpp"
-#include "flight/fdi/design_figures.hpp"
-#include "flight/fdi/design_inputs.hpp"
-#include "flight/fdi/eigenstructure.hpp"
-#include "flight/fdi/taylor_polytope.hpp"
-#include "flight/fdi/unknown_input.hpp"
+#include "flight/fdi/design/cayley_hamilton_polytope.hpp"
+#include "flight/fdi/design/design_figures.hpp"
+#include "flight/fdi/design/design_inputs.hpp"
+#include "flight/fdi/design/eigenstructure.hpp"
+#include "flight/fdi/design/taylor_polytope.hpp"
+#include "flight/fdi/design/unknown_input.hpp"
 
 namespace chaser::flight::fdi {
 

@@ -1,4 +1,4 @@
-#include "flight/fdi/unknown_input.hpp"
+#include "flight/fdi/design/unknown_input.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <Eigen/SVD>
 #include <stdexcept>
 
-#include "flight/fdi/cayley_hamilton_polytope.hpp"
-#include "flight/fdi/fdi_models.hpp"
-#include "flight/fdi/taylor_polytope.hpp"
+#include "flight/fdi/design/cayley_hamilton_polytope.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
+#include "flight/fdi/design/taylor_polytope.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

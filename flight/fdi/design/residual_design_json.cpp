@@ -1,4 +1,4 @@
-#include "flight/fdi/residual_design_json.hpp"
+#include "flight/fdi/design/residual_design_json.hpp"
 
 namespace chaser::flight::fdi {
 

@@ -1,10 +1,10 @@
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "flight/fdi/delay_discretization.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
 
 namespace chaser::flight::fdi {
 

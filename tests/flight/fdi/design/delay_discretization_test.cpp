@@ -1,10 +1,10 @@
-#include "flight/fdi/delay_discretization.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flight/fdi/fdi_models.hpp"
+#include "flight/fdi/design/fdi_models.hpp"
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {

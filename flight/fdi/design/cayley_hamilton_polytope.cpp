@@ -1,11 +1,11 @@
-#include "flight/fdi/cayley_hamilton_polytope.hpp"
+#include "flight/fdi/design/cayley_hamilton_polytope.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "flight/fdi/delay_discretization.hpp"
+#include "flight/fdi/design/delay_discretization.hpp"
 
 namespace chaser::flight::fdi {
 

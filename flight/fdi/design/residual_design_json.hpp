@@ -4,7 +4,7 @@
 // Matrices are arrays of rows; complex numbers are [re, im].
 #include <nlohmann/json.hpp>
 
-#include "flight/fdi/residual_design.hpp"
+#include "flight/fdi/design/residual_design.hpp"
 
 namespace chaser::flight::fdi {
 
