@@ -22,7 +22,7 @@ namespace chaser::flight {
 struct FdirParams;
 struct FdirInput;
 
-inline constexpr int kMaxDiagnosisSchemes = 6;
+inline constexpr int kMaxDiagnosisSchemes = 5;  // the three built in and two more
 inline constexpr int kPositionScheme = 0;
 inline constexpr int kAttitudeScheme = 1;
 inline constexpr int kDeficitScheme = 2;

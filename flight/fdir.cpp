@@ -235,6 +235,7 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.attitude_enabled = s.fdi.attitude.enabled;
   p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
   p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
+  p.schemes = static_cast<int>(diagnosis_schemes().size());
   if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection) return p;
   // Designed once, for the starting set. The two designs are independent pure functions of the
   // scenario: the attitude one runs on a second thread while this one designs the position scheme
@@ -299,10 +300,9 @@ fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& stat
   return lanes;
 }
 
-FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
-                     const FdirInput& in) {
-  FdirOutput out;
-  if (p.watched.empty() || state.watched < 0) return out;  // no FDI, or no parameters for this set
+void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas, const FdirInput& in,
+               FdirOutput& out) {
+  if (p.watched.empty() || state.watched < 0) return;  // no FDI, or no parameters for this set
   const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
   if (!state.armed && in.t_s >= state.rearm_s) start_watch(state, in.period, in.t_s);
   const Vec6& wrench = in.commanded_wrench;
@@ -342,8 +342,8 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
     if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, attitude);
     if (attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }
-  step_registered_schemes(p, state, meas, in, out);
-  if (!state.armed) return out;
+  if (p.schemes > kDeficitScheme + 1) step_registered_schemes(p, state, meas, in, out);
+  if (!state.armed) return;
 
   // The fault-free noise estimate of the deficit bank must not learn from the fault.
   if (state.position.alarm || state.attitude.alarm || state.detector.alarm) state.deficit_bank.frozen = true;
@@ -351,15 +351,13 @@ FdirOutput step_fdir(const FdirParams& p, FdirState& state, const model::SensorM
   // The first confirmation by any scheme, in slot order, is the watch's confirmed thruster.
   if (state.confirmed_thruster == model::kNoThruster) {
     int lane = -1;
-    const int schemes = static_cast<int>(diagnosis_schemes().size());
-    for (int i = 0; i < schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(i)].confirmed;
+    for (int i = 0; i < p.schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(i)].confirmed;
     if (lane >= 0) {
       state.confirmed_thruster = w.set.index[static_cast<std::size_t>(lane)];
       state.confirmed_s = in.t_s;
       out.confirmed_now = state.confirmed_thruster;
     }
   }
-  return out;
 }
 
 FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {

@@ -54,6 +54,7 @@ struct FdirParams {
   std::vector<FdiWatchedParams> watched;
   double period_s = 0.1;                 // [s] T
   double rearm_after_recovery_s = 10.0;  // [s] from a recovery to watching the new set
+  int schemes = 3;  // rows of diagnosis_schemes() when made: the period reads this, not the table
 };
 
 enum class FdiModel { kPosition, kAttitude };
@@ -142,8 +143,10 @@ struct FdirInput {
   Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
 };
 
-FdirOutput step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
-                     const FdirInput& in);
+// Writes the period's output into `out`, value-initialised by the caller (FlightOutput's): its
+// scheme slots are a few hundred bytes, which a returned value would copy every period.
+void step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas, const FdirInput& in,
+               FdirOutput& out);
 
 // The figures of the current watch (not yet ended by a recovery).
 FdirEpisode current_episode(const FdirParams& params, const FdirState& state);

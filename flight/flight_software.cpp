@@ -120,7 +120,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
                           .ton = watched_on_times(params.fdir, state.fdir, out.command.ton),
                           .commanded_wrench = managed.commanded_wrench};
-  out.fdir = step_fdir(params.fdir, state.fdir, meas, fdir_in);
+  step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
     if (const auto next = model::recover(params.management.thrusters, params.recovery, state.thrusters,
                                          out.fdir.confirmed_now)) {

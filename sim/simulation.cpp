@@ -172,7 +172,7 @@ void Simulation::tally(const flight::FlightOutput& out, double t_s) {
   result_.saturated_periods += largest >= 1.0;
   if (options_.record_glr_per_second) {
     auto& second = result_.glr_max_per_s[static_cast<std::size_t>(t_s)];
-    for (std::size_t i = 0; i < flight::diagnosis_schemes().size(); ++i)
+    for (std::size_t i = 0; i < second.size(); ++i)  // every slot: an unused one's statistic is 0
       second[i] = std::max(second[i], static_cast<float>(out.fdir.schemes[i].glr.value()));
   }
 }

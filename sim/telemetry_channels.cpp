@@ -214,14 +214,24 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
   put3(f.commanded_wrench.tail<3>());
   for (int i = 0; i < thrusters; ++i) *row++ = f.command.ton[static_cast<std::size_t>(i)];
   for (int i = 0; i < thrusters; ++i) *row++ = r.plant->last_profile.ton_realised[static_cast<std::size_t>(i)];
-  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
-  for (std::size_t s = 0; s < schemes.size(); ++s) {
-    const flight::fdi::FdiSchemeOutput& o = scheme(r, static_cast<int>(s));
-    for (int i = 0; i < schemes[s].residual_channels; ++i) *row++ = o.residual[i];
+  // The three built in with their residuals' fixed sizes (3, 3, 0: the table's, which the channel
+  // table reads; the two are tested equal), then any registered scheme.
+  const auto put_scheme = [&](const flight::fdi::FdiSchemeOutput& o) {
     *row++ = o.glr.value();
     *row++ = o.alarm ? 1.0 : 0.0;
     *row++ = thruster_number(r, o.candidate);
     *row++ = thruster_number(r, o.confirmed);
+  };
+  put3(scheme(r, flight::kPositionScheme).residual);
+  put_scheme(scheme(r, flight::kPositionScheme));
+  put3(scheme(r, flight::kAttitudeScheme).residual);
+  put_scheme(scheme(r, flight::kAttitudeScheme));
+  put_scheme(scheme(r, flight::kDeficitScheme));
+  const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
+  for (std::size_t s = flight::kDeficitScheme + 1; s < schemes.size(); ++s) {
+    const flight::fdi::FdiSchemeOutput& o = scheme(r, static_cast<int>(s));
+    for (int i = 0; i < schemes[s].residual_channels; ++i) *row++ = o.residual[i];
+    put_scheme(o);
   }
   *row++ = f.fdir.over_consumption ? 1.0 : 0.0;
   *row++ = static_cast<double>(r.flight_state->thrusters.active);
