@@ -7,6 +7,7 @@
 
 #include "core/constants.hpp"
 #include "plant/plant.hpp"
+#include "tests/plant/earth_orbit_scenario.hpp"
 
 namespace chaser::plant {
 namespace {
@@ -14,13 +15,7 @@ namespace {
 // A chaser 100 m from a target tumbling at 2.5 deg/s about a skew axis, on a 765 km orbit: with
 // orbit.earth the perturbed Earth-orbit plant, without it the circle.
 model::Scenario earth_scenario() {
-  model::Scenario s;
-  s.orbit.mu_m3ps2 = 3.986004418e14;
-  s.orbit.body_radius_m = 6378137.0;
-  s.orbit.altitude_m = 765e3;
-  s.orbit.earth.emplace();
-  s.orbit.earth->inclination_rad = 98.4 * kDegToRad;
-  s.orbit.earth->argument_of_latitude_rad = 0.5;
+  model::Scenario s = testing::leo_earth_orbit_scenario();
   s.target.body.emplace();
   s.target.body->spin_case = model::SpinCase::given;
   s.target.q_inertial_from_target = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 3.0).normalized()));

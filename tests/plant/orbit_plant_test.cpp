@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "plant/plant.hpp"
+#include "tests/plant/earth_orbit_scenario.hpp"
 
 namespace chaser::plant {
 namespace {
@@ -49,13 +50,7 @@ TEST(OrbitPlant, SpinCasesPutTheAxisWhereThePaperSays) {
 // The Earth-orbit plant starts where the scenario says: the target on its circular orbit, the
 // chaser at the given LVLH position and rotating-frame velocity (read back through the ECI state).
 TEST(OrbitPlant, InitialStateReadsBackInLvlh) {
-  model::Scenario s;
-  s.orbit.mu_m3ps2 = 3.986004418e14;
-  s.orbit.body_radius_m = 6378137.0;
-  s.orbit.altitude_m = 765e3;
-  s.orbit.earth.emplace();
-  s.orbit.earth->inclination_rad = 98.4 * kDegToRad;
-  s.orbit.earth->argument_of_latitude_rad = 0.5;
+  model::Scenario s = testing::leo_earth_orbit_scenario();
   s.target = spinning(model::SpinCase::s1);
   RigidState initial;
   initial.mass_kg = 1600.0;
