@@ -2,20 +2,14 @@
 
 #include <algorithm>
 
+#include "core/plain_name.hpp"
+
 namespace chaser::sim {
 
 namespace {
 
-// A name that is safe as a key, a file name or a telemetry column: letters, digits, '_', '-', '.'.
-bool is_plain_name(std::string_view name) {
-  if (name.empty() || name == "." || name == "..") return false;
-  return std::all_of(name.begin(), name.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
-           c == '.';
-  });
-}
-
-constexpr const char* kPlainNameRule = " is not a plain name (letters, digits, '_', '-', '.'; not '.' or '..')";
+// A phase, flag or event name becomes a key and a telemetry label (core/plain_name.hpp).
+const std::string kNotPlain = " is not a plain name (" + std::string(kPlainNameRule) + ")";
 
 std::string range_text(std::size_t count) {
   return count == 0 ? std::string("none defined") : "0.." + std::to_string(count - 1);
@@ -28,7 +22,7 @@ void check_names(const std::vector<std::string>& names, const std::string& field
   for (std::size_t i = 0; i < names.size(); ++i) {
     const std::string at = field + "[" + std::to_string(i) + "]";
     if (!is_plain_name(names[i]))
-      problems.push_back(at + ": '" + names[i] + "'" + kPlainNameRule);
+      problems.push_back(at + ": '" + names[i] + "'" + kNotPlain);
     for (std::size_t j = 0; j < i; ++j)
       if (names[j] == names[i])
         problems.push_back(at + ": '" + names[i] + "' repeats " + field + "[" + std::to_string(j) + "]");
@@ -62,7 +56,7 @@ void check_phase(const PhaseSequenceParams& params, std::size_t p, std::vector<s
   const PhaseSpec& phase = params.phases[p];
   const std::string at = "phases[" + std::to_string(p) + "] (" + phase.name + ")";
   if (!is_plain_name(phase.name))
-    problems.push_back(at + ".name: '" + phase.name + "'" + kPlainNameRule);
+    problems.push_back(at + ".name: '" + phase.name + "'" + kNotPlain);
   for (std::size_t q = 0; q < p; ++q)
     if (params.phases[q].name == phase.name)
       problems.push_back(at + ".name: repeats phases[" + std::to_string(q) + "]");
