@@ -26,10 +26,13 @@ struct CircularOrbitParams {
 
 CircularOrbitParams make_circular_orbit_params(const model::Scenario& scenario);
 
-// Each constant piece of the period's thrust profile, from one edge to the next.
-void propagate_period(const CircularOrbitParams& params, CircularOrbitState& state, RigidState& chaser,
-                      const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs t_k,
-                      TimeNs period_ns);
+// The period at t_k begins: nothing to prepare on the circle.
+inline void begin_period(const CircularOrbitParams&, CircularOrbitState&, const RigidState&, TimeNs, TimeNs) {}
+
+// Each constant piece of the period's thrust profile within [from_ns, to_ns], from one edge (or
+// stop) to the next.
+void advance(const CircularOrbitParams& params, CircularOrbitState& state, RigidState& chaser,
+             const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns);
 
 TargetRotation target_rotation(const CircularOrbitParams& params, const CircularOrbitState& state, double t_s);
 

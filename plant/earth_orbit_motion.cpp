@@ -1,5 +1,7 @@
 #include "plant/earth_orbit_motion.hpp"
 
+#include <algorithm>
+
 namespace chaser::plant {
 
 namespace {
@@ -41,16 +43,21 @@ EarthOrbitState start_earth_orbit(const model::Scenario& scenario, const EarthOr
   return state;
 }
 
-void propagate_period(const EarthOrbitParams& params, EarthOrbitState& state, RigidState& chaser,
-                      const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs t_k,
-                      TimeNs period_ns) {
-  const PeriodEnvironment env = orbit_period_environment(params.earth, state, chaser, t_k, period_ns);
+void begin_period(const EarthOrbitParams& params, EarthOrbitState& state, const RigidState& chaser, TimeNs t_k,
+                  TimeNs period_ns) {
+  state.env = orbit_period_environment(params.earth, state, chaser, t_k, period_ns);
+}
+
+void advance(const EarthOrbitParams& params, EarthOrbitState& state, RigidState& chaser, const ThrustProfile& profile,
+             const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns) {
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
-    propagate_orbit_piece(params.earth.dynamics, env, state.orbit, chaser, to_seconds(piece.t_end_ns - piece.t_begin_ns),
+    const TimeNs begin_ns = std::max(piece.t_begin_ns, from_ns), end_ns = std::min(piece.t_end_ns, to_ns);
+    if (end_ns <= begin_ns) continue;
+    propagate_orbit_piece(params.earth.dynamics, state.env, state.orbit, chaser, to_seconds(end_ns - begin_ns),
                           piece_input(piece, disturbance));
   }
-  update_lvlh_view(params.earth.dynamics, env, state.orbit, chaser);
+  update_lvlh_view(params.earth.dynamics, state.env, state.orbit, chaser);
 }
 
 TargetRotation target_rotation(const EarthOrbitParams&, const EarthOrbitState& state, double) {

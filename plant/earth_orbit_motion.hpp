@@ -19,6 +19,7 @@ struct EarthOrbitState {
   OrbitState orbit;                         // both bodies in ECI, the target's attitude, the slosh
   EphemerisSamples ephemeris;               // the Sun's and the Moon's last samples
   SlowEnvironmentSample slow_environment;   // the slow terms of the current window
+  PeriodEnvironment env;                    // the current period's (begin_period)
 };
 
 struct EarthOrbitParams {
@@ -31,10 +32,13 @@ struct EarthOrbitParams {
 EarthOrbitParams make_earth_orbit_params(const model::Scenario& scenario);
 EarthOrbitState start_earth_orbit(const model::Scenario& scenario, const EarthOrbitParams& params, RigidState& chaser);
 
-// The environment of the period (held per window), each piece propagated, then the LVLH view.
-void propagate_period(const EarthOrbitParams& params, EarthOrbitState& state, RigidState& chaser,
-                      const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs t_k,
-                      TimeNs period_ns);
+// The environment of the period at t_k (its slow terms held per window, plant/orbit_propagator.hpp).
+void begin_period(const EarthOrbitParams& params, EarthOrbitState& state, const RigidState& chaser, TimeNs t_k,
+                  TimeNs period_ns);
+
+// Each piece of the period's profile within [from_ns, to_ns], then the LVLH view at to_ns.
+void advance(const EarthOrbitParams& params, EarthOrbitState& state, RigidState& chaser, const ThrustProfile& profile,
+             const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns);
 
 // The target's integrated attitude and rate now (t_s is the time the state is at).
 TargetRotation target_rotation(const EarthOrbitParams& params, const EarthOrbitState& state, double t_s);

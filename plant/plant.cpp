@@ -84,7 +84,11 @@ Vec3 draw_vector(RandomStream& stream, double sigma) {
 
 }  // namespace
 
-void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
+namespace {
+
+// The period's start that does not depend on the motion model.
+void begin_hardware_period(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command,
+                           TimeNs t_k) {
   state.thrusters.latch_closed_groups = command.latch_closed_groups;  // the latches act from this period
   // tau(k): one delay for all thrusters, redrawn each period (Fonod 2015, eq. 1 and below).
   state.last_delay_ns = static_cast<TimeNs>(state.streams.delay.uniform() * static_cast<double>(params.delay_max_ns));
@@ -92,16 +96,44 @@ void step_plant(const PlantParams& params, PlantState& state, const model::Thrus
 
   // Disturbances: bias plus white noise held over the period.
   const auto& env = params.environment;
-  PeriodDisturbance disturbance;
-  disturbance.force_lvlh_N = env.force_bias_lvlh_N + draw_vector(state.streams.force_noise, env.force_noise_sigma_N);
-  disturbance.torque_body_Nm = env.torque_bias_body_Nm + draw_vector(state.streams.torque_noise, env.torque_noise_sigma_Nm);
+  state.disturbance.force_lvlh_N = env.force_bias_lvlh_N + draw_vector(state.streams.force_noise, env.force_noise_sigma_N);
+  state.disturbance.torque_body_Nm =
+      env.torque_bias_body_Nm + draw_vector(state.streams.torque_noise, env.torque_noise_sigma_Nm);
 
   state.propellant_used_kg += state.last_profile.propellant_kg;
+}
+
+}  // namespace
+
+void begin_plant_period(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command,
+                        TimeNs t_k) {
+  begin_hardware_period(params, state, command, t_k);
   std::visit(
       [&](const auto& p) {
         using State = typename std::decay_t<decltype(p)>::State;
-        propagate_period(p, std::get<State>(state.motion), state.chaser, state.last_profile, disturbance, t_k,
-                         params.period_ns);
+        begin_period(p, std::get<State>(state.motion), state.chaser, t_k, params.period_ns);
+      },
+      params.motion);
+}
+
+void advance_plant(const PlantParams& params, PlantState& state, TimeNs from_ns, TimeNs to_ns) {
+  std::visit(
+      [&](const auto& p) {
+        using State = typename std::decay_t<decltype(p)>::State;
+        advance(p, std::get<State>(state.motion), state.chaser, state.last_profile, state.disturbance, from_ns, to_ns);
+      },
+      params.motion);
+}
+
+// Both halves in one visit of the motion model: the period of every shipped scenario.
+void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k) {
+  begin_hardware_period(params, state, command, t_k);
+  std::visit(
+      [&](const auto& p) {
+        using State = typename std::decay_t<decltype(p)>::State;
+        State& motion = std::get<State>(state.motion);
+        begin_period(p, motion, state.chaser, t_k, params.period_ns);
+        advance(p, motion, state.chaser, state.last_profile, state.disturbance, t_k, t_k + params.period_ns);
       },
       params.motion);
 }

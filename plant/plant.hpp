@@ -8,7 +8,7 @@
 // orbit; the capture adds a multibody hub, arm and target). Everything else (thrusters and their
 // faults, sensors, disturbances, propellant) is the plant's own and does not change with it. A
 // motion model is one file that defines XParams (with `using State = XState`) and XState, and
-// overloads propagate_period, target_rotation, q_inertial_from_lvlh and slosh_states; adding one
+// overloads begin_period, advance, target_rotation, q_inertial_from_lvlh and slosh_states; adding one
 // is one alternative in each variant below and one branch in make_plant (docs/architecture.md,
 // "How to add a plant"). Outside plant/ the chaser's state is read with chaser_state().
 #include <span>
@@ -58,7 +58,8 @@ struct PlantState {
   std::vector<model::FaultParams> faults;
   SensorState sensors;
   PlantStreams streams;
-  ThrustProfile last_profile;     // the thrust profile of the last period, for telemetry
+  ThrustProfile last_profile;     // the thrust profile of the period begun (telemetry: the last one)
+  PeriodDisturbance disturbance;  // the period's disturbances, drawn when it begins
   TimeNs last_delay_ns = 0;       // [ns] tau(k) of the last period
   double propellant_used_kg = 0;  // [kg]
 };
@@ -96,7 +97,16 @@ void inject_fault(Plant& plant, const model::FaultParams& fault);
 
 model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t);
 
-// Propagates the truth over [t_k, t_k + T] under the command: thruster pieces, disturbances.
+// The period at t_k begins under the command: the latches act, tau(k) is drawn, the thrust profile
+// of [t_k, t_k + T] is scheduled and the disturbances drawn. advance_plant then carries the truth
+// through the period, in one go or stopping where a faster block needs the truth (sim/).
+void begin_plant_period(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command,
+                        TimeNs t_k);
+// From from_ns to to_ns within the period begun (t_k <= from_ns < to_ns <= t_k + T): the profile's
+// pieces clipped to the interval. Stopping inside a piece splits its RK4 steps, nothing else.
+void advance_plant(const PlantParams& params, PlantState& state, TimeNs from_ns, TimeNs to_ns);
+
+// Propagates the truth over [t_k, t_k + T] under the command: both of the above.
 void step_plant(const PlantParams& params, PlantState& state, const model::ThrusterCommand& command, TimeNs t_k);
 
 }  // namespace chaser::plant

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "core/rotation.hpp"
 #include "plant/target.hpp"
@@ -160,7 +163,42 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
 bool Simulation::judge(const MonitorSample& sample) { return monitor_period(scenario_, sample, result_.figures); }
 
 void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
-  plant::step_plant(plant_.params, plant_.state, command, t_k);
+  if (blocks_.empty()) {
+    plant::step_plant(plant_.params, plant_.state, command, t_k);
+    return;
+  }
+  // Block 0 (the flight software) ran at t_k; the others run at their activations in [t_k, t_k + T),
+  // the plant carried to each.
+  plant::begin_plant_period(plant_.params, plant_.state, command, t_k);
+  const TimeNs t_end = t_k + period_ns_;
+  TimeNs t = t_k;
+  std::array<int, kMaxScheduledBlocks> due{};
+  for (TimeNs next = next_event_ns(schedule_, schedule_state_); next < t_end;
+       next = next_event_ns(schedule_, schedule_state_)) {
+    if (next > t) plant::advance_plant(plant_.params, plant_.state, t, next), t = next;
+    const int n = due_blocks(schedule_, schedule_state_, next, due);
+    for (int i = 0; i < n; ++i)
+      if (due[static_cast<std::size_t>(i)] > 0) blocks_[static_cast<std::size_t>(due[static_cast<std::size_t>(i)] - 1)](next, plant_);
+  }
+  plant::advance_plant(plant_.params, plant_.state, t, t_end);
+}
+
+void Simulation::add_block(const std::string& name, const Rate& rate, Block block) {
+  if (k_ > 0 || begun_) throw std::invalid_argument("add_block: before the first period");
+  if (schedule_.count >= kMaxScheduledBlocks)
+    throw std::invalid_argument(fmt::format("add_block: at most {} blocks", kMaxScheduledBlocks - 1));
+  const std::vector<std::string> problems = validate(rate);
+  if (!problems.empty()) throw std::invalid_argument(fmt::format("add_block {}: rate.{}", name, problems.front()));
+  if (schedule_.count == 0) {  // the flight software's period, first at every time it shares
+    schedule_.rates[0] = rate_of_period(period_ns_);
+    schedule_.names[0] = "flight_software";
+    schedule_.count = 1;
+  }
+  block_names_.push_back(name);
+  blocks_.push_back(std::move(block));
+  schedule_.rates[static_cast<std::size_t>(schedule_.count)] = rate;
+  ++schedule_.count;
+  schedule_state_ = start_schedule(schedule_);
 }
 
 void Simulation::tally(const flight::FlightOutput& out, double t_s) {

@@ -6,6 +6,8 @@
 // propagation under the command, telemetry). step() is the three with Chaser's flight software.
 #include <array>
 #include <chrono>
+#include <functional>
+#include <string>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -16,6 +18,7 @@
 #include "model/target_orbit.hpp"
 #include "plant/plant.hpp"
 #include "sim/phase_sequence.hpp"
+#include "sim/rate_schedule.hpp"
 #include "sim/run.hpp"
 #include "sim/telemetry.hpp"
 #include "sim/telemetry_channels.hpp"
@@ -47,6 +50,14 @@ class Simulation {
   const model::SensorMeasurements& begin_period();
   void end_period(const flight::FlightOutput& out);
 
+  // A block at its own rate beside the flight software's period (a fast inner loop, a sensor, a
+  // probe): called at each activation, in the order blocks were added and after the flight
+  // software at a time they share, with the time and the plant at that time (the truth is carried
+  // there: the plant stops inside the period). Before the first period; throws std::invalid_argument
+  // for a rate sim::validate refuses or more than kMaxScheduledBlocks - 1 blocks.
+  using Block = std::function<void(TimeNs t, const plant::Plant& plant)>;
+  void add_block(const std::string& name, const Rate& rate, Block block);
+
   // A fault added to the plant's from now on (its onset is not before t_s(), checked by the caller).
   void add_fault(const model::FaultParams& fault) { plant::inject_fault(plant_, fault); }
 
@@ -74,6 +85,11 @@ class Simulation {
   const TelemetryShape shape_;
   const PhaseSequenceParams phase_params_;
   PhaseSequenceState phase_state_;
+  // The rates: block 0 the flight software's period, then the blocks added (add_block).
+  ScheduleParams schedule_;
+  ScheduleState schedule_state_;
+  std::vector<std::string> block_names_;
+  std::vector<Block> blocks_;
 
   plant::Plant plant_;
   flight::FlightState flight_state_;
