@@ -122,7 +122,7 @@ void BM_AllocateWarmSequence(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// The norms of flight/norm_allocation.hpp on the 24-thruster set (issue 18): range(0) = p (1, 2,
+// The norms of flight/norm_allocation.hpp on the 24-thruster set: range(0) = p (1, 2,
 // or 0 for infinity), range(1) = demand kind (0 small and attainable, 1 large and unattainable);
 // a fresh warm start per call, so that p = 1 is the cold solve and the rest is the norm's own cost.
 void BM_AllocateNorm24(benchmark::State& state) {

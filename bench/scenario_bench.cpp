@@ -61,7 +61,7 @@ BENCHMARK_CAPTURE(BM_EndToEnd, nominal_fdi_off, false, Fdi::kOff)->Unit(benchmar
 BENCHMARK_CAPTURE(BM_EndToEnd, stuck_open_T8, true, Fdi::kOn)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The COMRADE scenarios' whole runs as shipped (ENVISAT 1,200 s, ASSIST 1,600 s; every environment
-// model on, 24 thrusters, FDI off as the scenarios have it), no telemetry. Issue 17's target:
+// model on, 24 thrusters, FDI off as the scenarios have it), no telemetry. The target:
 // 30,000 simulated s per CPU s.
 void BM_EndToEndComrade(benchmark::State& state, const char* file) {
   const model::Scenario scenario = shipped_scenario(file);
@@ -189,7 +189,7 @@ BENCHMARK(BM_ControlPeriodComrade);
 // 2,000 periods in turn (the order rotating), each timed, so that what drifts on a shared machine
 // (clock, neighbours: BM_ControlPeriod's repetitions spread by +-50 ns) falls on all three alike.
 // Counters: period_off_ns, and share_published and share_on = (variant - off) / off, the FDI's
-// added cost as a fraction of the period without it (issue 3: at most 0.10).
+// added cost as a fraction of the period without it (the budget: at most 0.10).
 void BM_FdiShareOfControlPeriod(benchmark::State& state) {
   std::array<Flier, 3> fliers{Flier(Fdi::kOff), Flier(Fdi::kPublished), Flier(Fdi::kOn)};
   std::array<double, 3> seconds{};
@@ -245,7 +245,7 @@ BENCHMARK_CAPTURE(BM_FlightPeriod, fdi_off, Fdi::kOff);
 // `deficit` the deficit bank and detector), replayed on 2,000 periods (200 s) of the closed loop
 // recorded from 500 s into the approach, fault-free, so every period is the usual one: no alarm,
 // no isolation. Its time against BM_ControlPeriod/fdi_off (which flies the same 200 s) is the FDI's
-// share of a control period (issue 3: at most 10 %). Every 2,000 periods the state goes back to the
+// share of a control period (the budget: at most 10 %). Every 2,000 periods the state goes back to the
 // recorded start, untimed.
 void BM_FdirPeriod(benchmark::State& state, Fdi fdi) {
   LoopFixture f(fdi);

@@ -1,7 +1,7 @@
 #pragma once
 // Robust stability of one designed axis by the structured singular value: the gain and delay of
 // its robustness box (control/robustness.hpp) pulled out as an uncertainty block Delta, and
-// AB13MD's upper bound on mu of the interconnection M(j w) over a frequency grid (issue 18).
+// AB13MD's upper bound on mu of the interconnection M(j w) over a frequency grid.
 //
 // The LFT (S&P, "Multivariable Feedback Control", 2nd ed., sec. 8.6 and 8.8; multiplicative input
 // uncertainty). The true plant is G(s) = k e^{-s tau} / s^2 (the modes are left to the grid check,

@@ -1,7 +1,7 @@
 #pragma once
 // An upper bound on the structured singular value mu of a complex matrix, from SLICOT's AB13MD
 // (Fan, Tits & Doyle, "Robustness in the presence of mixed parametric uncertainty and unmodeled
-// dynamics", IEEE TAC 36(1), 1991), and its use on a designed loop (issue 18).
+// dynamics", IEEE TAC 36(1), 1991), and its use on a designed loop.
 //
 //   mu_Delta(M) = 1 / min { sigma_max(Delta) : Delta in the structure, det(I - M Delta) = 0 }
 //
@@ -13,7 +13,7 @@
 // sum |u_i v_i|. With real blocks AB13MD adds the G scaling of Fan, Tits & Doyle: the bound is then
 // at most the all-complex one.
 //
-// Known quirk (SLICOT 5.0, also reported upstream, SLICOT-Reference issue 4): for a 1 x 1 M and a
+// Known quirk (SLICOT 5.0, also reported upstream to SLICOT-Reference as its #4): for a 1 x 1 M and a
 // single real block AB13MD returns 0 even when M is real, where mu = |M|. mu_upper_bound computes
 // that case itself (|M| if Im M = 0, else 0: no real delta makes 1 - M delta vanish).
 // Design-time code: allocates.

@@ -1,6 +1,6 @@
 #pragma once
 // Robust stability of one designed axis over a box of plant uncertainty, checked point by point on
-// a dense grid (issue 18; COMRADE 2018, sec. 5-6 name the uncertainties).
+// a dense grid (COMRADE 2018, sec. 5-6 name the uncertainties).
 //
 // The true plant of an axis, as the designed controller meets it:
 //

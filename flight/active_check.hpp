@@ -1,5 +1,5 @@
 #pragma once
-// Active checks of dormant thrusters (issue 20; docs/fdi.md, "Active checks of dormant thrusters").
+// Active checks of dormant thrusters (docs/fdi.md, "Active checks of dormant thrusters").
 //
 // A thruster the manoeuvre does not command cannot be diagnosed from its effects: a stuck-closed or
 // weakened thruster waits, unseen, until it is needed. The flight software therefore keeps, per

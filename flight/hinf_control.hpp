@@ -1,5 +1,5 @@
 #pragma once
-// The six H-infinity loops of control.hinf, flown (issue 18; COMRADE 2018, sec. 5): the
+// The six H-infinity loops of control.hinf, flown (COMRADE 2018, sec. 5): the
 // computed-torque precompensation, then per axis the loop designed on what remains
 // (control/six_axis_design.hpp), discretised by Tustin at the control period (control/tustin.hpp).
 //

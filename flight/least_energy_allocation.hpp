@@ -1,5 +1,5 @@
 #pragma once
-// The least-energy distribution of an attainable wrench over a thruster set (issue 18, the p = 2
+// The least-energy distribution of an attainable wrench over a thruster set (the p = 2
 // allocation of flight/norm_allocation.hpp):
 //
 //   min  1/2 ||ton||_2^2   s.t.   M ton = wrench,   0 <= ton <= 1.                    (Q)

@@ -1,5 +1,5 @@
 #pragma once
-// Thrust allocation with a choice of norm, over any thruster set (issue 18; COMRADE 2018, sec. 6.3,
+// Thrust allocation with a choice of norm, over any thruster set (COMRADE 2018, sec. 6.3,
 // names p = 1, 2 and infinity but prints no problem: this formulation is ours, docs/gnc.md).
 //
 // Lexicographically: first the wrench, then the on-times.

@@ -1,5 +1,5 @@
 #pragma once
-// COMRADE's synchronisation phase before the transfer (COMRADE 2018, sec. 2.1; issue 18): from the
+// COMRADE's synchronisation phase before the transfer (COMRADE 2018, sec. 2.1): from the
 // end of the V-bar line (radius R = guidance.capture_distance_m on the line's axis u0) the chaser
 //   1. flies around the sphere of radius R to the target's angular-momentum axis a (LVLH),
 //   2. approaches along that axis to the distance d (guidance.synchronised.approach.axis_distance_m),

@@ -1,5 +1,5 @@
 #pragma once
-// The synchronised reference (issue 18; COMRADE 2018's synchronisation phase): once the chaser's
+// The synchronised reference (COMRADE 2018's synchronisation phase): once the chaser's
 // rotation is synchronised with the tumbling target's, its reference is a point of the target's
 // frame, moved from where the synchronisation started to the capture point and then held there,
 // turning with the target:

@@ -1,5 +1,5 @@
 #pragma once
-// The flight software's estimate of a tumbling target's attitude and rate (issue 18: the
+// The flight software's estimate of a tumbling target's attitude and rate (the
 // synchronisation phase flies the target's motion as feed-forward, and the flight software does
 // not know the truth). A multiplicative extended Kalman filter (Markley & Crassidis, "Fundamentals
 // of Spacecraft Attitude Determination and Control", 2014, sec. 6.2) on

@@ -1,6 +1,6 @@
 #pragma once
-// A point fixed to, or moving in, the tumbling target's frame, as the LVLH frame sees it (issue 18:
-// in the synchronisation phase the chaser's reference is the capture point, which turns with the
+// A point fixed to, or moving in, the tumbling target's frame, as the LVLH frame sees it (in the
+// synchronisation phase the chaser's reference is the capture point, which turns with the
 // target, and the guidance needs its velocity and acceleration in LVLH for the feed-forward).
 //
 // With R = R_lvlh_from_target and the target frame's angular velocity relative to LVLH,

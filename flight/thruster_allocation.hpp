@@ -50,8 +50,8 @@ struct AllocationResult {
 // result is ton = 0 with converged = false (also for thrusters outside 1..kMaxThrusters).
 AllocationResult allocate_thrusters(const AllocationParams& params, const Vec6& demand_wrench);
 
-// (P) and (E) with floors on the on-times, floor_i <= ton_i <= 1: an active check's test pulse
-// (issue 20), which the other thrusters cancel whenever the demand stays attainable (M ton = w_d
+// (P) and (E) with floors on the on-times, floor_i <= ton_i <= 1: an active check's test pulse,
+// which the other thrusters cancel whenever the demand stays attainable (M ton = w_d
 // still holds; the check costs only propellant). Solved as the problem in t = ton - floor,
 // 0 <= t <= 1 - floor, with the demand w_d - M floor, by the same simplex, cold (the floors change
 // the problem, so no warm start). floor: 0 <= floor_i <= 1, zero from params.thrusters on;

@@ -1,4 +1,4 @@
-// The COMRADE platform's sections (issue 17): orbit.earth (a perturbed Earth orbit) and target.body
+// The COMRADE platform's sections: orbit.earth (a perturbed Earth orbit) and target.body
 // (a rigid target tumbling by Euler's equations). Both are optional: a scenario without them is a
 // circular-orbit run with a constant-rate target (Fonod 2015), and MSR files need no change.
 #include <cstdio>

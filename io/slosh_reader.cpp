@@ -1,4 +1,4 @@
-// chaser.slosh (issue 17): the chaser's propellant tanks whose first lateral slosh mode the
+// chaser.slosh: the chaser's propellant tanks whose first lateral slosh mode the
 // Earth-orbit plant models. Optional; the checks that need other keys (orbit.earth, the chaser's
 // mass and inertia, the liquid fitting its tank) are in scenario_validation.cpp.
 #include <fmt/format.h>

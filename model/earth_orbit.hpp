@@ -1,5 +1,5 @@
 #pragma once
-// A perturbed Earth orbit for the target and the chaser (issue 17, the COMRADE platform): the
+// A perturbed Earth orbit for the target and the chaser (the COMRADE platform): the
 // scenario's `orbit.earth` section. Absent, a run flies Fonod 2015's circular Keplerian orbit
 // (model/orbit.hpp); present, the plant propagates both bodies in an Earth-centred inertial frame
 // with the perturbations switched on here (plant/orbit_propagator.hpp, docs/dynamics.md). The

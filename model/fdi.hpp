@@ -50,7 +50,7 @@ inline constexpr int kMaxDeficitDetectorWindowPeriods = 256;
 // Chaser's deficit bank and detector watch any active set of 1..kMaxThrusters.
 inline constexpr int kFdiSchemeThrusters = 8;
 
-// Active checks of dormant thrusters (flight/active_check.hpp, issue 20): a thruster the approach
+// Active checks of dormant thrusters (flight/active_check.hpp): a thruster the approach
 // does not command cannot be diagnosed from its effects, so when one has not fired an informative
 // pulse for max_unverified_s, the allocation gives it a test pulse that the others cancel.
 struct ActiveCheckParams {

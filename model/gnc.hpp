@@ -20,7 +20,7 @@ struct NavigationParams {
   double target_torque_noise_Nm = 1.0;         // [N m / sqrt(s)]
 };
 
-// The synchronised final approach (issue 18, flight/sync_guidance.hpp): the chaser starts at a hold
+// The synchronised final approach (flight/sync_guidance.hpp): the chaser starts at a hold
 // point of the tumbling target's frame, its rotation synchronised with the target's, moves to the
 // capture point (target.body.capture_point_target_m) and holds there. Needs target.body and
 // sensors.target_pose (the reference follows the flight software's estimate of the target).
@@ -108,7 +108,7 @@ struct HinfDesignParams {
   std::optional<HinfRobustnessParams> robustness;       // absent: no robustness check
 };
 
-// The norm the thrust allocation minimises among the on-times that realise the wrench (issue 18;
+// The norm the thrust allocation minimises among the on-times that realise the wrench (
 // flight/norm_allocation.hpp): p = 1 least propellant (Fonod 2015's TMF), p = 2 least energy,
 // p = infinity least peak on-time (COMRADE 2018, sec. 6.3, names the three).
 enum class AllocationNorm : std::uint8_t { kOne, kTwo, kInfinity };

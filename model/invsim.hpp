@@ -66,7 +66,7 @@ enum class InvSimInverseModel { kNominal, kFaulted };
 // Noise of the measurement link (Zhou 2018, Fig. 3) under the paper reading: the sensor's range
 // and line-of-sight angles (eqs. 12-15) with white Gaussian errors drawn once per IS step. The
 // sequence depends on the seed only, so every fault mode of a study meets the same noise (one
-// recorded session, flown with each fault).
+// recorded approach, flown with each fault).
 struct InvSimMeasurementNoise {
   double range_sigma_m = 0.0;    // [m] 1-sigma error of the measured range
   double angle_sigma_rad = 0.0;  // [rad] 1-sigma error of the measured azimuth and elevation

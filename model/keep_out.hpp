@@ -1,5 +1,5 @@
 #pragma once
-// The target's keep-out volume (issue 18; COMRADE 2018, Table 4: at least 3 m from the target's
+// The target's keep-out volume (COMRADE 2018, Table 4: at least 3 m from the target's
 // surface while the rotations are not synchronised, 0.5 m during synchronisation and capture): a
 // union of boxes fixed in the target's axes, and the chaser as a sphere about its centre of mass.
 #include <vector>

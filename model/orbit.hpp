@@ -12,7 +12,7 @@ struct OrbitParams {
   double mu_m3ps2 = 4.282837e13;      // [m^3/s^2] gravitational parameter (Mars)
   double body_radius_m = 3.3895e6;    // [m] mean equatorial radius (Mars)
   double altitude_m = 500e3;          // [m] target orbit altitude
-  // A perturbed Earth orbit (issue 17): present, the plant propagates both bodies in ECI with
+  // A perturbed Earth orbit: present, the plant propagates both bodies in ECI with
   // these perturbations; absent, the circular orbit of eq. 8 above.
   std::optional<EarthOrbitParams> earth;
 

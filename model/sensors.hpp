@@ -31,7 +31,7 @@ struct GyroParams {  // chaser body rate omega_body
   double delay_s = 0.0;             // [s]
 };
 
-// A pose sensor on the target (issue 18): the target's attitude relative to the chaser's body, as a
+// A pose sensor on the target: the target's attitude relative to the chaser's body, as a
 // camera or LIDAR pose estimate gives it, taken every period_s and delivered latency_s later
 // (COMRADE 2018 gives 3 Hz for the reach phase; we use it from the synchronisation on).
 struct TargetPoseSensorParams {

@@ -8,7 +8,7 @@
 
 namespace chaser::model {
 
-// A propellant tank whose first lateral slosh mode the Earth-orbit plant models (issue 17;
+// A propellant tank whose first lateral slosh mode the Earth-orbit plant models (
 // plant/slosh.hpp): an upright flat-bottomed cylinder fixed in the chaser, the liquid's fill height
 // from its mass and density. Its liquid is part of the chaser's mass_kg, com_body_m and inertia_kgm2
 // (the whole spacecraft at rest); the plant takes the slosh mass back out of them.
@@ -48,7 +48,7 @@ struct SpacecraftParams {
 // ESA H-bar is -z). Given: the scenario's q_inertial_from_target and omega_inertial_radps.
 enum class SpinCase { given, s1, s2, s3 };
 
-// The target as a rigid body tumbling by Euler's equations (issue 17), instead of a constant rate.
+// The target as a rigid body tumbling by Euler's equations, instead of a constant rate.
 struct TargetBodyParams {
   double mass_kg = 7828.0;                   // [kg]
   Mat3 inertia_kgm2 = Mat3::Identity();      // [kg m^2] about its centre of mass, target axes

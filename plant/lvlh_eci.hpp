@@ -1,6 +1,6 @@
 #pragma once
 // The target's LVLH frame from its inertial state, and the chaser's relative state between ECI and
-// LVLH, for runs whose target flies a perturbed Earth orbit (issue 17).
+// LVLH, for runs whose target flies a perturbed Earth orbit.
 //
 // LVLH here is the MSR convention the whole core uses (docs/dynamics.md, "Frames"): centred on the
 // target, x radial out (zenith), z along the orbital angular momentum h = r x v, y = z x x (along

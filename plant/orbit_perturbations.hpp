@@ -1,6 +1,6 @@
 #pragma once
 // Translational accelerations of the target and of the chaser relative to it, in an Earth-centred
-// inertial frame, for the COMRADE platform (issue 17; models in plant/earth/, docs/dynamics.md):
+// inertial frame, for the COMRADE platform (models in plant/earth/, docs/dynamics.md):
 // central gravity and J2, drag, solar radiation pressure, the Sun's and the Moon's gravity.
 //
 // The chaser's state is integrated relative to the target's (dr = r_c - r_t, dv = v_c - v_t), not

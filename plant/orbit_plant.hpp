@@ -1,5 +1,5 @@
 #pragma once
-// The perturbed-Earth-orbit plant built from a scenario (issue 17): the propagator's parameters
+// The perturbed-Earth-orbit plant built from a scenario: the propagator's parameters
 // from orbit.earth, chaser and target.body, and the initial states, the target's spin cases
 // included (COMRADE 2018, sec. 7.1). plant.cpp uses it when the scenario has orbit.earth.
 #include "model/scenario.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Piecewise-exact propagation of a chaser and its target in a perturbed Earth orbit (issue 17, the
+// Piecewise-exact propagation of a chaser and its target in a perturbed Earth orbit (the
 // COMRADE platform), the counterpart of propagator.hpp's circular-orbit model. Same contract: the
 // thruster model cuts a control period into pieces of constant input, and propagate_orbit_piece
 // integrates one piece from edge to edge with classical RK4 in equal substeps.

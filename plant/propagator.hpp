@@ -27,7 +27,7 @@ inline constexpr double kDefaultMaxSubstepS = 0.1;  // [s]
 struct DynamicsParams {  // derived once per run from the scenario (make_dynamics_params)
   // The target's orbit: its radius a, mean motion n and mu for eq. 8 and the gravity gradient, and
   // the angle LVLH has turned since t = 0. Eq. 8 is the circular orbit's relative motion; a
-  // perturbed orbit (issue 17) brings its own relative dynamics.
+  // perturbed orbit brings its own relative dynamics.
   model::TargetOrbit orbit;
   Mat3 inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the CoM, body axes, constant
   Mat3 inertia_inv = Mat3::Identity();   // [1/(kg m^2)]

@@ -39,14 +39,14 @@ basin of J ~ 1.3 that a low angle sigma opens). Each
 evaluation runs `chaser fmea --nominal-only` on a copy of the scenario without its configurations
 and optimize sections (the nominal case over the scenario's noise draws) and reads its row.
 
---q-vx-max Q keeps q_vx on the grid's values <= Q (issue 21, target 6: with q_vx = 10 the start is
+--q-vx-max Q keeps q_vx on the grid's values <= Q (target 6: with q_vx = 10 the start is
 gentler and the paper's four lost Table 5 modes are flown; with q_vx <= 1 they are lost again).
 --write puts the result into the scenario's pulses.paper block; --check exits 1 when the
 scenario's block differs from what the procedure finds (the shipped values are reproducible).
 Prints each accepted step and the final nominal figures beside the paper's. --global N checks the
 procedure's result against N points drawn from the whole product of the grids and descents from
 the best five (an exploration: prints, writes nothing). --targets scores an
-existing fmea.csv (baseline layout) against issue 21's targets: the fault rows' predictions beside
+existing fmea.csv (baseline layout) against the Zhou 2018 targets (1)-(6): the fault rows' predictions beside
 Tables 4 and 5.
 """
 import argparse
@@ -356,7 +356,7 @@ def read_layout(csv_path, configuration="baseline"):
 
 
 def targets(rows):
-    """Issue 21's targets on one layout's rows of an fmea.csv (mode -> row), as figures."""
+    """The Zhou 2018 targets (1)-(6) on one layout's rows of an fmea.csv (mode -> row), as figures."""
     nominal = rows["nominal"]
     ours_nom = [int(nominal[d]) for d in DIRECTIONS]
     kp_nom = float(nominal["k_p"])
@@ -388,7 +388,7 @@ def targets(rows):
 
 
 def score_targets(csv_path, configuration="baseline"):
-    """Issue 21's targets on one layout of an fmea.csv; prints the predictions beside the paper."""
+    """The Zhou 2018 targets (1)-(6) on one layout of an fmea.csv; prints the predictions beside the paper."""
     t = targets(read_layout(csv_path, configuration))
     print("| mode | ours x+/x-/y+/y-/z+/z- | paper | k_p ours | paper | within 15 % | rise ours | paper | within 10 pt |")
     print("|---|---|---|---|---|---|---|---|---|")
@@ -418,7 +418,7 @@ def main():
     ap.add_argument("--chaser", default="build/cli/chaser")
     ap.add_argument("--write", action="store_true")
     ap.add_argument("--check", action="store_true")
-    ap.add_argument("--targets", metavar="FMEA_CSV", help="only score issue 21's targets on this fmea.csv")
+    ap.add_argument("--targets", metavar="FMEA_CSV", help="only score the Zhou 2018 targets (1)-(6) on this fmea.csv")
     ap.add_argument("--lateral", type=float, metavar="T",
                     help="hold the lateral time constant at T [s] instead of calibrating it (a study of its effect)")
     ap.add_argument("--brake", type=float, metavar="A",

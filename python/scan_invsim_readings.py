@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 21's targets over the `paper` reading's whole grid of free choices: an exploration, not a
+"""The Zhou 2018 targets (1)-(6) over the `paper` reading's whole grid of free choices: an exploration, not a
 calibration (docs/invsim.md, "Which targets no reading can meet, and why").
 
 Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
@@ -15,9 +15,9 @@ per opening at w = 1 s) on the nominal case, over every Q of the calibration's g
 the six directions come within 15 % of Table 4, and x+ / x- (the paper's 2.28; 1.69-3.08 within
 15 %).
 targets: every Q of the calibration's grid at one w (the shipped 0.06 s by default), all Table 2
-and 5 modes, scored against issue 21's targets (calibrate_invsim.targets), split by whether the
+and 5 modes, scored against the Zhou 2018 targets (1)-(6) (calibrate_invsim.targets), split by whether the
 paper's four Table 5 modes are lost (target 6).
-faulted: the reading as shipped since session 17 (inverse_model: faulted, measurement noise on the
+faulted: the reading as shipped (inverse_model: faulted, measurement noise on the
 angles, seed 1), every Q of the grid at each angle sigma, w = 0.1 s; k_p is compared after scaling
 every row by 0.526 / (the point's nominal k_p), i.e. with w chosen on the nominal row (counts go
 as 1 / w up to the rounding of ceil).
@@ -47,7 +47,7 @@ beside targets (2) to (5).
 Deterministic: fixed grids, one `chaser fmea` per point.
 
 coarse and targets replace the scenario's pulses.paper block with {pulse_width_s, state_weights}
-only, so they scan the paper reading as it was in session 15: the nominal inverse model and a
+only, so they scan the noiseless paper reading: the nominal inverse model and a
 perfect measurement link.
 """
 import argparse
@@ -273,7 +273,7 @@ def block_objectives(chaser, scenario, params, workdir, blocks=None, draws=None)
 
 
 def meets_fault_targets(t):
-    """Issue 21's targets (2) to (5) on calibrate_invsim.targets' figures: k_p of all 17 Table 4 rows
+    """Zhou 2018 targets (2) to (5) on calibrate_invsim.targets' figures: k_p of all 17 Table 4 rows
     within 15 %, at least 12 of 16 rises within 10 points, the z doubles the worst single-axis
     modes, and every Table 5 mode flown at 1.3-1.6x nominal (at least one flown)."""
     ratios = t["table5_ratios"]

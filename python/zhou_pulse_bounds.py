@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Which readings of Zhou 2018's pulse count can give its nominal row (Table 4): a bound from the
 paper's own numbers and the x impulse balance, independent of the chaser's mass and of the pilot
-model (issue 21, docs/invsim.md "Which targets no reading can meet, and why").
+model (docs/invsim.md "Which targets no reading can meet, and why").
 
 Usage: /usr/bin/python3 python/zhou_pulse_bounds.py [--dock-x M] [--z-excursion M] [--attitude DEG]
 
@@ -64,7 +64,7 @@ def paper_rows(path=TABLES_CPP):
 PAPER_TABLE4, PAPER_TABLE5 = paper_rows()
 PAPER_NOMINAL = PAPER_TABLE4["nominal"]
 
-TOLERANCE = 0.15  # issue 21, target (1)
+TOLERANCE = 0.15  # Zhou 2018 target (1): within 15 % of Table 4
 # Our assumptions where the paper prints nothing: the docking point at most Chaser's 10 m plus the
 # envelope's half length; z held within the envelope's half width of its start (the inverse model
 # moves the chaser "along the desired trajectory", section 2, and z* = 0 in the corridor).

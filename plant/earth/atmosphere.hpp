@@ -1,5 +1,5 @@
 #pragma once
-// Atmospheric density and drag for low Earth orbit (issue 17). Density: the piecewise exponential
+// Atmospheric density and drag for low Earth orbit. Density: the piecewise exponential
 // model of Vallado 2013, Table 8-4 (CIRA-72 reference densities at base altitudes 0..1000 km, a
 // scale height per band): rho(h) = rho_0 exp(-(h - h_0) / H) in the band h_0 <= h < h_1. A static,
 // mean-activity model: at metres of separation drag acts on the difference of the two bodies'

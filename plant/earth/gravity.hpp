@@ -1,6 +1,6 @@
 #pragma once
 // Earth's gravity to J2 in an Earth-centred inertial frame (ECI, z along the rotation axis), for the
-// perturbed orbits of the COMRADE platform (issue 17). J2 is the only zonal term: at a few metres of
+// perturbed orbits of the COMRADE platform. J2 is the only zonal term: at a few metres of
 // separation the higher ones change the relative acceleration by under 1e-3 of J2's share
 // (docs/dynamics.md). The field is symmetric about z, so it is static in ECI and the energy
 // v^2 / 2 + V(r) is conserved by a trajectory in it.

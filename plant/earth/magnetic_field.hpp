@@ -1,6 +1,6 @@
 #pragma once
 // The Earth's magnetic field as a tilted dipole, and the torque it puts on a body's residual
-// magnetic dipole (issue 17). The dipole is IGRF-13's degree 1 for epoch 2020.0 (Alken et al. 2021):
+// magnetic dipole. The dipole is IGRF-13's degree 1 for epoch 2020.0 (Alken et al. 2021):
 // g10 = -29404.8 nT, g11 = -1450.9 nT, h11 = 4652.5 nT, reference radius a = 6371.2 km. Its scalar
 // potential, B = -grad V, in geocentric colatitude theta and east longitude lambda (Earth-fixed):
 //   V = a (a / r)^2 [g10 cos(theta) + (g11 cos(lambda) + h11 sin(lambda)) sin(theta)]

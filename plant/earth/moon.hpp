@@ -1,5 +1,5 @@
 #pragma once
-// The Moon for Earth-orbit runs (issue 17): its position from the Astronomical Almanac's
+// The Moon for Earth-orbit runs: its position from the Astronomical Almanac's
 // low-precision series (Vallado 2013, Algorithm 31; the Almanac's section D): ecliptic longitude
 // and latitude as a few periodic terms, the distance from the horizontal parallax. The Almanac
 // gives ~0.3 deg in longitude, ~0.2 deg in latitude and ~0.003 deg in parallax over 1900-2100, the

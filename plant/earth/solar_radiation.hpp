@@ -1,5 +1,5 @@
 #pragma once
-// Solar radiation pressure on a body modelled as a cannonball (issue 17): a sphere of cross-section
+// Solar radiation pressure on a body modelled as a cannonball: a sphere of cross-section
 // A, reflectivity coefficient C_R (1: absorbs all, 2: mirror), mass m, so that
 //   a = -P (AU / d)^2 C_R A / m * u,   u the unit vector from the body to the Sun,
 // with P = 4.56e-6 N/m^2 at 1 AU (a solar constant of 1367 W/m^2 over c), d the body's distance from

@@ -1,5 +1,5 @@
 #pragma once
-// Time and the Sun for Earth-orbit runs (issue 17): a calendar date's Julian date, and the Sun's
+// Time and the Sun for Earth-orbit runs: a calendar date's Julian date, and the Sun's
 // position from the Astronomical Almanac's low-precision series (Vallado 2013, Algorithm 29):
 // ~0.01 deg in direction and ~1e-4 in distance over 1950-2050, far more than solar pressure and
 // eclipses at metres of separation need. Frame: the Earth's mean equator and equinox of date, taken

@@ -1,5 +1,5 @@
 #pragma once
-// A third body's pull on a satellite in an Earth-centred frame (issue 17): the Moon or the Sun at s
+// A third body's pull on a satellite in an Earth-centred frame: the Moon or the Sun at s
 // (from the Earth's centre) accelerates the satellite at r and the Earth alike, and only the
 // difference perturbs the orbit (Montenbruck & Gill 2000, eq. 3.37):
 //   a = mu3 [(s - r) / |s - r|^3 - s / |s|^3].

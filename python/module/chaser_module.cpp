@@ -1,4 +1,4 @@
-// The Python module `chaser` (issue 19, first piece): scenarios and whole runs from Python, on the
+// The Python module `chaser` : scenarios and whole runs from Python, on the
 // same C++ libraries as the `chaser` command. Nothing here computes: it converts between Python and
 // the C++ types, and lets go of the GIL while C++ runs. docs/python.md is its reference.
 #include <cstdint>

@@ -1,4 +1,4 @@
-// chaser.Simulation (issue 19, step by step): one run advanced period by period from Python, its
+// chaser.Simulation (step by step): one run advanced period by period from Python, its
 // truth, estimate and command read between periods, faults injected at run time, and periods flown
 // by a Python flight callback that sees the measurements only. The run itself is sim::Simulation,
 // the object run_scenario flies, so stepping to the end gives chaser.run's bits.

@@ -6,7 +6,7 @@ leak ~m; b: command-proportional part, stuck closed -1, loss -m). Least squares 
       (R(j) M_F T_on,cmd(j) + R(j) M_F,i delta_i(j)) / m      (HCW terms neglected: < 1e-4 N equivalent)
 unknowns r0, v0, a, b; score = weighted residual sum of squares; isolated = argmin.
 
-OFFLINE PROTOTYPE for issue 3's next step (docs/fdi.md, "Proposal"), not part of the product: it
+OFFLINE PROTOTYPE of the impulse-deficit isolation (docs/fdi.md, "Proposal"), not part of the product: it
 reads the truth position plus synthetic 1 mm noise (raw LIDAR is not in telemetry) and hard-codes
 the MSR mass and inertia. Usage, on a matrix made with python/fdi_matrix.py (recovery off):
   /usr/bin/python3 python/prototypes/fdi_deficit_isolation.py OUT/runs PRE_S POST_S
