@@ -101,12 +101,6 @@ void scheme_columns(std::vector<RunColumn>& columns, const std::string& name, in
                        [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).glr_max_before_onset); }, s});
 }
 
-// A column that reads the record alone.
-template <class F>
-RunColumn column(const char* name, ColumnKind kind, F) {
-  return {name, kind, [](const RunRecord& r, int, std::string& o) { F{}(r, o); }, 0};
-}
-
 }  // namespace
 
 std::string_view to_string(RunStatus s) {
@@ -168,38 +162,37 @@ namespace {
 // The one table of runs.csv columns (docs/campaigns.md), in file order.
 std::vector<RunColumn> build_run_columns(const std::vector<flight::DiagnosisScheme>& schemes) {
   std::vector<RunColumn> columns = {
-      column("run", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { integer(o, r.run); }),
-      column("seed", ColumnKind::kUnsigned, [](const RunRecord& r, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }),
-      column("case", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.fault_case); }),
-      column("status", ColumnKind::kText, [](const RunRecord& r, std::string& o) { o += to_string(r.status); }),
-      column("fault_thruster", ColumnKind::kInteger, [](const RunRecord& r, std::string& o) { thruster_number(o, r.fault_thruster); }),
-      column("fault_size", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.fault_size); }),
-      column("onset_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.onset_s); }),
-      column("mass_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.mass_kg); }),
-      column("inertia_xx_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }),
-      column("inertia_yy_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }),
-      column("inertia_zz_kgm2", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }),
-      column("com_x_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(0)); }),
-      column("com_y_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(1)); }),
-      column("com_z_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.chaser.com_body_m(2)); }),
+      {"run", ColumnKind::kInteger, [](const RunRecord& r, int, std::string& o) { integer(o, r.run); }},
+      {"seed", ColumnKind::kUnsigned, [](const RunRecord& r, int, std::string& o) { fmt::format_to(std::back_inserter(o), "{}", r.seed); }},
+      {"case", ColumnKind::kText, [](const RunRecord& r, int, std::string& o) { o += to_string(r.fault_case); }},
+      {"status", ColumnKind::kText, [](const RunRecord& r, int, std::string& o) { o += to_string(r.status); }},
+      {"fault_thruster", ColumnKind::kInteger, [](const RunRecord& r, int, std::string& o) { thruster_number(o, r.fault_thruster); }},
+      {"fault_size", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.fault_size); }},
+      {"onset_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.onset_s); }},
+      {"mass_kg", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.mass_kg); }},
+      {"inertia_xx_kgm2", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.inertia_kgm2(0, 0)); }},
+      {"inertia_yy_kgm2", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.inertia_kgm2(1, 1)); }},
+      {"inertia_zz_kgm2", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.inertia_kgm2(2, 2)); }},
+      {"com_x_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.com_body_m(0)); }},
+      {"com_y_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.com_body_m(1)); }},
+      {"com_z_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.chaser.com_body_m(2)); }},
   };
   for (std::size_t i = 0; i < schemes.size(); ++i) scheme_columns(columns, schemes[i].name, static_cast<int>(i));
   scheme_columns(columns, "fdir", -1);
-  for (RunColumn& c : std::vector<RunColumn>{
-      column("recovery_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.recovery_s); }),
-      column("capture", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.capture); }),
-      column("corridor_kept", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.corridor_kept); }),
-      column("target_in_view", ColumnKind::kFlag, [](const RunRecord& r, std::string& o) { flag(o, r.target_in_view); }),
-      column("propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.propellant_kg); }),
-      column("simulated_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.simulated_s); }),
-      column("final_position_error_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_position_error_m); }),
-      column("final_speed_mps", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_speed_mps); }),
-      column("final_attitude_error_deg", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_attitude_error_deg); }),
-      column("final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.final_rate_error_deg_s); }),
-      column("min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }),
-      column("min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, std::string& o) { number(o, r.min_clearance_synchronised_m); }),
-  })
-    columns.push_back(std::move(c));
+  columns.insert(columns.end(), {
+      {"recovery_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.recovery_s); }},
+      {"capture", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.capture); }},
+      {"corridor_kept", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.corridor_kept); }},
+      {"target_in_view", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.target_in_view); }},
+      {"propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.propellant_kg); }},
+      {"simulated_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.simulated_s); }},
+      {"final_position_error_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.final_position_error_m); }},
+      {"final_speed_mps", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.final_speed_mps); }},
+      {"final_attitude_error_deg", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.final_attitude_error_deg); }},
+      {"final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.final_rate_error_deg_s); }},
+      {"min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }},
+      {"min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.min_clearance_synchronised_m); }},
+  });
   return columns;
 }
 

@@ -33,6 +33,7 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
       .sensors = make_sensor_state(scenario.sensors, period_ns),
       .streams = PlantStreams(seed),
       .last_profile = ThrustProfile{},
+      .disturbance = PeriodDisturbance{},
   };
   if (scenario.orbit.earth) {
     const EarthOrbitParams earth = make_earth_orbit_params(scenario);

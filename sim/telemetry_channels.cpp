@@ -66,7 +66,7 @@ TelemetryShape telemetry_shape(const model::Scenario& scenario) {
   return {.thrusters = scenario.thrusters.count,
           .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0,
           .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value(),
-          .phases = static_cast<int>(run_phases(scenario).phases.size())};
+          .phases = static_cast<int>(planned_phases(scenario).size())};
 }
 
 namespace {

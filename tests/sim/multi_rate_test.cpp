@@ -64,7 +64,9 @@ TEST(MultiRate, AThirdOfASecondPlatformAndAKilohertzInnerBlockRunAtTheirRatesInO
   // Calls in time order; at a shared time (0 s, 1 s) the platform first, as declared.
   for (std::size_t i = 1; i < seen.size(); ++i) {
     ASSERT_GE(seen[i].t, seen[i - 1].t);
-    if (seen[i].t == seen[i - 1].t) EXPECT_EQ(seen[i - 1].block, "platform") << seen[i].t;
+    if (seen[i].t == seen[i - 1].t) {
+      EXPECT_EQ(seen[i - 1].block, "platform") << seen[i].t;
+    }
   }
   // At a period's start the plant has not moved since the flight software sensed it: the inner
   // block sees exactly the truth telemetry records for that period.
