@@ -1,0 +1,71 @@
+#pragma once
+// The servicer's 7-DOF arm and gripper as parameters, and the multibody scene (hub, arm, target)
+// built from them. COMRADE 2018 (sec. 4) gives the arm's joint count, its torque limits (Table 3's
+// footnote: 176 N m repeated peak, 314 N m momentary) and the gripper's envelope (Table 2), but no
+// geometry or masses: default_arm() is a plausible space arm, each number's origin stated there.
+//
+// Frames: every link frame is parallel to its parent's at q = 0 (the arm stretched along the
+// mounting frame's +x), so a joint's axis and its child's offset are written in the parent's axes.
+// Link 1's parent is the hub's body frame (origin at the hub's centre of mass).
+#include <array>
+#include <string>
+
+#include "core/types.hpp"
+
+namespace chaser::model {
+
+inline constexpr int kArmJoints = 7;
+
+struct ArmLinkParams {
+  Vec3 joint_position_parent_m = Vec3::Zero();  // [m] the joint's origin in the parent link's frame
+  Vec3 joint_axis = Vec3::UnitX();              // [-] unit, the parent's (= this link's at q = 0) axes
+  double mass_kg = 1.0;                         // [kg] the link with its joint's drive
+  Vec3 com_link_m = Vec3::Zero();               // [m] centre of mass in the link frame
+  Vec3 inertia_kgm2 = Vec3::Ones();             // [kg m^2] principal moments about the CoM, link axes
+  double lower_rad = -3.0;                      // [rad] joint limit
+  double upper_rad = 3.0;                       // [rad]
+  double friction_Nm = 0.0;                     // [N m] Coulomb friction of the drive (MuJoCo frictionloss)
+  double damping_Nms = 0.0;                     // [N m s/rad] viscous friction of the drive
+  double armature_kgm2 = 0.0;                   // [kg m^2] rotor inertia reflected through the gear
+};
+
+struct GripperParams {
+  Vec3 position_link7_m = Vec3(0.3, 0.0, 0.0);  // [m] the gripper's tool point in link 7's frame
+  double mass_kg = 10.0;                         // [kg]
+  Vec3 com_link7_m = Vec3(0.15, 0.0, 0.0);       // [m]
+  Vec3 inertia_kgm2 = Vec3(0.05, 0.1, 0.1);      // [kg m^2] principal, about its CoM
+};
+
+struct ArmParams {
+  std::array<ArmLinkParams, kArmJoints> links{};
+  GripperParams gripper;
+  double torque_repeated_peak_Nm = 176.0;  // [N m] COMRADE 2018, Table 3 footnote
+  double torque_momentary_Nm = 314.0;      // [N m] the drive's hard limit (the motors' control range)
+};
+
+// A thin-walled tube of length L [m] and radius r [m] about its centre, axis along x: the link
+// inertias of default_arm() (I_xx = m r^2, I_yy = I_zz = m (r^2 / 2 + L^2 / 12)).
+Vec3 tube_inertia_kgm2(double mass_kg, double length_m, double radius_m);
+
+// A plausible 7-DOF space arm (shoulder roll-pitch-roll, elbow pitch, wrist roll-pitch-roll, the
+// S-R-S layout of the light-weight arms built for on-orbit servicing), 3.1 m from the shoulder to
+// the tool point so that, mounted on the hub's +x face 1.05 m ahead of its centre of mass, it
+// reaches a fixture 3.5 m ahead (comrade_sync's capture point) with its elbow bent; 80 kg in all.
+ArmParams default_arm();
+
+// The scene flown by the multibody plant: the hub (the chaser's bus), the arm mounted on it, the
+// target; each free body about its centre of mass, gravity and contact off (the orbit's forces are
+// applied per body by the plant).
+struct MultibodySceneParams {
+  double hub_mass_kg = 1600.0;
+  Mat3 hub_inertia_kgm2 = Mat3::Identity();     // [kg m^2] about the hub's CoM, body axes
+  Vec3 arm_mount_hub_m = Vec3(1.05, 0.0, 0.0);  // [m] joint 1's origin in the hub's body frame
+  ArmParams arm = default_arm();
+  double target_mass_kg = 7828.0;
+  Mat3 target_inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the target's CoM, target axes
+  Vec3 target_position_m = Vec3(8.0, 0.0, 0.0); // [m] the target's CoM at q = 0, scene frame
+  double timestep_s = 1e-3;                     // [s] MuJoCo's step
+  std::string integrator = "RK4";               // "Euler", "RK4" or "implicit"
+};
+
+}  // namespace chaser::model

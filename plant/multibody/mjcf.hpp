@@ -1,0 +1,21 @@
+#pragma once
+// MJCF text (MuJoCo's XML model) generated from a multibody scene. MuJoCo 2.2.2 has no model-editing
+// API, so the scene is written as text and compiled by MuJoCo (plant/multibody/mujoco_model.hpp).
+// Every number is written in its shortest round-trip form, so the model holds exactly the
+// parameters' doubles and the same scene always gives the same text.
+//
+// The scene: two free bodies, "hub" and "target", each about its centre of mass with its full
+// inertia tensor; the arm's links "link1".."link7" and the "gripper" a chain below the hub, joint i
+// ("joint1".."joint7") a hinge driven by a motor ("motor1".."motor7") of unit gear whose control
+// is the joint torque [N m], limited to the arm's momentary torque. The world has no gravity and no
+// contact: the orbit's forces and torques are applied per body by the plant, contact comes with
+// the gripper's model.
+#include <string>
+
+#include "model/arm.hpp"
+
+namespace chaser::plant::multibody {
+
+std::string mjcf_of(const model::MultibodySceneParams& scene);
+
+}  // namespace chaser::plant::multibody

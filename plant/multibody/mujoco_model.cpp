@@ -1,0 +1,102 @@
+#include "plant/multibody/mujoco_model.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace chaser::plant::multibody {
+
+namespace {
+
+int bad_state_warnings(const mjData& d) {
+  return d.warning[mjWARN_BADQPOS].number + d.warning[mjWARN_BADQVEL].number + d.warning[mjWARN_BADQACC].number;
+}
+
+// The VFS holds the text as a file "scene.xml" (2.2.2 compiles from files only).
+struct Vfs {
+  std::unique_ptr<mjVFS> vfs = std::make_unique<mjVFS>();
+  Vfs() { mj_defaultVFS(vfs.get()); }
+  ~Vfs() { mj_deleteVFS(vfs.get()); }
+};
+
+}  // namespace
+
+MujocoModel::MujocoModel(const std::string& mjcf) {
+  constexpr const char* kName = "scene.xml";
+  Vfs files;
+  if (mj_makeEmptyFileVFS(files.vfs.get(), kName, static_cast<int>(mjcf.size())) != 0)
+    throw MujocoError("MuJoCo: the model's text does not fit the virtual file system");
+  const int file = mj_findFileVFS(files.vfs.get(), kName);
+  std::memcpy(files.vfs->filedata[file], mjcf.data(), mjcf.size());
+  std::array<char, 1024> error{};
+  mjModel* model = nullptr;
+  guarded("loading the model", [&] { model = mj_loadXML(kName, files.vfs.get(), error.data(), static_cast<int>(error.size())); });
+  if (model == nullptr) throw MujocoError(fmt::format("MuJoCo refused the model: {}", error.data()));
+  model_ = model;
+  mjData* data = nullptr;
+  guarded("allocating the data", [&] { data = mj_makeData(model_); });
+  if (data == nullptr) {
+    mj_deleteModel(model_);
+    throw MujocoError("MuJoCo: could not allocate the model's data");
+  }
+  data_ = data;
+}
+
+MujocoModel::~MujocoModel() {
+  if (data_ != nullptr) mj_deleteData(data_);
+  if (model_ != nullptr) mj_deleteModel(model_);
+}
+
+void MujocoModel::step() {
+  const double t_s = data_->time;
+  const int bad_before = bad_state_warnings(*data_);
+  mjModel* m = model_;
+  mjData* d = data_;
+  guarded("stepping", [m, d] { mj_step(m, d); });
+  // MuJoCo resets the state when a position, velocity or acceleration is not finite (or too large)
+  // and only counts a warning: that is a diverged step, never a state to fly on.
+  if (bad_state_warnings(*data_) != bad_before)
+    throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
+}
+
+void MujocoModel::forward() {
+  mjModel* m = model_;
+  mjData* d = data_;
+  guarded("computing the state", [m, d] { mj_forward(m, d); });
+}
+
+Eigen::MatrixXd MujocoModel::mass_matrix() const {
+  const int nv = model_->nv;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> M(nv, nv);
+  const mjModel* m = model_;
+  const mjData* d = data_;
+  double* out = M.data();
+  guarded("the mass matrix", [m, d, out] { mj_fullM(m, out, d->qM); });
+  return M;
+}
+
+Momentum MujocoModel::momentum() {
+  mjModel* m = model_;
+  mjData* d = data_;
+  guarded("the momentum", [m, d] { mj_subtreeVel(m, d); });
+  // Body 0 (the world) is the whole scene's subtree: its CoM velocity times its mass, and its
+  // angular momentum about its CoM.
+  Momentum p;
+  p.linear_kgmps = model_->body_subtreemass[0] * Vec3(d->subtree_linvel[0], d->subtree_linvel[1], d->subtree_linvel[2]);
+  p.angular_kgm2ps = Vec3(d->subtree_angmom[0], d->subtree_angmom[1], d->subtree_angmom[2]);
+  return p;
+}
+
+int MujocoModel::index(int type, const char* name, const char* what) const {
+  const int id = mj_name2id(model_, type, name);
+  if (id < 0) throw MujocoError(fmt::format("MuJoCo: the model has no {} named '{}'", what, name));
+  return id;
+}
+
+int MujocoModel::body(const char* name) const { return index(mjOBJ_BODY, name, "body"); }
+int MujocoModel::joint(const char* name) const { return index(mjOBJ_JOINT, name, "joint"); }
+int MujocoModel::actuator(const char* name) const { return index(mjOBJ_ACTUATOR, name, "actuator"); }
+
+}  // namespace chaser::plant::multibody

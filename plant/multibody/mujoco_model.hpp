@@ -1,0 +1,57 @@
+#pragma once
+// A compiled MuJoCo model and its data, owned together. Every MuJoCo call that can raise an error
+// runs guarded (plant/multibody/mujoco_errors.hpp), so an error is a MujocoError; a step whose state
+// becomes non-finite (MuJoCo warns and resets the state) throws one too.
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+#include <mujoco/mujoco.h>
+
+#include "core/types.hpp"
+#include "plant/multibody/mujoco_errors.hpp"
+
+namespace chaser::plant::multibody {
+
+// Momentum of the whole scene, world frame: linear [kg m/s] and angular about the scene's
+// centre of mass [kg m^2/s].
+struct Momentum {
+  Vec3 linear_kgmps = Vec3::Zero();
+  Vec3 angular_kgm2ps = Vec3::Zero();
+};
+
+class MujocoModel {
+ public:
+  // Compiles MJCF text; throws MujocoError with MuJoCo's own message for a model it refuses.
+  explicit MujocoModel(const std::string& mjcf);
+  ~MujocoModel();
+  MujocoModel(const MujocoModel&) = delete;
+  MujocoModel& operator=(const MujocoModel&) = delete;
+
+  const mjModel& model() const { return *model_; }
+  mjData& data() { return *data_; }
+  const mjData& data() const { return *data_; }
+
+  // mj_step: one step of the model's integrator. Throws MujocoError naming the time when MuJoCo
+  // raises an error or finds a non-finite acceleration (the step is then not taken).
+  void step();
+  // mj_forward: positions, velocities and accelerations consistent with qpos, qvel and the inputs.
+  void forward();
+
+  // The joint-space mass matrix M(q) (nv x nv) after forward().
+  Eigen::MatrixXd mass_matrix() const;
+  // The scene's momentum at the current state (calls mj_subtreeVel).
+  Momentum momentum();
+
+  // Index helpers; throw MujocoError for a name the model does not have.
+  int body(const char* name) const;
+  int joint(const char* name) const;
+  int actuator(const char* name) const;
+
+ private:
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+  int index(int type, const char* name, const char* what) const;
+};
+
+}  // namespace chaser::plant::multibody

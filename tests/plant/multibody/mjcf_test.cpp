@@ -1,0 +1,63 @@
+// The generated MJCF against the parameters it comes from, read back from the model MuJoCo
+// compiled: the same masses, inertias, joints, limits and drives, and the same text every time.
+#include <cmath>
+#include <numeric>
+
+#include <gtest/gtest.h>
+
+#include "model/arm.hpp"
+#include "plant/multibody/mjcf.hpp"
+#include "plant/multibody/mujoco_model.hpp"
+
+namespace chaser::plant::multibody {
+namespace {
+
+TEST(Mjcf, TheCompiledSceneHoldsTheParametersExactly) {
+  model::MultibodySceneParams scene;
+  scene.hub_inertia_kgm2 = Vec3(1850.0, 1900.0, 1300.0).asDiagonal();
+  scene.target_inertia_kgm2 = Vec3(17023.0, 124826.0, 129112.0).asDiagonal();
+  MujocoModel model(mjcf_of(scene));
+  const mjModel& m = model.model();
+  EXPECT_EQ(m.nv, 6 + model::kArmJoints + 6);
+  EXPECT_EQ(m.nu, model::kArmJoints);
+  EXPECT_EQ(m.opt.timestep, scene.timestep_s);
+  EXPECT_EQ(m.opt.integrator, mjINT_RK4);
+  EXPECT_EQ(m.body_mass[model.body("hub")], scene.hub_mass_kg);
+  EXPECT_EQ(m.body_mass[model.body("target")], scene.target_mass_kg);
+  double arm_mass_kg = scene.arm.gripper.mass_kg;
+  for (int i = 0; i < model::kArmJoints; ++i) {
+    const model::ArmLinkParams& link = scene.arm.links[static_cast<std::size_t>(i)];
+    const std::string name = "joint" + std::to_string(i + 1);
+    const int joint = model.joint(name.c_str());
+    const int dof = m.jnt_dofadr[joint];
+    EXPECT_EQ(m.body_mass[m.jnt_bodyid[joint]], link.mass_kg) << name;
+    EXPECT_EQ(m.jnt_range[2 * joint], link.lower_rad) << name;
+    EXPECT_EQ(m.jnt_range[2 * joint + 1], link.upper_rad) << name;
+    EXPECT_EQ(m.dof_frictionloss[dof], link.friction_Nm) << name;
+    EXPECT_EQ(m.dof_armature[dof], link.armature_kgm2) << name;
+    const int motor = model.actuator(("motor" + std::to_string(i + 1)).c_str());
+    EXPECT_EQ(m.actuator_ctrlrange[2 * motor + 1], scene.arm.torque_momentary_Nm) << name;
+    arm_mass_kg += link.mass_kg;
+  }
+  const double total_kg = std::accumulate(m.body_mass, m.body_mass + m.nbody, 0.0);
+  EXPECT_NEAR(total_kg, scene.hub_mass_kg + arm_mass_kg + scene.target_mass_kg, 1e-9);
+  EXPECT_NEAR(arm_mass_kg, 80.0, 1e-12);  // default_arm()'s total, gripper included
+}
+
+TEST(Mjcf, TheStretchedArmPutsTheToolPointWhereTheLinksSayAndTheTextIsStable) {
+  const model::MultibodySceneParams scene;
+  MujocoModel model(mjcf_of(scene));
+  model.forward();
+  const int tool = mj_name2id(&model.model(), mjOBJ_SITE, "tool");
+  ASSERT_GE(tool, 0);
+  Vec3 expected = scene.arm_mount_hub_m + scene.arm.gripper.position_link7_m;
+  for (const auto& link : scene.arm.links) expected += link.joint_position_parent_m;
+  const Vec3 tool_m(model.data().site_xpos[3 * tool], model.data().site_xpos[3 * tool + 1],
+                    model.data().site_xpos[3 * tool + 2]);
+  EXPECT_LT((tool_m - expected).norm(), 1e-12);
+  EXPECT_NEAR(expected.x() - scene.arm_mount_hub_m.x(), 3.1, 1e-12);  // the arm's reach
+  EXPECT_EQ(mjcf_of(scene), mjcf_of(scene));
+}
+
+}  // namespace
+}  // namespace chaser::plant::multibody
