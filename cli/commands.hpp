@@ -56,7 +56,7 @@ struct FmeaArgs {
   bool optimize = false;       // search the scenario's free mounting choices (optimize.choices)
   bool history = false;        // write DIR/history for python/plot_invsim.py
   bool three_axis = false;     // add the 64 three-axis modes (x, y and z double faults)
-  bool nominal_only = false;   // only the nominal case of each layout (calibrations: python/calibrate_invsim.py)
+  bool nominal_only = false;   // only the nominal case of each layout (python/invsim_study/calibrate_invsim.py)
 };
 
 // chaser thrusters (docs/scenario.md, "Thruster-set analysis").

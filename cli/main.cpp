@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   fmea_cmd->add_flag("--three-axis", fmea.three_axis, "Add the 64 three-axis modes (x, y and z double faults: six failed thrusters)");
   fmea_cmd->add_flag("--history", fmea.history, "Write per-step histories (DIR/history) for python/plot_invsim.py");
   fmea_cmd->add_flag("--nominal-only", fmea.nominal_only,
-                     "Fly only the nominal case of each layout (for calibrations: python/calibrate_invsim.py)");
+                     "Fly only the nominal case of each layout (for calibrations: python/invsim_study/calibrate_invsim.py)");
 
   try {
     app.parse(argc, argv);

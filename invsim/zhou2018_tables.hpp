@@ -1,7 +1,8 @@
 #pragma once
 // The published figures of Zhou 2018, Tables 4 and 5 (pulses per body axis and direction, and the
 // operational amount k_p = P / 3000, eq. 22), as printed. Data, not a model: fmea.md prints them
-// beside Chaser's figures, and the tests and python/calibrate_invsim.py compare against them.
+// beside Chaser's figures, and the tests and python/invsim_study/calibrate_invsim.py compare
+// against them.
 // Labels are Chaser's (fault_modes.hpp): the paper's e_1^- is e1~, its multi-axis row
 // (d1/d2~, e2/e1~) is "d1/d2~+e2/e1~". The paper prints `---` for its four uncontrollable
 // Table 5 rows: `controllable` false and no figures.

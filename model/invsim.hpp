@@ -53,7 +53,7 @@ struct InvSimInverseParams {
 //  - paper: a pulse is one valve opening of at most pulse_width_s: a step's opening dtau counts
 //    ceil(dtau / pulse_width_s) pulses, so P measures the commanded opening time (the paper's
 //    "operational impulse amounts"), and Q of eq. 20 is the reading's own, both calibrated on the
-//    nominal case only (python/calibrate_invsim.py).
+//    nominal case only (python/invsim_study/calibrate_invsim.py).
 enum class InvSimReading { kSmooth, kPaper };
 
 // Which spacecraft the inverse model inverts under the paper reading: the nominal one (the pilot

@@ -236,7 +236,7 @@ TEST(FmeaCli, PaperReadingNamesTheLateralDesign) {
 
 // The paper reading (docs/invsim.md, "Readings of App. B"): fmea.md prints Zhou 2018's figures
 // beside ours and names the reading; the rows with their noise draws are the same on one worker;
-// python/calibrate_invsim.py, run again on the nominal case,
+// python/invsim_study/calibrate_invsim.py, run again on the nominal case,
 // finds the scenario's shipped pulses.paper block (--check, exit 0: the calibration is repeatable);
 // an unknown reading is exit 2 naming the key and the allowed values.
 TEST(FmeaCli, PaperReadingPrintsThePaperBesideUsAndItsCalibrationIsRepeatable) {
@@ -253,7 +253,7 @@ TEST(FmeaCli, PaperReadingPrintsThePaperBesideUsAndItsCalibrationIsRepeatable) {
   EXPECT_NE(md.find(" (114) | "), std::string::npos);   // Table 4's nominal x+
   EXPECT_NE(md.find(" (1131) | "), std::string::npos);  // f2~'s z-
   EXPECT_NE(md.find("uncontrollable (`---`)"), std::string::npos);
-  const CommandResult cal = chaser::testing::run_shell("/usr/bin/python3 python/calibrate_invsim.py "
+  const CommandResult cal = chaser::testing::run_shell("/usr/bin/python3 python/invsim_study/calibrate_invsim.py "
                                                        "scenarios/manual_rvd.yaml --check --chaser " +
                                                        std::string(CHASER_BINARY));
   EXPECT_EQ(cal.exit_code, 0) << cal.output;

@@ -1,5 +1,5 @@
-"""python/scan_invsim_mass.py: the chaser's mass and the x and y groups' lever arms against issue 21's
-target 6 (docs/invsim.md, "The chaser's mass").
+"""python/invsim_study/scan_invsim_mass.py: the chaser's mass and the x and y groups' lever arms
+against Zhou 2018 target (6) (docs/invsim.md, "The chaser's mass").
 
 The layout edits are checked against the shipped scenario (its own positions are the arms 1.4 m and
 1.6 m), and two of the document's findings are flown under `smooth` (0.1 s each): the shipped layout
@@ -17,7 +17,7 @@ import yaml
 
 from conftest import REPO
 
-sys.path.insert(0, str(REPO / "python"))
+sys.path.insert(0, str(REPO / "python" / "invsim_study"))
 import calibrate_invsim as cal  # noqa: E402
 import scan_invsim_mass as sm  # noqa: E402
 

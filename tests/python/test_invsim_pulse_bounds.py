@@ -1,5 +1,6 @@
-"""python/zhou_pulse_bounds.py: the x impulse balance that rules out the paper's nominal x counts
-for every reading of small spread (docs/invsim.md, "Which targets no reading can meet, and why").
+"""python/invsim_study/zhou_pulse_bounds.py: the x impulse balance that rules out the paper's
+nominal x counts for every reading of small spread (docs/invsim.md, "Why Zhou's nominal x counts are
+unreachable").
 
 The closed forms of the spread, the bound on the paper's printed numbers, and the bound held
 against Chaser's own nominal run: a count nearly proportional to opening time (w = 0.1 ms) gives
@@ -13,7 +14,7 @@ import pytest
 
 from conftest import REPO, run_cli
 
-sys.path.insert(0, str(REPO / "python"))
+sys.path.insert(0, str(REPO / "python" / "invsim_study"))
 import zhou_pulse_bounds as zb  # noqa: E402
 
 SCENARIO = REPO / "scenarios" / "manual_rvd.yaml"
@@ -56,7 +57,7 @@ def nominal_history(cli, tmp_path, w):
     out = tmp_path / "out"
     # Without the measurement noise: bound (i) assumes a chaser that docks at rest or closing, and
     # with the paper reading's noise the nominal run ends at x' between -5.8 and +2.7 mm/s
-    # (seeds 1-8; docs/invsim.md, "Which targets no reading can meet").
+    # (seeds 1-8; docs/invsim.md, "Why Zhou's nominal x counts are unreachable").
     result = run_cli(cli, "fmea", SCENARIO, "--out", out, "--threads", "2", "--history",
                      "--set", "pulses.reading=paper", "--set", f"pulses.paper.pulse_width_s={w}",
                      "--set", "pulses.paper.measurement_noise.angle_sigma_deg=0",

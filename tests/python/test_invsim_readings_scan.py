@@ -1,5 +1,5 @@
-"""python/scan_invsim_readings.py's brake mode (docs/invsim.md, "A designed lateral brake"): the
-objectives over seed blocks are those flown seed by seed through `chaser fmea` itself, a study's
+"""python/invsim_study/scan_invsim_readings.py's brake mode (docs/invsim.md, "A designed lateral
+brake"): the objectives over seed blocks are those flown seed by seed through `chaser fmea` itself, a study's
 seed is changed on a copy, and the rule that picks the design whose lever arms are scanned asks for
 every one of targets (2) to (5)."""
 import copy
@@ -10,7 +10,7 @@ import yaml
 
 from conftest import REPO
 
-sys.path.insert(0, str(REPO / "python"))
+sys.path.insert(0, str(REPO / "python" / "invsim_study"))
 import calibrate_invsim as cal  # noqa: E402
 import scan_invsim_readings as sr  # noqa: E402
 
@@ -69,7 +69,7 @@ def test_the_fault_targets_rule_needs_every_one_of_2_to_5():
 
 
 def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(cli, tmp_path, monkeypatch):
-    """`tie` (docs/invsim.md, "A designed lateral brake"): q_vy is the lowest J on the first block,
+    """`tie` (docs/invsim.md, "Why the nominal row cannot choose the brake"): q_vy is the lowest J on the first block,
     every block's J is the one block_objectives flies, and each design's difference is taken to the
     shipped design's J on the same block (the shipped design's own is zero)."""
     monkeypatch.setattr(sr, "Q_VY_LOOK", [0.6, 1.0])
@@ -99,7 +99,7 @@ def test_the_tie_scan_pairs_each_design_with_the_shipped_one_on_the_same_seeds(c
 
 
 def test_the_four_separation_is_the_paper_fours_least_deviation_over_the_others_largest():
-    """four_separation (docs/invsim.md, "Target (6) over the start designs"): the ratio of the
+    """four_separation (docs/invsim.md, "The start's lateral drift"): the ratio of the
     smallest deviation ratio among the paper's four lost Table 5 modes to the largest among the
     other Table 5 modes, whatever the Table 4 rows do; above 1 only where a threshold separates them."""
     rows = {m: {"table": "table5", "deviation_ratio": "1.2"} for m in cal.PAPER_LOST}
@@ -159,7 +159,7 @@ def test_the_lateral_design_option_changes_a_copy_of_the_block_and_goes_with_shi
     moved["pulses"]["paper"]["lateral_time_constant_s"] = before["pulses"]["paper"]["lateral_time_constant_s"]
     moved["pulses"]["paper"]["lateral_brake_mps2"] = before["pulses"]["paper"]["lateral_brake_mps2"]
     assert moved == before
-    refused = subprocess.run([sys.executable, str(REPO / "python" / "scan_invsim_readings.py"), "tie",
+    refused = subprocess.run([sys.executable, str(REPO / "python" / "invsim_study" / "scan_invsim_readings.py"), "tie",
                               "--lateral-design", "200,0.0075"], capture_output=True, text=True)
     assert refused.returncode == 2 and "--lateral-design goes with `shipped`" in refused.stderr
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Which readings of Zhou 2018's pulse count can give its nominal row (Table 4): a bound from the
 paper's own numbers and the x impulse balance, independent of the chaser's mass and of the pilot
-model (docs/invsim.md "Which targets no reading can meet, and why").
+model (docs/invsim.md, "Why Zhou's nominal x counts are unreachable").
 
-Usage: /usr/bin/python3 python/zhou_pulse_bounds.py [--dock-x M] [--z-excursion M] [--attitude DEG]
+Usage: /usr/bin/python3 python/invsim_study/zhou_pulse_bounds.py [--dock-x M] [--z-excursion M] [--attitude DEG]
 
 A reading counts C_d = sum over the openings i of direction d's group of c(dtau_i) pulses. Its
 spread rho is the ratio of the largest to the smallest impulse one counted pulse can carry,
@@ -191,7 +191,8 @@ def report_shares():
     mean_x = (PAPER_NOMINAL[0] + PAPER_NOMINAL[1]) / 2.0
     cases = [("the paper's nominal", PAPER_NOMINAL),
              (f"the paper's, x+ = x- = {mean_x:g} (what the balance allows)", (mean_x, mean_x) + PAPER_NOMINAL[2:]),
-             ("Chaser `paper`, calibrated (docs/invsim.md)", (164, 157, 183, 322, 99, 332))]
+             ("Chaser `paper` without noise (w = 0.06 s, Q diag(1, 1, 1, 10, 3, 0.03))",
+              (164, 157, 183, 322, 99, 332))]
     print("| nominal counts | z share | y share | rises within 10 pt | z doubles worst | Table 5 ratio (in 1.3-1.6) |")
     print("|---|---|---|---|---|---|")
     for name, counts in cases:

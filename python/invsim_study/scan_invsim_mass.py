@@ -2,12 +2,12 @@
 """The chaser's mass, which Zhou 2018 does not print, against the Zhou 2018 targets (1)-(6): an exploration, not
 a calibration (docs/invsim.md, "The chaser's mass").
 
-Usage: /usr/bin/python3 python/scan_invsim_mass.py [SCENARIO] [--masses M,M,...] [--lateral T] [--arms]
+Usage: /usr/bin/python3 python/invsim_study/scan_invsim_mass.py [SCENARIO] [--masses M,M,...] [--lateral T] [--arms]
            [--arms-d D,D,...] [--arms-e E,E,...] [--chaser BIN] [--csv OUT]
 
 For each mass (the inertia and every thrust stay the scenario's: the paper prints the thrusts, 60
 and 25 N, and neither mass nor inertia), the `paper` reading is calibrated on the nominal row
-exactly as python/calibrate_invsim.py does (the same grids, objective and descent), then the 41
+exactly as calibrate_invsim.py does (the same grids, objective and descent), then the 41
 modes of the baseline layout are flown with that calibration fixed and scored against the Zhou 2018
 targets (1)-(6) (calibrate_invsim.targets). The objective J of each mass's calibration says which mass the
 nominal row itself prefers; the targets say what the fault rows would need.

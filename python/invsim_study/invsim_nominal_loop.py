@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A translation-only model of the nominal inverse-simulation loop (docs/invsim.md, "Readings of App. B").
 
-Usage: /usr/bin/python3 python/prototypes/invsim_nominal_loop.py
+Usage: /usr/bin/python3 python/invsim_study/invsim_nominal_loop.py
 
 The Hill-frame CW dynamics (x along the target's velocity, z to the Earth), the inverse model of
 eqs. 17-21 over 3 steps, App. B's pulse (dead zone k, opening dtau = |u| tau / u_max at the step's
@@ -72,7 +72,8 @@ def run(weights=(1, 1, 1, 1, 1, 1), k=0.35, width=None, relay=False, hold=1, ste
 
 if __name__ == "__main__":
     print("smooth, Q = I:", *run())
-    print("paper reading, shipped (w = 0.06 s):", run((1, 1, 1, 10, 3, 0.03), width=0.06)[0])
+    print("paper reading without noise (w = 0.06 s, Q diag(1, 1, 1, 10, 3, 0.03)):",
+          run((1, 1, 1, 10, 3, 0.03), width=0.06)[0])
     for k in (0.05, 0.1, 0.2):
         print(f"paper reading, k = {k}:", run((1, 1, 1, 10, 3, 0.03), k=k, width=0.06)[0])
     print("relay over the whole step:", run(relay=True)[0])

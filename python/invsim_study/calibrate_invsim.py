@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Calibration of the `paper` reading of Zhou 2018's inverse simulation on the NOMINAL case only.
 
-Usage: /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check] [--q-vx-max Q]
+Usage: /usr/bin/python3 python/invsim_study/calibrate_invsim.py [SCENARIO] [--chaser BIN] [--write] [--check] [--q-vx-max Q]
                                                    [--lateral T] [--brake A] [--thorough]
-       /usr/bin/python3 python/calibrate_invsim.py --targets DIR/fmea.csv
-       /usr/bin/python3 python/calibrate_invsim.py [SCENARIO] --global N [--seed S]
+       /usr/bin/python3 python/invsim_study/calibrate_invsim.py --targets DIR/fmea.csv
+       /usr/bin/python3 python/invsim_study/calibrate_invsim.py [SCENARIO] --global N [--seed S]
 
 The `paper` reading (docs/invsim.md, "Readings of App. B") leaves eight choices the paper does not
 print: the width w of one counted valve opening (pulses.paper.pulse_width_s), the velocity
@@ -65,7 +65,7 @@ PAPER_KP = 0.53  # Zhou 2018, Table 4, first row
 
 # Zhou 2018, Tables 4 and 5, read from their one copy in the code (invsim/zhou2018_tables.cpp):
 # {label: [x+, x-, y+, y-, z+, z-]}, Table 4 in the paper's order, and the labels printed `---`.
-TABLES_CPP = pathlib.Path(__file__).resolve().parent.parent / "invsim" / "zhou2018_tables.cpp"
+TABLES_CPP = pathlib.Path(__file__).resolve().parents[2] / "invsim" / "zhou2018_tables.cpp"
 ROW = re.compile(r'\{"([^"]+)", (true|false), \{([^}]*)\}, ([0-9.]+)\}')
 
 
@@ -96,7 +96,7 @@ BRAKE_RETURN_GRID = [50.0, 100.0, 200.0]  # [s] the return's time constant after
 MAX_SWEEPS = 4
 # The objective's resolution at the calibrated nominal: fmea.csv counts whole pulses, and one pulse
 # of x+ + x- moves J by 0.0015. Lateral designs closer than this are the nominal row's tie
-# (docs/invsim.md, "With 4,000 draws the tie stays"); calibrate() gives a tie to the simpler design.
+# (docs/invsim.md, "Why the nominal row cannot choose the brake"); calibrate() gives a tie to the simpler design.
 TIE_J = 0.0015
 START = {"w": 0.1, "qv": [1.0, 1.0, 1.0], "range": 0.0, "angle": 0.0, "lateral": 0.0, "brake": 0.0}
 

@@ -1,16 +1,17 @@
 #!/usr/bin/env python3
-"""The Zhou 2018 targets (1)-(6) over the `paper` reading's whole grid of free choices: an exploration, not a
-calibration (docs/invsim.md, "Which targets no reading can meet, and why").
+"""The Zhou 2018 targets (1)-(6) over the `paper` reading's whole grid of free choices: an exploration,
+not a calibration (docs/invsim.md, "Why Zhou's nominal x counts are unreachable" and the sections
+after it; python/invsim_study/README.md).
 
-Usage: /usr/bin/python3 python/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT] [--lateral-design T,A]
-       /usr/bin/python3 python/scan_invsim_readings.py brake [--chaser BIN] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py tie [--chaser BIN] [--csv OUT]
-       /usr/bin/python3 python/scan_invsim_readings.py separation [--chaser BIN] [--csv OUT]
+Usage: /usr/bin/python3 python/invsim_study/scan_invsim_readings.py coarse [--chaser BIN] [--k K] [--csv OUT]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py targets [--chaser BIN] [--width W] [--k K] [--csv OUT]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py faulted [--chaser BIN] [--angles A,B,...] [--csv OUT]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py shipped [--chaser BIN] [--csv OUT] [--lateral-design T,A]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py brake [--chaser BIN] [--csv OUT]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py tie [--chaser BIN] [--csv OUT]
+       /usr/bin/python3 python/invsim_study/scan_invsim_readings.py separation [--chaser BIN] [--csv OUT]
 
-coarse: the counts python/zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
+coarse: the counts zhou_pulse_bounds.py cannot rule out (ceil(dtau / w) with w >= 0.2 s, one
 per opening at w = 1 s) on the nominal case, over every Q of the calibration's grid: how many of
 the six directions come within 15 % of Table 4, and x+ / x- (the paper's 2.28; 1.69-3.08 within
 15 %).
