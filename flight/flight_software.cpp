@@ -1,6 +1,7 @@
 #include "flight/flight_software.hpp"
 
 #include "core/rotation.hpp"
+#include "model/run_timing.hpp"
 
 namespace chaser::flight {
 
@@ -40,7 +41,7 @@ std::optional<SyncApproachPlan> make_sync_approach(const model::Scenario& scenar
 FlightParams make_flight_params(const model::Scenario& scenario) {
   return FlightParams{
       .orbit = model::TargetOrbit(scenario.orbit),
-      .period_ns = from_seconds(scenario.control_period_s),
+      .period_ns = model::run_timing(scenario).control_period_ns,
       .guidance = scenario.guidance,
       .navigation = make_nav_params(scenario),
       .position = make_position_control(scenario),
