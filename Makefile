@@ -1,7 +1,8 @@
 # Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
 # benchmarks, `make sanitize` every test under ASan and UBSan (`make sanitize-fast` CI's subset),
-# `make fuzz` the loaders' fuzzers, `make servicing` COMRADE's synchronisation and its Table 5
-# (docs/reliability.md). Each target installs missing system packages first (scripts/install-deps).
+# `make fuzz` the loaders' fuzzers (docs/reliability.md), `make servicing` COMRADE's synchronisation
+# and its Table 5, `make docs` the generated tables of README.md and docs/ (scripts/doc_tables.py).
+# Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
 MAKEFLAGS += --no-print-directory
@@ -17,7 +18,7 @@ FUZZ_TARGETS ?= scenario overrides invsim
 
 SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_io test_flight test_fdi test_fdi_design
 
-.PHONY: all deps configure build test demo fmea servicing bench sanitize sanitize-fast fuzz clean
+.PHONY: all deps configure build test demo fmea servicing docs bench sanitize sanitize-fast fuzz clean
 
 all: build
 
@@ -52,6 +53,11 @@ servicing: build
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_sync.yaml --preset comrade-table5 \
 	  --also scenarios/comrade_assist.yaml --out $(SERVICING_OUT)/table5
 	@$(PYTHON) python/plot_table5.py $(SERVICING_OUT)/table5
+
+# Every generated results table in README.md and docs/ rewritten from its command's output
+# (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take a few minutes on 2 cores).
+docs: build
+	@CHASER_CLI=./$(BUILD)/cli/chaser $(PYTHON) scripts/doc_tables.py --write
 
 bench: build
 	@./$(BUILD)/bench/chaser_bench
