@@ -215,6 +215,36 @@ int comrade_table5(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// --rerun ... --of DIR: the campaign the options describe must be the one DIR holds (its
+// campaign.json, shards aside): run I of another campaign is another run, and nothing would say so.
+std::string check_rerun_of(const std::string& dir, const campaign::CampaignPlan& plan) {
+  std::string error;
+  const auto found = campaign::read_campaign_json(dir, error);
+  if (!found) return fmt::format("--of: {}", error);
+  const std::string differ =
+      campaign::differing_keys(*found, campaign::campaign_json(plan, campaign::Shard{}), {"shard", "shard_runs"});
+  if (!differ.empty())
+    return fmt::format("--of: {} holds a different campaign (differs in: {}); give --rerun the campaign's own "
+                       "scenario, --set, --seed, --runs, --cases and --preset",
+                       dir, differ);
+  return "";
+}
+
+// "run 6 of 15: case stuck_open, seed 1 (none 5, stuck_open 5, stuck_closed 5)": which campaign the
+// options describe, so that a run of another campaign than the user meant is visible.
+std::string describe_rerun(const campaign::CampaignPlan& plan, std::int64_t run) {
+  std::string cases;
+  std::string_view in_case;
+  std::int64_t first = 0;
+  for (const campaign::CaseRuns& cr : plan.layout.cases()) {
+    cases += fmt::format("{}{} {}", cases.empty() ? "" : ", ", campaign::to_string(cr.fault_case), cr.runs);
+    if (run >= first && run < first + cr.runs) in_case = campaign::to_string(cr.fault_case);
+    first += cr.runs;
+  }
+  return fmt::format("run {} of {}: case {}, campaign seed {} ({})", run, plan.layout.total_runs(), in_case,
+                     plan.nominal.campaign.seed, cases);
+}
+
 // --rerun I: run I of the campaign the other options describe, alone, into --out: its
 // telemetry.csv and summary.json, and run.csv (the runs.csv header and the run's row, the same
 // bytes as in the campaign's runs.csv). Each run depends only on (scenario, seed, index), so a
@@ -234,6 +264,13 @@ int rerun_one(const CampaignArgs& args) {
                              total - 1, run);
     return kExitBadInput;
   }
+  if (!args.rerun_of.empty()) {
+    if (const std::string error = check_rerun_of(args.rerun_of, prepared->plan); !error.empty()) {
+      std::cerr << ("chaser campaign: " + error + '\n');
+      return kExitBadInput;
+    }
+  }
+  std::cout << "campaign: " << describe_rerun(prepared->plan, run) << '\n';
   const flight::FlightParams flight = flight::make_flight_params(prepared->plan.nominal);
   const campaign::RunOutput out = campaign::run_one(prepared->plan, flight, run, args.out_dir);
   const std::filesystem::path row_path = std::filesystem::path(args.out_dir) / "run.csv";
@@ -251,6 +288,10 @@ int rerun_one(const CampaignArgs& args) {
 }  // namespace
 
 int campaign_command(const CampaignArgs& args) {
+  if (!args.rerun_of.empty() && !args.rerun) {
+    std::cerr << "chaser campaign: --of: only with --rerun\n";
+    return kExitBadInput;
+  }
   if (args.rerun) {
     if (args.preset == kPresetTable5 || !args.also.empty()) {
       std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5 or --also (rerun one case's folder: "

@@ -45,6 +45,7 @@ struct CampaignArgs {
   std::vector<std::string> targets;  // --target 'P_nd<=1e-3@0.95' (campaign/target.hpp)
   std::vector<std::string> also;     // --also SCENARIO: more columns of --preset comrade-table5 (ASSIST)
   std::optional<std::int64_t> rerun; // --rerun I: fly run I alone into --out (telemetry, summary, its row)
+  std::string rerun_of;              // --of DIR: the campaign folder --rerun's run must belong to (checked)
 };
 
 // chaser fmea (docs/invsim.md, "chaser fmea").

@@ -113,6 +113,8 @@ int main(int argc, char** argv) {
   campaign_cmd->add_option("--keep-telemetry", campaign.keep_telemetry, "Keep telemetry of runs with index < K");
   campaign_cmd->add_option("--rerun", campaign.rerun,
                            "Fly run I of this campaign alone: telemetry.csv, summary.json and its runs.csv row in --out");
+  campaign_cmd->add_option("--of", campaign.rerun_of,
+                           "With --rerun: the campaign's folder; refuses options that describe another campaign");
   campaign_cmd->add_option("--seed", campaign.seed, "Campaign seed (replaces campaign.seed)");
   campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
   campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign; comrade-table5: COMRADE 2018 Table 5 by spin case (docs/campaigns.md)");

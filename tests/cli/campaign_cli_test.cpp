@@ -209,6 +209,26 @@ TEST(CampaignCli, RerunFliesOneRunOfTheCampaign) {
   expect_bad("--runs 2 --rerun 0 --shard 0/2", "--rerun flies one run");
 }
 
+// --rerun ... --of DIR checks that the options describe the campaign DIR holds: without the
+// campaign's --runs and --cases, run 3 would be another run (of the default cases), silently. The
+// line it prints names the run's case and the campaign it belongs to.
+TEST(CampaignCli, RerunOfACampaignFolderRefusesOptionsOfAnotherCampaign) {
+  const fs::path dir = fresh_dir("rerun_of_campaign");
+  ASSERT_EQ(chaser(kShort + "--cases none,loss --runs 2 --out " + dir.string()).exit_code, 0);
+  const CommandResult same = chaser(kShort + "--cases none,loss --runs 2 --rerun 3 --of " + dir.string() +
+                                    " --out " + fresh_dir("rerun_of_one").string());
+  ASSERT_EQ(same.exit_code, 0) << same.output;
+  EXPECT_NE(same.output.find("run 3 of 4: case loss, campaign seed"), std::string::npos) << same.output;
+  EXPECT_NE(same.output.find("(none 2, loss 2)"), std::string::npos) << same.output;
+  const fs::path other = fresh_dir("rerun_of_other");
+  const CommandResult r = chaser(kShort + "--rerun 3 --of " + dir.string() + " --out " + other.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("holds a different campaign (differs in: cases, total_runs)"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(other / "summary.json"));
+  expect_bad("--runs 2 --of " + dir.string(), "--of: only with --rerun");
+}
+
 }  // namespace
 
 namespace {
