@@ -51,6 +51,7 @@ void read_chaser(MapReader& r, model::SpacecraftParams& out) {
   if (r.has("keep_out_radius_m"))
     r.number("keep_out_radius_m", Range::closed(0.0, kMaxLayoutExtentM), out.keep_out_radius_m);
   read_optional_slosh(r, out.slosh);
+  read_optional_arm(r, out.arm);
 }
 
 void read_target(MapReader& r, model::TargetParams& out) {

@@ -36,6 +36,8 @@ void read_optional_earth_orbit(MapReader& r, std::optional<model::EarthOrbitPara
 void read_optional_target_body(MapReader& r, std::optional<model::TargetBodyParams>& out);
 // chaser.slosh, the propellant tanks' slosh (io/slosh_reader.cpp).
 void read_optional_slosh(MapReader& r, std::optional<model::SloshParams>& out);
+// chaser.arm, the servicer's arm and gripper (io/arm_reader.cpp).
+void read_optional_arm(MapReader& r, std::optional<model::ArmParams>& out);
 void read_environment(MapReader& r, model::EnvironmentParams& out);
 void read_sensors(MapReader& r, model::SensorParams& out);
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out);
@@ -52,6 +54,9 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag);
 // What the thruster set can do: spanning sets before and after recovery, the FDI's set size,
 // single-loss tolerance, fault thrusters that exist (called by validate_scenario).
 void validate_thruster_set(const model::Scenario& s, Diagnostics& diag);
+// chaser.arm against itself, the target's fixture and the capture point (io/arm_validation.cpp,
+// called by validate_scenario).
+void validate_arm(const model::Scenario& s, Diagnostics& diag);
 // The campaign run length against the control period (called by validate_scenario).
 void validate_campaign(const model::Scenario& s, Diagnostics& diag);
 

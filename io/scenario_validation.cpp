@@ -316,6 +316,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
     check_sync_approach(s.guidance, diag);
   }
   check_hinf(s, diag);
+  validate_arm(s, diag);
   validate_campaign(s, diag);
 }
 

@@ -6,7 +6,8 @@
 //
 // Frames: every link frame is parallel to its parent's at q = 0 (the arm stretched along the
 // mounting frame's +x), so a joint's axis and its child's offset are written in the parent's axes.
-// Link 1's parent is the hub's body frame (origin at the hub's centre of mass).
+// Link 1's parent is the chaser's body frame: joint 1 sits at mount_body_m (from the body's
+// reference point, as the thrusters do) plus links[0].joint_position_parent_m.
 #include <array>
 #include <string>
 
@@ -37,6 +38,7 @@ struct GripperParams {
 };
 
 struct ArmParams {
+  Vec3 mount_body_m = Vec3(1.05, 0.0, 0.0);  // [m] the arm's base in the chaser's body frame, from its reference point
   std::array<ArmLinkParams, kArmJoints> links{};
   GripperParams gripper;
   double torque_repeated_peak_Nm = 176.0;  // [N m] COMRADE 2018, Table 3 footnote
@@ -49,17 +51,17 @@ Vec3 tube_inertia_kgm2(double mass_kg, double length_m, double radius_m);
 
 // A plausible 7-DOF space arm (shoulder roll-pitch-roll, elbow pitch, wrist roll-pitch-roll, the
 // S-R-S layout of the light-weight arms built for on-orbit servicing), 3.1 m from the shoulder to
-// the tool point so that, mounted on the hub's +x face 1.05 m ahead of its centre of mass, it
+// the tool point so that, mounted on the hub's +x face 1.05 m ahead of its reference point, it
 // reaches a fixture 3.5 m ahead (comrade_sync's capture point) with its elbow bent; 80 kg in all.
 ArmParams default_arm();
 
 // The scene flown by the multibody plant: the hub (the chaser's bus), the arm mounted on it, the
-// target; each free body about its centre of mass, gravity and contact off (the orbit's forces are
-// applied per body by the plant).
+// target; each free body's frame at its centre of mass, gravity and contact off (the orbit's forces
+// are applied per body by the plant).
 struct MultibodySceneParams {
   double hub_mass_kg = 1600.0;
   Mat3 hub_inertia_kgm2 = Mat3::Identity();     // [kg m^2] about the hub's CoM, body axes
-  Vec3 arm_mount_hub_m = Vec3(1.05, 0.0, 0.0);  // [m] joint 1's origin in the hub's body frame
+  Vec3 hub_com_body_m = Vec3::Zero();           // [m] the hub's CoM from the body's reference point
   ArmParams arm = default_arm();
   double target_mass_kg = 7828.0;
   Mat3 target_inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the target's CoM, target axes

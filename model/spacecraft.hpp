@@ -4,6 +4,7 @@
 
 #include "core/constants.hpp"
 #include "core/types.hpp"
+#include "model/arm.hpp"
 #include "model/keep_out.hpp"
 
 namespace chaser::model {
@@ -41,6 +42,7 @@ struct SpacecraftParams {
   std::optional<SloshParams> slosh;          // propellant slosh (with orbit.earth only)
   double keep_out_radius_m = 0.0;            // [m] a sphere about the CoM enclosing the chaser, for the
                                              // target's keep-out clearance (model/keep_out.hpp)
+  std::optional<ArmParams> arm;              // the servicer's 7-DOF arm (model/arm.hpp); absent: none
 };
 
 // COMRADE 2018, sec. 7.1: the ENVISAT-like target's spin cases at 2.5 deg/s (docs/scenario.md

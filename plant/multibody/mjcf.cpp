@@ -46,7 +46,8 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                  scene.timestep_s, scene.integrator, scene.hub_mass_kg, full_inertia(scene.hub_inertia_kgm2));
   for (int i = 0; i < model::kArmJoints; ++i) {
     const model::ArmLinkParams& link = arm.links[static_cast<std::size_t>(i)];
-    const Vec3 position = i == 0 ? Vec3(scene.arm_mount_hub_m + link.joint_position_parent_m)
+    // The hub's frame is at its CoM: the mount moves by the CoM's offset from the reference point.
+    const Vec3 position = i == 0 ? Vec3(arm.mount_body_m - scene.hub_com_body_m + link.joint_position_parent_m)
                                  : link.joint_position_parent_m;
     append_link(out, i, link, position, 3 + i);
   }

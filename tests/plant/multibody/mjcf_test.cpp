@@ -45,17 +45,18 @@ TEST(Mjcf, TheCompiledSceneHoldsTheParametersExactly) {
 }
 
 TEST(Mjcf, TheStretchedArmPutsTheToolPointWhereTheLinksSayAndTheTextIsStable) {
-  const model::MultibodySceneParams scene;
+  model::MultibodySceneParams scene;
+  scene.hub_com_body_m = Vec3(0.02, -0.01, 0.03);  // the hub's frame is at its CoM
   MujocoModel model(mjcf_of(scene));
   model.forward();
   const int tool = mj_name2id(&model.model(), mjOBJ_SITE, "tool");
   ASSERT_GE(tool, 0);
-  Vec3 expected = scene.arm_mount_hub_m + scene.arm.gripper.position_link7_m;
+  Vec3 expected = scene.arm.mount_body_m - scene.hub_com_body_m + scene.arm.gripper.position_link7_m;
   for (const auto& link : scene.arm.links) expected += link.joint_position_parent_m;
   const Vec3 tool_m(model.data().site_xpos[3 * tool], model.data().site_xpos[3 * tool + 1],
                     model.data().site_xpos[3 * tool + 2]);
   EXPECT_LT((tool_m - expected).norm(), 1e-12);
-  EXPECT_NEAR(expected.x() - scene.arm_mount_hub_m.x(), 3.1, 1e-12);  // the arm's reach
+  EXPECT_NEAR(expected.x() - scene.arm.mount_body_m.x(), 3.1, 1e-12);  // the arm's reach
   EXPECT_EQ(mjcf_of(scene), mjcf_of(scene));
 }
 
