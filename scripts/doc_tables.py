@@ -116,7 +116,7 @@ class Command:
     quick: bool       # runs in seconds
 
     def shown(self):
-        return "chaser " + " ".join(self.key if a == "OUT" else a for a in self.args)
+        return "chaser " + " ".join(self.key if a == "OUT" else shlex.quote(a) for a in self.args)
 
     def argv(self, cli, out, threads):
         argv = [cli] + [str(out) if a == "OUT" else a for a in self.args]
@@ -459,9 +459,315 @@ def mu_rows(json_path):
 
 
 # --------------------------------------------------------------------------------------------------
+# Zhou 2018: chaser fmea (docs/invsim.md)
+
+INVSIM_SCENARIO = "scenarios/manual_rvd.yaml"
+DIRECTIONS = ("x_pos", "x_neg", "y_pos", "y_neg", "z_pos", "z_neg")
+
+# Zhou 2018, Table 4: pulses x+, x-, y+, y-, z+, z- per mode (the paper's order); its printed nominal k_p.
+ZHOU_TABLE4 = {
+    "nominal": (114, 50, 230, 327, 289, 567), "e1~": (114, 50, 464, 328, 292, 568),
+    "e2~": (114, 50, 459, 326, 289, 565), "e1/e1~": (116, 52, 459, 645, 289, 567),
+    "e2/e1~": (115, 51, 458, 647, 290, 568), "e1/e2~": (116, 52, 457, 645, 289, 568),
+    "f1": (116, 51, 231, 327, 576, 567), "f2~": (114, 50, 231, 328, 288, 1131),
+    "f1/f1~": (116, 51, 230, 326, 579, 1088), "f2/f1~": (116, 51, 229, 328, 577, 1088),
+    "f1/f2~": (116, 51, 227, 325, 577, 1089), "f2/f2~": (117, 52, 230, 326, 576, 1088),
+    "d1": (230, 49, 228, 325, 290, 567), "d1~": (123, 104, 231, 326, 288, 564),
+    "d1/d1~": (250, 105, 232, 328, 288, 564), "d2/d1~": (251, 106, 228, 323, 288, 563),
+    "d1/d2~": (252, 105, 229, 325, 290, 569),
+}
+ZHOU_NOMINAL_KP = 0.53
+ZHOU_BASIC_PULSE_AMOUNT = 3000   # eq. 22
+# Zhou 2018, Table 5: k_p of the multi-axis modes the pages quote; None for the four printed `---`.
+ZHOU_TABLE5_KP = {"d1/d2~+e2/e1~": None, "d1/d2~+e2/e2~": None, "d2/d1~+e1/e1~": None, "d2/d1~+e1/e2~": None,
+                  "d1/d1~+e1/e1~": 0.76, "d2/d2~+e2/e1~": 0.76}
+
+X_PAIRS = ("d1/d1~", "d1/d2~", "d2/d1~", "d2/d2~")
+Y_PAIRS = ("e1/e1~", "e1/e2~", "e2/e1~", "e2/e2~")
+MOMENTS_X = ("Mz+/Mz-", "Mz+/Mz+", "Mz-/Mz-", "Mz-/Mz+")   # Table 6: the yaw moments the lost pair leaves
+MOMENTS_Y = ("Mz-/Mz+", "Mz-/Mz-", "Mz+/Mz+", "Mz+/Mz-")
+LAYOUTS = ("baseline", "scheme_I", "scheme_II")
+
+
+def fmea_rows(out, configuration="baseline"):
+    """fmea.csv of a chaser fmea run: one layout's rows as {mode: row}, the fields as written."""
+    with open(Path(out) / "fmea.csv", newline="") as f:
+        return {r["mode"]: r for r in csv.DictReader(f) if r["configuration"] == configuration}
+
+
+def markdown_table(path, heading):
+    """The first Markdown table after the line `heading` in a file, as a list of {column: cell}."""
+    lines = Path(path).read_text().split("\n")
+    start = lines.index(heading)
+    rows = []
+    for line in lines[start + 1:]:
+        cells = split_row(line)
+        if cells is None:
+            if rows:
+                break
+            continue
+        rows.append(cells)
+    return [dict(zip(rows[0], r)) for r in rows[2:]]
+
+
+def reconfiguration(out):
+    """fmea.md's "Reconfiguration" table as {layout: {column: cell}}."""
+    rows = markdown_table(Path(out) / "fmea.md", "## Reconfiguration: the layouts on the same fault modes "
+                                                 "(Zhou 2018, section 4.2)")
+    return {r["Layout"]: r for r in rows}
+
+
+def classes_cell(r):
+    return f"{r['Class I']} / {r['Class II']} / {r['Class III']}"
+
+
+def class_counts(rows, tables=("table2", "table5")):
+    return {c: sum(r["risk_class"] == c for r in rows.values() if r["table"] in tables) for c in ("I", "II", "III")}
+
+
+def counts(row):
+    return [int(row[d]) for d in DIRECTIONS]
+
+
+def group_accelerations(scenario=INVSIM_SCENARIO):
+    """Each translation group's largest acceleration [m/s^2], {(axis, sign): u_max}, from the scenario."""
+    import yaml
+    doc = yaml.safe_load((ROOT / scenario).read_text())
+    u_max = {}
+    for t in doc["thrusters"]:
+        if t["role"] == "translation":
+            key = (t["axis"], t["sign"])
+            u_max[key] = u_max.get(key, 0.0) + t["thrust_N"] / doc["chaser"]["mass_kg"]
+    return u_max
+
+
+def opening_times(history_out, configuration="baseline", mode="nominal"):
+    """Per direction, the summed opening time of the steps that fired: |u| / u_max of a step, at most one step."""
+    history = Path(history_out) / "history"
+    with open(history / "index.csv", newline="") as f:
+        index = {(r["configuration"], r["mode"]): r["file"] for r in csv.DictReader(f)}
+    with open(history / index[configuration, mode], newline="") as f:
+        steps = list(csv.DictReader(f))
+    step = float(steps[1]["t_s"]) - float(steps[0]["t_s"])
+    u_max = group_accelerations()
+    times = []
+    for axis in "xyz":
+        for sign in (1, -1):
+            times.append(sum(min(abs(float(s[f"u{axis}_mps2"])) / u_max[axis, sign], 1.0) * step
+                             for s in steps if int(s[f"pulse_{axis}"]) == sign))
+    return times
+
+
+def invsim_nominal_rows(history_out, paper_out):
+    smooth, paper = fmea_rows(history_out)["nominal"], fmea_rows(paper_out)["nominal"]
+    for name, row in (("smooth", smooth), ("paper", paper)):
+        if row["docked"] != "true":
+            raise ValueError(f"the {name} nominal run does not dock: the page says it does")
+    zhou = ZHOU_TABLE4["nominal"]
+    return [[str(c) for c in zhou] + [short(ZHOU_NOMINAL_KP)],
+            [str(c) for c in counts(smooth)] + [fixed(number(smooth["k_p"]), 3)],
+            [fixed(t, 1) for t in opening_times(history_out)] + [""],
+            [str(c) for c in counts(paper)] + [fixed(number(paper["k_p"]), 3)],
+            [fixed(o / z, 2) for o, z in zip(counts(paper), zhou)] + [fixed(number(paper["k_p"]) / ZHOU_NOMINAL_KP, 2)]]
+
+
+def invsim_nominal_fill(history_out, paper_out):
+    r = fmea_rows(history_out)["nominal"]
+    return {"az": fixed(number(r["peak_azimuth_deg"]), 2), "el": fixed(number(r["peak_elevation_deg"]), 2),
+            "kg": fixed(number(r["propellant_kg"]), 1)}
+
+
+def class_grid(rows, bold):
+    def cell(x, y):
+        c = rows[f"{x}+{y}"]["risk_class"]
+        return f"**{c}**" if bold and c == "III" else c
+    return [[cell(x, y) for y in Y_PAIRS] for x in X_PAIRS]
+
+
+def invsim_table6_rows(out):
+    return class_grid(fmea_rows(out), bold=True)
+
+
+def invsim_table6_fill(out):
+    rows = fmea_rows(out)
+    c = class_counts(rows)
+    return {"modes": sum(c.values()), "c1": c["I"], "c2": c["II"], "c3": c["III"]}
+
+
+TABLE5_QUOTED = (("d1/d2~+e2/e1~", "d1/d2~ + e2/e1~"), ("d1/d2~+e2/e2~", "d1/d2~ + e2/e2~"),
+                 ("d2/d1~+e1/e1~", "d2/d1~ + e1/e1~"), ("d2/d1~+e1/e2~", "d2/d1~ + e1/e2~"),
+                 ("d1/d1~+e1/e1~", 'd1/d1~ + e1/e1~ (case 1, Fig. 9: "the azimuth appears to be diverging largely")'),
+                 ("d2/d2~+e2/e1~", 'd2/d2~ + e2/e1~ (case 4, Fig. 12: "the azimuth exceeds the limitation")'))
+
+
+def invsim_table5_rows(out):
+    rows = fmea_rows(out)
+    result = []
+    for mode, _ in TABLE5_QUOTED:
+        r, kp = rows[mode], ZHOU_TABLE5_KP[mode]
+        result.append(["`---`" if kp is None else fixed(kp, 2),
+                       f"{r['risk_class']}, {fixed(number(r['peak_azimuth_deg']), 1)} deg",
+                       f"{fixed(number(r['peak_yaw_deg']), 1)} deg"])
+    return result
+
+
+def invsim_reconfiguration_rows(out):
+    layouts = reconfiguration(out)
+    return [[classes_cell(r), r["controllable"], r["propellant [kg]"], r["of it attitude [kg]"], r["yaw couple open [s]"],
+             f"{r['peak az [deg]']} / {r['peak yaw [deg]']}"] for r in (layouts[k] for k in LAYOUTS)]
+
+
+def invsim_three_axis_rows(out):
+    layouts = reconfiguration(out)
+    return [[classes_cell(r), r["controllable"], r["most failed, controllable"], r["fewest failed, lost"],
+             r["propellant [kg]"]] for r in (layouts[k] for k in LAYOUTS)]
+
+
+def invsim_three_axis_fill(out):
+    rows = fmea_rows(out)
+    three = [r for r in rows.values() if r["table"] == "three_axis"]
+    return {"modes": len(rows), "lost": sum(r["controllable"] != "true" for r in three), "n3": len(three)}
+
+
+OPTIMIZE_GROUPS = (("d_forward", "d"), ("d_backward", "d~"), ("e_negative", "e"), ("e_positive", "e~"))
+# The candidates with Scheme II's moves (d1, d2 into x-o-z, e1, e2 into y-o-z) and with Scheme I's thrust alone
+SCHEME_II_CANDIDATE = {"attitude_thrust": "25N", "d_forward": "xoz", "d_backward": "xoy", "e_negative": "yoz",
+                       "e_positive": "xoy"}
+SCHEME_I_CANDIDATE = {"attitude_thrust": "50N", "d_forward": "xoy", "d_backward": "xoy", "e_negative": "xoy",
+                      "e_positive": "xoy"}
+
+
+def optimize_candidates(out):
+    with open(Path(out) / "optimize.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        r["choices"] = dict(c.strip().split("=", 1) for c in r["candidate"].split(","))
+    return rows
+
+
+def candidate_row(r):
+    turned = [name for key, name in OPTIMIZE_GROUPS if r["choices"][key] != "xoy"]
+    return [r["rank"], r["choices"]["attitude_thrust"].removesuffix("N"), ", ".join(turned) or "none",
+            f"{r['class_I']} / {r['class_II']} / {r['class_III']}", fixed(number(r["propellant_kg"]), 1),
+            fixed(number(r["yaw_on_time_s"]), 0)]
+
+
+def find_candidate(rows, choices):
+    return next(r for r in rows if r["choices"] == choices)
+
+
+def invsim_optimize_rows(out):
+    rows = optimize_candidates(out)
+    ranked = sorted(rows, key=lambda r: int(r["rank"]))
+    return [candidate_row(r) for r in (ranked[0], ranked[1], find_candidate(rows, SCHEME_II_CANDIDATE),
+                                       find_candidate(rows, SCHEME_I_CANDIDATE))]
+
+
+def invsim_optimize_fill(out):
+    rows = optimize_candidates(out)
+    best = min(rows, key=lambda r: int(r["rank"]))
+    below = lambda other: fixed(100 * (1 - number(best["propellant_kg"]) / number(other["propellant_kg"])), 1)
+    return {"ok": sum(r["controllable"] == r["fault_modes"] for r in rows), "n": len(rows),
+            "modes": best["fault_modes"], "c1": sum(r["class_I"] == r["fault_modes"] for r in rows),
+            "vs2": below(find_candidate(rows, SCHEME_II_CANDIDATE)), "vs1": below(find_candidate(rows, SCHEME_I_CANDIDATE))}
+
+
+def spearman(a, b):
+    """Spearman's rank correlation, ties sharing their mean rank (as python/invsim_study/calibrate_invsim.py)."""
+    def ranks(v):
+        order = sorted(range(len(v)), key=lambda i: v[i])
+        r, i = [0.0] * len(v), 0
+        while i < len(order):
+            j = i
+            while j + 1 < len(order) and v[order[j + 1]] == v[order[i]]:
+                j += 1
+            for k in range(i, j + 1):
+                r[order[k]] = (i + j) / 2.0
+            i = j + 1
+        return r
+    ra, rb = ranks(a), ranks(b)
+    ma, mb = statistics.fmean(ra), statistics.fmean(rb)
+    cov = sum((x - ma) * (y - mb) for x, y in zip(ra, rb))
+    return cov / math.sqrt(sum((x - ma) ** 2 for x in ra) * sum((y - mb) ** 2 for y in rb))
+
+
+def zhou_kp(mode):
+    return sum(ZHOU_TABLE4[mode]) / ZHOU_BASIC_PULSE_AMOUNT
+
+
+def rise(kp, kp_nominal):
+    return 100.0 * (kp / kp_nominal - 1.0)
+
+
+def percent(v):
+    return f"{v:+.0f} %"
+
+
+def invsim_predictions_rows(paper_out, smooth_out):
+    paper, smooth = fmea_rows(paper_out), fmea_rows(smooth_out)
+    kp_nominal = number(paper["nominal"]["k_p"])
+    rows = []
+    for mode, zhou in ZHOU_TABLE4.items():
+        kp = number(paper[mode]["k_p"])
+        cells = ["/".join(map(str, counts(paper[mode]))), "/".join(map(str, zhou)), fixed(kp, 3), fixed(zhou_kp(mode), 3),
+                 fixed(number(smooth[mode]["k_p"]), 3)]
+        if mode == "nominal":
+            cells += ["", "", ""]
+        else:
+            ours, theirs = rise(kp, kp_nominal), rise(zhou_kp(mode), zhou_kp("nominal"))
+            cells += [percent(ours), percent(theirs), "yes" if abs(ours - theirs) <= 10.0 else "no"]
+        rows.append(cells)
+    return rows
+
+
+def invsim_predictions_fill(paper_out, smooth_out):
+    """Targets (1)-(3) and the rank correlation, as python/invsim_study/calibrate_invsim.py --targets scores them."""
+    paper = fmea_rows(paper_out)
+    kp_nominal = number(paper["nominal"]["k_p"])
+    faults = [m for m in ZHOU_TABLE4 if m != "nominal"]
+    return {"t1": sum(abs(o / z - 1.0) <= 0.15 for o, z in zip(counts(paper["nominal"]), ZHOU_TABLE4["nominal"])),
+            "t2": sum(abs(number(paper[m]["k_p"]) / zhou_kp(m) - 1.0) <= 0.15 for m in ZHOU_TABLE4),
+            "n2": len(ZHOU_TABLE4),
+            "t3": sum(abs(rise(number(paper[m]["k_p"]), kp_nominal) - rise(zhou_kp(m), zhou_kp("nominal"))) <= 10.0
+                      for m in faults),
+            "n3": len(faults),
+            "rho": fixed(spearman([number(paper[m]["k_p"]) for m in faults], [sum(ZHOU_TABLE4[m]) for m in faults]), 2)}
+
+
+def invsim_paper_table6_fill(out):
+    layouts = reconfiguration(out)
+    fill = {}
+    for k, name in enumerate(LAYOUTS):
+        r = layouts[name]
+        fill |= {f"c{k}1": r["Class I"], f"c{k}2": r["Class II"], f"c{k}3": r["Class III"], f"p{k}": r["propellant [kg]"]}
+    return fill
+
+
+DRIFT_MODES = ("d1/d2~+e2/e1~", "d2/d2~+e2/e1~", "d2/d1~+e1/e2~", "d1/d1~+e1/e2~")
+
+
+def drift_row(out):
+    rows = fmea_rows(out)
+    cells = []
+    for mode in DRIFT_MODES:
+        r = rows[mode]
+        az = number(r["peak_azimuth_deg"])
+        cells.append(f"**{fixed(az, 2)}**" if az > number(r["azimuth_limit_deg"]) else fixed(az, 2))
+    return cells
+
+
+def invsim_drift_rows(shipped, mirrored, still):
+    return [drift_row(out) for out in (shipped, mirrored, still)]
+
+
+# --------------------------------------------------------------------------------------------------
 # The registry
 
 T2_PRESET = ("campaign", "scenarios/msr_terminal.yaml", "--preset", "fonod2015-table2")
+FMEA = ("fmea", INVSIM_SCENARIO, "--out", "OUT")
+PAPER = ("--set", "pulses.reading=paper")
+NOISE_OFF = ("--set", "pulses.paper.measurement_noise.range_sigma_m=0", "--set",
+             "pulses.paper.measurement_noise.angle_sigma_deg=0", "--set", "pulses.paper.measurement_noise.draws=1")
 COMMANDS = {c.key: c for c in (
     Command("T2", T2_PRESET + ("--out", "OUT"), quick=False),
     Command("T2-published", T2_PRESET + ("--set", "fdi.isolation_method=paper", "--set",
@@ -477,6 +783,19 @@ COMMANDS = {c.key: c for c in (
                                   "OUT"), quick=True),
     Command("envisat-control.json", ("control", "design", "scenarios/comrade_envisat.yaml", "--out", "OUT"),
             quick=True),
+    # chaser fmea (docs/invsim.md); on two cores: 0.3 s, 0.05 s, 6 s, 0.7 s, 2.2 s, 0.5 s each noise-off run
+    Command("fmea", FMEA, quick=True),
+    Command("fmea-history", FMEA + ("--nominal-only", "--history"), quick=True),
+    Command("fmea-paper", FMEA + PAPER, quick=True),
+    Command("fmea-three-axis", FMEA + ("--three-axis",), quick=True),
+    Command("fmea-optimize", FMEA + ("--optimize",), quick=True),
+    Command("fmea-noise-off", FMEA + PAPER + NOISE_OFF, quick=True),
+    Command("fmea-noise-off-mirrored", FMEA + PAPER + NOISE_OFF + (
+        "--set", "initial.position_hill_m=[100.038,0.0167,-0.023]",
+        "--set", "initial.velocity_hill_mps=[-0.0076,-0.131,-0.0087]"), quick=True),
+    Command("fmea-noise-off-no-drift", FMEA + PAPER + NOISE_OFF + (
+        "--set", "initial.position_hill_m=[100.038,0,-0.023]",
+        "--set", "initial.velocity_hill_mps=[-0.0076,0,-0.0087]"), quick=True),
 )}
 
 FAULT_HEADER = ("", "stuck open", "stuck closed", "leak 10-30 %", "loss 40-90 %")
@@ -549,6 +868,54 @@ TABLES = [
     Table("control-envisat-mu", "docs/control.md", ("envisat-control.json",),
           ("loop", "complex: peak mu", "at", "margin", "mixed (gain real): peak mu", "at", "margin",
            "grid (the box itself)"), CONTROL_LOOPS, mu_rows, words=("rad/s", "points", "unstable")),
+    Table("invsim-nominal", "docs/invsim.md", ("fmea-history", "fmea-paper"),
+          ("", "x+", "x-", "y+", "y-", "z+", "z-", "k_p"),
+          ("Zhou 2018, Table 4", "`smooth`, pulses", "`smooth`, opening time [s]", "`paper`, pulses", "`paper` / Zhou"),
+          invsim_nominal_rows,
+          caption="The `smooth` run: peak |az| {az} deg, |el| {el} deg, {kg} kg propellant.", fill=invsim_nominal_fill),
+    Table("invsim-table6", "docs/invsim.md", ("fmea",),
+          ("",) + tuple(f"{y} {m}" for y, m in zip(Y_PAIRS, MOMENTS_Y)), tuple(f"{x} {m}" for x, m in zip(X_PAIRS, MOMENTS_X)),
+          invsim_table6_rows, words=("I", "II", "**III**"),
+          caption="The {modes} fault modes: {c1} Class I, {c2} Class II, {c3} Class III.", fill=invsim_table6_fill),
+    Table("invsim-table5-lost", "docs/invsim.md", ("fmea",),
+          ("multi-axis mode", "paper Table 5", "Chaser: class, peak azimuth", "peak yaw"),
+          tuple(label for _, label in TABLE5_QUOTED), invsim_table5_rows, words=("`---`", "I", "II", "III", "deg")),
+    Table("invsim-reconfiguration", "docs/invsim.md", ("fmea",),
+          ("layout", "I / II / III", "controllable", "propellant, 41 modes [kg]", "of it attitude [kg]",
+           "yaw couple open [s]", "peak az / yaw, controllable [deg]"),
+          ("baseline", "Scheme I: attitude thrusters 50 N", "Scheme II: d1, d2 in x-o-z, e1, e2 in y-o-z"),
+          invsim_reconfiguration_rows, words=("of",)),
+    Table("invsim-three-axis", "docs/invsim.md", ("fmea-three-axis",),
+          ("layout", "I / II / III", "controllable", "most failed, controllable", "fewest failed, lost",
+           "propellant [kg]"),
+          ("baseline", "Scheme I", "Scheme II"), invsim_three_axis_rows, words=("of", "none"),
+          caption="Propellant over each layout's {modes} modes; the baseline loses {lost} of the {n3} three-axis modes.",
+          fill=invsim_three_axis_fill),
+    Table("invsim-optimize", "docs/invsim.md", ("fmea-optimize",),
+          ("candidate", "rank", "attitude thrusters [N]", "groups turned out of the yaw plane", "I / II / III",
+           "propellant [kg]", "yaw couple open [s]"),
+          ("best", "second", "Scheme II's two moves", "Scheme I's thrust alone"), invsim_optimize_rows,
+          words=("d~", "e~", "d", "e", "none"),
+          caption="{ok} of {n} candidates make all {modes} fault modes controllable, {c1} of them all Class I; "
+                  "the best needs {vs2} % less propellant than Scheme II and {vs1} % less than Scheme I.",
+          fill=invsim_optimize_fill),
+    Table("invsim-predictions", "docs/invsim.md", ("fmea-paper", "fmea"),
+          ("mode", "`paper` x+/x-/y+/y-/z+/z-", "Zhou 2018", "k_p `paper`", "Zhou", "`smooth`", "rise `paper`", "Zhou",
+           "within 10 pt"),
+          tuple(ZHOU_TABLE4), invsim_predictions_rows, words=("yes", "no"),
+          caption="(1) {t1} of the 6 nominal counts within 15 %; (2) k_p within 15 % in {t2} of {n2} rows; "
+                  "(3) {t3} of {n3} rises within 10 points; Spearman rank correlation of k_p over the fault rows {rho}.",
+          fill=invsim_predictions_fill),
+    Table("invsim-paper-table6", "docs/invsim.md", ("fmea-paper",), ("",) + Y_PAIRS, X_PAIRS,
+          invsim_table6_rows, words=("I", "II", "**III**"),
+          caption="Classes I / II / III: baseline {c01} / {c02} / {c03}, Scheme I {c11} / {c12} / {c13}, "
+                  "Scheme II {c21} / {c22} / {c23}; propellant over the 41 modes {p0}, {p1} and {p2} kg.",
+          fill=invsim_paper_table6_fill),
+    Table("invsim-drift", "docs/invsim.md", ("fmea-noise-off", "fmea-noise-off-mirrored", "fmea-noise-off-no-drift"),
+          ("start", "d1/d2~+e2/e1~ (paper: lost)", "twin d2/d2~+e2/e1~ (flown)", "d2/d1~+e1/e2~ (paper: lost)",
+           "twin d1/d1~+e1/e2~ (flown)"),
+          ("Table 3 (y' = +0.131 m/s)", "mirrored (y, y' negated)", "no drift (y = y' = 0)"), invsim_drift_rows,
+          words=("**",)),
 ]
 TABLES_BY_ID = {t.id: t for t in TABLES}
 

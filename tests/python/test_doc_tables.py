@@ -77,3 +77,21 @@ def test_a_malformed_block_fails_the_format_check(cli, pages_copy, old, new, mes
     done = doc_tables(cli, "--check-format", "--root", pages_copy)
     assert done.returncode == 1
     assert message in done.stderr
+
+
+def test_zhou_2018_figures_are_the_codes_copy():
+    """The paper's figures docs/invsim.md's tables print (constants in the script) are those of
+    invsim/zhou2018_tables.cpp, the copy chaser fmea compares against."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import doc_tables
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    text = (REPO / "invsim" / "zhou2018_tables.cpp").read_text()
+    row = re.compile(r'\{"([^"]+)", (true|false), \{([^}]*)\}, ([0-9.]+)\}')
+    table4_text = text[text.index("kTable4"):text.index("kTable5")]
+    table4 = {m[1]: tuple(int(v) for v in m[3].split(",")) for m in row.finditer(table4_text)}
+    assert table4 == doc_tables.ZHOU_TABLE4 and list(table4) == list(doc_tables.ZHOU_TABLE4)
+    printed = {m[1]: (float(m[4]) if m[2] == "true" else None) for m in row.finditer(text)}
+    assert printed["nominal"] == doc_tables.ZHOU_NOMINAL_KP
+    assert {m: printed[m] for m in doc_tables.ZHOU_TABLE5_KP} == doc_tables.ZHOU_TABLE5_KP
