@@ -1,0 +1,27 @@
+#pragma once
+// The Coriolis and centrifugal generalized force C(q, v) v (13) of the hub and arm, by the
+// recursive Newton-Euler algorithm (Featherstone, RBDA sec. 5.3, Table 5.1; here in one frame, as
+// MuJoCo's mj_rne writes it) with zero acceleration and no gravity: it is what the equation of motion H(q) dv/dt + C(q, v) v = tau
+// leaves when dv/dt = 0, MuJoCo's qfrc_bias without gravity. v and tau are ordered as in
+// flight/arm/servicer_arm.hpp; dv/dt is the derivative of that v (of the hub origin's velocity in
+// world axes and of the hub's angular velocity in hub axes).
+//
+// In world axes about a point O fixed in the world where the hub's origin is now
+// (flight/arm/spatial.hpp), the forward pass is
+//   V_0 = (omega; v_hub),  A_0 = (0; -omega x v_hub)   (the hub's origin does not accelerate and
+//                          omega_hub_body is constant, so omega is too; the spatial acceleration's
+//                          linear part is the origin's acceleration less omega x v_O),
+//   V_i = V_{i-1} + S_i qd_i,  A_i = A_{i-1} + V_i x S_i qd_i   (dS_i/dt = V_i x S_i in one frame),
+//   F_i = I_i A_i + V_i x* I_i V_i,
+// and the backward pass sums the forces from the tip: F^c_i = F_i + F^c_{i+1},
+//   tau_i = S_i' F^c_i,  tau_base = (f; R' n) for F^c_0 = (n; f), R = R_world_from_hub.
+#include "flight/arm/arm_kinematics.hpp"
+#include "flight/arm/servicer_arm.hpp"
+
+namespace chaser::flight::arm {
+
+// velocity: (v_hub_world_mps, omega_hub_body_radps, joint rates [rad/s]).
+ServicerVector coriolis_force(const ServicerArmParams& params, const ArmKinematics& kinematics,
+                              const ServicerVector& velocity);
+
+}  // namespace chaser::flight::arm
