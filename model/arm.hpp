@@ -16,6 +16,7 @@
 namespace chaser::model {
 
 inline constexpr int kArmJoints = 7;
+inline constexpr double kArmDegToRad = 3.14159265358979323846 / 180.0;
 
 struct ArmLinkParams {
   Vec3 joint_position_parent_m = Vec3::Zero();  // [m] the joint's origin in the parent link's frame
@@ -43,6 +44,12 @@ struct ArmParams {
   GripperParams gripper;
   double torque_repeated_peak_Nm = 176.0;  // [N m] COMRADE 2018, Table 3 footnote
   double torque_momentary_Nm = 314.0;      // [N m] the drive's hard limit (the motors' control range)
+  // [rad] the joint angles of the stowed arm, the configuration the rigid chaser's mass properties
+  // (chaser.mass_kg, inertia_kgm2, com_body_m) include it in: shoulder pitched 90 deg to +y, the
+  // elbow folded back 110 deg, the wrist 70 deg, a Z folded in front of the +x face; inside every
+  // default limit (pitches +/-120 deg).
+  std::array<double, kArmJoints> stowed_rad{0.0, 90.0 * kArmDegToRad, 0.0, -110.0 * kArmDegToRad, 0.0,
+                                            -70.0 * kArmDegToRad, 0.0};
 };
 
 // A thin-walled tube of length L [m] and radius r [m] about its centre, axis along x: the link
@@ -68,6 +75,12 @@ struct MultibodySceneParams {
   Vec3 target_position_m = Vec3(8.0, 0.0, 0.0); // [m] the target's CoM at q = 0, scene frame
   double timestep_s = 1e-3;                     // [s] MuJoCo's step
   std::string integrator = "RK4";               // "Euler", "RK4" or "implicit"
+  // Each joint locked at arm.stowed_rad by an <equality><joint> constraint ("lock1".."lock7"),
+  // active from the start (a plant switches them with mjModel::eq_active); false: no such
+  // constraint in the model (the text is then what it was without this field).
+  bool arm_locks = false;
+  double lock_timeconst_s = 0.02;               // [s] the locks' solref time constant (critically damped)
+  double lock_impedance = 0.9;                  // [-] the locks' solimp d (constant over the violation), < 1
 };
 
 }  // namespace chaser::model

@@ -1,5 +1,9 @@
 #include "plant/handover.hpp"
 
+#include <cmath>
+
+#include <fmt/format.h>
+
 #include "core/rotation.hpp"
 
 namespace chaser::plant {
@@ -61,6 +65,35 @@ std::optional<std::string> hand_over(Plant& plant, const model::Scenario& scenar
   place_chaser(plant.state.chaser, h, circle.q_inertial_from_lvlh(h.t_s));
   plant.params.motion = circular_take_over(scenario, h, circle);
   plant.state.motion = CircularOrbitState{};
+  return std::nullopt;
+}
+
+std::optional<std::string> hand_over_to_multibody(Plant& plant, const model::Scenario& scenario,
+                                                  double scene_timestep_s) {
+  const auto* earth = std::get_if<EarthOrbitState>(&plant.state.motion);
+  if (earth == nullptr) return "the multibody plant takes over from the perturbed Earth-orbit plant only";
+  if (auto problem = multibody_problem(scenario)) return problem;
+  MultibodyStart start = start_multibody(scenario, *earth, plant.state.chaser, scene_timestep_s);
+  plant.params.motion = std::move(start.params);
+  plant.state.motion = std::move(start.state);
+  return std::nullopt;
+}
+
+std::optional<std::string> hand_over_to_earth_orbit(Plant& plant, const model::Scenario& scenario) {
+  const auto* params = std::get_if<MultibodyMotionParams>(&plant.params.motion);
+  if (params == nullptr) return "the perturbed Earth-orbit plant takes over mid-run from the multibody plant only";
+  const auto& state = std::get<MultibodyMotionState>(plant.state.motion);
+  const auto q = joint_angles_rad(*params, state), w = joint_rates_radps(*params, state);
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    const double off_rad = q[j] - params->scene.arm.stowed_rad[j];
+    if (std::abs(off_rad) > kStowedToleranceRad || std::abs(w[j]) > kStowedToleranceRadps)
+      return fmt::format("the rigid chaser has its arm stowed: joint {} is {:.3g} rad from chaser.arm.stowed_rad, "
+                         "turning at {:.3g} rad/s (at most {} rad and {} rad/s)",
+                         j + 1, off_rad, w[j], kStowedToleranceRad, kStowedToleranceRadps);
+  }
+  EarthOrbitState earth = earth_orbit_state(state);
+  plant.params.motion = make_earth_orbit_params(scenario);
+  plant.state.motion = std::move(earth);
   return std::nullopt;
 }
 

@@ -36,4 +36,21 @@ HandoverState handover_state(const Plant& plant, const model::TargetOrbit& circl
 std::optional<std::string> hand_over(Plant& plant, const model::Scenario& scenario, const HandoverState& h,
                                      const model::TargetOrbit& circle);
 
+// The perturbed Earth orbit hands its bodies to the multibody plant (plant/multibody_motion.hpp) at
+// any time, in ECI as they are (no LVLH round trip: the reference point is the target's CoM, the hub
+// is placed where the rigid chaser is), the arm stowed at chaser.arm.stowed_rad, at rest relative to
+// the hub and locked there; its environment's samples carry on. scene_timestep_s: MuJoCo's step.
+// Returns the reason it cannot (not on the Earth orbit now, multibody_problem), or nothing.
+std::optional<std::string> hand_over_to_multibody(Plant& plant, const model::Scenario& scenario,
+                                                  double scene_timestep_s = 1e-3);
+
+// And back: the rigid chaser is the hub's chaser point (chaser.com_body_m), its attitude and rate
+// the hub's; the target's orbit and attitude the target body's. The rigid chaser is the chaser with
+// its arm stowed, so the arm must be there, at rest: within kStowedToleranceRad of
+// chaser.arm.stowed_rad and kStowedToleranceRadps of rest at every joint (1e-4 rad moves the 80 kg
+// arm's CoM by ~1.5e-4 m, the chaser's by ~7e-6 m).
+inline constexpr double kStowedToleranceRad = 1e-4;    // [rad]
+inline constexpr double kStowedToleranceRadps = 1e-4;  // [rad/s]
+std::optional<std::string> hand_over_to_earth_orbit(Plant& plant, const model::Scenario& scenario);
+
 }  // namespace chaser::plant

@@ -5,7 +5,7 @@
 //
 // The seam: what carries the bodies between thrust edges is a motion model, one alternative of
 // MotionParams / MotionState (today the circular orbit's relative motion and the perturbed Earth
-// orbit; the capture adds a multibody hub, arm and target). Everything else (thrusters and their
+// orbit, and for the capture the multibody hub, arm and target on MuJoCo). Everything else (thrusters and their
 // faults, sensors, disturbances, propellant) is the plant's own and does not change with it. A
 // motion model is one file that defines XParams (with `using State = XState`) and XState, and
 // overloads begin_period, advance, target_rotation, q_inertial_from_lvlh and slosh_states; adding one
@@ -22,6 +22,7 @@
 #include "model/target_orbit.hpp"
 #include "plant/circular_orbit_motion.hpp"
 #include "plant/earth_orbit_motion.hpp"
+#include "plant/multibody_motion.hpp"
 #include "plant/propagator.hpp"
 #include "plant/sensors.hpp"
 #include "plant/target.hpp"
@@ -30,8 +31,9 @@
 namespace chaser::plant {
 
 // Index i of MotionState is the state of index i of MotionParams.
-using MotionParams = std::variant<CircularOrbitParams, EarthOrbitParams>;
-using MotionState = std::variant<CircularOrbitState, EarthOrbitState>;
+// The multibody plant is entered by hand-over only (plant/handover.hpp), never by make_plant.
+using MotionParams = std::variant<CircularOrbitParams, EarthOrbitParams, MultibodyMotionParams>;
+using MotionState = std::variant<CircularOrbitState, EarthOrbitState, MultibodyMotionState>;
 
 struct PlantParams {
   MotionParams motion;

@@ -74,7 +74,18 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
     fmt::format_to(std::back_inserter(out),
                    "    <motor name=\"motor{0}\" joint=\"joint{0}\" gear=\"1\" ctrllimited=\"true\" ctrlrange=\"{1} {2}\"/>\n",
                    i, -arm.torque_momentary_Nm, arm.torque_momentary_Nm);
-  out += "  </actuator>\n</mujoco>\n";
+  out += "  </actuator>\n";
+  if (scene.arm_locks) {
+    // q_i = stowed_i: polycoef's constant term with joint2 absent (MuJoCo's <equality><joint>).
+    out += "  <equality>\n";
+    for (int i = 0; i < model::kArmJoints; ++i)
+      fmt::format_to(std::back_inserter(out),
+                     "    <joint name=\"lock{0}\" joint1=\"joint{0}\" polycoef=\"{1} 0 0 0 0\" solref=\"{2} 1\""
+                     " solimp=\"{3} {3} 0.001\"/>\n",
+                     i + 1, arm.stowed_rad[static_cast<std::size_t>(i)], scene.lock_timeconst_s, scene.lock_impedance);
+    out += "  </equality>\n";
+  }
+  out += "</mujoco>\n";
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -47,6 +48,39 @@ MujocoModel::MujocoModel(const std::string& mjcf) {
 MujocoModel::~MujocoModel() {
   if (data_ != nullptr) mj_deleteData(data_);
   if (model_ != nullptr) mj_deleteModel(model_);
+}
+
+MujocoModel::MujocoModel(const MujocoModel& other) {
+  mjModel* model = nullptr;
+  mjData* data = nullptr;
+  const mjModel* src_model = other.model_;
+  const mjData* src_data = other.data_;
+  guarded("copying the model", [&] {
+    model = mj_copyModel(nullptr, src_model);
+    data = mj_makeData(model);
+    mj_copyData(data, model, src_data);
+  });
+  model_ = model;
+  data_ = data;
+}
+
+MujocoModel& MujocoModel::operator=(const MujocoModel& other) {
+  if (this != &other) {
+    MujocoModel copy(other);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+MujocoModel::MujocoModel(MujocoModel&& other) noexcept : model_(other.model_), data_(other.data_) {
+  other.model_ = nullptr;
+  other.data_ = nullptr;
+}
+
+MujocoModel& MujocoModel::operator=(MujocoModel&& other) noexcept {
+  std::swap(model_, other.model_);
+  std::swap(data_, other.data_);
+  return *this;
 }
 
 void MujocoModel::step() {

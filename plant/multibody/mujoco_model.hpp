@@ -25,10 +25,17 @@ class MujocoModel {
   // Compiles MJCF text; throws MujocoError with MuJoCo's own message for a model it refuses.
   explicit MujocoModel(const std::string& mjcf);
   ~MujocoModel();
-  MujocoModel(const MujocoModel&) = delete;
-  MujocoModel& operator=(const MujocoModel&) = delete;
+  // A deep copy (mj_copyModel, mj_copyData): the copy steps on its own, as a plant copied to reset
+  // a benchmark or held per campaign thread must.
+  MujocoModel(const MujocoModel& other);
+  MujocoModel& operator=(const MujocoModel& other);
+  MujocoModel(MujocoModel&& other) noexcept;
+  MujocoModel& operator=(MujocoModel&& other) noexcept;
 
   const mjModel& model() const { return *model_; }
+  // The fields a plant changes between steps (opt.timestep, a body's mass, eq_active): each copy
+  // has its own model.
+  mjModel& mutable_model() { return *model_; }
   mjData& data() { return *data_; }
   const mjData& data() const { return *data_; }
 

@@ -1,0 +1,45 @@
+#pragma once
+// The multibody plant's hub: the rigid chaser less its stowed arm. The scenario's chaser.mass_kg,
+// inertia_kgm2 and com_body_m are the whole spacecraft's with the arm stowed (the rigid plants fly
+// it so); the multibody plant flies the arm's links as bodies of their own, so the hub is what is
+// left when they are taken out: their masses, first moments and inertias about the chaser's CoM
+// (parallel axes, I_P = I_C + m (|d|^2 1 - d d^T), d from the body's CoM C to P).
+//   m_hub = M - sum m_i,   c_hub = (M c - sum m_i c_i) / m_hub
+//   I_hub = I - sum [I_i + m_i P(c_i - c)] - m_hub P(c_hub - c)       (all about their own CoM)
+// The links' CoMs and inertias in body axes come from the arm's forward kinematics at its stowed
+// angles (stowed_arm_bodies), the same chain plant/multibody/mjcf.cpp writes: each link frame
+// parallel to its parent's at q = 0, joint i turning link i about its axis.
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/types.hpp"
+#include "model/arm.hpp"
+#include "model/spacecraft.hpp"
+
+namespace chaser::plant {
+
+struct BodyMassProperties {
+  double mass_kg = 0.0;
+  Vec3 com_body_m = Vec3::Zero();                   // [m] from the chaser's body reference point, body axes
+  Mat3 inertia_kgm2 = Mat3::Zero();                 // [kg m^2] about com_body_m, body axes
+};
+
+// The seven links and the gripper (index 7) at joint angles q_rad, in the chaser's body frame.
+std::array<BodyMassProperties, model::kArmJoints + 1> arm_bodies(const model::ArmParams& arm,
+                                                                  const std::array<double, model::kArmJoints>& q_rad);
+
+// The hub: the chaser (mass_kg, com_body_m, inertia_kgm2) less the arm at arm.stowed_rad.
+BodyMassProperties hub_mass_properties(const model::SpacecraftParams& chaser, const model::ArmParams& arm);
+
+// Why the hub is not a body (naming the keys): the arm as heavy as the chaser or heavier, or an
+// inertia left that is not positive definite or breaks the triangle inequality of its principal
+// moments; nothing when it is one.
+std::optional<std::string> hub_problem(const model::SpacecraftParams& chaser,
+                                       const BodyMassProperties& hub);
+
+// Composite of bodies about their common CoM (the check that puts the hub and arm back together).
+BodyMassProperties composite(std::span<const BodyMassProperties> bodies);
+
+}  // namespace chaser::plant

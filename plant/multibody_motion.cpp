@@ -1,0 +1,325 @@
+#include "plant/multibody_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "plant/earth/gravity.hpp"
+#include "plant/gravity_gradient.hpp"
+#include "plant/hub_mass_properties.hpp"
+#include "plant/lvlh_eci.hpp"
+#include "plant/multibody/mjcf.hpp"
+
+namespace chaser::plant {
+
+namespace {
+
+using multibody::guarded;
+using multibody::MujocoModel;
+
+Vec3 vec3_at(const mjtNum* p) { return Vec3(p[0], p[1], p[2]); }
+void put_vec3(mjtNum* p, const Vec3& v) { p[0] = v.x(), p[1] = v.y(), p[2] = v.z(); }
+Quat quat_at(const mjtNum* p) { return Quat(p[0], p[1], p[2], p[3]); }  // MuJoCo: w, x, y, z
+void put_quat(mjtNum* p, const Quat& q) { p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z(); }
+
+MultibodyIndices indices_of(const MujocoModel& world) {
+  const mjModel& m = world.model();
+  MultibodyIndices i;
+  i.hub = world.body("hub");
+  i.target = world.body("target");
+  i.first_link = world.body("link1");
+  const int hub_free = world.joint("hub_free"), target_free = world.joint("target_free"), joint1 = world.joint("joint1");
+  i.hub_qpos = m.jnt_qposadr[hub_free];
+  i.hub_dof = m.jnt_dofadr[hub_free];
+  i.target_qpos = m.jnt_qposadr[target_free];
+  i.target_dof = m.jnt_dofadr[target_free];
+  i.joint1_qpos = m.jnt_qposadr[joint1];
+  i.joint1_dof = m.jnt_dofadr[joint1];
+  i.lock1 = mj_name2id(&m, mjOBJ_EQUALITY, "lock1");
+  return i;
+}
+
+// A free body's frame (its CoM): position and velocity in the world, attitude from body to world
+// (ECI axes), rate in body axes (MuJoCo 2.2.2's free joint: qvel linear in world axes, angular in
+// body axes).
+struct FreeBody {
+  Vec3 x_m, v_mps;
+  Quat q_world_from_body;
+  Vec3 omega_body_radps;
+};
+FreeBody free_body(const mjData& d, int qpos, int dof) {
+  return {vec3_at(d.qpos + qpos), vec3_at(d.qvel + dof), quat_at(d.qpos + qpos + 3), vec3_at(d.qvel + dof + 3)};
+}
+void put_free_body(mjData& d, int qpos, int dof, const FreeBody& b) {
+  put_vec3(d.qpos + qpos, b.x_m);
+  put_quat(d.qpos + qpos + 3, b.q_world_from_body);
+  put_vec3(d.qvel + dof, b.v_mps);
+  put_vec3(d.qvel + dof + 3, b.omega_body_radps);
+}
+
+Quat attitude_ahead(const Quat& q, const Vec3& omega_body_radps, double dt_s) {  // first order, as period_environment
+  Quat ahead;
+  ahead.coeffs() = q.coeffs() + dt_s * quat_derivative(q, omega_body_radps);
+  return ahead.normalized();
+}
+
+// The hub's point where the whole chaser's CoM is with the arm stowed: offset_body_m from the hub's CoM.
+struct ChaserPoint {
+  Vec3 x_m, v_mps;
+};
+ChaserPoint chaser_point(const FreeBody& hub, const Vec3& offset_body_m) {
+  const Vec3 offset_world_m = hub.q_world_from_body * offset_body_m;
+  return {hub.x_m + offset_world_m, hub.v_mps + hub.q_world_from_body * hub.omega_body_radps.cross(offset_body_m)};
+}
+
+Quat q_run_from_eci(const MultibodyMotionParams& p) {
+  return Quat(p.earth.earth.dynamics.run_from_eci).normalized();
+}
+
+// The Earth-orbit view and the chaser's rigid state from the world now.
+void read_back(const MultibodyMotionParams& p, MultibodyMotionState& s, RigidState& chaser) {
+  const mjData& d = s.world.data();
+  const FreeBody hub = free_body(d, p.index.hub_qpos, p.index.hub_dof);
+  const FreeBody target = free_body(d, p.index.target_qpos, p.index.target_dof);
+  const ChaserPoint c = chaser_point(hub, p.chaser_com_body_m - p.scene.hub_com_body_m);
+  const Quat q_run = q_run_from_eci(p);
+  OrbitState& o = s.earth.orbit;
+  o.r_t_eci_m = s.r_ref_eci_m + target.x_m;
+  o.v_t_eci_mps = s.v_ref_eci_mps + target.v_mps;
+  o.dr_eci_m = c.x_m - target.x_m;
+  o.dv_eci_mps = c.v_mps - target.v_mps;
+  o.q_inertial_from_target = (q_run * target.q_world_from_body).normalized();
+  o.omega_target_body_radps = target.omega_body_radps;
+  chaser.q_inertial_from_body = (q_run * hub.q_world_from_body).normalized();
+  chaser.omega_body_radps = hub.omega_body_radps;
+  update_lvlh_view(p.earth.earth.dynamics, s.earth.env, o, chaser);
+}
+
+// The reference point's acceleration: the Earth-orbit plant's target model (gravity to J2 and the
+// held slow terms, plant/orbit_propagator.cpp's accelerations()).
+Vec3 reference_acceleration(const MultibodyMotionParams& p, const PeriodEnvironment& env, const Vec3& r_eci_m) {
+  return earth::gravity_acceleration_eci(p.earth.earth.dynamics.perturbations.gravity, r_eci_m) + env.slow.target_eci_mps2;
+}
+
+// One classical RK4 step of the reference point over h.
+void step_reference(const MultibodyMotionParams& p, const PeriodEnvironment& env, Vec3& r, Vec3& v, double h) {
+  const Vec3 a1 = reference_acceleration(p, env, r);
+  const Vec3 v2 = v + 0.5 * h * a1, a2 = reference_acceleration(p, env, r + 0.5 * h * v);
+  const Vec3 v3 = v + 0.5 * h * a2, a3 = reference_acceleration(p, env, r + 0.5 * h * v2);
+  const Vec3 v4 = v + h * a3, a4 = reference_acceleration(p, env, r + h * v3);
+  r += (h / 6.0) * (v + 2.0 * v2 + 2.0 * v3 + v4);
+  v += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
+}
+
+// What one piece holds constant.
+struct PieceLoads {
+  Vec3 force_hub_body_N = Vec3::Zero();    // [N] thrust, body axes
+  Vec3 torque_hub_body_Nm = Vec3::Zero();  // [N m] thrust + disturbance + environment, about the hub's CoM
+  Vec3 force_dist_eci_N = Vec3::Zero();    // [N] the disturbance force, spread over the chaser by mass
+  Vec3 slow_relative_eci_mps2 = Vec3::Zero();  // [m/s^2] the chaser's differential slow terms
+  double mass_flow_kgps = 0.0;
+};
+
+PieceLoads piece_loads(const MultibodyMotionParams& p, const MultibodyMotionState& s, const PieceInput& u) {
+  PieceLoads l;
+  l.force_hub_body_N = u.force_body_N;
+  // The thruster model's torque is about the chaser's CoM c; about the hub's, c_h: + (c - c_h) x F.
+  l.torque_hub_body_Nm = u.torque_body_Nm + (p.chaser_com_body_m - p.scene.hub_com_body_m).cross(u.force_body_N) +
+                         s.earth.env.torque_chaser_body_Nm;
+  if (!u.force_lvlh_N.isZero(0.0))  // LVLH at the piece start, as propagate_orbit_piece rotates it
+    l.force_dist_eci_N = lvlh_axes_from_eci(s.earth.orbit.r_t_eci_m, s.earth.orbit.v_t_eci_mps).transpose() * u.force_lvlh_N;
+  l.slow_relative_eci_mps2 = s.earth.env.slow.relative_eci_mps2;
+  l.mass_flow_kgps = u.mass_flow_kgps;
+  return l;
+}
+
+// The applied wrench of every body for the step [t, t + h], at the step's midpoint (the header's
+// equations). Needs the world's kinematics at t (mj_kinematics, mj_comPos, mj_comVel).
+void apply_loads(const MultibodyMotionParams& p, MultibodyMotionState& s, const PieceLoads& l, double chaser_kg,
+                 double h) {
+  const mjModel& m = s.world.model();
+  mjData& d = s.world.data();
+  const MultibodyIndices& ix = p.index;
+  const PeriodEnvironment& env = s.earth.env;
+  const earth::GravityParams& gravity = p.earth.earth.dynamics.perturbations.gravity;
+  const double half = 0.5 * h;
+  const Vec3 r_ref_mid = s.r_ref_eci_m + half * s.v_ref_eci_mps + (0.5 * half * half) * reference_acceleration(p, env, s.r_ref_eci_m);
+  for (int b = 1; b < m.nbody; ++b) {
+    mjtNum velocity[6];  // angular, linear at the body's CoM, world axes
+    mj_objectVelocity(&m, &d, mjOBJ_BODY, b, velocity, 0);
+    const Vec3 x_mid = vec3_at(d.xipos + 3 * b) + half * vec3_at(velocity + 3);
+    const double mass_kg = m.body_mass[b];
+    Vec3 force = mass_kg * earth::differential_gravity_eci(gravity, r_ref_mid, x_mid);
+    Vec3 torque = Vec3::Zero();
+    if (b != ix.target) force += mass_kg * l.slow_relative_eci_mps2 + (mass_kg / chaser_kg) * l.force_dist_eci_N;
+    if (b != ix.hub && b != ix.target && p.earth.earth.dynamics.chaser.gravity_gradient) {
+      const Vec3 r = r_ref_mid + x_mid;  // a link's own inertia, world axes, at the step's start
+      const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> world_from_inertial(d.ximat + 9 * b);
+      const Mat3 inertia = world_from_inertial * vec3_at(m.body_inertia + 3 * b).asDiagonal() * world_from_inertial.transpose();
+      torque = gravity_gradient_torque_body(gravity_gradient_gain(gravity.mu_m3ps2, r.squaredNorm()), r, inertia);
+    }
+    put_vec3(d.xfrc_applied + 6 * b, force);
+    put_vec3(d.xfrc_applied + 6 * b + 3, torque);
+  }
+  const FreeBody hub = free_body(d, ix.hub_qpos, ix.hub_dof);
+  const Quat q_hub_mid = attitude_ahead(hub.q_world_from_body, hub.omega_body_radps, half);
+  const Vec3 hub_force = q_hub_mid * l.force_hub_body_N, hub_torque = q_hub_mid * l.torque_hub_body_Nm;
+  for (int k = 0; k < 3; ++k) d.xfrc_applied[6 * ix.hub + k] += hub_force[k], d.xfrc_applied[6 * ix.hub + 3 + k] += hub_torque[k];
+  const FreeBody target = free_body(d, ix.target_qpos, ix.target_dof);
+  const Vec3 target_torque =
+      attitude_ahead(target.q_world_from_body, target.omega_body_radps, half) * env.torque_target_body_Nm;
+  for (int k = 0; k < 3; ++k) d.xfrc_applied[6 * ix.target + 3 + k] += target_torque[k];
+}
+
+// The hub's mass while the thrusters burn: the chaser's less the arm's, and the subtree masses
+// MuJoCo's mj_comPos divides by (compiled constants, kept consistent by hand).
+void set_hub_mass(const MultibodyMotionParams& p, MultibodyMotionState& s, double hub_kg) {
+  mjModel& m = s.world.mutable_model();
+  const MultibodyIndices& ix = p.index;
+  m.body_mass[ix.hub] = hub_kg;
+  m.body_subtreemass[ix.hub] = hub_kg + m.body_subtreemass[ix.first_link];
+  m.body_subtreemass[0] = m.body_subtreemass[ix.hub] + m.body_subtreemass[ix.target];
+}
+
+void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, RigidState& chaser, TimeNs dt_ns,
+                     const PieceInput& u) {
+  const double dt_s = to_seconds(dt_ns);
+  const int steps = std::max(1, static_cast<int>(std::ceil(dt_s / p.scene.timestep_s * (1.0 - 1e-12))));
+  const double h = dt_s / steps;
+  s.world.mutable_model().opt.timestep = h;
+  const PieceLoads loads = piece_loads(p, s, u);
+  const mjModel* m = &s.world.model();
+  mjData* d = &s.world.data();
+  for (int k = 0; k < steps; ++k) {
+    if (loads.mass_flow_kgps != 0.0) set_hub_mass(p, s, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps - p.arm_mass_kg);
+    guarded("the kinematics", [m, d] {
+      mj_kinematics(m, d);
+      mj_comPos(m, d);
+      mj_comVel(m, d);
+    });
+    apply_loads(p, s, loads, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps, h);
+    s.world.step();
+    step_reference(p, s.earth.env, s.r_ref_eci_m, s.v_ref_eci_mps, h);
+    chaser.mass_kg -= h * loads.mass_flow_kgps;
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> multibody_problem(const model::Scenario& scenario) {
+  if (!scenario.chaser.arm) return "chaser.arm: the multibody plant flies the arm, and the scenario has none";
+  if (!scenario.orbit.earth || !scenario.target.body)
+    return "orbit.earth and target.body: the multibody plant flies the perturbed Earth orbit's bodies";
+  if (scenario.chaser.slosh)
+    return "chaser.slosh: the multibody plant has no slosh yet (its tanks are not coupled to the hub): fly it "
+           "without chaser.slosh";
+  return hub_problem(scenario.chaser, hub_mass_properties(scenario.chaser, *scenario.chaser.arm));
+}
+
+MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbitState& from, const RigidState& chaser,
+                               double scene_timestep_s) {
+  const model::ArmParams& arm = *scenario.chaser.arm;
+  const BodyMassProperties hub = hub_mass_properties(scenario.chaser, arm);
+  MultibodyMotionParams p;
+  p.earth = make_earth_orbit_params(scenario);
+  p.earth.earth.dynamics.hold_slow_environment = true;  // the forces are held per step: see the header
+  p.earth.earth.dynamics.chaser.inertia_kgm2 = hub.inertia_kgm2;  // its gravity gradient: the hub's own
+  p.earth.earth.dynamics.chaser.inertia_inv = hub.inertia_kgm2.inverse();
+  p.chaser_com_body_m = scenario.chaser.com_body_m;
+  p.arm_mass_kg = scenario.chaser.mass_kg - hub.mass_kg;
+  model::MultibodySceneParams& scene = p.scene;
+  scene.hub_mass_kg = chaser.mass_kg - p.arm_mass_kg;  // the propellant used so far is the hub's
+  scene.hub_inertia_kgm2 = hub.inertia_kgm2;
+  scene.hub_com_body_m = hub.com_body_m;
+  scene.arm = arm;
+  scene.target_mass_kg = scenario.target.body->mass_kg;
+  scene.target_inertia_kgm2 = scenario.target.body->inertia_kgm2;
+  scene.target_position_m = Vec3::Zero();
+  scene.timestep_s = scene_timestep_s;
+  scene.arm_locks = true;
+  // The locks as stiff as MuJoCo's step allows (time constant 2 h, MuJoCo's stated limit) and 99 %
+  // enforced: the stowed arm then gives under the chaser's spin by (1 - d) a0 / (d k), 1.7e-7 rad at
+  // 0.5 rad/s (the defaults, 0.02 s and 0.9, gave 2e-4 rad, and the hub 4e-4 m off the rigid plant).
+  scene.lock_timeconst_s = 2.0 * scene_timestep_s;
+  scene.lock_impedance = 0.99;
+  MultibodyMotionState s{.world = MujocoModel(multibody::mjcf_of(scene)), .earth = from};
+  p.index = indices_of(s.world);
+
+  // The reference point at the target's CoM: the target at the world's origin, at rest in it.
+  const OrbitState& o = from.orbit;
+  s.r_ref_eci_m = o.r_t_eci_m;
+  s.v_ref_eci_mps = o.v_t_eci_mps;
+  const Quat q_eci_from_run = q_run_from_eci(p).conjugate();
+  mjData& d = s.world.data();
+  put_free_body(d, p.index.target_qpos, p.index.target_dof,
+                {Vec3::Zero(), Vec3::Zero(), (q_eci_from_run * o.q_inertial_from_target).normalized(),
+                 o.omega_target_body_radps});
+  // The hub where the rigid chaser is: its CoM point at dr, moving at dv, turning at omega.
+  const Quat q_hub = (q_eci_from_run * chaser.q_inertial_from_body).normalized();
+  const Vec3 offset_body_m = p.chaser_com_body_m - p.scene.hub_com_body_m;
+  put_free_body(d, p.index.hub_qpos, p.index.hub_dof,
+                {o.dr_eci_m - q_hub * offset_body_m,
+                 o.dv_eci_mps - q_hub * chaser.omega_body_radps.cross(offset_body_m), q_hub, chaser.omega_body_radps});
+  for (int j = 0; j < model::kArmJoints; ++j) {
+    d.qpos[p.index.joint1_qpos + j] = arm.stowed_rad[static_cast<std::size_t>(j)];
+    d.qvel[p.index.joint1_dof + j] = 0.0;
+  }
+  s.world.forward();
+  return {std::move(p), std::move(s)};
+}
+
+EarthOrbitState earth_orbit_state(const MultibodyMotionState& state) { return state.earth; }
+
+void set_joint_torques(MultibodyMotionState& state, const std::array<double, model::kArmJoints>& torque_Nm) {
+  state.joint_torque_Nm = torque_Nm;
+}
+
+void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked) {
+  for (int j = 0; j < model::kArmJoints; ++j) state.world.mutable_model().eq_active[params.index.lock1 + j] = locked;
+}
+
+std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionParams& params,
+                                                       const MultibodyMotionState& state) {
+  std::array<double, model::kArmJoints> q{};
+  for (int j = 0; j < model::kArmJoints; ++j) q[static_cast<std::size_t>(j)] = state.world.data().qpos[params.index.joint1_qpos + j];
+  return q;
+}
+
+std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionParams& params,
+                                                        const MultibodyMotionState& state) {
+  std::array<double, model::kArmJoints> w{};
+  for (int j = 0; j < model::kArmJoints; ++j) w[static_cast<std::size_t>(j)] = state.world.data().qvel[params.index.joint1_dof + j];
+  return w;
+}
+
+void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& state, const RigidState& chaser,
+                  TimeNs t_k, TimeNs period_ns) {
+  begin_period(params.earth, state.earth, chaser, t_k, period_ns);
+}
+
+void advance(const MultibodyMotionParams& params, MultibodyMotionState& state, RigidState& chaser,
+             const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns) {
+  for (int j = 0; j < model::kArmJoints; ++j) state.world.data().ctrl[j] = state.joint_torque_Nm[static_cast<std::size_t>(j)];
+  for (int i = 0; i < profile.count; ++i) {
+    const ThrustPiece& piece = profile.pieces[i];
+    const TimeNs begin_ns = std::max(piece.t_begin_ns, from_ns), end_ns = std::min(piece.t_end_ns, to_ns);
+    if (end_ns <= begin_ns) continue;
+    integrate_piece(params, state, chaser, end_ns - begin_ns, piece_input(piece, disturbance));
+    read_back(params, state, chaser);  // the next piece's LVLH (disturbance) at its start
+  }
+  read_back(params, state, chaser);
+}
+
+TargetRotation target_rotation(const MultibodyMotionParams&, const MultibodyMotionState& state, double) {
+  return {state.earth.orbit.q_inertial_from_target, state.earth.orbit.omega_target_body_radps};
+}
+
+Quat q_inertial_from_lvlh(const MultibodyMotionParams& params, const MultibodyMotionState& state,
+                          const model::TargetOrbit&, double) {
+  return q_inertial_from_lvlh(params.earth.earth.dynamics, state.earth.orbit);
+}
+
+std::span<const SloshState> slosh_states(const MultibodyMotionParams&, const MultibodyMotionState&) { return {}; }
+
+}  // namespace chaser::plant

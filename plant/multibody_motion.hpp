@@ -1,0 +1,120 @@
+#pragma once
+// The plant's motion as a multibody system on MuJoCo (plant/multibody/): the chaser's hub, its
+// 7-DOF arm and the target, for the capture. One of the plant's motion models (plant/plant.hpp,
+// "the seam"); it takes over from the perturbed Earth orbit by plant/handover.hpp.
+//
+// The frame (docs/dynamics.md, "The multibody plant"): MuJoCo's world is a non-rotating frame with
+// ECI axes whose origin falls freely with a reference point on the target's orbit, propagated as a
+// point under the Earth-orbit plant's target model: a_ref = g(r_ref) + S_t, g gravity to J2 at every
+// step, S_t the target's slow terms (drag, solar pressure, the Sun and the Moon) held per window as
+// that plant holds them (plant/orbit_propagator.hpp). The world is then an inertial frame for every
+// body once each body b gets the applied force (xfrc_applied, at its CoM)
+//   f_b = m_b [g(r_ref + x_b) - g(r_ref)]                     the tide, Battin's difference
+//       + m_b S_rel                                          chaser bodies: their differential slow terms
+//       + (m_b / M_chaser) F_dist                            chaser bodies: the period's LVLH disturbance
+// (S_rel: the chaser's drag and pressure less the target's, the third bodies' tide, held per window
+// at the chaser's CoM exactly as the Earth-orbit plant's relative acceleration; spread by mass, as a
+// cannonball's, so it does not turn the chaser), and the torques
+//   hub:    thrust (piece by piece, body axes, moved to the hub's CoM) + the disturbance torque
+//           + gravity gradient and magnetic torque with the hub's own inertia, held per period
+//   target: gravity gradient and magnetic torque held per period (the Earth-orbit plant's own)
+//   links:  gravity gradient of each link's own inertia (their point masses' share comes with the tide)
+// evaluated at each MuJoCo step's midpoint (positions x + v h / 2, attitudes q + q' h / 2): held
+// over the step by MuJoCo's RK4, a force so placed is right to second order in h.
+//
+// The thrust profile's pieces are integrated exactly to their edges: a piece of dt is n =
+// ceil(dt / h) equal MuJoCo steps (h the scene's timestep, opt.timestep set to dt / n).
+//
+// The chaser's RigidState is read from the hub after each advance: its position and velocity are
+// those of the point of the hub where the whole chaser's CoM is with the arm stowed
+// (chaser.com_body_m), its attitude and rate the hub's; its LVLH view is derived from them as the
+// Earth-orbit plant derives its own. The target's attitude and rate are the target body's. No slosh.
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/time.hpp"
+#include "model/arm.hpp"
+#include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
+#include "plant/earth_orbit_motion.hpp"
+#include "plant/multibody/mujoco_model.hpp"
+#include "plant/period_input.hpp"
+#include "plant/slosh.hpp"
+#include "plant/target.hpp"
+
+namespace chaser::plant {
+
+// Where the scene's parts are in MuJoCo's arrays (from the compiled model's names).
+struct MultibodyIndices {
+  int hub = 0, target = 0, first_link = 0;  // body ids: hub, link1..link7, gripper in a row, target
+  int hub_qpos = 0, hub_dof = 0, target_qpos = 0, target_dof = 0, joint1_qpos = 0, joint1_dof = 0;
+  int lock1 = 0;  // equality ids of lock1..lock7 in a row
+};
+
+struct MultibodyMotionState {
+  multibody::MujocoModel world;  // the scene and its state; a copy is a deep one
+  // The Earth-orbit view of the bodies, refreshed after each advance: orbit.r_t_eci_m / v_t_eci_mps
+  // the target's CoM, dr / dv the chaser's CoM point relative to it (world differences, no
+  // cancellation), the target's attitude; and that plant's environment samples and period.
+  EarthOrbitState earth;
+  Vec3 r_ref_eci_m = Vec3::Zero();    // [m] the world's origin, ECI
+  Vec3 v_ref_eci_mps = Vec3::Zero();  // [m/s]
+  // [N m] the joint torques held over the next advance (the arm's inner loop sets them).
+  std::array<double, model::kArmJoints> joint_torque_Nm{};
+};
+
+struct MultibodyMotionParams {
+  using State = MultibodyMotionState;
+  EarthOrbitParams earth;  // the environment; earth.dynamics.chaser's inertia is the hub's
+  model::MultibodySceneParams scene;
+  Vec3 chaser_com_body_m = Vec3::Zero();  // [m] the whole chaser's CoM, arm stowed (thrust torques are about it)
+  double arm_mass_kg = 0.0;               // [kg] links and gripper
+  MultibodyIndices index;
+};
+
+// Why `scenario` cannot fly the multibody plant (naming the key): no chaser.arm, no orbit.earth,
+// chaser.slosh (not coupled in this model), or a hub that is not a body (plant/hub_mass_properties.hpp).
+std::optional<std::string> multibody_problem(const model::Scenario& scenario);
+
+// The scene of `scenario` (which multibody_problem accepts): the hub the chaser less its stowed
+// arm, the arm locked at its stowed angles, the target's body; MuJoCo's step scene_timestep_s.
+struct MultibodyStart {
+  MultibodyMotionParams params;
+  MultibodyMotionState state;
+};
+// Takes over from the Earth-orbit plant's state (and chaser) as they are: the reference point at
+// the target's CoM, the hub where the rigid chaser is, the arm stowed and at rest relative to it.
+MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbitState& from, const RigidState& chaser,
+                               double scene_timestep_s = 1e-3);
+
+// The Earth-orbit plant's state of the same bodies (for the hand-back), its environment carried on.
+EarthOrbitState earth_orbit_state(const MultibodyMotionState& state);
+
+// The arm: torques held over the next advance, the locks on or off, the joint angles and rates now.
+void set_joint_torques(MultibodyMotionState& state, const std::array<double, model::kArmJoints>& torque_Nm);
+void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked);
+std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionParams& params,
+                                                       const MultibodyMotionState& state);
+std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionParams& params,
+                                                        const MultibodyMotionState& state);
+
+// The environment of the period at t_k: the Earth-orbit plant's (plant/earth_orbit_motion.hpp).
+void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& state, const RigidState& chaser,
+                  TimeNs t_k, TimeNs period_ns);
+
+// Each piece of the period's profile within [from_ns, to_ns] in whole MuJoCo steps, then the
+// chaser's rigid state and LVLH view from the hub.
+void advance(const MultibodyMotionParams& params, MultibodyMotionState& state, RigidState& chaser,
+             const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns);
+
+TargetRotation target_rotation(const MultibodyMotionParams& params, const MultibodyMotionState& state, double t_s);
+
+Quat q_inertial_from_lvlh(const MultibodyMotionParams& params, const MultibodyMotionState& state,
+                          const model::TargetOrbit& circle, double t_s);
+
+// None: the multibody plant has no slosh (multibody_problem refuses chaser.slosh).
+std::span<const SloshState> slosh_states(const MultibodyMotionParams& params, const MultibodyMotionState& state);
+
+}  // namespace chaser::plant
