@@ -46,7 +46,7 @@ struct MonitorSample {
   Quat q_inertial_from_target = Quat::Identity();  // the truth; used with a keep-out volume only
   Vec3 omega_body_radps = Vec3::Zero();            // [rad/s] the truth's body rate (final judgement)
   Vec3 omega_ref_body_radps = Vec3::Zero();        // [rad/s] the reference's
-  bool synchronised = false;  // t_s >= synchronised_from_s (the caller's, computed once a run)
+  bool synchronised = false;  // the phase flown judges the synchronisation (sim/run_phases.hpp)
 };
 
 // From when the chaser's rotation is synchronised with the target's (COMRADE 2018 Table 4): on the

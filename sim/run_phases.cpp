@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "sim/mission_monitor.hpp"
+
 namespace chaser::sim {
 
 namespace {
@@ -34,11 +36,13 @@ std::vector<std::pair<const char*, double>> phase_starts(const model::GuidancePa
 
 std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
   const auto starts = phase_starts(s.guidance);
+  const double synchronised_from = synchronised_from_s(s);
   std::vector<PlannedPhase> out;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const double start = std::min(starts[i].second, s.duration_s);
     const double end = std::min(i + 1 < starts.size() ? starts[i + 1].second : s.duration_s, s.duration_s);
-    if (end > start) out.push_back({starts[i].first, start, end - start});
+    if (end > start)
+      out.push_back({starts[i].first, start, end - start, {.synchronised = starts[i].second >= synchronised_from}});
   }
   return out;
 }

@@ -9,8 +9,8 @@
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
-// The capture's phases (reach, grasp, rigidise, ...) will add transitions on events and on
-// requirements held for a dwell.
+// Each phase carries the requirements judged while it is flown. The capture's phases (reach, grasp,
+// rigidise, ...) will add transitions on events and on requirements held for a dwell.
 #include <vector>
 
 #include "model/scenario.hpp"
@@ -18,10 +18,19 @@
 
 namespace chaser::sim {
 
+// The requirements judged while a phase is flown (the mission monitor, sim/mission_monitor.hpp).
+struct PhaseRequirements {
+  // The chaser turns with the target: COMRADE 2018 Table 1's errors at the capture point and the
+  // 0.5 m clearance of Table 4 apply (before it, the 3 m unsynchronised clearance). From the phase
+  // that starts at sim::synchronised_from_s on; always the start of a phase (run_phases_test).
+  bool synchronised = false;
+};
+
 struct PlannedPhase {
   const char* name = "";
   double start_s = 0;     // [s]
   double duration_s = 0;  // [s] > 0
+  PhaseRequirements requirements{};
 };
 
 std::vector<PlannedPhase> planned_phases(const model::Scenario& scenario);

@@ -106,7 +106,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   }
   recording_ = telemetry_ || memory_;
   keep_out_ = checks_keep_out(scenario_);
-  synchronised_from_s_ = synchronised_from_s(scenario_);
+  for (const PlannedPhase& phase : planned_phases(scenario_)) phase_requirements_.push_back(phase.requirements);
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {});
@@ -155,7 +155,7 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   if (recording_ || keep_out_) truth.target = plant::target_rotation(plant_, t_s);
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                 truth.target.q_inertial_from_target);
-  truth.sample.synchronised = t_s >= synchronised_from_s_;
+  truth.sample.synchronised = phase_requirements_[static_cast<std::size_t>(phase_state_.phase)].synchronised;
   if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), truth.slosh.begin());
   return truth;
 }

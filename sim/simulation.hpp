@@ -19,6 +19,7 @@
 #include "plant/plant.hpp"
 #include "sim/phase_sequence.hpp"
 #include "sim/rate_schedule.hpp"
+#include "sim/run_phases.hpp"
 #include "sim/run.hpp"
 #include "sim/telemetry.hpp"
 #include "sim/telemetry_channels.hpp"
@@ -102,7 +103,7 @@ class Simulation {
   bool every_channel_ = true;
   bool recording_ = false;
   bool keep_out_ = false;  // the target has a keep-out volume: its attitude is needed every period
-  double synchronised_from_s_ = 0.0;  // [s] sim::synchronised_from_s of the scenario
+  std::vector<PhaseRequirements> phase_requirements_;  // by phase index (sim/run_phases.hpp)
 
   // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
   plant::RigidState truth_;

@@ -28,7 +28,9 @@ nlohmann::json finite_or_null(bool exists, double value) {
 nlohmann::json phases_json(const model::Scenario& s) {
   nlohmann::json out = nlohmann::json::array();
   for (const PlannedPhase& p : planned_phases(s))
-    out.push_back({{"name", p.name}, {"start_s", p.start_s}, {"duration_s", p.duration_s}});
+    out.push_back({{"name", p.name}, {"start_s", p.start_s}, {"duration_s", p.duration_s},
+                   {"requirements", p.requirements.synchronised ? nlohmann::json::array({"synchronised"})
+                                                                : nlohmann::json::array()}});
   return out;
 }
 

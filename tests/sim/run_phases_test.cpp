@@ -3,10 +3,14 @@
 // its steps (flight/sync_approach.hpp), so a phase names what the chaser was doing.
 #include "sim/run_phases.hpp"
 
+#include <string>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "flight/sync_approach.hpp"
 #include "io/scenario_loader.hpp"
+#include "sim/mission_monitor.hpp"
 #include "sim/simulation.hpp"
 
 namespace chaser::sim {
@@ -83,6 +87,36 @@ TEST(RunPhases, ARunStoppedEarlyEndsItsLastPhaseThere) {
   EXPECT_EQ(r.phases[0].name, "line");
   EXPECT_EQ(r.phases[0].end_s, 5.0);
   EXPECT_EQ(r.phases[0].end_reason, kRunEndReason);
+}
+
+}  // namespace
+}  // namespace chaser::sim
+
+namespace chaser::sim {
+namespace {
+
+// The synchronisation's requirements are a phase's: they apply from the phase that starts at
+// synchronised_from_s on, and in no phase before it (so the monitor's judgement, read from the phase
+// flown, switches in the same period as a judgement of the time would).
+TEST(RunPhases, TheSynchronisationIsJudgedFromThePhaseStartingWhenTheChaserTurnsWithTheTarget) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"scenarios/msr_terminal.yaml", ""},                  // never: the target does not turn with LVLH
+      {"scenarios/comrade_sync.yaml", "transfer"},          // when the rotation is synchronised (no axis hold)
+      {"scenarios/comrade_assist.yaml", "line"},            // ASSIST turns with LVLH: from the start
+  };
+  for (const auto& [path, first] : cases) {
+    const model::Scenario s = load(path);
+    const double from_s = synchronised_from_s(s);
+    bool seen = false;
+    for (const PlannedPhase& p : planned_phases(s)) {
+      if (p.name == std::string(first)) {
+        EXPECT_EQ(p.start_s, from_s) << path;
+        seen = true;
+      }
+      EXPECT_EQ(p.requirements.synchronised, seen) << path << ": " << p.name;
+    }
+    EXPECT_EQ(seen, *first != '\0') << path;
+  }
 }
 
 }  // namespace
