@@ -16,7 +16,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= scenario overrides invsim
 
-SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_io test_flight test_fdi test_fdi_design
+SANITIZE_FAST_TESTS ?= test_core test_model test_plant test_earth test_multibody test_io test_flight test_flight_arm test_fdi test_fdi_design
 
 .PHONY: all deps configure build test demo fmea servicing docs bench sanitize sanitize-fast fuzz clean
 
@@ -70,7 +70,7 @@ sanitize: deps
 	@cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j$(JOBS)
 
-# The suites of core, model, plant, io and flight (fdi included) under both sanitizers: what CI runs
+# The suites of core, model, plant (multibody included), io and flight (fdi and arm included) under both sanitizers: what CI runs
 # after make test (.ci/run), since the whole suite's sanitizer build takes too long there.
 sanitize-fast: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCHASER_SANITIZE=address,undefined \
