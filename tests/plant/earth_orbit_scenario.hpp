@@ -19,6 +19,27 @@ inline model::Scenario leo_earth_orbit_scenario() {
   return s;
 }
 
+// A chaser 100 m from a target tumbling at 2.5 deg/s about a skew axis, on that orbit: four
+// thrusters on the +x face pointing along its diagonals, T3 stuck open from 5 s. The hand-over and
+// multibody tests fly it on each plant.
+inline model::Scenario tumbling_target_scenario() {
+  model::Scenario s = leo_earth_orbit_scenario();
+  s.target.body.emplace();
+  s.target.body->spin_case = model::SpinCase::given;
+  s.target.q_inertial_from_target = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 3.0).normalized()));
+  s.target.omega_inertial_radps = 2.5 * kDegToRad * Vec3(0.2, 1.0, -0.4).normalized();
+  s.chaser.inertia_kgm2 = Vec3(1500.0, 1200.0, 1800.0).asDiagonal();
+  s.target.body->inertia_kgm2 = Vec3(17000.0, 124000.0, 130000.0).asDiagonal();
+  s.thrusters.count = 4;
+  for (int i = 0; i < 4; ++i) {
+    const double y = i % 2 ? 1.0 : -1.0, z = i / 2 ? 1.0 : -1.0;
+    s.thrusters.thrusters[static_cast<std::size_t>(i)] = {.position_body_m = Vec3(1.0, 0.5 * y, 0.5 * z),
+                                                           .direction_body = Vec3(-1.0, y, z).normalized()};
+  }
+  s.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 2, .onset_s = 5.0}};
+  return s;
+}
+
 // The same chaser with the default arm (model::default_arm) stowed on it: a hub of hub_kg with
 // principal moments hub_inertia_kgm2 and CoM hub_com_body_m, and the arm at its stowed angles make
 // the rigid chaser (chaser.mass_kg, inertia_kgm2, com_body_m: the composite), as a scenario states it.

@@ -12,25 +12,8 @@
 namespace chaser::plant {
 namespace {
 
-// A chaser 100 m from a target tumbling at 2.5 deg/s about a skew axis, on a 765 km orbit: with
-// orbit.earth the perturbed Earth-orbit plant, without it the circle.
-model::Scenario earth_scenario() {
-  model::Scenario s = testing::leo_earth_orbit_scenario();
-  s.target.body.emplace();
-  s.target.body->spin_case = model::SpinCase::given;
-  s.target.q_inertial_from_target = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 3.0).normalized()));
-  s.target.omega_inertial_radps = 2.5 * kDegToRad * Vec3(0.2, 1.0, -0.4).normalized();
-  s.chaser.inertia_kgm2 = Vec3(1500.0, 1200.0, 1800.0).asDiagonal();
-  s.target.body->inertia_kgm2 = Vec3(17000.0, 124000.0, 130000.0).asDiagonal();
-  s.thrusters.count = 4;  // four thrusters on the +x face, pointing along its diagonals
-  for (int i = 0; i < 4; ++i) {
-    const double y = i % 2 ? 1.0 : -1.0, z = i / 2 ? 1.0 : -1.0;
-    s.thrusters.thrusters[static_cast<std::size_t>(i)] = {.position_body_m = Vec3(1.0, 0.5 * y, 0.5 * z),
-                                                           .direction_body = Vec3(-1.0, y, z).normalized()};
-  }
-  s.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 2, .onset_s = 5.0}};
-  return s;
-}
+// testing::tumbling_target_scenario: with orbit.earth the perturbed Earth-orbit plant, without it the circle.
+model::Scenario earth_scenario() { return testing::tumbling_target_scenario(); }
 
 model::Scenario circle_scenario() {
   model::Scenario s = earth_scenario();

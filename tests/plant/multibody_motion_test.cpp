@@ -15,22 +15,10 @@
 namespace chaser::plant {
 namespace {
 
-// handover_test.cpp's scenario (a chaser 100 m from a target tumbling at 2.5 deg/s about a skew
-// axis on a 765 km orbit, four thrusters on the +x face, T3 stuck open from 5 s) with the arm stowed.
+// The hand-over tests' tumbling target (testing::tumbling_target_scenario) with the arm stowed; the
+// chaser's mass properties are then the hub's and the stowed arm's composite.
 model::Scenario capture_scenario() {
-  model::Scenario s = testing::leo_earth_orbit_scenario();
-  s.target.body.emplace();
-  s.target.body->spin_case = model::SpinCase::given;
-  s.target.q_inertial_from_target = Quat(Eigen::AngleAxisd(0.3, Vec3(1.0, 2.0, 3.0).normalized()));
-  s.target.omega_inertial_radps = 2.5 * kDegToRad * Vec3(0.2, 1.0, -0.4).normalized();
-  s.target.body->inertia_kgm2 = Vec3(17000.0, 124000.0, 130000.0).asDiagonal();
-  s.thrusters.count = 4;
-  for (int i = 0; i < 4; ++i) {
-    const double y = i % 2 ? 1.0 : -1.0, z = i / 2 ? 1.0 : -1.0;
-    s.thrusters.thrusters[static_cast<std::size_t>(i)] = {.position_body_m = Vec3(1.0, 0.5 * y, 0.5 * z),
-                                                           .direction_body = Vec3(-1.0, y, z).normalized()};
-  }
-  s.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 2, .onset_s = 5.0}};
+  model::Scenario s = testing::tumbling_target_scenario();
   testing::add_stowed_arm(s);
   return s;
 }
