@@ -24,4 +24,16 @@ namespace chaser::flight::arm {
 ServicerVector coriolis_force(const ServicerArmParams& params, const ArmKinematics& kinematics,
                               const ServicerVector& velocity);
 
+// C(q, v) w for any w, with the factorisation that makes dH/dt - 2 C skew-symmetric (the property
+// a passivity-based controller's proof rests on: flight/arm/compliance_control.hpp). With each
+// body's spatial Jacobian J_i (V_i = J_i v, world axes about O) and its inertia I_i about O,
+//   H = sum_i J_i' I_i J_i,   C = sum_i J_i' (I_i dJ_i/dt + V_i x* I_i J_i),
+// which is Newton-Euler's d(I_i V_i)/dt = I_i A_i + V_i x* I_i V_i summed through J_i'; since
+// dI_i/dt = V_i x* I_i - I_i V_i x and (V x*) = -(V x)', dH/dt - 2 C = sum_i (A_i - A_i') + (B_i' - B_i)
+// with A_i = (dJ_i/dt)' I_i J_i and B_i = J_i' I_i (V_i x) J_i: skew. The same two passes as the
+// RNEA above, with W_i = J_i w and (dJ_i/dt) w in place of V_i and A_i; coriolis_force(v) is
+// coriolis_times(v, v).
+ServicerVector coriolis_times(const ServicerArmParams& params, const ArmKinematics& kinematics,
+                              const ServicerVector& velocity, const ServicerVector& w);
+
 }  // namespace chaser::flight::arm
