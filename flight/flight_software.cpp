@@ -50,6 +50,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .target_estimator = make_target_estimator_params(scenario),
       .sync = make_sync_transfer(scenario),
       .approach = make_sync_approach(scenario),
+      .reach = make_reach(scenario),
       .tmu = make_tmu_params(scenario),
       .management = make_thruster_management(scenario),
       .fdir = make_fdir_params(scenario),
@@ -92,7 +93,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   } else {
     out.reference = guidance_reference(params.guidance, t_s, lvlh);
   }
-  if (params.hinf.enabled) {
+  const bool reaching = params.reach && t_s >= params.reach->start_s;
+  if (reaching) hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
+  if (reaching && state.reach.has_output) {
+    // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
+    out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * state.reach.platform_force_inertial_N;
+    out.torque_demand_body_Nm = state.reach.platform_torque_body_Nm;
+  } else if (params.hinf.enabled) {
     const HinfDemand demand =
         hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference, lvlh);
     out.force_demand_lvlh_N = demand.force_lvlh_N;

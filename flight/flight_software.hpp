@@ -17,6 +17,7 @@
 #include "flight/modulation.hpp"
 #include "flight/navigation.hpp"
 #include "flight/position_control.hpp"
+#include "flight/reach.hpp"
 #include "flight/thruster_management.hpp"
 #include "model/messages.hpp"
 #include "model/recovery.hpp"
@@ -40,6 +41,8 @@ struct FlightParams {
   // With guidance.synchronised.approach: the steps before the transfer (flight/sync_approach.hpp);
   // the reference is then this plan's from the line's start.
   std::optional<SyncApproachPlan> approach;
+  // With capture: the arm's reach under the combined controller (flight/reach.hpp), from its start.
+  std::optional<ReachParams> reach;
   TmuParams tmu;
   ThrusterManagementParams management;
   FdirParams fdir;
@@ -65,6 +68,7 @@ struct FlightState {
                                              // set, every latch open, until a recovery changes them
   ThrusterManagementState management;        // the active set's allocation problem
   ActiveCheckState active_check;              // when each active thruster last proved itself
+  ReachState reach;                           // the reach's joint loop (with FlightParams::reach)
   bool initialised = false;
   // Last: its sample and block rings (kMaxWatchedThrusters lanes, ~0.3 MB) would otherwise sit
   // between the small states every period reads, and spread them over more cache sets and pages.

@@ -53,6 +53,22 @@ void read_arm(MapReader& r, model::ArmParams& out) {
     }
   }
   read_section(r, "gripper", [&](MapReader& m) { read_gripper(m, out.gripper); });
+  // The stowed angles (optional: model/arm.hpp's default fold), in degrees, base to tip.
+  if (r.has("stowed_deg")) {
+    const auto list = r.child("stowed_deg", fmt::format("a list of {} angles [deg], base to tip", model::kArmJoints));
+    const std::string path = r.path_of("stowed_deg");
+    if (list && (!list->IsSequence() || list->size() != static_cast<std::size_t>(model::kArmJoints))) {
+      r.diagnostics().add(path, fmt::format("must be a list of {} angles [deg], base to tip (got {})", model::kArmJoints,
+                                            describe_node(*list)));
+    } else if (list) {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        double deg = 0.0;
+        if (read_number((*list)[i], join_path(path, std::to_string(i)),
+                        Range::closed(-kMaxJointAngleDeg, kMaxJointAngleDeg), r.diagnostics(), deg))
+          out.stowed_rad[i] = deg * model::kArmDegToRad;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ model::Scenario read_scenario(const YAML::Node& root, const std::string& source,
   read_section(r, "fdi", [&](MapReader& m) { read_fdi(m, s.fdi); });
   read_section(r, "initial", [&](MapReader& m) { read_initial(m, s.initial); });
   read_section(r, "campaign", [&](MapReader& m) { read_campaign(m, s.campaign); });
+  read_optional_capture(r, s.capture);
   read_faults(r, s.faults);
   r.finish();
   return s;

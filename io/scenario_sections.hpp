@@ -38,6 +38,8 @@ void read_optional_target_body(MapReader& r, std::optional<model::TargetBodyPara
 void read_optional_slosh(MapReader& r, std::optional<model::SloshParams>& out);
 // chaser.arm, the servicer's arm and gripper (io/arm_reader.cpp).
 void read_optional_arm(MapReader& r, std::optional<model::ArmParams>& out);
+// capture, the arm's reach and its combined controller (io/capture_reader.cpp).
+void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& out);
 void read_environment(MapReader& r, model::EnvironmentParams& out);
 void read_sensors(MapReader& r, model::SensorParams& out);
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out);
@@ -57,6 +59,9 @@ void validate_thruster_set(const model::Scenario& s, Diagnostics& diag);
 // chaser.arm against itself, the target's fixture and the capture point (io/arm_validation.cpp,
 // called by validate_scenario).
 void validate_arm(const model::Scenario& s, Diagnostics& diag);
+// capture against the arm, the run and the synchronisation (io/capture_reader.cpp, called by
+// validate_scenario).
+void validate_capture(const model::Scenario& s, Diagnostics& diag);
 // The campaign run length against the control period (called by validate_scenario).
 void validate_campaign(const model::Scenario& s, Diagnostics& diag);
 

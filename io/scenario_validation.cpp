@@ -317,6 +317,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   }
   check_hinf(s, diag);
   validate_arm(s, diag);
+  validate_capture(s, diag);
   validate_campaign(s, diag);
 }
 

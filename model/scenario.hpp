@@ -2,11 +2,13 @@
 // A complete, validated scenario: every parameter of one run. Loaded by io/, never mutated during a
 // run (docs/architecture.md: parameters, state and algorithm are three things).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/types.hpp"
 #include "model/campaign.hpp"
+#include "model/capture.hpp"
 #include "model/environment.hpp"
 #include "model/faults.hpp"
 #include "model/fdi.hpp"
@@ -49,6 +51,7 @@ struct Scenario {
   InitialState initial;
   std::vector<FaultParams> faults;
   CampaignParams campaign;
+  std::optional<CaptureParams> capture;  // the arm's reach (needs chaser.arm)
 };
 
 }  // namespace chaser::model

@@ -7,11 +7,13 @@
 
 #include "plant/earth/gravity.hpp"
 #include "plant/gravity_gradient.hpp"
-#include "plant/hub_mass_properties.hpp"
+#include "model/hub_mass_properties.hpp"
 #include "plant/lvlh_eci.hpp"
 #include "plant/multibody/mjcf.hpp"
 
 namespace chaser::plant {
+
+using model::BodyMassProperties;
 
 namespace {
 

@@ -75,7 +75,7 @@ struct MultibodyMotionParams {
 };
 
 // Why `scenario` cannot fly the multibody plant (naming the key): no chaser.arm, no orbit.earth,
-// chaser.slosh (not coupled in this model), or a hub that is not a body (plant/hub_mass_properties.hpp).
+// chaser.slosh (not coupled in this model), or a hub that is not a body (model/hub_mass_properties.hpp).
 std::optional<std::string> multibody_problem(const model::Scenario& scenario);
 
 // The scene of `scenario` (which multibody_problem accepts): the hub the chaser less its stowed

@@ -35,7 +35,8 @@ std::vector<std::pair<const char*, double>> phase_starts(const model::GuidancePa
 }  // namespace
 
 std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
-  const auto starts = phase_starts(s.guidance);
+  auto starts = phase_starts(s.guidance);
+  if (s.capture) starts.emplace_back("reach", s.capture->start_s);  // the arm wakes (sim/simulation.cpp)
   const double synchronised_from = synchronised_from_s(s);
   std::vector<PlannedPhase> out;
   for (std::size_t i = 0; i < starts.size(); ++i) {

@@ -5,7 +5,8 @@
 //   the synchronised transfer: "start_point_hold", "transfer", "capture_point_hold";
 //   COMRADE's synchronisation with its approach steps (flight/sync_approach.hpp): "line",
 //   "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "axis_hold",
-//   "transfer", "capture_point_hold".
+//   "transfer", "capture_point_hold"; with a capture section, "reach" from capture.start_s (the
+//   arm wakes on the multibody plant).
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).

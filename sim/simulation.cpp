@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/rotation.hpp"
+#include "plant/arm_joints.hpp"
 #include "plant/target.hpp"
 #include "model/run_timing.hpp"
 #include "sim/initial_truth.hpp"
@@ -106,6 +107,14 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   }
   recording_ = telemetry_ || memory_;
   keep_out_ = checks_keep_out(scenario_);
+  if (scenario_.capture) {
+    arm_wakes_ns_ = from_seconds(scenario_.capture->start_s);
+    joint_period_ns_ = static_cast<TimeNs>(std::llround(1e9 / scenario_.capture->joint_rate_hz));
+    if (flight_params_.reach) {  // the truth judges the gripper against the pose the reach aims at
+      reach_goal_target_m_ = flight_params_.reach->pre_grasp_target_m;
+      q_target_from_reach_goal_ = flight_params_.reach->q_target_from_tool;
+    }
+  }
   for (const PlannedPhase& phase : planned_phases(scenario_)) phase_requirements_.push_back(phase.requirements);
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
@@ -119,6 +128,12 @@ Simulation::~Simulation() = default;
 const model::SensorMeasurements& Simulation::begin_period() {
   if (begun_) return measurements_;
   begun_ = true;
+  if (arm_wakes_ns_ >= 0 && !arm_awake_ && k_ * period_ns_ >= arm_wakes_ns_) {
+    // The reach begins: the arm wakes on the multibody plant (sim/run_phases.hpp, "reach").
+    if (const auto problem = plant::wake_arm(plant_, scenario_))
+      throw std::runtime_error(fmt::format("capture.start_s: the arm cannot wake: {}", *problem));
+    arm_awake_ = true;
+  }
   truth_ = plant::chaser_state(plant_);
   measurements_ = plant::sense_plant(plant_.params, plant_.state, k_ * period_ns_);
   // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
@@ -150,8 +165,18 @@ void Simulation::end_period(const flight::FlightOutput& out) {
 
 // The target's attitude and rate and the slosh at t_k are needed for telemetry and the keep-out
 // check only; the monitor's sample is the truth at t_k against the flight software's reference.
-Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out, double t_s) const {
+Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out, double t_s) {
   PeriodTruth truth;
+  if (shape_.arm && recording_) {
+    if (arm_awake_) {
+      truth.arm = plant::sense_arm(plant_);
+      truth.gripper = plant::gripper_truth(plant_, reach_goal_target_m_, q_target_from_reach_goal_);
+    } else {
+      truth.arm.joints = model::kArmJoints;
+      for (int j = 0; j < model::kArmJoints; ++j)
+        truth.arm.q_rad[static_cast<std::size_t>(j)] = scenario_.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
+    }
+  }
   if (recording_ || keep_out_) truth.target = plant::target_rotation(plant_, t_s);
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                 truth.target.q_inertial_from_target);
@@ -163,6 +188,10 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
 bool Simulation::judge(const MonitorSample& sample) { return monitor_period(scenario_, sample, result_.figures); }
 
 void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
+  if (arm_awake_) {
+    propagate_with_arm(command, t_k);
+    return;
+  }
   if (blocks_.empty()) {
     plant::step_plant(plant_.params, plant_.state, command, t_k);
     return;
@@ -181,6 +210,20 @@ void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
       if (due[static_cast<std::size_t>(i)] > 0) blocks_[static_cast<std::size_t>(due[static_cast<std::size_t>(i)] - 1)](next, plant_);
   }
   plant::advance_plant(plant_.params, plant_.state, t, t_end);
+}
+
+// The reach's joint loop inside the period: at each joint step the arm's sensors are read, the
+// flight software's combined law commands the joints (flight::step_reach) and the plant is carried
+// to the next step. The blocks added by add_block do not run while the arm is awake.
+void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeNs t_k) {
+  plant::begin_plant_period(plant_.params, plant_.state, command, t_k);
+  const TimeNs t_end = t_k + period_ns_;
+  for (TimeNs t = t_k; t < t_end; t += joint_period_ns_) {
+    if (flight_params_.reach)
+      plant::command_arm(plant_, flight::step_reach(*flight_params_.reach, flight_state_.reach,
+                                                    plant::sense_arm(plant_), to_seconds(t)));
+    plant::advance_plant(plant_.params, plant_.state, t, std::min(t + joint_period_ns_, t_end));
+  }
 }
 
 void Simulation::add_block(const std::string& name, const Rate& rate, Block block) {
@@ -227,7 +270,9 @@ void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& trut
       .q_inertial_from_target = truth.target.q_inertial_from_target,
       .omega_target_body_radps = truth.target.omega_body_radps,
       .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks)),
-      .phase = phase_state_.phase};
+      .phase = phase_state_.phase,
+      .arm = shape_.arm ? &truth.arm : nullptr,
+      .gripper = truth.gripper ? &*truth.gripper : nullptr};
   double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
   if (every_channel_) record_every_channel(record, shape_, row);
   else record_period(channels_, record, row);

@@ -10,6 +10,7 @@
 #include <string>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -103,6 +104,12 @@ class Simulation {
   bool every_channel_ = true;
   bool recording_ = false;
   bool keep_out_ = false;  // the target has a keep-out volume: its attitude is needed every period
+  // The capture: when the arm wakes (the plant becomes the multibody one), the joint loop's period.
+  TimeNs arm_wakes_ns_ = -1;
+  Vec3 reach_goal_target_m_ = Vec3::Zero();  // the pre-grasp pose on the target, as the truth judges the gripper
+  Quat q_target_from_reach_goal_ = Quat::Identity();
+  TimeNs joint_period_ns_ = 0;
+  bool arm_awake_ = false;
   std::vector<PhaseRequirements> phase_requirements_;  // by phase index (sim/run_phases.hpp)
 
   // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
@@ -121,10 +128,13 @@ class Simulation {
     MonitorSample sample;
     plant::TargetRotation target;
     std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
+    model::ArmMeasurements arm;  // with a capture: the joints (the stowed angles before the arm wakes)
+    std::optional<plant::GripperTruth> gripper;  // once the arm is awake
   };
-  PeriodTruth sample_truth(const flight::FlightOutput& out, double t_s) const;
+  PeriodTruth sample_truth(const flight::FlightOutput& out, double t_s);
   bool judge(const MonitorSample& sample);
   void propagate(const model::ThrusterCommand& command, TimeNs t_k);
+  void propagate_with_arm(const model::ThrusterCommand& command, TimeNs t_k);
   void tally(const flight::FlightOutput& out, double t_s);
   void record(const flight::FlightOutput& out, const PeriodTruth& truth, double t_s);
 };

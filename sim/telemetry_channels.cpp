@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -61,12 +62,31 @@ void fdi_scheme(Channels& t, const flight::DiagnosisScheme& d, int s) {
 
 }  // namespace
 
+namespace {
+
+// Joint j's angle at the period start (NaN without an arm measurement).
+double arm_angle(const PeriodRecord& r, int j) {
+  return r.arm != nullptr && r.arm->joints > j ? r.arm->q_rad[static_cast<std::size_t>(j)]
+                                               : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The gripper's 12 values in channel order: error, velocity, attitude error, rate (3 each).
+double gripper_value(const PeriodRecord& r, int k) {
+  if (r.gripper == nullptr) return std::numeric_limits<double>::quiet_NaN();
+  const plant::GripperTruth& g = *r.gripper;
+  const Vec3& v = k < 3 ? g.r_m : k < 6 ? g.v_mps : k < 9 ? g.attitude_rad : g.omega_radps;
+  return v(k % 3);
+}
+
+}  // namespace
+
 TelemetryShape telemetry_shape(const model::Scenario& scenario) {
   const auto& slosh = scenario.chaser.slosh;
   return {.thrusters = scenario.thrusters.count,
           .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0,
           .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value(),
-          .phases = static_cast<int>(planned_phases(scenario).size())};
+          .phases = static_cast<int>(planned_phases(scenario).size()),
+          .arm = scenario.capture.has_value() && scenario.chaser.arm.has_value()};
 }
 
 namespace {
@@ -136,6 +156,19 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
     t.push_back({"target_est_att_err_rad", "rad", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[0]; }, 0});
     t.push_back({"target_est_rate_err_radps", "radps", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[1]; }, 0});
     t.push_back({"target_est_att_sigma_rad", "rad", [](const PeriodRecord& r, int) { return target_estimate_errors(r)[2]; }, 0});
+  }
+  if (shape.arm) {
+    for (int j = 0; j < model::kArmJoints; ++j)
+      t.push_back({fmt::format("q_arm_{}_rad", j + 1), "rad", [](const PeriodRecord& r, int k) { return arm_angle(r, k); }, j});
+    for (int j = 0; j < model::kArmJoints; ++j)
+      t.push_back({fmt::format("tau_arm_{}_Nm", j + 1), "Nm",
+                   [](const PeriodRecord& r, int k) { return r.flight_state->reach.joint_torque_Nm(k); }, j});
+    const std::array<std::pair<const char*, const char*>, 4> gripper = {
+        {{"gripper_err_{}_m", "m"}, {"gripper_v_{}_mps", "mps"}, {"gripper_att_err_{}_rad", "rad"}, {"gripper_rate_{}_radps", "radps"}}};
+    for (std::size_t g = 0; g < gripper.size(); ++g)
+      for (int i = 0; i < 3; ++i)
+        t.push_back({fmt::vformat(gripper[g].first, fmt::make_format_args("xyz"[i])), gripper[g].second,
+                     [](const PeriodRecord& r, int k) { return gripper_value(r, k); }, 3 * static_cast<int>(g) + i});
   }
   if (shape.phases > 1) t.push_back({"phase", "", [](const PeriodRecord& r, int) { return static_cast<double>(r.phase); }, 0});
   return t;
@@ -245,6 +278,11 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
   if (shape.target_estimator) {
     const std::array<double, 3> e = target_estimate_errors(r);
     *row++ = e[0], *row++ = e[1], *row++ = e[2];
+  }
+  if (shape.arm) {
+    for (int j = 0; j < model::kArmJoints; ++j) *row++ = arm_angle(r, j);
+    for (int j = 0; j < model::kArmJoints; ++j) *row++ = r.flight_state->reach.joint_torque_Nm(j);
+    for (int k = 0; k < 12; ++k) *row++ = gripper_value(r, k);
   }
   if (shape.phases > 1) *row++ = static_cast<double>(r.phase);
 }

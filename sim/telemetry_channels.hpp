@@ -10,6 +10,7 @@
 #include "core/types.hpp"
 #include "flight/flight_software.hpp"
 #include "model/scenario.hpp"
+#include "plant/arm_joints.hpp"
 #include "plant/plant.hpp"
 #include "sim/telemetry.hpp"
 
@@ -30,6 +31,10 @@ struct PeriodRecord {
   Vec3 omega_target_body_radps = Vec3::Zero();      // [rad/s] the target's inertial rate, its body axes
   std::span<const plant::SloshState> slosh;         // each tank's slosh state at the period start
   int phase = 0;                                    // the phase flown in this period (its index)
+  // With a capture: the joints at the period start and the gripper against the reach's goal (the
+  // pre-grasp pose), true values; null before the arm wakes (the gripper's channels are then NaN).
+  const model::ArmMeasurements* arm = nullptr;
+  const plant::GripperTruth* gripper = nullptr;
 };
 
 // What the table has channels for, from the scenario: its thrusters and its slosh tanks.
@@ -38,6 +43,7 @@ struct TelemetryShape {
   int slosh_tanks = 0;  // slosh1_s_body_x_m .. per tank of chaser.slosh (none without it)
   bool target_estimator = false;  // target_est_att_err_rad, target_est_rate_err_radps, target_est_att_sigma_rad
   int phases = 1;       // the run's phases (sim/run_phases.hpp); with more than one, the phase channel
+  bool arm = false;     // a capture: the joints (q_arm_1..7_rad, tau_arm_1..7_Nm) and the gripper's errors
 };
 TelemetryShape telemetry_shape(const model::Scenario& scenario);
 
@@ -54,6 +60,10 @@ struct TelemetryChannel {
 // tanks' order in chaser.slosh.tanks: slosh1_s_body_x_m (the mass's displacement from its rest
 // point, chaser body axes) and slosh1_s_dot_body_x_mps (its rate in the body frame). A run of
 // several phases ends with `phase`, the index of the phase flown (summary.json's phases name them).
+// A capture adds the joints' angles at the period start and the torques the joint loop commanded
+// last (q_arm_1_rad .., tau_arm_1_Nm ..; the stowed angles and 0 before the arm wakes) and the
+// gripper against the reach's goal, true values in the goal's axes (gripper_err_x_m ..,
+// gripper_v_x_mps .., gripper_att_err_x_rad .., gripper_rate_x_radps ..; NaN before the arm wakes).
 std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape);
 
 std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);

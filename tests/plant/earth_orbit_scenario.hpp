@@ -4,9 +4,11 @@
 #include "core/constants.hpp"
 #include "model/arm.hpp"
 #include "model/scenario.hpp"
-#include "plant/hub_mass_properties.hpp"
+#include "model/hub_mass_properties.hpp"
 
 namespace chaser::plant::testing {
+
+using model::BodyMassProperties;
 
 inline model::Scenario leo_earth_orbit_scenario() {
   model::Scenario s;

@@ -1,7 +1,7 @@
 // The multibody hub is the rigid chaser less its stowed arm: put back together they are the
 // chaser, by the parallel-axis sums and by MuJoCo's own composite; an arm the chaser cannot carry
 // is refused naming the key.
-#include "plant/hub_mass_properties.hpp"
+#include "model/hub_mass_properties.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,8 @@
 #include "plant/multibody/mujoco_model.hpp"
 
 namespace chaser::plant {
+
+using model::BodyMassProperties;
 namespace {
 
 model::SpacecraftParams chaser_with_arm() {

@@ -1,7 +1,7 @@
 #pragma once
-// The multibody plant's hub: the rigid chaser less its stowed arm. The scenario's chaser.mass_kg,
-// inertia_kgm2 and com_body_m are the whole spacecraft's with the arm stowed (the rigid plants fly
-// it so); the multibody plant flies the arm's links as bodies of their own, so the hub is what is
+// The servicer's hub: the rigid chaser less its stowed arm (the multibody plant's body, and the
+// flight software's model of it). The scenario's chaser.mass_kg, inertia_kgm2 and com_body_m are
+// the whole spacecraft's with the arm stowed (the rigid plants fly it so); the multibody plant flies the arm's links as bodies of their own, so the hub is what is
 // left when they are taken out: their masses, first moments and inertias about the chaser's CoM
 // (parallel axes, I_P = I_C + m (|d|^2 1 - d d^T), d from the body's CoM C to P).
 //   m_hub = M - sum m_i,   c_hub = (M c - sum m_i c_i) / m_hub
@@ -18,7 +18,7 @@
 #include "model/arm.hpp"
 #include "model/spacecraft.hpp"
 
-namespace chaser::plant {
+namespace chaser::model {
 
 struct BodyMassProperties {
   double mass_kg = 0.0;
@@ -27,19 +27,19 @@ struct BodyMassProperties {
 };
 
 // The seven links and the gripper (index 7) at joint angles q_rad, in the chaser's body frame.
-std::array<BodyMassProperties, model::kArmJoints + 1> arm_bodies(const model::ArmParams& arm,
-                                                                  const std::array<double, model::kArmJoints>& q_rad);
+std::array<BodyMassProperties, kArmJoints + 1> arm_bodies(const ArmParams& arm,
+                                                                  const std::array<double, kArmJoints>& q_rad);
 
 // The hub: the chaser (mass_kg, com_body_m, inertia_kgm2) less the arm at arm.stowed_rad.
-BodyMassProperties hub_mass_properties(const model::SpacecraftParams& chaser, const model::ArmParams& arm);
+BodyMassProperties hub_mass_properties(const SpacecraftParams& chaser, const ArmParams& arm);
 
 // Why the hub is not a body (naming the keys): the arm as heavy as the chaser or heavier, or an
 // inertia left that is not positive definite or breaks the triangle inequality of its principal
 // moments; nothing when it is one.
-std::optional<std::string> hub_problem(const model::SpacecraftParams& chaser,
+std::optional<std::string> hub_problem(const SpacecraftParams& chaser,
                                        const BodyMassProperties& hub);
 
 // Composite of bodies about their common CoM (the check that puts the hub and arm back together).
 BodyMassProperties composite(std::span<const BodyMassProperties> bodies);
 
-}  // namespace chaser::plant
+}  // namespace chaser::model

@@ -1,9 +1,9 @@
-#include "plant/hub_mass_properties.hpp"
+#include "model/hub_mass_properties.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-namespace chaser::plant {
+namespace chaser::model {
 
 namespace {
 
@@ -21,12 +21,12 @@ BodyMassProperties in_body_axes(double mass_kg, const Vec3& com_link_m, const Ve
 
 }  // namespace
 
-std::array<BodyMassProperties, model::kArmJoints + 1> arm_bodies(const model::ArmParams& arm,
-                                                                  const std::array<double, model::kArmJoints>& q_rad) {
-  std::array<BodyMassProperties, model::kArmJoints + 1> out;
+std::array<BodyMassProperties, kArmJoints + 1> arm_bodies(const ArmParams& arm,
+                                                                  const std::array<double, kArmJoints>& q_rad) {
+  std::array<BodyMassProperties, kArmJoints + 1> out;
   Vec3 frame_body_m = arm.mount_body_m;  // link 1's parent is the body frame, at the mount
   Mat3 body_from_parent = Mat3::Identity();
-  for (int i = 0; i < model::kArmJoints; ++i) {
+  for (int i = 0; i < kArmJoints; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const model::ArmLinkParams& link = arm.links[k];
     frame_body_m += body_from_parent * link.joint_position_parent_m;
@@ -35,11 +35,11 @@ std::array<BodyMassProperties, model::kArmJoints + 1> arm_bodies(const model::Ar
     body_from_parent = body_from_link;
   }
   const model::GripperParams& g = arm.gripper;  // at link 7's origin, its axes
-  out[model::kArmJoints] = in_body_axes(g.mass_kg, g.com_link7_m, g.inertia_kgm2, frame_body_m, body_from_parent);
+  out[kArmJoints] = in_body_axes(g.mass_kg, g.com_link7_m, g.inertia_kgm2, frame_body_m, body_from_parent);
   return out;
 }
 
-BodyMassProperties hub_mass_properties(const model::SpacecraftParams& chaser, const model::ArmParams& arm) {
+BodyMassProperties hub_mass_properties(const SpacecraftParams& chaser, const ArmParams& arm) {
   const auto links = arm_bodies(arm, arm.stowed_rad);
   BodyMassProperties hub;
   hub.mass_kg = chaser.mass_kg;
@@ -55,7 +55,7 @@ BodyMassProperties hub_mass_properties(const model::SpacecraftParams& chaser, co
   return hub;
 }
 
-std::optional<std::string> hub_problem(const model::SpacecraftParams& chaser,
+std::optional<std::string> hub_problem(const SpacecraftParams& chaser,
                                        const BodyMassProperties& hub) {
   const double arm_kg = chaser.mass_kg - hub.mass_kg;
   if (!(hub.mass_kg > 0.0))
@@ -86,4 +86,4 @@ BodyMassProperties composite(std::span<const BodyMassProperties> bodies) {
   return out;
 }
 
-}  // namespace chaser::plant
+}  // namespace chaser::model

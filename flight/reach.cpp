@@ -1,0 +1,204 @@
+#include "flight/reach.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "control/six_axis_design.hpp"
+#include "core/rotation.hpp"
+#include "flight/arm/computed_torque.hpp"
+#include "model/hub_mass_properties.hpp"
+
+namespace chaser::flight {
+
+namespace {
+
+// The flight software's model of the servicer: the hub (the chaser less its stowed arm) and the arm.
+model::MultibodySceneParams servicer_scene(const model::Scenario& s) {
+  const model::BodyMassProperties hub = model::hub_mass_properties(s.chaser, *s.chaser.arm);
+  model::MultibodySceneParams scene;
+  scene.hub_mass_kg = hub.mass_kg;
+  scene.hub_inertia_kgm2 = hub.inertia_kgm2;
+  scene.hub_com_body_m = hub.com_body_m;
+  scene.arm = *s.chaser.arm;
+  return scene;
+}
+
+// The H-infinity law's specs: the hub's authority and loop delay from the platform's own design
+// (control.hinf: what the thrusters give along each axis, half a period's hold, the valves), the
+// tool's and the joint's from the arm, delays of one joint step.
+ArmHinfSpec hinf_spec(const model::Scenario& s, const model::CaptureParams& c) {
+  const std::array<control::AxisDesignSpec, 6> platform = control::six_axis_specs(s);
+  const auto group = [](double authority, double delay_s, double bandwidth_radps, double error_scale) {
+    return ArmHinfGroupSpec{.authority = authority, .delay_s = delay_s, .bandwidth_radps = bandwidth_radps,
+                            .peak_sensitivity = 2.0, .low_frequency_gain = 1e-3, .error_scale = error_scale,
+                            .input_disturbance = 0.01};
+  };
+  const double joint_period_s = 1.0 / c.joint_rate_hz;
+  const double hub_force = std::min({platform[0].authority, platform[1].authority, platform[2].authority});
+  const double hub_torque = std::min({platform[3].authority, platform[4].authority, platform[5].authority});
+  ArmHinfSpec spec;
+  spec.hub_position = group(hub_force, platform[0].delay_s, c.hub_bandwidth_radps, 0.05);
+  spec.hub_attitude = group(hub_torque, platform[3].delay_s, c.hub_bandwidth_radps, 0.035);
+  // The arm's: 1 m/s^2 and 2 rad/s^2 at the tool, 2 rad/s^2 at the joint, a fraction of what the
+  // 176 N m drives give the 80 kg arm; errors scaled to COMRADE Table 2's envelope (10 mm, 2.74 deg).
+  spec.tool_position = group(1.0, joint_period_s, c.tool_bandwidth_radps, 0.01);
+  spec.tool_attitude = group(2.0, joint_period_s, c.tool_bandwidth_radps, 0.048);
+  spec.joint = group(2.0, joint_period_s, c.joint_bandwidth_radps, 0.05);
+  spec.period_s = joint_period_s;
+  return spec;
+}
+
+// A quintic blend from 0 to 1 over [0, T]: zero rate and acceleration at both ends.
+struct Blend {
+  double s = 1.0, rate = 0.0, acceleration = 0.0;
+};
+Blend quintic(double t_s, double duration_s) {
+  if (t_s >= duration_s) return {};
+  const double x = std::max(0.0, t_s / duration_s);
+  return {x * x * x * (10.0 - 15.0 * x + 6.0 * x * x), 30.0 * x * x * (1.0 - x) * (1.0 - x) / duration_s,
+          60.0 * x * (1.0 - x) * (1.0 - 2.0 * x) / (duration_s * duration_s)};
+}
+
+// The estimates carried from the last period to t_s: the hub (its CoM) in the law's world, its
+// velocity, attitude and rate; the target's frame.
+struct Carried {
+  Vec3 r_hub_m = Vec3::Zero(), v_hub_mps = Vec3::Zero();
+  Quat q_inertial_from_body = Quat::Identity();
+  Vec3 omega_body_radps = Vec3::Zero();
+  arm::FrameMotion target;
+};
+
+Carried carry(const ReachParams& p, const ReachState& s, double t_s) {
+  const double dt = t_s - s.nav_t_s;
+  Carried c;
+  c.q_inertial_from_body = (s.nav.q_inertial_from_body * quat_from_rotation_vector(s.nav.omega_body_radps * dt)).normalized();
+  c.omega_body_radps = s.nav.omega_body_radps;
+  // The chaser's CoM point (arm stowed) in inertial axes from the target: r_I = R_IL r, v_I = R_IL (v + w_L x r).
+  const Mat3 inertial_from_lvlh = s.lvlh.q_inertial_from_lvlh.toRotationMatrix();
+  const Vec3 r_lvlh = s.nav.r_lvlh_m + s.nav.v_lvlh_mps * dt;
+  const Vec3 r_point = inertial_from_lvlh * r_lvlh;
+  const Vec3 v_point = inertial_from_lvlh * (s.nav.v_lvlh_mps + s.lvlh.omega_lvlh_radps.cross(r_lvlh));
+  const Vec3 offset = c.q_inertial_from_body * p.hub_from_chaser_com_body_m;
+  c.r_hub_m = r_point + offset;
+  c.v_hub_mps = v_point + (c.q_inertial_from_body * c.omega_body_radps).cross(offset);
+  const TargetEstimate& e = *s.target;
+  const double dt_target = t_s - e.t_s;
+  const Vec3 omega_target = e.omega_target_radps + e.omega_dot_target_radps2 * dt_target;
+  c.target.q_world_from_frame =
+      (e.q_inertial_from_target * quat_from_rotation_vector(0.5 * (e.omega_target_radps + omega_target) * dt_target))
+          .normalized();
+  c.target.omega_radps = c.target.q_world_from_frame * omega_target;
+  c.target.alpha_radps2 = c.target.q_world_from_frame * e.omega_dot_target_radps2;
+  return c;
+}
+
+}  // namespace
+
+std::optional<ReachParams> make_reach(const model::Scenario& s) {
+  if (!s.capture || !s.chaser.arm || !s.target.body || !s.guidance.synchronised) return std::nullopt;
+  const model::CaptureParams& c = *s.capture;
+  const model::MultibodySceneParams scene = servicer_scene(s);
+  ReachParams p;
+  p.start_s = c.start_s;
+  p.law = c.law;
+  p.path_duration_s = c.path_duration_s;
+  p.joint_period_ns = static_cast<TimeNs>(std::llround(1e9 / c.joint_rate_hz));
+  p.servicer = arm::servicer_arm_of(scene);
+  p.hub_from_chaser_com_body_m = scene.hub_com_body_m - s.chaser.com_body_m;
+  p.capture_point_target_m = s.target.body->capture_point_target_m;
+  p.q_target_from_body = s.guidance.synchronised->q_target_from_body.normalized();
+  // The grasp attitude: the tool's x (its approach axis) along the chaser's +x, as the hold faces
+  // the fixture; the pre-grasp point standoff short of the fixture along it.
+  p.q_target_from_tool = p.q_target_from_body;
+  p.pre_grasp_target_m = s.target.body->grasp_point_target_m - c.standoff_m * (p.q_target_from_tool * Vec3::UnitX());
+  p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
+  // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
+  arm::JointVector stowed;
+  for (int j = 0; j < model::kArmJoints; ++j) stowed(j) = s.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
+  const arm::ArmKinematics at_stowed = arm::arm_kinematics(p.servicer, Vec3::Zero(), Quat::Identity(), stowed);
+  p.gains = arm::compliance_gains(
+      p.servicer, at_stowed,
+      {.hub_radps = c.hub_bandwidth_radps, .tool_radps = c.tool_bandwidth_radps, .joint_radps = c.joint_bandwidth_radps,
+       .damping_ratio = c.damping_ratio});
+  if (c.law == model::CaptureLaw::kHinf) p.hinf = make_arm_hinf_control(hinf_spec(s, c));
+  return p;
+}
+
+void hold_estimates(ReachState& state, const NavEstimate& nav, const std::optional<TargetEstimate>& target, double t_s,
+                    const model::LvlhFrame& lvlh) {
+  state.nav = nav;
+  state.target = target;
+  state.nav_t_s = t_s;
+  state.lvlh = lvlh;
+}
+
+arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, double t_s) {
+  const Blend b = quintic(t_s - params.start_s, params.path_duration_s);
+  const Vec3 travel = params.pre_grasp_target_m - state.tool_start_target_m;
+  const Eigen::AngleAxisd turn(state.q_target_from_tool_start.conjugate() * params.q_target_from_tool);
+  const Vec3 axis_target = state.q_target_from_tool_start * turn.axis();
+  arm::FrameMotion f;
+  f.r_m = state.tool_start_target_m + b.s * travel;
+  f.v_mps = b.rate * travel;
+  f.a_mps2 = b.acceleration * travel;
+  f.q_world_from_frame = state.q_target_from_tool_start * Quat(Eigen::AngleAxisd(b.s * turn.angle(), turn.axis()));
+  f.omega_radps = b.rate * turn.angle() * axis_target;
+  f.alpha_radps2 = b.acceleration * turn.angle() * axis_target;
+  return f;
+}
+
+model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,
+                             double t_s) {
+  model::ArmCommand command;
+  command.joints = model::kArmJoints;
+  if (!state.target || joints.joints != model::kArmJoints) return command;
+  arm::JointVector q, q_dot;
+  for (int j = 0; j < model::kArmJoints; ++j) {
+    q(j) = joints.q_rad[static_cast<std::size_t>(j)];
+    q_dot(j) = joints.q_dot_radps[static_cast<std::size_t>(j)];
+  }
+  const Carried c = carry(params, state, t_s);
+  const arm::ArmKinematics kinematics = arm::arm_kinematics(params.servicer, c.r_hub_m, c.q_inertial_from_body, q);
+  if (!state.started) {  // the path starts where the tool is, in the target's frame
+    const Quat q_target_from_world = c.target.q_world_from_frame.conjugate();
+    state.tool_start_target_m = q_target_from_world * kinematics.r_tool_world_m;
+    state.q_target_from_tool_start = (q_target_from_world * arm::tool_attitude(kinematics)).normalized();
+    state.joint3_start_rad = q(arm::kRedundancyJoint);
+    state.started = true;
+  }
+  arm::FrameMotion hub_in_target;
+  hub_in_target.r_m = params.capture_point_target_m + params.q_target_from_body * params.hub_from_chaser_com_body_m;
+  hub_in_target.q_world_from_frame = params.q_target_from_body;
+  arm::TaskReference reference;
+  reference.hub = arm::compose(c.target, hub_in_target);
+  reference.tool = arm::compose(c.target, tool_path(params, state, t_s));
+  reference.joint_rad = state.joint3_start_rad;
+
+  arm::ServicerVector velocity;
+  velocity << c.v_hub_mps, c.omega_body_radps, q_dot;
+  arm::ServicerVector tau;
+  if (params.law == model::CaptureLaw::kHinf) {
+    const arm::ComputedTorque out = arm_hinf_control(params.hinf, state.hinf, params.servicer, kinematics, q, velocity, reference);
+    tau = out.generalized_force;
+    state.errors = out.errors;
+  } else {
+    const arm::ComplianceOutput out = arm::compliance_control(params.servicer, kinematics, q, velocity, reference, params.gains);
+    tau = out.generalized_force;
+    state.errors = out.errors;
+  }
+  // The platform's share for the thrusters: the force (inertial axes) and the torque moved from the
+  // hub's CoM to the chaser's (arm stowed), about which the thrusters are allocated.
+  state.platform_force_inertial_N = tau.head<3>();
+  const Vec3 force_body = c.q_inertial_from_body.conjugate() * state.platform_force_inertial_N;
+  state.platform_torque_body_Nm = tau.segment<3>(3) + params.hub_from_chaser_com_body_m.cross(force_body);
+  for (int j = 0; j < model::kArmJoints; ++j) {
+    state.joint_torque_Nm(j) = std::clamp(tau(arm::kBaseDofs + j), -params.torque_limit_Nm, params.torque_limit_Nm);
+    command.torque_Nm[static_cast<std::size_t>(j)] = state.joint_torque_Nm(j);
+  }
+  state.has_output = true;
+  return command;
+}
+
+}  // namespace chaser::flight

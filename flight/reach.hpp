@@ -1,0 +1,89 @@
+#pragma once
+// The capture's reach on board (COMRADE 2018, sec. 4 and 6.2.1): the chaser holds the capture point
+// while the gripper follows a path to the pre-grasp pose beside the fixture, under one combined
+// controller of the 13 degrees of freedom (flight/arm/compliance_control.hpp or
+// flight/arm_hinf_control.hpp) run at the joints' rate. Its joint torques go to the arm's inner
+// loops at that rate; its platform force and torque are what the thrusters fly, sampled by the
+// flight software's period (step_flight reads them instead of the position and attitude loops).
+//
+// The structure is the paper's Fig. 12: feedback on joint data at the joints' rate, the platform's
+// and the target's state from navigation. Between two periods the joint loop carries the last
+// estimates forward (the hub's attitude by its measured rate, the chaser's position by its
+// velocity, the target's attitude by the estimator's own prediction).
+//
+// The law's world: inertial axes, the origin at the target's estimated centre of mass (its orbital
+// acceleration and the frame's are the same to the tide, ~1e-5 m/s^2 at 3.5 m, left to the loops).
+#include <optional>
+
+#include "core/time.hpp"
+#include "flight/arm/compliance_control.hpp"
+#include "flight/arm/servicer_arm.hpp"
+#include "flight/arm/task_space.hpp"
+#include "flight/arm_hinf_control.hpp"
+#include "flight/navigation.hpp"
+#include "flight/target_estimator.hpp"
+#include "model/capture.hpp"
+#include "model/messages.hpp"
+#include "model/scenario.hpp"
+#include "model/target_orbit.hpp"
+
+namespace chaser::flight {
+
+struct ReachParams {
+  double start_s = 0.0;                      // [s]
+  model::CaptureLaw law = model::CaptureLaw::kCompliance;
+  double path_duration_s = 60.0;             // [s]
+  TimeNs joint_period_ns = 1'000'000;        // [ns]
+  arm::ServicerArmParams servicer;           // the flight software's model of hub and arm
+  Vec3 hub_from_chaser_com_body_m = Vec3::Zero();  // [m] the hub's CoM from the chaser's (arm stowed) CoM
+  // In the target's frame: where the chaser's CoM holds and its attitude (the synchronised hold's),
+  // the tool's pre-grasp pose (standoff short of the fixture along the tool's x, its grasp attitude).
+  Vec3 capture_point_target_m = Vec3::Zero();
+  Quat q_target_from_body = Quat::Identity();
+  Vec3 pre_grasp_target_m = Vec3::Zero();
+  Quat q_target_from_tool = Quat::Identity();
+  double torque_limit_Nm = 176.0;            // [N m] each joint's command, the drives' repeated peak
+  arm::ComplianceGains gains;                // the compliance law's, designed at the stowed arm
+  ArmHinfParams hinf;                        // the H-infinity law's loops
+};
+
+// With capture (and chaser.arm): the reach's parameters; the H-infinity loops designed here.
+std::optional<ReachParams> make_reach(const model::Scenario& scenario);
+
+struct ReachState {
+  // The last period's estimates, carried forward by the joint loop.
+  NavEstimate nav;
+  std::optional<TargetEstimate> target;
+  double nav_t_s = 0.0;
+  model::LvlhFrame lvlh;
+  // The tool's pose in the target's frame when the reach began (the path's start).
+  bool started = false;
+  Vec3 tool_start_target_m = Vec3::Zero();
+  Quat q_target_from_tool_start = Quat::Identity();
+  double joint3_start_rad = 0.0;
+  ArmHinfState hinf;
+  // The law's last output: the platform's force (inertial axes) and torque (body axes, about the
+  // chaser's CoM), the joint torques as commanded (clamped) and the tasks' errors.
+  bool has_output = false;
+  Vec3 platform_force_inertial_N = Vec3::Zero();
+  Vec3 platform_torque_body_Nm = Vec3::Zero();
+  arm::JointVector joint_torque_Nm = arm::JointVector::Zero();
+  arm::TaskErrors errors;
+};
+
+// The period's estimates for the joint loop (called by step_flight every period of the reach).
+void hold_estimates(ReachState& state, const NavEstimate& nav, const std::optional<TargetEstimate>& target, double t_s,
+                    const model::LvlhFrame& lvlh);
+
+// One step of the joint loop at t_s: the law on the joints measured now and the estimates carried
+// to t_s; the joint torques to hold until the next step. Until the target's estimate exists, the
+// joints hold still (zero torque is not holding: they are commanded to their angles by the law's
+// own joint-space damping only once the reach has started).
+model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,
+                             double t_s);
+
+// The tool's path in the target's frame at t_s (a quintic blend from the start pose to the
+// pre-grasp pose over path_duration_s, the attitude turned about one axis).
+arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, double t_s);
+
+}  // namespace chaser::flight

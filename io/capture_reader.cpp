@@ -1,0 +1,68 @@
+// capture: the arm's reach and its combined controller (model/capture.hpp). The keys' ranges here;
+// their checks against the rest of the scenario (the arm, the run, the synchronisation, the
+// multibody plant's needs) in validate_capture below.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/scenario_sections.hpp"
+
+namespace chaser::io {
+
+void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& out) {
+  if (!r.has("capture")) return;
+  out.emplace();
+  read_section(r, "capture", [&](MapReader& m) {
+    model::CaptureParams& c = *out;
+    m.number("start_s", Range::closed(0.0, kMaxDurationS), c.start_s);
+    std::string law;
+    if (m.has("law") && m.text("law", law)) {
+      if (law == "compliance") c.law = model::CaptureLaw::kCompliance;
+      else if (law == "hinf") c.law = model::CaptureLaw::kHinf;
+      else m.diagnostics().add(m.path_of("law"), fmt::format("must be one of compliance, hinf (got '{}')", law));
+    }
+    m.number("path_duration_s", Range::left_open(0.0, 1e4), c.path_duration_s);
+    m.number("standoff_m", Range::closed(0.0, 2.0), c.standoff_m);
+    m.number("joint_rate_hz", Range::closed(1.0, 1e4), c.joint_rate_hz);
+    m.number("hub_bandwidth_radps", Range::left_open(0.0, 100.0), c.hub_bandwidth_radps);
+    m.number("tool_bandwidth_radps", Range::left_open(0.0, 100.0), c.tool_bandwidth_radps);
+    m.number("joint_bandwidth_radps", Range::left_open(0.0, 100.0), c.joint_bandwidth_radps);
+    m.number("damping_ratio", Range::closed(0.1, 10.0), c.damping_ratio);
+  });
+}
+
+void validate_capture(const model::Scenario& s, Diagnostics& d) {
+  if (!s.capture || !d.clean("capture")) return;
+  const model::CaptureParams& c = *s.capture;
+  if (!s.chaser.arm) d.add("capture", "needs chaser.arm (the arm that reaches)");
+  if (!s.orbit.earth) d.add("capture", "needs orbit.earth (the multibody plant takes over from the Earth-orbit one)");
+  if (s.chaser.slosh)
+    d.add("capture", "the multibody plant has no slosh yet: remove chaser.slosh from a scenario with a capture");
+  if (d.clean("duration_s") && !(c.start_s < s.duration_s))
+    d.add("capture.start_s", fmt::format("must be before duration_s {} (got {})", format_number(s.duration_s),
+                                         format_number(c.start_s)));
+  if (s.guidance.synchronised && d.clean("guidance.synchronised")) {
+    const double at_capture_point_s = s.guidance.synchronised->transfer_start_s + s.guidance.synchronised->transfer_duration_s;
+    if (c.start_s < at_capture_point_s)
+      d.add("capture.start_s", fmt::format("must be at or after the end of the transfer to the capture point, {} s "
+                                           "(guidance.synchronised.transfer_start_s + transfer_duration_s; got {})",
+                                           format_number(at_capture_point_s), format_number(c.start_s)));
+  } else if (!s.guidance.synchronised) {
+    d.add("capture", "needs guidance.synchronised (the capture point the chaser holds while the arm reaches)");
+  }
+  // The joints' period a whole number of nanoseconds, and the control period a whole number of them.
+  const double joint_period_ns = 1e9 / c.joint_rate_hz;
+  if (d.clean("capture.joint_rate_hz") && std::abs(joint_period_ns - std::round(joint_period_ns)) > 1e-6)
+    d.add("capture.joint_rate_hz", fmt::format("must divide 1e9 ns into whole nanoseconds (got {})",
+                                               format_number(c.joint_rate_hz)));
+  else if (d.clean("capture.joint_rate_hz") && d.clean("control_period_s")) {
+    const double per_period = s.control_period_s * c.joint_rate_hz;
+    if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || std::round(per_period) < 1.0)
+      d.add("capture.joint_rate_hz", fmt::format("must run a whole number of times per control period {} s (got {} Hz)",
+                                                 format_number(s.control_period_s), format_number(c.joint_rate_hz)));
+  }
+  if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
+    d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
+}
+
+}  // namespace chaser::io

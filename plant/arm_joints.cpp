@@ -1,0 +1,91 @@
+#include "plant/arm_joints.hpp"
+
+#include <algorithm>
+
+#include <mujoco/mujoco.h>
+
+#include "core/rotation.hpp"
+#include "plant/handover.hpp"
+#include "plant/multibody/mujoco_errors.hpp"
+#include "plant/multibody_motion.hpp"
+
+namespace chaser::plant {
+
+namespace {
+
+const MultibodyMotionParams* multibody_params(const Plant& plant) {
+  return std::get_if<MultibodyMotionParams>(&plant.params.motion);
+}
+
+}  // namespace
+
+std::optional<std::string> wake_arm(Plant& plant, const model::Scenario& scenario, double scene_timestep_s) {
+  if (auto problem = hand_over_to_multibody(plant, scenario, scene_timestep_s)) return problem;
+  lock_arm(std::get<MultibodyMotionParams>(plant.params.motion), std::get<MultibodyMotionState>(plant.state.motion),
+           false);
+  return std::nullopt;
+}
+
+bool arm_awake(const Plant& plant) { return multibody_params(plant) != nullptr; }
+
+model::ArmMeasurements sense_arm(const Plant& plant) {
+  model::ArmMeasurements m;
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) return m;
+  const auto& s = std::get<MultibodyMotionState>(plant.state.motion);
+  const auto q = joint_angles_rad(*p, s), w = joint_rates_radps(*p, s);
+  m.joints = model::kArmJoints;
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    m.q_rad[j] = q[j];
+    m.q_dot_radps[j] = w[j];
+    m.torque_Nm[j] = s.joint_torque_Nm[j];
+  }
+  return m;
+}
+
+void command_arm(Plant& plant, const model::ArmCommand& command) {
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) return;
+  auto& s = std::get<MultibodyMotionState>(plant.state.motion);
+  const double limit = p->scene.arm.torque_momentary_Nm;
+  std::array<double, model::kArmJoints> torque{};
+  for (std::size_t j = 0; j < torque.size(); ++j) torque[j] = std::clamp(command.torque_Nm[j], -limit, limit);
+  set_joint_torques(s, torque);
+}
+
+GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose) {
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) return {};
+  auto& s = std::get<MultibodyMotionState>(plant.state.motion);
+  const mjModel* m = &s.world.model();
+  mjData* d = &s.world.data();
+  multibody::guarded("the gripper's truth", [m, d] {
+    mj_kinematics(m, d);
+    mj_comPos(m, d);
+    mj_comVel(m, d);
+  });
+  const int site = mj_name2id(m, mjOBJ_SITE, "tool");
+  const int target = p->index.target;
+  double tool_velocity[6], target_velocity[6];  // (angular; linear), world axes, at the site / the body's CoM
+  mj_objectVelocity(m, d, mjOBJ_SITE, site, tool_velocity, 0);
+  mj_objectVelocity(m, d, mjOBJ_BODY, target, target_velocity, 0);
+  Mat3 world_from_tool;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) world_from_tool(i, j) = d->site_xmat[9 * site + 3 * i + j];
+  const Quat q_world_from_target =
+      Quat(d->xquat[4 * target], d->xquat[4 * target + 1], d->xquat[4 * target + 2], d->xquat[4 * target + 3]).normalized();
+  const Quat q_world_from_pose = (q_world_from_target * q_target_from_pose).normalized();
+  const Mat3 pose_from_world = q_world_from_pose.toRotationMatrix().transpose();
+  const Vec3 omega_target = Eigen::Map<const Vec3>(target_velocity);
+  const Vec3 offset = q_world_from_target * point_target_m;
+  const Vec3 r_point = Eigen::Map<const Vec3>(d->xpos + 3 * target) + offset;
+  const Vec3 v_point = Eigen::Map<const Vec3>(target_velocity + 3) + omega_target.cross(offset);
+  GripperTruth out;
+  out.r_m = pose_from_world * (Eigen::Map<const Vec3>(d->site_xpos + 3 * site) - r_point);
+  out.v_mps = pose_from_world * (Eigen::Map<const Vec3>(tool_velocity + 3) - v_point);
+  out.attitude_rad = rotation_vector_from_quat(q_world_from_pose.conjugate() * Quat(world_from_tool));
+  out.omega_radps = pose_from_world * (Eigen::Map<const Vec3>(tool_velocity) - omega_target);
+  return out;
+}
+
+}  // namespace chaser::plant

@@ -1,0 +1,46 @@
+#pragma once
+// The servicer's arm as the plant has it: woken (the multibody plant takes over and the joints'
+// locks open), its joint sensors read and its joint torques commanded, and the truth of where the
+// gripper is against the fixture (for the mission monitor, never for the flight software).
+#include <optional>
+#include <string>
+
+#include "core/types.hpp"
+#include "model/messages.hpp"
+#include "model/scenario.hpp"
+#include "plant/plant.hpp"
+
+namespace chaser::plant {
+
+// The arm wakes: the perturbed Earth-orbit plant hands its bodies to the multibody one (the arm
+// stowed, at rest relative to the hub: plant/handover.hpp) and the joints' locks open. Returns why
+// it cannot, or nothing.
+std::optional<std::string> wake_arm(Plant& plant, const model::Scenario& scenario, double scene_timestep_s = 1e-3);
+
+// Whether the plant flies the multibody scene with its arm free.
+bool arm_awake(const Plant& plant);
+
+// The joint sensors now: angles and rates as the joints are (the encoders' noise, ~1e-5 rad, is
+// below everything the capture is judged by, and not modelled), the torques last commanded.
+model::ArmMeasurements sense_arm(const Plant& plant);
+
+// The joint torques held from now to the next command, each clamped at the drive's hard limit
+// (chaser.arm.torque_momentary_Nm): the inner torque loop cannot give more.
+void command_arm(Plant& plant, const model::ArmCommand& command);
+
+// The gripper against a pose fixed on the target (the fixture, or the pre-grasp pose short of it),
+// true values, in the axes of that pose (x the tool's approach axis): the tool point's position
+// and its velocity relative to the pose's point (the difference of the two points' inertial
+// velocities), the rotation vector of q_pose^-1 q_tool, and the tool's angular velocity less the
+// target's. Refreshes MuJoCo's positions and velocities derived from the state (mj_kinematics,
+// mj_comPos, mj_comVel, which every step recomputes first): the state and the run are unchanged.
+struct GripperTruth {
+  Vec3 r_m = Vec3::Zero();
+  Vec3 v_mps = Vec3::Zero();
+  Vec3 attitude_rad = Vec3::Zero();
+  Vec3 omega_radps = Vec3::Zero();
+};
+// point_target_m, q_target_from_pose: the pose on the target (target axes, from its CoM).
+GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose);
+
+}  // namespace chaser::plant
