@@ -94,7 +94,10 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     out.reference = guidance_reference(params.guidance, t_s, lvlh);
   }
   const bool reaching = params.reach && t_s >= params.reach->start_s;
-  if (reaching) hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
+  if (reaching) {
+    hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
+    if (meas.arm && meas.arm->fixture.valid) update_from_camera(*params.reach, state.reach, meas.arm->fixture);
+  }
   if (reaching && state.reach.has_output) {
     // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
     out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * state.reach.platform_force_inertial_N;

@@ -70,6 +70,20 @@ struct Carried {
   arm::FrameMotion target;
 };
 
+// The target estimator's frame at t_s (its attitude carried by its rate and acceleration): origin
+// at the estimated CoM, at rest.
+arm::FrameMotion estimated_target(const ReachState& s, double t_s) {
+  const TargetEstimate& e = *s.target;
+  const double dt = t_s - e.t_s;
+  const Vec3 omega_target = e.omega_target_radps + e.omega_dot_target_radps2 * dt;
+  arm::FrameMotion f;
+  f.q_world_from_frame =
+      (e.q_inertial_from_target * quat_from_rotation_vector(0.5 * (e.omega_target_radps + omega_target) * dt)).normalized();
+  f.omega_radps = f.q_world_from_frame * omega_target;
+  f.alpha_radps2 = f.q_world_from_frame * e.omega_dot_target_radps2;
+  return f;
+}
+
 Carried carry(const ReachParams& p, const ReachState& s, double t_s) {
   const double dt = t_s - s.nav_t_s;
   Carried c;
@@ -83,14 +97,9 @@ Carried carry(const ReachParams& p, const ReachState& s, double t_s) {
   const Vec3 offset = c.q_inertial_from_body * p.hub_from_chaser_com_body_m;
   c.r_hub_m = r_point + offset;
   c.v_hub_mps = v_point + (c.q_inertial_from_body * c.omega_body_radps).cross(offset);
-  const TargetEstimate& e = *s.target;
-  const double dt_target = t_s - e.t_s;
-  const Vec3 omega_target = e.omega_target_radps + e.omega_dot_target_radps2 * dt_target;
-  c.target.q_world_from_frame =
-      (e.q_inertial_from_target * quat_from_rotation_vector(0.5 * (e.omega_target_radps + omega_target) * dt_target))
-          .normalized();
-  c.target.omega_radps = c.target.q_world_from_frame * omega_target;
-  c.target.alpha_radps2 = c.target.q_world_from_frame * e.omega_dot_target_radps2;
+  c.target = estimated_target(s, t_s);
+  c.target.r_m = s.frame_offset_m;
+  c.target.q_world_from_frame = (c.target.q_world_from_frame * quat_from_rotation_vector(s.frame_rotation_rad)).normalized();
   return c;
 }
 
@@ -112,7 +121,8 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   // The grasp attitude: the tool's x (its approach axis) along the chaser's +x, as the hold faces
   // the fixture; the pre-grasp point standoff short of the fixture along it.
   p.q_target_from_tool = p.q_target_from_body;
-  p.pre_grasp_target_m = s.target.body->grasp_point_target_m - c.standoff_m * (p.q_target_from_tool * Vec3::UnitX());
+  p.grasp_point_target_m = s.target.body->grasp_point_target_m;
+  p.pre_grasp_target_m = p.grasp_point_target_m - c.standoff_m * (p.q_target_from_tool * Vec3::UnitX());
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
   // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
   arm::JointVector stowed;
@@ -149,6 +159,26 @@ arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, d
   return f;
 }
 
+void update_from_camera(const ReachParams& params, ReachState& state, const model::RelativePoseMeasurement& sample) {
+  if (!sample.valid || !state.target) return;
+  // The tool's pose nearest the sample's time (within two joint steps).
+  const ToolPoseSample* nearest = nullptr;
+  for (const ToolPoseSample& p : state.tool_history)
+    if (p.t_s >= 0.0 && (nearest == nullptr || std::abs(p.t_s - sample.taken_s) < std::abs(nearest->t_s - sample.taken_s)))
+      nearest = &p;
+  if (nearest == nullptr || std::abs(nearest->t_s - sample.taken_s) > 2.0 * to_seconds(params.joint_period_ns)) return;
+  // The fixture in the law's world, and the target frame that puts it there.
+  const Quat q_world_from_fixture = (nearest->q * sample.q_camera_from_fixture).normalized();
+  const Vec3 r_fixture_m = nearest->r_m + nearest->q * sample.r_camera_m;
+  const Quat q_world_from_target = (q_world_from_fixture * params.q_target_from_tool.conjugate()).normalized();
+  const Vec3 offset_m = r_fixture_m - q_world_from_target * params.grasp_point_target_m;
+  const Quat q_estimate = estimated_target(state, sample.taken_s).q_world_from_frame;
+  const Vec3 rotation_rad = rotation_vector_from_quat(q_estimate.conjugate() * q_world_from_target);
+  state.frame_offset_m += kCameraGain * (offset_m - state.frame_offset_m);
+  state.frame_rotation_rad += kCameraGain * (rotation_rad - state.frame_rotation_rad);
+  ++state.camera_samples;
+}
+
 model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,
                              double t_s) {
   model::ArmCommand command;
@@ -161,6 +191,9 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
   }
   const Carried c = carry(params, state, t_s);
   const arm::ArmKinematics kinematics = arm::arm_kinematics(params.servicer, c.r_hub_m, c.q_inertial_from_body, q);
+  ToolPoseSample& record = state.tool_history[static_cast<std::size_t>(state.tool_history_next)];
+  record = {.t_s = t_s, .r_m = kinematics.r_tool_world_m, .q = arm::tool_attitude(kinematics)};
+  state.tool_history_next = (state.tool_history_next + 1) % kToolPoseHistory;
   if (!state.started) {  // the path starts where the tool is, in the target's frame
     const Quat q_target_from_world = c.target.q_world_from_frame.conjugate();
     state.tool_start_target_m = q_target_from_world * kinematics.r_tool_world_m;

@@ -13,6 +13,7 @@
 //
 // The law's world: inertial axes, the origin at the target's estimated centre of mass (its orbital
 // acceleration and the frame's are the same to the tide, ~1e-5 m/s^2 at 3.5 m, left to the loops).
+#include <array>
 #include <optional>
 
 #include "core/time.hpp"
@@ -40,6 +41,7 @@ struct ReachParams {
   // the tool's pre-grasp pose (standoff short of the fixture along the tool's x, its grasp attitude).
   Vec3 capture_point_target_m = Vec3::Zero();
   Quat q_target_from_body = Quat::Identity();
+  Vec3 grasp_point_target_m = Vec3::Zero();  // the fixture (its frame: q_target_from_tool, as the camera sees it)
   Vec3 pre_grasp_target_m = Vec3::Zero();
   Quat q_target_from_tool = Quat::Identity();
   double torque_limit_Nm = 176.0;            // [N m] each joint's command, the drives' repeated peak
@@ -49,6 +51,21 @@ struct ReachParams {
 
 // With capture (and chaser.arm): the reach's parameters; the H-infinity loops designed here.
 std::optional<ReachParams> make_reach(const model::Scenario& scenario);
+
+// The tool's pose as the joint loop computed it (its own kinematics on the carried estimates), kept
+// for the arm camera's samples, which arrive a latency after they were taken.
+struct ToolPoseSample {
+  double t_s = -1.0;
+  Vec3 r_m = Vec3::Zero();
+  Quat q = Quat::Identity();
+};
+inline constexpr int kToolPoseHistory = 512;  // [joint steps] 0.5 s at 1 kHz: more than the camera's latency
+
+// The arm camera's correction of the target's frame (the paper's Fig. 11: feedback on the camera's
+// gripper-to-fixture pose): the frame the fixture's measured pose implies, against the target
+// estimator's, low-passed (kCameraGain per sample) so that acquiring the fixture moves the
+// references smoothly and the camera's noise is averaged.
+inline constexpr double kCameraGain = 0.05;  // [-] per sample: a time constant of 20 samples, 2 s at 10 Hz
 
 struct ReachState {
   // The last period's estimates, carried forward by the joint loop.
@@ -62,6 +79,13 @@ struct ReachState {
   Quat q_target_from_tool_start = Quat::Identity();
   double joint3_start_rad = 0.0;
   ArmHinfState hinf;
+  std::array<ToolPoseSample, kToolPoseHistory> tool_history{};
+  int tool_history_next = 0;
+  // The camera's correction: the target's frame offset [m] (world axes) and turned by the rotation
+  // vector [rad] (target axes); the samples used.
+  Vec3 frame_offset_m = Vec3::Zero();
+  Vec3 frame_rotation_rad = Vec3::Zero();
+  int camera_samples = 0;
   // The law's last output: the platform's force (inertial axes) and torque (body axes, about the
   // chaser's CoM), the joint torques as commanded (clamped) and the tasks' errors.
   bool has_output = false;
@@ -74,6 +98,10 @@ struct ReachState {
 // The period's estimates for the joint loop (called by step_flight every period of the reach).
 void hold_estimates(ReachState& state, const NavEstimate& nav, const std::optional<TargetEstimate>& target, double t_s,
                     const model::LvlhFrame& lvlh);
+
+// An arm camera sample (delivered this period): the fixture's pose in the law's world from the
+// tool's pose when it was taken, the target's frame it implies, and the correction moved towards it.
+void update_from_camera(const ReachParams& params, ReachState& state, const model::RelativePoseMeasurement& sample);
 
 // One step of the joint loop at t_s: the law on the joints measured now and the estimates carried
 // to t_s; the joint torques to hold until the next step. Until the target's estimate exists, the

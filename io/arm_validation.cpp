@@ -44,10 +44,9 @@ void check_links(const model::ArmParams& arm, Diagnostics& d) {
     if (d.clean(base + ".lower_deg") && d.clean(base + ".upper_deg") && d.clean("chaser.arm.stowed_deg") &&
         link.lower_rad < link.upper_rad && !(stowed >= link.lower_rad && stowed <= link.upper_rad))
       d.add(fmt::format("chaser.arm.stowed_deg.{}", i),
-            fmt::format("must be within the joint's limits [{}, {}] deg (got {})",
-                        format_number(link.lower_rad * 180.0 / std::numbers::pi),
-                        format_number(link.upper_rad * 180.0 / std::numbers::pi),
-                        format_number(stowed * 180.0 / std::numbers::pi)));
+            fmt::format("must be within the joint's limits [{:g}, {:g}] deg (got {:g})",
+                        link.lower_rad * 180.0 / std::numbers::pi, link.upper_rad * 180.0 / std::numbers::pi,
+                        stowed * 180.0 / std::numbers::pi));
     if (d.clean(base + ".friction_Nm") && d.clean("chaser.arm.torque_repeated_peak_Nm") &&
         !(link.friction_Nm < arm.torque_repeated_peak_Nm))
       d.add(base + ".friction_Nm", fmt::format("must be less than torque_repeated_peak_Nm {}: the drive could not "

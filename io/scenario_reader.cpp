@@ -98,6 +98,18 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
       m.number("latency_s", Range::non_negative(), out.target_pose->latency_s);
     });
   }
+  if (r.has("arm_camera")) {  // optional; its period and latency against the control period in validate_scenario
+    out.arm_camera.emplace();
+    read_section(r, "arm_camera", [&](MapReader& m) {
+      model::ArmCameraParams& c = *out.arm_camera;
+      m.number("period_s", Range::left_open(0.0, 10.0), c.period_s);
+      m.number("position_noise_m", Range::closed(0.0, 1.0), c.position_noise_m);
+      m.angle_deg("attitude_noise_deg", Range::closed(0.0, 30.0), c.attitude_noise_rad);
+      m.number("latency_s", Range::non_negative(), c.latency_s);
+      m.angle_deg("fov_half_angle_deg", Range::left_open(0.0, 90.0), c.fov_half_angle_rad);
+      m.number("range_max_m", Range::left_open(0.0, 100.0), c.range_max_m);
+    });
+  }
 }
 
 }  // namespace chaser::io

@@ -144,6 +144,17 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
       d.add("sensors.target_pose.latency_s", fmt::format("must be in [0, period_s = {}) (got {})",
                                                          format_number(pose.period_s), format_number(pose.latency_s)));
   }
+  if (s.sensors.arm_camera) {  // the same timing rules; on the gripper, so with an arm
+    const model::ArmCameraParams& camera = *s.sensors.arm_camera;
+    if (!s.chaser.arm) d.add("sensors.arm_camera", "needs chaser.arm (the camera is on the gripper)");
+    if (d.clean("sensors.arm_camera.period_s") && camera.period_s < period)
+      d.add("sensors.arm_camera.period_s", fmt::format("must be in [control_period_s = {}, 10] (got {})",
+                                                       format_number(period), format_number(camera.period_s)));
+    if (d.clean("sensors.arm_camera.latency_s") && d.clean("sensors.arm_camera.period_s") &&
+        camera.latency_s >= camera.period_s)
+      d.add("sensors.arm_camera.latency_s", fmt::format("must be in [0, period_s = {}) (got {})",
+                                                        format_number(camera.period_s), format_number(camera.latency_s)));
+  }
 }
 
 // A rigid body's inertia is symmetric positive definite, and its principal moments satisfy

@@ -17,8 +17,8 @@ struct CaptureParams {
   double joint_rate_hz = 1000.0;   // [Hz] the combined law and the joints' torque commands (COMRADE: 1 kHz)
   // The tasks' natural frequencies and damping ratio (flight/arm/compliance_control.hpp,
   // compliance_gains; the H-infinity loops' omega_B).
-  double hub_bandwidth_radps = 0.2;
-  double tool_bandwidth_radps = 2.0;
+  double hub_bandwidth_radps = 1.0;
+  double tool_bandwidth_radps = 4.0;
   double joint_bandwidth_radps = 1.0;
   double damping_ratio = 1.0;
 };

@@ -40,12 +40,29 @@ struct TargetPoseSensorParams {
   double latency_s = 0.1;             // [s] from taking to delivery, in [0, period_s)
 };
 
+// The arm camera (COMRADE 2018, sec. 6.2.1: the gripper-to-grasping-point pose at 10 Hz): on the
+// gripper, looking along the tool's x, it measures the fixture's pose (its position and attitude
+// in camera axes) when the fixture is inside its cone and range; each sample taken at a control
+// period every period_s and delivered latency_s later, with white noise on the position (per
+// camera axis) and on the attitude (a small rotation, fixture axes). The fixture's frame: at
+// target.body.grasp_point_target_m, turned from the target's axes by
+// guidance.synchronised.q_target_from_body (its x the gripper's approach).
+struct ArmCameraParams {
+  double period_s = 0.1;                // [s] between samples, in [control period, 10]
+  double position_noise_m = 0.001;      // [m] 1-sigma per axis
+  double attitude_noise_rad = 0.0035;   // [rad] 1-sigma per axis
+  double latency_s = 0.05;              // [s] in [0, period_s)
+  double fov_half_angle_rad = 0.7;      // [rad] the fixture within this cone about the tool's x
+  double range_max_m = 3.0;             // [m]
+};
+
 struct SensorParams {
   LidarParams lidar;
   StarTrackerParams star_tracker;
   GyroParams gyro;
   PropellantSensorParams propellant;
   std::optional<TargetPoseSensorParams> target_pose;  // absent: no pose sensor
+  std::optional<ArmCameraParams> arm_camera;          // absent: no arm camera (needs chaser.arm)
 };
 
 }  // namespace chaser::model

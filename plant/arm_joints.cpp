@@ -1,6 +1,7 @@
 #include "plant/arm_joints.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <mujoco/mujoco.h>
 
@@ -13,9 +14,10 @@ namespace chaser::plant {
 
 namespace {
 
-const MultibodyMotionParams* multibody_params(const Plant& plant) {
-  return std::get_if<MultibodyMotionParams>(&plant.params.motion);
+const MultibodyMotionParams* multibody_params(const PlantParams& params) {
+  return std::get_if<MultibodyMotionParams>(&params.motion);
 }
+const MultibodyMotionParams* multibody_params(const Plant& plant) { return multibody_params(plant.params); }
 
 }  // namespace
 
@@ -28,11 +30,13 @@ std::optional<std::string> wake_arm(Plant& plant, const model::Scenario& scenari
 
 bool arm_awake(const Plant& plant) { return multibody_params(plant) != nullptr; }
 
-model::ArmMeasurements sense_arm(const Plant& plant) {
+model::ArmMeasurements sense_arm(const Plant& plant) { return sense_arm(plant.params, plant.state); }
+
+model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& state) {
   model::ArmMeasurements m;
-  const MultibodyMotionParams* p = multibody_params(plant);
+  const MultibodyMotionParams* p = multibody_params(params);
   if (p == nullptr) return m;
-  const auto& s = std::get<MultibodyMotionState>(plant.state.motion);
+  const auto& s = std::get<MultibodyMotionState>(state.motion);
   const auto q = joint_angles_rad(*p, s), w = joint_rates_radps(*p, s);
   m.joints = model::kArmJoints;
   for (std::size_t j = 0; j < q.size(); ++j) {
@@ -53,10 +57,11 @@ void command_arm(Plant& plant, const model::ArmCommand& command) {
   set_joint_torques(s, torque);
 }
 
-GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose) {
-  const MultibodyMotionParams* p = multibody_params(plant);
+GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const Vec3& point_target_m,
+                           const Quat& q_target_from_pose) {
+  const MultibodyMotionParams* p = multibody_params(params);
   if (p == nullptr) return {};
-  auto& s = std::get<MultibodyMotionState>(plant.state.motion);
+  auto& s = std::get<MultibodyMotionState>(state.motion);
   const mjModel* m = &s.world.model();
   mjData* d = &s.world.data();
   multibody::guarded("the gripper's truth", [m, d] {
@@ -86,6 +91,44 @@ GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat&
   out.attitude_rad = rotation_vector_from_quat(q_world_from_pose.conjugate() * Quat(world_from_tool));
   out.omega_radps = pose_from_world * (Eigen::Map<const Vec3>(tool_velocity) - omega_target);
   return out;
+}
+
+std::optional<model::ArmMeasurements> sense_arm_with_camera(const PlantParams& params, PlantState& state, double t_s) {
+  if (multibody_params(params) == nullptr || !params.sensors.arm_camera) return std::nullopt;
+  const model::ArmCameraParams& camera = *params.sensors.arm_camera;
+  model::ArmMeasurements m = sense_arm(params, state);
+  SensorState& sensors = state.sensors;
+  constexpr double kTimeTolS = 1e-9;  // sample times are sums of period_s (plant/sensors.cpp)
+  // Delivered once its latency has passed; a sample taken now with no latency goes out now too.
+  const auto deliver = [&] {
+    if (sensors.arm_camera_pending.valid && t_s + kTimeTolS >= sensors.arm_camera_pending.taken_s + camera.latency_s) {
+      m.fixture = sensors.arm_camera_pending;
+      sensors.arm_camera_pending.valid = false;
+    }
+  };
+  deliver();
+  if (t_s + kTimeTolS >= sensors.arm_camera_next_s) {
+    const GripperTruth g = gripper_truth(params, state, params.fixture_target_m, params.q_target_from_fixture);
+    // The fixture in camera (tool) axes: q_camera_from_fixture = (q_fixture^-1 q_tool)^-1, and its
+    // origin from the camera, -R_camera_from_fixture r (r the tool from the fixture, fixture axes).
+    const Quat q_camera_from_fixture = quat_from_rotation_vector(g.attitude_rad).conjugate();
+    const Vec3 r_camera_m = q_camera_from_fixture * (-g.r_m);
+    const double range_m = r_camera_m.norm();
+    RandomStream& noise = state.streams.arm_camera;  // drawn whether or not the fixture is seen
+    const Vec3 position_error(noise.normal(), noise.normal(), noise.normal());
+    const Vec3 attitude_error(noise.normal(), noise.normal(), noise.normal());
+    if (range_m <= camera.range_max_m && range_m > 0.0 &&
+        r_camera_m.x() >= range_m * std::cos(camera.fov_half_angle_rad)) {
+      sensors.arm_camera_pending.valid = true;
+      sensors.arm_camera_pending.taken_s = t_s;
+      sensors.arm_camera_pending.r_camera_m = r_camera_m + camera.position_noise_m * position_error;
+      sensors.arm_camera_pending.q_camera_from_fixture =
+          (q_camera_from_fixture * quat_from_rotation_vector(camera.attitude_noise_rad * attitude_error)).normalized();
+    }
+    while (sensors.arm_camera_next_s <= t_s + kTimeTolS) sensors.arm_camera_next_s += camera.period_s;
+  }
+  if (!m.fixture.valid) deliver();
+  return m;
 }
 
 }  // namespace chaser::plant

@@ -23,6 +23,7 @@ bool arm_awake(const Plant& plant);
 // The joint sensors now: angles and rates as the joints are (the encoders' noise, ~1e-5 rad, is
 // below everything the capture is judged by, and not modelled), the torques last commanded.
 model::ArmMeasurements sense_arm(const Plant& plant);
+model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& state);
 
 // The joint torques held from now to the next command, each clamped at the drive's hard limit
 // (chaser.arm.torque_momentary_Nm): the inner torque loop cannot give more.
@@ -41,6 +42,16 @@ struct GripperTruth {
   Vec3 omega_radps = Vec3::Zero();
 };
 // point_target_m, q_target_from_pose: the pose on the target (target axes, from its CoM).
-GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose);
+GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const Vec3& point_target_m,
+                           const Quat& q_target_from_pose);
+inline GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose) {
+  return gripper_truth(plant.params, plant.state, point_target_m, q_target_from_pose);
+}
+
+// The joint sensors (sense_arm) and the arm camera's sample at the control period starting at t_s
+// (model::ArmCameraParams): taken when its period has come, if the fixture (PlantParams'
+// fixture frame) is inside the camera's cone and range, and delivered once its latency has passed.
+// Nothing before the arm wakes.
+std::optional<model::ArmMeasurements> sense_arm_with_camera(const PlantParams& params, PlantState& state, double t_s);
 
 }  // namespace chaser::plant

@@ -1,6 +1,7 @@
 #include "plant/plant.hpp"
 
 #include "model/run_timing.hpp"
+#include "plant/arm_joints.hpp"
 #include "plant/target.hpp"
 
 namespace chaser::plant {
@@ -11,6 +12,7 @@ PlantStreams::PlantStreams(std::uint64_t seed)
       torque_noise(seed, "environment/torque"),
       propellant_gauge(seed, "sensors/propellant"),
       target_pose(seed, "sensors/target_pose"),
+      arm_camera(seed, "sensors/arm_camera"),
       sensors(make_sensor_noise(seed)) {}
 
 Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std::uint64_t seed) {
@@ -25,6 +27,8 @@ Plant make_plant(const model::Scenario& scenario, const RigidState& initial, std
       .period_ns = period_ns,
       .delay_max_ns = from_seconds(scenario.thrusters.delay_max_s),
   };
+  if (scenario.target.body) params.fixture_target_m = scenario.target.body->grasp_point_target_m;
+  if (scenario.guidance.synchronised) params.q_target_from_fixture = scenario.guidance.synchronised->q_target_from_body.normalized();
   PlantState state{
       .motion = CircularOrbitState{},
       .chaser = initial,
@@ -64,6 +68,7 @@ model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& sta
                                                   chaser.q_inertial_from_body, chaser.omega_body_radps, state.streams.sensors);
   meas.propellant_used_kg = state.propellant_used_kg + state.streams.propellant_gauge.normal(
                                                            0.0, params.sensors.propellant.noise_sigma_kg);
+  if (params.sensors.arm_camera) meas.arm = sense_arm_with_camera(params, state, to_seconds(t));
   if (params.sensors.target_pose) {
     const double t_s = to_seconds(t);
     const Quat q_inertial_from_target =

@@ -42,11 +42,15 @@ struct PlantParams {
   model::EnvironmentParams environment;
   TimeNs period_ns = 0;
   TimeNs delay_max_ns = 0;
+  // The grasp fixture's frame on the target (target axes, from its CoM): what the arm camera sees
+  // (model::ArmCameraParams).
+  Vec3 fixture_target_m = Vec3::Zero();
+  Quat q_target_from_fixture = Quat::Identity();
 };
 
 // Every noise source draws from its own named stream (docs/architecture.md, deterministic randomness).
 struct PlantStreams {
-  RandomStream delay, force_noise, torque_noise, propellant_gauge, target_pose;
+  RandomStream delay, force_noise, torque_noise, propellant_gauge, target_pose, arm_camera;
   SensorNoise sensors;
   explicit PlantStreams(std::uint64_t seed);
 };

@@ -75,6 +75,17 @@ model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorPar
   // A small tolerance on the sample times, which are sums of period_s: a sample due at 1/3 s is
   // taken at the control period starting then, not one period late by rounding.
   constexpr double kTimeTolS = 1e-9;
+  model::TargetPoseMeasurement out;
+  // Delivered once its latency has passed (before a new sample replaces it: with period_s one
+  // control period and a latency, each sample goes out as the next is taken); a sample taken now
+  // with no latency goes out now too.
+  const auto deliver = [&] {
+    if (state.target_pose_pending.valid && t_s + kTimeTolS >= state.target_pose_pending.taken_s + params.latency_s) {
+      out = state.target_pose_pending;
+      state.target_pose_pending.valid = false;
+    }
+  };
+  deliver();
   if (t_s + kTimeTolS >= state.target_pose_next_s) {
     const Vec3 error(noise.normal(), noise.normal(), noise.normal());
     state.target_pose_pending.valid = true;
@@ -84,11 +95,7 @@ model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorPar
                                                        .normalized();
     while (state.target_pose_next_s <= t_s + kTimeTolS) state.target_pose_next_s += params.period_s;
   }
-  model::TargetPoseMeasurement out;
-  if (state.target_pose_pending.valid && t_s + kTimeTolS >= state.target_pose_pending.taken_s + params.latency_s) {
-    out = state.target_pose_pending;
-    state.target_pose_pending.valid = false;
-  }
+  if (!out.valid) deliver();
   return out;
 }
 

@@ -46,6 +46,9 @@ struct SensorState {
   // The target pose sensor: its next sample's time and the sample awaiting delivery.
   double target_pose_next_s = 0.0;         // [s]
   model::TargetPoseMeasurement target_pose_pending;  // valid: taken, not yet delivered
+  // The arm camera: the same for its samples.
+  double arm_camera_next_s = 0.0;          // [s]
+  model::RelativePoseMeasurement arm_camera_pending;
 };
 
 // The target pose sensor (model::TargetPoseSensorParams) at run time t_s, called once per control

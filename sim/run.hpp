@@ -11,6 +11,7 @@
 #include "model/scenario.hpp"
 #include "sim/mission_monitor.hpp"
 #include "sim/phase_sequence.hpp"
+#include "sim/reach_result.hpp"
 #include "sim/telemetry.hpp"
 
 namespace chaser::sim {
@@ -75,6 +76,8 @@ struct RunResult {
   // The phases flown in order, with their start and end times and the reason each ended
   // (sim/run_phases.hpp); a run ended early ends its last phase there.
   std::vector<FlownPhase> phases;
+  // With a capture: the reach against COMRADE Table 2 (sim/reach_result.hpp).
+  ReachResult reach;
 };
 
 // A scheme's result by its name (flight/diagnosis_schemes.hpp); the name must be in the table.

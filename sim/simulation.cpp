@@ -114,6 +114,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
       reach_goal_target_m_ = flight_params_.reach->pre_grasp_target_m;
       q_target_from_reach_goal_ = flight_params_.reach->q_target_from_tool;
     }
+    result_.reach.hold_from_s = scenario_.capture->start_s + scenario_.capture->path_duration_s + kReachSettleS;
   }
   for (const PlannedPhase& phase : planned_phases(scenario_)) phase_requirements_.push_back(phase.requirements);
   loop_start_ = std::chrono::steady_clock::now();
@@ -167,15 +168,25 @@ void Simulation::end_period(const flight::FlightOutput& out) {
 // check only; the monitor's sample is the truth at t_k against the flight software's reference.
 Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out, double t_s) {
   PeriodTruth truth;
-  if (shape_.arm && recording_) {
-    if (arm_awake_) {
-      truth.arm = plant::sense_arm(plant_);
-      truth.gripper = plant::gripper_truth(plant_, reach_goal_target_m_, q_target_from_reach_goal_);
-    } else {
-      truth.arm.joints = model::kArmJoints;
-      for (int j = 0; j < model::kArmJoints; ++j)
-        truth.arm.q_rad[static_cast<std::size_t>(j)] = scenario_.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
+  if (arm_awake_) {  // judged every period (sim/reach_result.hpp), recorded or not
+    truth.arm = plant::sense_arm(plant_);
+    truth.gripper = plant::gripper_truth(plant_, reach_goal_target_m_, q_target_from_reach_goal_);
+    ReachResult& reach = result_.reach;
+    reach.flown = true;
+    if (t_s + 1e-9 >= reach.hold_from_s) {
+      const plant::GripperTruth& g = *truth.gripper;
+      reach.max_gripper_error_m = reach.max_gripper_error_m.cwiseMax(g.r_m.cwiseAbs());
+      reach.max_gripper_velocity_mps = reach.max_gripper_velocity_mps.cwiseMax(g.v_mps.cwiseAbs());
+      reach.max_gripper_attitude_rad = reach.max_gripper_attitude_rad.cwiseMax(g.attitude_rad.cwiseAbs());
+      reach.max_gripper_rate_radps = reach.max_gripper_rate_radps.cwiseMax(g.omega_radps.cwiseAbs());
+      ++reach.hold_periods;
     }
+    reach.final_gripper = *truth.gripper;
+    reach.camera_samples = flight_state_.reach.camera_samples;
+  } else if (shape_.arm && recording_) {  // stowed
+    truth.arm.joints = model::kArmJoints;
+    for (int j = 0; j < model::kArmJoints; ++j)
+      truth.arm.q_rad[static_cast<std::size_t>(j)] = scenario_.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
   }
   if (recording_ || keep_out_) truth.target = plant::target_rotation(plant_, t_s);
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
@@ -219,9 +230,13 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
   plant::begin_plant_period(plant_.params, plant_.state, command, t_k);
   const TimeNs t_end = t_k + period_ns_;
   for (TimeNs t = t_k; t < t_end; t += joint_period_ns_) {
-    if (flight_params_.reach)
-      plant::command_arm(plant_, flight::step_reach(*flight_params_.reach, flight_state_.reach,
-                                                    plant::sense_arm(plant_), to_seconds(t)));
+    if (flight_params_.reach) {
+      const model::ArmCommand command_now =
+          flight::step_reach(*flight_params_.reach, flight_state_.reach, plant::sense_arm(plant_), to_seconds(t));
+      for (std::size_t j = 0; j < result_.reach.peak_joint_torque_Nm.size(); ++j)
+        result_.reach.peak_joint_torque_Nm[j] = std::max(result_.reach.peak_joint_torque_Nm[j], std::abs(command_now.torque_Nm[j]));
+      plant::command_arm(plant_, command_now);
+    }
     plant::advance_plant(plant_.params, plant_.state, t, std::min(t + joint_period_ns_, t_end));
   }
 }

@@ -148,6 +148,62 @@ std::string scheme_text(const std::string& name, const SchemeResult& r, double o
   return out + "\n";
 }
 
+nlohmann::json vec_json(const Vec3& v, double scale = 1.0) { return {scale * v.x(), scale * v.y(), scale * v.z()}; }
+
+// The reach against COMRADE Table 2 (sim/reach_result.hpp): null without a capture.
+nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
+  if (!scenario.capture) return nullptr;
+  const ReachResult& reach = r.reach;
+  const MissionFigures& f = r.figures;
+  const plant::GripperTruth& g = reach.final_gripper;
+  return nlohmann::json{
+      {"law", model::to_string(scenario.capture->law)},
+      {"flown", reach.flown},
+      {"hold_from_s", reach.hold_from_s},
+      {"hold_s", reach.hold_periods * scenario.control_period_s},
+      {"camera_samples", reach.camera_samples},
+      {"gripper", nlohmann::json{
+                      {"axes", "the pre-grasp pose's: x the approach"},
+                      {"max_error_m", vec_json(reach.max_gripper_error_m)},
+                      {"max_velocity_mps", vec_json(reach.max_gripper_velocity_mps)},
+                      {"max_attitude_error_deg", vec_json(reach.max_gripper_attitude_rad, kRadToDeg)},
+                      {"max_rate_deg_s", vec_json(reach.max_gripper_rate_radps, kRadToDeg)},
+                      {"final_error_m", vec_json(g.r_m)},
+                      {"final_velocity_mps", vec_json(g.v_mps)},
+                      {"final_attitude_error_deg", vec_json(g.attitude_rad, kRadToDeg)},
+                      {"final_rate_deg_s", vec_json(g.omega_radps, kRadToDeg)},
+                      {"table2_met", gripper_meets_table2(reach)},
+                  }},
+      {"chaser_table2_met", f.final_position_error_m <= kTable2ChaserPositionM &&
+                                f.final_speed_mps <= kTable2ChaserVelocityMps &&
+                                f.final_attitude_error_rad * kRadToDeg <= kTable2ChaserAttitudeDeg &&
+                                f.final_rate_error_radps * kRadToDeg <= kTable2ChaserRateDegps},
+      {"peak_joint_torque_Nm", reach.peak_joint_torque_Nm},
+      {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
+  };
+}
+
+// The reach's lines of the text report.
+std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
+  if (!scenario.capture) return {};
+  const ReachResult& reach = r.reach;
+  if (!reach.flown) return "  reach: not flown (the run ended before capture.start_s)\n";
+  const auto mm = [](const Vec3& v) { return fmt::format("{:.1f}, {:.1f}, {:.1f}", 1e3 * v.x(), 1e3 * v.y(), 1e3 * v.z()); };
+  const auto deg = [](const Vec3& v) {
+    return fmt::format("{:.2f}, {:.2f}, {:.2f}", kRadToDeg * v.x(), kRadToDeg * v.y(), kRadToDeg * v.z());
+  };
+  double peak = 0.0;
+  for (const double t : reach.peak_joint_torque_Nm) peak = std::max(peak, t);
+  return fmt::format(
+      "  reach ({} law, {} camera samples): gripper over the hold from {:.0f} s, largest per axis (x the approach): "
+      "{} mm, {} mm/s, {} deg, {} deg/s: COMRADE Table 2 {}\n"
+      "  reach: peak joint torque {:.1f} N m (limit {:.0f})\n",
+      model::to_string(scenario.capture->law), reach.camera_samples, reach.hold_from_s, mm(reach.max_gripper_error_m),
+      mm(reach.max_gripper_velocity_mps), deg(reach.max_gripper_attitude_rad), deg(reach.max_gripper_rate_radps),
+      gripper_meets_table2(reach) ? "met" : "NOT met (+-10, 22, 22 mm; 2.74 deg; 5 mm/s; 0.1 deg/s)", peak,
+      scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0);
+}
+
 }  // namespace
 
 nlohmann::json run_summary(const model::Scenario& scenario, const std::string& scenario_hash, const RunResult& r) {
@@ -199,6 +255,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"phases", phases_json(scenario)},
       {"phases_flown", phases_flown_json(r)},
       {"fdir", fdir_json(scenario, r.fdir)},
+      {"reach", reach_json(scenario, r)},
   };
 }
 
@@ -248,6 +305,7 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
       out += fmt::format("  recovery: {}'s group latch closed at {:.1f} s, flying on the standby group\n",
                          model::thruster_name(e.recovered_thruster), e.recovery_s);
   }
+  out += reach_text(scenario, r);
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
   return out;
 }

@@ -1,0 +1,44 @@
+#pragma once
+// The reach judged against COMRADE 2018 Table 2 (the requirements at the end of the reach and at
+// the grasp): the gripper against the pose the reach aims at (the pre-grasp pose, true values in its
+// axes, x the approach), over the hold that follows the tool's path, and the chaser at the end.
+// The gripper's Table 2 envelope is written for the grasp; the reach holds it standoff_m short of
+// the fixture, so its errors are taken from that pose.
+#include <array>
+
+#include "core/types.hpp"
+#include "model/arm.hpp"
+#include "plant/arm_joints.hpp"
+
+namespace chaser::sim {
+
+// COMRADE 2018 Table 2.
+inline constexpr double kTable2GripperErrorM[3] = {0.010, 0.022, 0.022};      // [m] x (approach), y, z
+inline constexpr double kTable2GripperAttitudeDeg = 2.74;                       // [deg] about each axis
+inline constexpr double kTable2GripperVelocityMps = 0.005;                      // [m/s] per axis
+inline constexpr double kTable2GripperRateDegps = 0.1;                          // [deg/s] per axis
+inline constexpr double kTable2ChaserPositionM = 0.05;                          // [m]
+inline constexpr double kTable2ChaserVelocityMps = 0.005;                       // [m/s]
+inline constexpr double kTable2ChaserAttitudeDeg = 2.0;                         // [deg]
+inline constexpr double kTable2ChaserRateDegps = 0.5;                           // [deg/s]
+// The hold judged starts this long after the tool's path ends (its settling).
+inline constexpr double kReachSettleS = 10.0;  // [s]
+
+struct ReachResult {
+  bool flown = false;                 // the arm woke
+  double hold_from_s = 0.0;           // [s] the window judged: [hold_from_s, end of run]
+  int hold_periods = 0;
+  // The largest |value| per axis over the hold, and the values at the end.
+  Vec3 max_gripper_error_m = Vec3::Zero();
+  Vec3 max_gripper_velocity_mps = Vec3::Zero();
+  Vec3 max_gripper_attitude_rad = Vec3::Zero();
+  Vec3 max_gripper_rate_radps = Vec3::Zero();
+  plant::GripperTruth final_gripper;
+  std::array<double, model::kArmJoints> peak_joint_torque_Nm{};  // [N m] the commands, every joint step of the reach
+  int camera_samples = 0;             // arm camera samples the flight software used
+};
+
+// Whether the gripper stayed inside Table 2 over the hold (every axis of each of the four).
+bool gripper_meets_table2(const ReachResult& r);
+
+}  // namespace chaser::sim

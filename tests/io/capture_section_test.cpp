@@ -1,0 +1,94 @@
+// The capture section, the arm camera and the arm's stowed angles (docs/scenario.md): the shipped
+// comrade_capture reads back, and each bad value is refused with its key path and what is allowed.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/scenario_loader.hpp"
+
+namespace chaser::io {
+namespace {
+
+constexpr const char* kCapture = "scenarios/comrade_capture.yaml";
+
+bool has_error(const LoadResult& r, const std::string& path, const std::string& fragment) {
+  for (const ScenarioError& e : r.errors)
+    if (e.key_path == path && e.message.find(fragment) != std::string::npos) return true;
+  return false;
+}
+
+TEST(CaptureSection, TheShippedScenarioReadsBack) {
+  const LoadResult r = load_scenario_file(kCapture);
+  ASSERT_TRUE(r.scenario) << format_errors(r.errors);
+  const model::Scenario& s = *r.scenario;
+  ASSERT_TRUE(s.capture && s.sensors.arm_camera && s.chaser.arm);
+  EXPECT_EQ(s.capture->start_s, 2760.0);
+  EXPECT_EQ(s.capture->law, model::CaptureLaw::kCompliance);
+  EXPECT_EQ(s.capture->joint_rate_hz, 1000.0);
+  EXPECT_EQ(s.sensors.arm_camera->period_s, 0.1);
+  EXPECT_NEAR(s.chaser.arm->stowed_rad[5], 20.0 * model::kArmDegToRad, 1e-15);
+  EXPECT_FALSE(load_scenario_file("scenarios/comrade_sync.yaml").scenario->capture);  // optional
+}
+
+struct BadCapture {
+  const char* label;
+  std::vector<std::string> overrides;
+  const char* key_path;
+  const char* fragment;
+};
+
+std::vector<BadCapture> bad_captures() {
+  return {
+      {"law", {"capture.law=pid"}, "capture.law", "must be one of compliance, hinf (got 'pid')"},
+      {"before_the_capture_point", {"capture.start_s=2600"}, "capture.start_s",
+       "must be at or after the end of the transfer to the capture point, 2700 s"},
+      {"after_the_end", {"capture.start_s=2900"}, "capture.start_s", "must be before duration_s 2850 (got 2900)"},
+      {"joint_rate_not_whole_ns", {"capture.joint_rate_hz=3"}, "capture.joint_rate_hz",
+       "must divide 1e9 ns into whole nanoseconds (got 3)"},
+      {"joint_rate_not_per_period", {"capture.joint_rate_hz=16"}, "capture.joint_rate_hz",
+       "must run a whole number of times per control period 0.1 s (got 16 Hz)"},
+      {"negative_bandwidth", {"capture.tool_bandwidth_radps=-1"}, "capture.tool_bandwidth_radps", "must be in (0, 100]"},
+      {"slosh", {"chaser.slosh={g_eff_mps2: 0.005, tanks: [{bottom_centre_body_m: [0.5, 0.0, -0.45], axis_body: [0, 0, 1], "
+                 "radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 150.0, density_kgpm3: 1004.0, damping_ratio: 0.005}]}"},
+       "capture", "the multibody plant has no slosh yet"},
+      {"camera_latency", {"sensors.arm_camera.latency_s=0.1"}, "sensors.arm_camera.latency_s",
+       "must be in [0, period_s = 0.1) (got 0.1)"},
+      {"camera_period", {"sensors.arm_camera.period_s=0.05"}, "sensors.arm_camera.period_s",
+       "must be in [control_period_s = 0.1, 10] (got 0.05)"},
+      {"stowed_outside_limits", {"chaser.arm.stowed_deg=[0, 130, 0, -110, 0, 20, 0]"}, "chaser.arm.stowed_deg.1",
+       "must be within the joint's limits [-120, 120] deg (got 130)"},
+      {"stowed_count", {"chaser.arm.stowed_deg=[0, 90, 0]"}, "chaser.arm.stowed_deg", "must be a list of 7 angles"},
+  };
+}
+
+class BadCaptureCase : public ::testing::TestWithParam<BadCapture> {};
+
+TEST_P(BadCaptureCase, ReportsOneErrorAtItsKeyPath) {
+  const BadCapture& c = GetParam();
+  const LoadResult r = load_scenario_file(kCapture, c.overrides);
+  EXPECT_FALSE(r.scenario.has_value());
+  EXPECT_TRUE(has_error(r, c.key_path, c.fragment)) << format_errors(r.errors);
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, BadCaptureCase, ::testing::ValuesIn(bad_captures()),
+                         [](const ::testing::TestParamInfo<BadCapture>& info) { return std::string(info.param.label); });
+
+TEST(CaptureSection, NeedsAnArm) {
+  const LoadResult r = load_scenario_file(
+      "scenarios/comrade_sync.yaml",
+      {"capture={start_s: 2760, law: compliance, path_duration_s: 60, standoff_m: 0.15, joint_rate_hz: 1000, "
+       "hub_bandwidth_radps: 1, tool_bandwidth_radps: 4, joint_bandwidth_radps: 1, damping_ratio: 1}"});
+  EXPECT_TRUE(has_error(r, "capture", "needs chaser.arm")) << format_errors(r.errors);
+}
+
+TEST(CaptureSection, TheArmCameraNeedsAnArm) {
+  const LoadResult r = load_scenario_file("scenarios/comrade_sync.yaml", {"sensors.arm_camera={period_s: 0.1, "
+                                          "position_noise_m: 0.001, attitude_noise_deg: 0.2, latency_s: 0.05, "
+                                          "fov_half_angle_deg: 40, range_max_m: 3}"});
+  EXPECT_TRUE(has_error(r, "sensors.arm_camera", "needs chaser.arm")) << format_errors(r.errors);
+}
+
+}  // namespace
+}  // namespace chaser::io

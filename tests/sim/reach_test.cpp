@@ -1,0 +1,77 @@
+// The reach flown end to end (scenarios/comrade_capture.yaml): the synchronisation, then the arm
+// woken on the multibody plant and the combined controller at 1 kHz holding the chaser at the
+// capture point while the gripper goes to the pre-grasp pose. Judged by the truth (MuJoCo's
+// gripper against the fixture on the target's body), never by the flight software's own errors.
+#include <gtest/gtest.h>
+
+#include "io/scenario_loader.hpp"
+#include "sim/run.hpp"
+
+namespace chaser::sim {
+namespace {
+
+model::Scenario capture_scenario(std::vector<std::string> overrides = {}) {
+  const io::LoadResult loaded = io::load_scenario_file("scenarios/comrade_capture.yaml", overrides);
+  EXPECT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
+  return *loaded.scenario;
+}
+
+double largest(const std::array<double, model::kArmJoints>& v) { return *std::max_element(v.begin(), v.end()); }
+
+// With the arm camera (COMRADE 2018's Fig. 11): the gripper's position and attitude inside Table 2's
+// envelope over the whole hold (measured: 6.3, 7.1, 4.6 mm; 0.23, 0.15, 0.29 deg), the chaser
+// within Table 2 at the end, the joints far below their 176 N m (7.1 N m). The gripper's velocity
+// and rate are not (12 mm/s, 0.41 deg/s against 5 mm/s and 0.1 deg/s): the hub's rate jitter under
+// the thrusters' pulses, 0.1 deg/s at 3.5 m (docs/servicing.md, "The reach").
+TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
+  const RunResult r = run_scenario(capture_scenario());
+  ASSERT_FALSE(r.figures.diverged);
+  ASSERT_FALSE(r.phases.empty());
+  EXPECT_EQ(r.phases.back().name, "reach");
+  const ReachResult& reach = r.reach;
+  ASSERT_TRUE(reach.flown);
+  EXPECT_GT(reach.hold_periods, 100);
+  EXPECT_GT(reach.camera_samples, 300);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(reach.max_gripper_error_m(k), kTable2GripperErrorM[k]) << k;
+    EXPECT_LT(reach.max_gripper_attitude_rad(k), kTable2GripperAttitudeDeg * model::kArmDegToRad) << k;
+  }
+  EXPECT_LT(largest(reach.peak_joint_torque_Nm), 30.0);
+  EXPECT_LT(r.figures.final_position_error_m, kTable2ChaserPositionM);
+  EXPECT_LT(r.figures.final_attitude_error_rad, kTable2ChaserAttitudeDeg * model::kArmDegToRad);
+}
+
+// Without the camera (Fig. 12: the fixture where the target estimator puts it) the gripper misses
+// the envelope sideways by the estimate's error, ~0.4 deg at 4-7 m from the target's centre:
+// measured 34 and 28 mm against 22. The camera is what makes the reach.
+TEST(Reach, WithoutTheArmCameraTheTargetsEstimateLeavesTheGripperOutside) {
+  model::Scenario s = capture_scenario();
+  s.sensors.arm_camera.reset();
+  const RunResult r = run_scenario(s);
+  ASSERT_TRUE(r.reach.flown);
+  EXPECT_EQ(r.reach.camera_samples, 0);
+  EXPECT_GT(std::max(r.reach.max_gripper_error_m.y(), r.reach.max_gripper_error_m.z()), kTable2GripperErrorM[1]);
+}
+
+// The H-infinity law flies the same reach: the gripper inside the position envelope (measured 5.9,
+// 6.6, 7.1 mm), the joints below their limit; its tool roll loop amplifies the camera's noise
+// more than the compliance law (1.4 deg against 0.2, docs/servicing.md).
+TEST(Reach, TheHinfLawFliesTheSameReach) {
+  const RunResult r = run_scenario(capture_scenario({"capture.law=hinf"}));
+  ASSERT_TRUE(r.reach.flown);
+  for (int k = 0; k < 3; ++k) EXPECT_LT(r.reach.max_gripper_error_m(k), kTable2GripperErrorM[k]) << k;
+  EXPECT_LT(largest(r.reach.peak_joint_torque_Nm), 30.0);
+}
+
+// The same scenario and seed give the same bits: MuJoCo's pipeline, the joint loop and the camera.
+TEST(Reach, TheSameSeedGivesTheSameBits) {
+  model::Scenario s = capture_scenario();
+  s.duration_s = s.capture->start_s + 5.0;
+  const RunResult a = run_scenario(s), b = run_scenario(s);
+  EXPECT_EQ(a.reach.final_gripper.r_m, b.reach.final_gripper.r_m);
+  EXPECT_EQ(a.reach.final_gripper.omega_radps, b.reach.final_gripper.omega_radps);
+  EXPECT_EQ(a.figures.final_position_error_m, b.figures.final_position_error_m);
+}
+
+}  // namespace
+}  // namespace chaser::sim
