@@ -17,10 +17,10 @@ struct CaptureParams {
   double joint_rate_hz = 1000.0;   // [Hz] the combined law and the joints' torque commands (COMRADE: 1 kHz)
   // The tasks' natural frequencies and damping ratio (flight/arm/compliance_control.hpp,
   // compliance_gains; the H-infinity loops' omega_B).
-  double hub_bandwidth_radps = 1.0;
-  double tool_bandwidth_radps = 4.0;
+  double hub_bandwidth_radps = 0.5;
+  double tool_bandwidth_radps = 3.0;
   double joint_bandwidth_radps = 1.0;
-  double damping_ratio = 1.0;
+  double damping_ratio = 3.0;
 };
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
