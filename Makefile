@@ -1,7 +1,7 @@
 # Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
 # benchmarks, `make sanitize` every test under ASan and UBSan (`make sanitize-fast` CI's subset),
-# `make fuzz` the loaders' fuzzers (docs/reliability.md), `make servicing` COMRADE's synchronisation
-# and its Table 5, `make docs` the generated tables of README.md and docs/ (scripts/doc_tables.py).
+# `make fuzz` the loaders' fuzzers (docs/reliability.md), `make servicing` COMRADE's synchronisation,
+# its Table 5 and the reach, `make docs` the generated tables of README.md and docs/ (scripts/doc_tables.py).
 # Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -53,6 +53,8 @@ servicing: build
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_sync.yaml --preset comrade-table5 \
 	  --also scenarios/comrade_assist.yaml --out $(SERVICING_OUT)/table5
 	@$(PYTHON) python/plot_table5.py $(SERVICING_OUT)/table5
+	@./$(BUILD)/cli/chaser run scenarios/comrade_capture.yaml --out $(SERVICING_OUT)/reach
+	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/reach
 
 # Every generated results table in README.md and docs/ rewritten from its command's output
 # (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take a few minutes on 2 cores).

@@ -198,3 +198,20 @@ def test_phase_is_the_mission_phase_of_the_next_period_and_the_summary_lists_tho
     assert flown[1]["start_s"] == pytest.approx(switched_at, abs=1e-9)
     assert flown[0]["end_reason"] == "time" and flown[1]["end_reason"] == "run end"
     assert flown[1]["end_s"] == 1200.0
+
+
+def test_the_capture_steps_like_its_run_with_the_arm_in_its_telemetry():
+    # comrade_capture cut 3 s into its reach: the multibody plant and the joint loop at 1 kHz stepped
+    # from Python give chaser.run's bits, and the joints and the gripper are telemetry channels.
+    path = MSR.parent / "comrade_capture.yaml"
+    scenario = chaser.load_scenario(str(path), overrides={"duration_s": 2763.0})
+    ran = chaser.run(scenario)
+    sim = stepped(scenario, 5000, seed=None)
+    assert_same_result(ran, sim.result())
+    tel = ran.telemetry
+    for name in ["q_arm_1_rad", "tau_arm_7_Nm", "gripper_err_x_m", "gripper_rate_z_radps"]:
+        assert name in tel
+    awake = np.isfinite(tel["gripper_err_x_m"])
+    assert awake.sum() == 30  # the reach's 3 s of 0.1 s periods
+    assert ran.summary["reach"]["flown"]
+    assert ran.summary["phases_flown"][-1]["name"] == "reach"
