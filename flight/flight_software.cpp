@@ -98,10 +98,11 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
     if (meas.arm && meas.arm->fixture.valid) update_from_camera(*params.reach, state.reach, meas.arm->fixture);
   }
-  if (reaching && state.reach.has_output) {
+  Vec3 reach_force_inertial_N, reach_torque_body_Nm;
+  if (reaching && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
     // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
-    out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * state.reach.platform_force_inertial_N;
-    out.torque_demand_body_Nm = state.reach.platform_torque_body_Nm;
+    out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * reach_force_inertial_N;
+    out.torque_demand_body_Nm = reach_torque_body_Nm;
   } else if (params.hinf.enabled) {
     const HinfDemand demand =
         hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference, lvlh);

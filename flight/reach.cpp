@@ -114,6 +114,7 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.law = c.law;
   p.path_duration_s = c.path_duration_s;
   p.joint_period_ns = static_cast<TimeNs>(std::llround(1e9 / c.joint_rate_hz));
+  p.platform_period_s = 1.0 / c.platform_rate_hz;
   p.servicer = arm::servicer_arm_of(scene);
   p.hub_from_chaser_com_body_m = scene.hub_com_body_m - s.chaser.com_body_m;
   p.capture_point_target_m = s.target.body->capture_point_target_m;
@@ -157,6 +158,21 @@ arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, d
   f.omega_radps = b.rate * turn.angle() * axis_target;
   f.alpha_radps2 = b.acceleration * turn.angle() * axis_target;
   return f;
+}
+
+bool platform_command(const ReachParams& params, ReachState& state, double t_s, Vec3& force_inertial_N,
+                      Vec3& torque_body_Nm) {
+  if (!state.has_output) return false;
+  constexpr double kTimeTolS = 1e-9;  // ticks are sums of the period (as the sensors' samples)
+  if (t_s + kTimeTolS >= state.next_platform_s) {
+    state.held_force_inertial_N = state.platform_force_inertial_N;
+    state.held_torque_body_Nm = state.platform_torque_body_Nm;
+    if (state.next_platform_s == 0.0) state.next_platform_s = t_s;
+    while (state.next_platform_s <= t_s + kTimeTolS) state.next_platform_s += params.platform_period_s;
+  }
+  force_inertial_N = state.held_force_inertial_N;
+  torque_body_Nm = state.held_torque_body_Nm;
+  return true;
 }
 
 void update_from_camera(const ReachParams& params, ReachState& state, const model::RelativePoseMeasurement& sample) {

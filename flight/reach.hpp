@@ -35,6 +35,7 @@ struct ReachParams {
   model::CaptureLaw law = model::CaptureLaw::kCompliance;
   double path_duration_s = 60.0;             // [s]
   TimeNs joint_period_ns = 1'000'000;        // [ns]
+  double platform_period_s = 0.1;            // [s] the platform command's (capture.platform_rate_hz)
   arm::ServicerArmParams servicer;           // the flight software's model of hub and arm
   Vec3 hub_from_chaser_com_body_m = Vec3::Zero();  // [m] the hub's CoM from the chaser's (arm stowed) CoM
   // In the target's frame: where the chaser's CoM holds and its attitude (the synchronised hold's),
@@ -91,6 +92,10 @@ struct ReachState {
   bool has_output = false;
   Vec3 platform_force_inertial_N = Vec3::Zero();
   Vec3 platform_torque_body_Nm = Vec3::Zero();
+  // The platform's command as the thrusters fly it: the law's, sampled at the platform's rate.
+  double next_platform_s = 0.0;  // [s] the next tick
+  Vec3 held_force_inertial_N = Vec3::Zero();
+  Vec3 held_torque_body_Nm = Vec3::Zero();
   arm::JointVector joint_torque_Nm = arm::JointVector::Zero();
   arm::TaskErrors errors;
 };
@@ -98,6 +103,12 @@ struct ReachState {
 // The period's estimates for the joint loop (called by step_flight every period of the reach).
 void hold_estimates(ReachState& state, const NavEstimate& nav, const std::optional<TargetEstimate>& target, double t_s,
                     const model::LvlhFrame& lvlh);
+
+// The platform's force (inertial axes) and torque (body axes, about the chaser's CoM) for the control
+// period starting at t_s: the law's last output at a platform tick (the first period at or after
+// it), held otherwise. False until the law has run.
+bool platform_command(const ReachParams& params, ReachState& state, double t_s, Vec3& force_inertial_N,
+                      Vec3& torque_body_Nm);
 
 // An arm camera sample (delivered this period): the fixture's pose in the law's world from the
 // tool's pose when it was taken, the target's frame it implies, and the correction moved towards it.

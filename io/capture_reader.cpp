@@ -24,6 +24,7 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
     m.number("path_duration_s", Range::left_open(0.0, 1e4), c.path_duration_s);
     m.number("standoff_m", Range::closed(0.0, 2.0), c.standoff_m);
     m.number("joint_rate_hz", Range::closed(1.0, 1e4), c.joint_rate_hz);
+    m.number("platform_rate_hz", Range::left_open(0.0, 1e4), c.platform_rate_hz);
     m.number("hub_bandwidth_radps", Range::left_open(0.0, 100.0), c.hub_bandwidth_radps);
     m.number("tool_bandwidth_radps", Range::left_open(0.0, 100.0), c.tool_bandwidth_radps);
     m.number("joint_bandwidth_radps", Range::left_open(0.0, 100.0), c.joint_bandwidth_radps);
@@ -61,6 +62,10 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
       d.add("capture.joint_rate_hz", fmt::format("must run a whole number of times per control period {} s (got {} Hz)",
                                                  format_number(s.control_period_s), format_number(c.joint_rate_hz)));
   }
+  if (d.clean("capture.platform_rate_hz") && d.clean("control_period_s") &&
+      c.platform_rate_hz * s.control_period_s > 1.0 + 1e-9)
+    d.add("capture.platform_rate_hz", fmt::format("must be at most the control rate, 1 / control_period_s = {} Hz (got {})",
+                                                  format_number(1.0 / s.control_period_s), format_number(c.platform_rate_hz)));
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
     d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
 }

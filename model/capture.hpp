@@ -15,6 +15,10 @@ struct CaptureParams {
   double path_duration_s = 60.0;   // [s] the tool from its stowed pose to the pre-grasp pose
   double standoff_m = 0.15;        // [m] the pre-grasp pose: the tool this far short of the fixture along its approach
   double joint_rate_hz = 1000.0;   // [Hz] the combined law and the joints' torque commands (COMRADE: 1 kHz)
+  // [Hz] the platform's command: the law's force and torque sampled for the thrusters at this rate
+  // (COMRADE: 3 Hz), at the first control period at or after each tick, held in between; at most
+  // the control rate.
+  double platform_rate_hz = 10.0;
   // The tasks' natural frequencies and damping ratio (flight/arm/compliance_control.hpp,
   // compliance_gains; the H-infinity loops' omega_B).
   double hub_bandwidth_radps = 0.5;

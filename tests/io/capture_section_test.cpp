@@ -48,6 +48,8 @@ std::vector<BadCapture> bad_captures() {
        "must divide 1e9 ns into whole nanoseconds (got 3)"},
       {"joint_rate_not_per_period", {"capture.joint_rate_hz=16"}, "capture.joint_rate_hz",
        "must run a whole number of times per control period 0.1 s (got 16 Hz)"},
+      {"platform_faster_than_the_period", {"capture.platform_rate_hz=20"}, "capture.platform_rate_hz",
+       "must be at most the control rate, 1 / control_period_s = 10 Hz (got 20)"},
       {"negative_bandwidth", {"capture.tool_bandwidth_radps=-1"}, "capture.tool_bandwidth_radps", "must be in (0, 100]"},
       {"slosh", {"chaser.slosh={g_eff_mps2: 0.005, tanks: [{bottom_centre_body_m: [0.5, 0.0, -0.45], axis_body: [0, 0, 1], "
                  "radius_m: 0.45, height_m: 0.9, liquid_mass_kg: 150.0, density_kgpm3: 1004.0, damping_ratio: 0.005}]}"},
@@ -79,6 +81,7 @@ TEST(CaptureSection, NeedsAnArm) {
   const LoadResult r = load_scenario_file(
       "scenarios/comrade_sync.yaml",
       {"capture={start_s: 2760, law: compliance, path_duration_s: 60, standoff_m: 0.15, joint_rate_hz: 1000, "
+       "platform_rate_hz: 10, "
        "hub_bandwidth_radps: 1, tool_bandwidth_radps: 4, joint_bandwidth_radps: 1, damping_ratio: 1}"});
   EXPECT_TRUE(has_error(r, "capture", "needs chaser.arm")) << format_errors(r.errors);
 }
