@@ -43,7 +43,8 @@ std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
     const double start = std::min(starts[i].second, s.duration_s);
     const double end = std::min(i + 1 < starts.size() ? starts[i + 1].second : s.duration_s, s.duration_s);
     if (end > start)
-      out.push_back({starts[i].first, start, end - start, {.synchronised = starts[i].second >= synchronised_from}});
+      out.push_back({starts[i].first, start, end - start, {.synchronised = starts[i].second >= synchronised_from},
+                     {.arm_awake = s.capture && starts[i].second >= s.capture->start_s}});
   }
   return out;
 }

@@ -10,8 +10,11 @@
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
-// Each phase carries the requirements judged while it is flown. The capture's phases (reach, grasp,
-// rigidise, ...) will add transitions on events and on requirements held for a dwell.
+// Each phase carries the requirements judged while it is flown and the plant's configuration it
+// flies in (the reach's: the arm awake). The flight software keeps its own schedule of the same
+// times (it never sees the run's phases: plant and flight meet only through messages). The
+// capture's later phases (grasp, rigidise, ...) will add transitions on events and on requirements
+// held for a dwell.
 #include <vector>
 
 #include "model/scenario.hpp"
@@ -27,11 +30,19 @@ struct PhaseRequirements {
   bool synchronised = false;
 };
 
+// The plant's configuration while a phase is flown: which the run sets up when the phase begins.
+struct PhaseConfiguration {
+  // The arm awake on the multibody plant (the capture's phases): entering such a phase wakes it
+  // (sim/simulation.cpp, plant/arm_joints.hpp); before, the arm is folded in the rigid chaser.
+  bool arm_awake = false;
+};
+
 struct PlannedPhase {
   const char* name = "";
   double start_s = 0;     // [s]
   double duration_s = 0;  // [s] > 0
   PhaseRequirements requirements{};
+  PhaseConfiguration configuration{};
 };
 
 std::vector<PlannedPhase> planned_phases(const model::Scenario& scenario);

@@ -108,7 +108,6 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   recording_ = telemetry_ || memory_;
   keep_out_ = checks_keep_out(scenario_);
   if (scenario_.capture) {
-    arm_wakes_ns_ = from_seconds(scenario_.capture->start_s);
     joint_period_ns_ = static_cast<TimeNs>(std::llround(1e9 / scenario_.capture->joint_rate_hz));
     if (flight_params_.reach) {  // the truth judges the gripper against the pose the reach aims at
       reach_goal_target_m_ = flight_params_.reach->pre_grasp_target_m;
@@ -116,7 +115,10 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
     }
     result_.reach.hold_from_s = scenario_.capture->start_s + scenario_.capture->path_duration_s + kReachSettleS;
   }
-  for (const PlannedPhase& phase : planned_phases(scenario_)) phase_requirements_.push_back(phase.requirements);
+  for (const PlannedPhase& phase : planned_phases(scenario_)) {
+    phase_requirements_.push_back(phase.requirements);
+    phase_configuration_.push_back(phase.configuration);
+  }
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {});
@@ -129,8 +131,8 @@ Simulation::~Simulation() = default;
 const model::SensorMeasurements& Simulation::begin_period() {
   if (begun_) return measurements_;
   begun_ = true;
-  if (arm_wakes_ns_ >= 0 && !arm_awake_ && k_ * period_ns_ >= arm_wakes_ns_) {
-    // The reach begins: the arm wakes on the multibody plant (sim/run_phases.hpp, "reach").
+  if (!arm_awake_ && phase_configuration_[static_cast<std::size_t>(phase_state_.phase)].arm_awake) {
+    // A phase with the arm awake begins (the reach): the arm wakes on the multibody plant.
     if (const auto problem = plant::wake_arm(plant_, scenario_))
       throw std::runtime_error(fmt::format("capture.start_s: the arm cannot wake: {}", *problem));
     arm_awake_ = true;

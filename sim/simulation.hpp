@@ -104,13 +104,14 @@ class Simulation {
   bool every_channel_ = true;
   bool recording_ = false;
   bool keep_out_ = false;  // the target has a keep-out volume: its attitude is needed every period
-  // The capture: when the arm wakes (the plant becomes the multibody one), the joint loop's period.
-  TimeNs arm_wakes_ns_ = -1;
+  // The capture: the arm wakes with the first phase configured so (the plant becomes the multibody
+  // one); the joint loop's period; the pose the truth judges the gripper against.
   Vec3 reach_goal_target_m_ = Vec3::Zero();  // the pre-grasp pose on the target, as the truth judges the gripper
   Quat q_target_from_reach_goal_ = Quat::Identity();
   TimeNs joint_period_ns_ = 0;
   bool arm_awake_ = false;
   std::vector<PhaseRequirements> phase_requirements_;  // by phase index (sim/run_phases.hpp)
+  std::vector<PhaseConfiguration> phase_configuration_;
 
   // The period begun: the truth at its start and the FDI's lanes before a recovery changes them.
   plant::RigidState truth_;

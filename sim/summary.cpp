@@ -27,10 +27,12 @@ nlohmann::json finite_or_null(bool exists, double value) {
 // the line and its hold otherwise), each ending where the next starts and the last at duration_s.
 nlohmann::json phases_json(const model::Scenario& s) {
   nlohmann::json out = nlohmann::json::array();
-  for (const PlannedPhase& p : planned_phases(s))
+  for (const PlannedPhase& p : planned_phases(s)) {
     out.push_back({{"name", p.name}, {"start_s", p.start_s}, {"duration_s", p.duration_s},
                    {"requirements", p.requirements.synchronised ? nlohmann::json::array({"synchronised"})
                                                                 : nlohmann::json::array()}});
+    if (s.capture) out.back()["arm"] = p.configuration.arm_awake ? "awake" : "stowed";  // the plant's configuration
+  }
   return out;
 }
 

@@ -121,3 +121,27 @@ TEST(RunPhases, TheSynchronisationIsJudgedFromThePhaseStartingWhenTheChaserTurns
 
 }  // namespace
 }  // namespace chaser::sim
+
+namespace chaser::sim {
+namespace {
+
+// A capture's plan ends with the reach, the one phase whose plant configuration has the arm awake;
+// the synchronisation's phases before it are comrade_sync's.
+TEST(RunPhases, TheCapturesReachIsTheOnePhaseWithTheArmAwake) {
+  const model::Scenario capture = load("scenarios/comrade_capture.yaml");
+  const std::vector<PlannedPhase> plan = planned_phases(capture);
+  ASSERT_FALSE(plan.empty());
+  EXPECT_STREQ(plan.back().name, "reach");
+  EXPECT_EQ(plan.back().start_s, capture.capture->start_s);
+  EXPECT_TRUE(plan.back().configuration.arm_awake);
+  EXPECT_TRUE(plan.back().requirements.synchronised);
+  const std::vector<PlannedPhase> sync = planned_phases(load("scenarios/comrade_sync.yaml"));
+  ASSERT_EQ(plan.size(), sync.size() + 1);
+  for (std::size_t i = 0; i + 1 < plan.size(); ++i) {
+    EXPECT_STREQ(plan[i].name, sync[i].name);
+    EXPECT_FALSE(plan[i].configuration.arm_awake) << plan[i].name;
+  }
+}
+
+}  // namespace
+}  // namespace chaser::sim
