@@ -5,6 +5,7 @@
 // The gripper's Table 2 envelope is written for the grasp; the reach holds it standoff_m short of
 // the fixture, so its errors are taken from that pose.
 #include <array>
+#include <limits>
 
 #include "core/types.hpp"
 #include "model/arm.hpp"
@@ -35,6 +36,10 @@ struct ReachResult {
   Vec3 max_gripper_rate_radps = Vec3::Zero();
   plant::GripperTruth final_gripper;
   std::array<double, model::kArmJoints> peak_joint_torque_Nm{};  // [N m] the commands, every joint step of the reach
+  // [m] the tool point's least distance to the target's keep-out volume over the reach (each
+  // control period; negative inside), and when; NaN without target.body.keep_out.
+  double min_tool_clearance_m = std::numeric_limits<double>::quiet_NaN();
+  double min_tool_clearance_at_s = std::numeric_limits<double>::quiet_NaN();
   int camera_samples = 0;             // arm camera samples the flight software used
 };
 

@@ -10,6 +10,7 @@
 #include "core/rotation.hpp"
 #include "plant/arm_joints.hpp"
 #include "plant/target.hpp"
+#include "model/keep_out.hpp"
 #include "model/run_timing.hpp"
 #include "sim/initial_truth.hpp"
 #include "sim/run_phases.hpp"
@@ -185,6 +186,14 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
     }
     reach.final_gripper = *truth.gripper;
     reach.camera_samples = flight_state_.reach.camera_samples;
+    if (keep_out_) {  // the tool point against the target's keep-out volume, in target axes
+      const Vec3 tool_target_m = reach_goal_target_m_ + q_target_from_reach_goal_ * truth.gripper->r_m;
+      const double clearance_m = model::keep_out_distance_m(scenario_.target.body->keep_out, tool_target_m);
+      if (!(clearance_m >= reach.min_tool_clearance_m)) {  // NaN at first
+        reach.min_tool_clearance_m = clearance_m;
+        reach.min_tool_clearance_at_s = t_s;
+      }
+    }
   } else if (shape_.arm && recording_) {  // stowed
     truth.arm.joints = model::kArmJoints;
     for (int j = 0; j < model::kArmJoints; ++j)

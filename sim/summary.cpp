@@ -181,6 +181,8 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
                                 f.final_attitude_error_rad * kRadToDeg <= kTable2ChaserAttitudeDeg &&
                                 f.final_rate_error_radps * kRadToDeg <= kTable2ChaserRateDegps},
       {"peak_joint_torque_Nm", reach.peak_joint_torque_Nm},
+      {"min_tool_clearance_m", finite_or_null(true, reach.min_tool_clearance_m)},
+      {"min_tool_clearance_at_s", finite_or_null(true, reach.min_tool_clearance_at_s)},
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
   };
 }
@@ -199,11 +201,13 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
   return fmt::format(
       "  reach ({} law, {} camera samples): gripper over the hold from {:.0f} s, largest per axis (x the approach): "
       "{} mm, {} mm/s, {} deg, {} deg/s: COMRADE Table 2 {}\n"
-      "  reach: peak joint torque {:.1f} N m (limit {:.0f})\n",
+      "  reach: peak joint torque {:.1f} N m (limit {:.0f}); the tool point's least clearance from the "
+      "keep-out volume {:.3f} m at {:.1f} s\n",
       model::to_string(scenario.capture->law), reach.camera_samples, reach.hold_from_s, mm(reach.max_gripper_error_m),
       mm(reach.max_gripper_velocity_mps), deg(reach.max_gripper_attitude_rad), deg(reach.max_gripper_rate_radps),
       gripper_meets_table2(reach) ? "met" : "NOT met (+-10, 22, 22 mm; 2.74 deg; 5 mm/s; 0.1 deg/s)", peak,
-      scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0);
+      scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0, reach.min_tool_clearance_m,
+      reach.min_tool_clearance_at_s);
 }
 
 }  // namespace
