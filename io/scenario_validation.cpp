@@ -105,6 +105,17 @@ void check_active_check(Diagnostics& d, const model::Scenario& s, double period)
                            format_number(a.arm_range_m)));
 }
 
+// A sensor sampled at control periods every period_s and delivered latency_s later, before its next
+// sample: period_s at least the control period, the latency below period_s.
+void check_sample_timing(Diagnostics& d, const std::string& key, double period_s, double latency_s, double control_period_s) {
+  if (d.clean(key + ".period_s") && period_s < control_period_s)
+    d.add(key + ".period_s", fmt::format("must be in [control_period_s = {}, 10] (got {})", format_number(control_period_s),
+                                         format_number(period_s)));
+  if (d.clean(key + ".latency_s") && d.clean(key + ".period_s") && latency_s >= period_s)
+    d.add(key + ".latency_s",
+          fmt::format("must be in [0, period_s = {}) (got {})", format_number(period_s), format_number(latency_s)));
+}
+
 void check_timing(const model::Scenario& s, Diagnostics& d) {
   if (!d.clean("control_period_s")) return;
   const double period = s.control_period_s;
@@ -134,26 +145,11 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
                                                 format_number(s.fdi.design_delay_max_s)));
   check_deficit_windows(d, s.fdi.deficit, period);
   check_active_check(d, s, period);
-  if (s.sensors.target_pose) {  // sampled at control periods, delivered before the next sample
-    const model::TargetPoseSensorParams& pose = *s.sensors.target_pose;
-    if (d.clean("sensors.target_pose.period_s") && pose.period_s < period)
-      d.add("sensors.target_pose.period_s", fmt::format("must be in [control_period_s = {}, 10] (got {})",
-                                                        format_number(period), format_number(pose.period_s)));
-    if (d.clean("sensors.target_pose.latency_s") && d.clean("sensors.target_pose.period_s") &&
-        pose.latency_s >= pose.period_s)
-      d.add("sensors.target_pose.latency_s", fmt::format("must be in [0, period_s = {}) (got {})",
-                                                         format_number(pose.period_s), format_number(pose.latency_s)));
-  }
+  if (s.sensors.target_pose)
+    check_sample_timing(d, "sensors.target_pose", s.sensors.target_pose->period_s, s.sensors.target_pose->latency_s, period);
   if (s.sensors.arm_camera) {  // the same timing rules; on the gripper, so with an arm
-    const model::ArmCameraParams& camera = *s.sensors.arm_camera;
     if (!s.chaser.arm) d.add("sensors.arm_camera", "needs chaser.arm (the camera is on the gripper)");
-    if (d.clean("sensors.arm_camera.period_s") && camera.period_s < period)
-      d.add("sensors.arm_camera.period_s", fmt::format("must be in [control_period_s = {}, 10] (got {})",
-                                                       format_number(period), format_number(camera.period_s)));
-    if (d.clean("sensors.arm_camera.latency_s") && d.clean("sensors.arm_camera.period_s") &&
-        camera.latency_s >= camera.period_s)
-      d.add("sensors.arm_camera.latency_s", fmt::format("must be in [0, period_s = {}) (got {})",
-                                                        format_number(camera.period_s), format_number(camera.latency_s)));
+    check_sample_timing(d, "sensors.arm_camera", s.sensors.arm_camera->period_s, s.sensors.arm_camera->latency_s, period);
   }
 }
 

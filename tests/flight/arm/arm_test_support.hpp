@@ -7,6 +7,7 @@
 #include <mujoco/mujoco.h>
 
 #include "core/random.hpp"
+#include "core/rotation.hpp"
 #include "core/types.hpp"
 #include "flight/arm/servicer_arm.hpp"
 #include "model/arm.hpp"
@@ -82,6 +83,16 @@ inline Configuration random_configuration(RandomStream& random, const model::Arm
   for (int k = 3; k < 6; ++k) c.velocity(k) = random.normal(0.0, 0.2);
   for (int k = 6; k < kServicerDofs; ++k) c.velocity(k) = random.normal(0.0, 0.5);
   return c;
+}
+
+// The configuration moved by dt along v: the hub's origin by v dt (world), its attitude by
+// omega dt in hub axes (q_world_from_hub exp(omega dt / 2)), the joints by their rates.
+inline Configuration moved(const Configuration& c, double dt_s) {
+  Configuration out = c;
+  out.r_hub_world_m += dt_s * c.velocity.head<3>();
+  out.q_world_from_hub = c.q_world_from_hub * quat_from_rotation_vector(dt_s * c.velocity.segment<3>(3));
+  out.joint_angles_rad += dt_s * c.velocity.tail<model::kArmJoints>();
+  return out;
 }
 
 // The hub's free joint first (qpos: position, quaternion w x y z; qvel: v world, omega body), the

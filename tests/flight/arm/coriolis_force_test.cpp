@@ -43,15 +43,6 @@ TEST(CoriolisForce, MatchesMujocosBiasForce) {
   }
 }
 
-// The configuration moved by dt along v: the hub's origin by v dt (world), its attitude by
-// omega dt in hub axes (q_world_from_hub exp(omega dt / 2)), the joints by their rates.
-testing::Configuration moved(const testing::Configuration& c, double dt_s) {
-  testing::Configuration out = c;
-  out.r_hub_world_m += dt_s * c.velocity.head<3>();
-  out.q_world_from_hub = c.q_world_from_hub * quat_from_rotation_vector(dt_s * c.velocity.segment<3>(3));
-  out.joint_angles_rad += dt_s * c.velocity.tail<model::kArmJoints>();
-  return out;
-}
 
 TEST(CoriolisForce, DoesHalfTheWorkOfTheMassMatrixsRate) {
   const model::MultibodySceneParams scene = testing::skewed_scene();
@@ -65,7 +56,7 @@ TEST(CoriolisForce, DoesHalfTheWorkOfTheMassMatrixsRate) {
   double worst_relative = 0.0;
   for (int n = 0; n < 20; ++n) {
     const testing::Configuration c = testing::random_configuration(random, scene.arm);
-    const ServicerMatrix H_rate = (mass_matrix(moved(c, h_s)) - mass_matrix(moved(c, -h_s))) / (2.0 * h_s);
+    const ServicerMatrix H_rate = (mass_matrix(testing::moved(c, h_s)) - mass_matrix(testing::moved(c, -h_s))) / (2.0 * h_s);
     const ServicerVector force = coriolis_force(
         params, arm_kinematics(params, c.r_hub_world_m, c.q_world_from_hub, c.joint_angles_rad), c.velocity);
     const double scale = c.velocity.squaredNorm() * H_rate.cwiseAbs().maxCoeff();

@@ -18,13 +18,6 @@
 namespace chaser::flight::arm {
 namespace {
 
-testing::Configuration moved(const testing::Configuration& c, double dt_s) {
-  testing::Configuration out = c;
-  out.r_hub_world_m += dt_s * c.velocity.head<3>();
-  out.q_world_from_hub = c.q_world_from_hub * quat_from_rotation_vector(dt_s * c.velocity.segment<3>(3));
-  out.joint_angles_rad += dt_s * c.velocity.tail<model::kArmJoints>();
-  return out;
-}
 
 ArmKinematics kinematics_of(const ServicerArmParams& params, const testing::Configuration& c) {
   return arm_kinematics(params, c.r_hub_world_m, c.q_world_from_hub, c.joint_angles_rad);
@@ -45,8 +38,8 @@ TEST(TaskSpace, JacobianRateMatchesCentralDifferences) {
   for (int n = 0; n < 20; ++n) {
     const testing::Configuration c = testing::random_configuration(random, scene.arm);
     const ServicerVector w = random_vector(random);
-    const TaskVector numeric = (extended_jacobian(kinematics_of(params, moved(c, h_s))) * w -
-                                extended_jacobian(kinematics_of(params, moved(c, -h_s))) * w) /
+    const TaskVector numeric = (extended_jacobian(kinematics_of(params, testing::moved(c, h_s))) * w -
+                                extended_jacobian(kinematics_of(params, testing::moved(c, -h_s))) * w) /
                                (2.0 * h_s);
     const TaskVector analytic = extended_jacobian_rate_times(params, kinematics_of(params, c), c.velocity, w);
     worst = std::max(worst, (analytic - numeric).cwiseAbs().maxCoeff() / numeric.cwiseAbs().maxCoeff());
@@ -78,8 +71,8 @@ TEST(TaskSpace, CoriolisFactorisationMakesTheMassMatrixRateMinusTwiceItSkew) {
   for (int n = 0; n < 20; ++n) {
     const testing::Configuration c = testing::random_configuration(random, scene.arm);
     const ArmKinematics k = kinematics_of(params, c);
-    const ServicerMatrix H_rate = (floating_base_mass_matrix(params, kinematics_of(params, moved(c, h_s))) -
-                                   floating_base_mass_matrix(params, kinematics_of(params, moved(c, -h_s)))) /
+    const ServicerMatrix H_rate = (floating_base_mass_matrix(params, kinematics_of(params, testing::moved(c, h_s))) -
+                                   floating_base_mass_matrix(params, kinematics_of(params, testing::moved(c, -h_s)))) /
                                   (2.0 * h_s);
     ServicerMatrix C;
     for (int j = 0; j < kServicerDofs; ++j)
