@@ -43,6 +43,26 @@ ToolJacobian tool_jacobian(const ArmKinematics& kinematics) {
   return jacobian;
 }
 
+ChainMotion chain_motion(const ArmKinematics& kinematics, const Eigen::Matrix<double, kServicerDofs, 1>& velocity,
+                         const Eigen::Matrix<double, kServicerDofs, 1>& w) {
+  ChainMotion c;
+  const Vec3 v_hub_world_mps = velocity.head<3>();
+  const Vec3 omega_world_radps = kinematics.world_from_hub * velocity.segment<3>(3);
+  const Vec3 w_omega_world = kinematics.world_from_hub * w.segment<3>(3);
+  c.velocity[0] = spatial(omega_world_radps, v_hub_world_mps);
+  c.w[0] = spatial(w_omega_world, w.head<3>());
+  c.w_rate[0] = spatial(omega_world_radps.cross(w_omega_world), v_hub_world_mps.cross(w_omega_world));
+  for (std::size_t i = 0; i < static_cast<std::size_t>(model::kArmJoints); ++i) {
+    c.subspace[i] = hinge_subspace(kinematics.axis_world[i], kinematics.r_link_world_m[i] - kinematics.r_hub_world_m);
+    const auto dof = static_cast<Eigen::Index>(kBaseDofs + i);
+    const Vec6 joint_w = c.subspace[i] * w(dof);
+    c.velocity[i + 1] = c.velocity[i] + c.subspace[i] * velocity(dof);
+    c.w[i + 1] = c.w[i] + joint_w;
+    c.w_rate[i + 1] = c.w_rate[i] + cross_motion(c.velocity[i + 1], joint_w);
+  }
+  return c;
+}
+
 BodyInertias body_inertias_about_hub(const ServicerArmParams& params, const ArmKinematics& kinematics) {
   BodyInertias inertias;
   const Mat3& world_from_hub = kinematics.world_from_hub;

@@ -42,6 +42,20 @@ ArmKinematics arm_kinematics(const ServicerArmParams& params, const Vec3& r_hub_
 
 ToolJacobian tool_jacobian(const ArmKinematics& kinematics);
 
+// The chain's motion for a velocity v and a second generalized vector w, each body's in world axes
+// about the fixed point O where the hub's origin is now (flight/arm/spatial.hpp), by one forward
+// pass from the hub (Featherstone, RBDA Table 5.1): V_i = J_i v, W_i = J_i w, and
+// W'_i = (dJ_i/dt) w along v. A hinge's subspace turns as V_i x S_i; the free joint's angular
+// column as omega x (its linear part is in world axes, so it does not turn): the hub's
+// (dJ_0/dt) w = (omega x a; v_hub x a), a = R w_omega. Index 0 is the hub, i the link i. With
+// w = v, W'_i is the body's velocity-product acceleration, the RNEA's A_i.
+struct ChainMotion {
+  std::array<Vec6, model::kArmJoints> subspace{};  // S_i, hinge i's (a_i; (r_i - O) x a_i)
+  std::array<Vec6, 1 + model::kArmJoints> velocity{}, w{}, w_rate{};
+};
+ChainMotion chain_motion(const ArmKinematics& kinematics, const Eigen::Matrix<double, kServicerDofs, 1>& velocity,
+                         const Eigen::Matrix<double, kServicerDofs, 1>& w);
+
 // Each body's spatial inertia in world axes about the hub's origin (flight/arm/spatial.hpp):
 // [0] the hub, [i] link i. The rotational inertias turn with their bodies, R I R'.
 using BodyInertias = std::array<SpatialInertia, 1 + model::kArmJoints>;

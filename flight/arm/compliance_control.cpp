@@ -82,7 +82,7 @@ ComplianceOutput compliance_control(const ServicerArmParams& params, const ArmKi
   const Eigen::PartialPivLU<TaskJacobian> lu(J);
   const ServicerVector nu_ref = lu.solve(out.errors.reference_velocity);
   const ServicerVector nu_ref_rate =
-      lu.solve(out.errors.reference_acceleration - extended_jacobian_rate_times(params, kinematics, velocity, nu_ref));
+      lu.solve(out.errors.reference_acceleration - extended_jacobian_rate_times(kinematics, velocity, nu_ref));
   const TaskVector task_force = gains.stiffness.cwiseProduct(out.errors.pose) +
                                 gains.damping.cwiseProduct(out.errors.velocity);
   out.generalized_force =

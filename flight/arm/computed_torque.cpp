@@ -15,7 +15,7 @@ ComputedTorque computed_torque(const ServicerArmParams& params, const ArmKinemat
   out.errors = task_errors(kinematics, J, joint_angles_rad, velocity, reference);
   const ServicerVector acceleration = Eigen::PartialPivLU<TaskJacobian>(J).solve(
       out.errors.reference_acceleration + task_acceleration -
-      extended_jacobian_rate_times(params, kinematics, velocity, velocity));
+      extended_jacobian_rate_times(kinematics, velocity, velocity));
   out.generalized_force = floating_base_mass_matrix(params, kinematics) * acceleration +
                           coriolis_force(params, kinematics, velocity);
   return out;

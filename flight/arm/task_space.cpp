@@ -42,35 +42,20 @@ TaskJacobian extended_jacobian(const ArmKinematics& kinematics) {
   return J;
 }
 
-TaskVector extended_jacobian_rate_times(const ServicerArmParams& params, const ArmKinematics& kinematics,
-                                        const ServicerVector& velocity, const ServicerVector& w) {
-  (void)params;
-  const Vec3 omega_world = kinematics.world_from_hub * velocity.segment<3>(3);
-  const Vec3 w_omega_world = kinematics.world_from_hub * w.segment<3>(3);
-  const Vec3 v_hub = velocity.head<3>();
-
-  // Link 7's spatial velocity V (from v), W = J_7 w and (dJ_7/dt) w, about the fixed point O where
-  // the hub's origin is now (flight/arm/coriolis_force.hpp, the same forward pass).
-  Vec6 body_velocity = spatial(omega_world, v_hub);
-  Vec6 body_w = spatial(w_omega_world, w.head<3>());
-  Vec6 body_w_rate = spatial(omega_world.cross(w_omega_world), v_hub.cross(w_omega_world));
-  for (std::size_t i = 0; i < static_cast<std::size_t>(model::kArmJoints); ++i) {
-    const Vec6 subspace =
-        hinge_subspace(kinematics.axis_world[i], kinematics.r_link_world_m[i] - kinematics.r_hub_world_m);
-    const auto dof = static_cast<Eigen::Index>(kBaseDofs + i);
-    body_velocity += subspace * velocity(dof);
-    const Vec6 joint_w = subspace * w(dof);
-    body_w += joint_w;
-    body_w_rate += cross_motion(body_velocity, joint_w);
-  }
+TaskVector extended_jacobian_rate_times(const ArmKinematics& kinematics, const ServicerVector& velocity,
+                                        const ServicerVector& w) {
+  const ChainMotion c = chain_motion(kinematics, velocity, w);
+  const Vec6& tool_velocity = c.velocity.back();  // link 7's
+  const Vec6& tool_w = c.w.back();
+  const Vec6& tool_w_rate = c.w_rate.back();
   // The tool point p: J_tool w = (lin W + ang W x (p - O); ang W), whose rate, p moving at
   // p' = lin V + ang V x (p - O), is (lin W' + ang W' x (p - O) + ang W x p'; ang W').
   const Vec3 p = kinematics.r_tool_world_m - kinematics.r_hub_world_m;
-  const Vec3 p_rate = linear(body_velocity) + angular(body_velocity).cross(p);
+  const Vec3 p_rate = linear(tool_velocity) + angular(tool_velocity).cross(p);
   TaskVector out = TaskVector::Zero();
-  out.segment<3>(3) = omega_world.cross(w_omega_world);
-  out.segment<3>(6) = linear(body_w_rate) + angular(body_w_rate).cross(p) + angular(body_w).cross(p_rate);
-  out.segment<3>(9) = angular(body_w_rate);
+  out.segment<3>(3) = angular(c.velocity[0]).cross(angular(c.w[0]));  // d(R w_omega)/dt = omega x R w_omega
+  out.segment<3>(6) = linear(tool_w_rate) + angular(tool_w_rate).cross(p) + angular(tool_w).cross(p_rate);
+  out.segment<3>(9) = angular(tool_w_rate);
   return out;
 }
 

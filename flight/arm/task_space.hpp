@@ -56,10 +56,10 @@ struct TaskReference {
 TaskJacobian extended_jacobian(const ArmKinematics& kinematics);
 
 // (dJ/dt) w along the motion v (J's rate as the servicer moves at v, applied to w): the tool rows
-// from the hub-to-link-7 chain's Jacobian rates (each hinge's subspace turns as V x S; the free
-// joint's angular column as omega x), the hub's angular rows omega x (R w_omega), the rest zero.
-TaskVector extended_jacobian_rate_times(const ServicerArmParams& params, const ArmKinematics& kinematics,
-                                        const ServicerVector& velocity, const ServicerVector& w);
+// from link 7's (chain_motion, flight/arm/arm_kinematics.hpp), the hub's angular rows
+// omega x (R w_omega), the rest zero.
+TaskVector extended_jacobian_rate_times(const ArmKinematics& kinematics, const ServicerVector& velocity,
+                                        const ServicerVector& w);
 
 // The task's errors e (13): position errors r - r_ref [m], attitude errors as the vector part eps
 // of q q_ref^-1 (world axes, sign chosen so that its scalar part is >= 0) [-], the joint's q - q_ref
