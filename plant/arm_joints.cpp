@@ -97,37 +97,27 @@ std::optional<model::ArmMeasurements> sense_arm_with_camera(const PlantParams& p
   if (multibody_params(params) == nullptr || !params.sensors.arm_camera) return std::nullopt;
   const model::ArmCameraParams& camera = *params.sensors.arm_camera;
   model::ArmMeasurements m = sense_arm(params, state);
-  SensorState& sensors = state.sensors;
-  constexpr double kTimeTolS = 1e-9;  // sample times are sums of period_s (plant/sensors.cpp)
-  // Delivered once its latency has passed; a sample taken now with no latency goes out now too.
-  const auto deliver = [&] {
-    if (sensors.arm_camera_pending.valid && t_s + kTimeTolS >= sensors.arm_camera_pending.taken_s + camera.latency_s) {
-      m.fixture = sensors.arm_camera_pending;
-      sensors.arm_camera_pending.valid = false;
-    }
-  };
-  deliver();
-  if (t_s + kTimeTolS >= sensors.arm_camera_next_s) {
-    const GripperTruth g = gripper_truth(params, state, params.fixture_target_m, params.q_target_from_fixture);
-    // The fixture in camera (tool) axes: q_camera_from_fixture = (q_fixture^-1 q_tool)^-1, and its
-    // origin from the camera, -R_camera_from_fixture r (r the tool from the fixture, fixture axes).
-    const Quat q_camera_from_fixture = quat_from_rotation_vector(g.attitude_rad).conjugate();
-    const Vec3 r_camera_m = q_camera_from_fixture * (-g.r_m);
-    const double range_m = r_camera_m.norm();
-    RandomStream& noise = state.streams.arm_camera;  // drawn whether or not the fixture is seen
-    const Vec3 position_error(noise.normal(), noise.normal(), noise.normal());
-    const Vec3 attitude_error(noise.normal(), noise.normal(), noise.normal());
-    if (range_m <= camera.range_max_m && range_m > 0.0 &&
-        r_camera_m.x() >= range_m * std::cos(camera.fov_half_angle_rad)) {
-      sensors.arm_camera_pending.valid = true;
-      sensors.arm_camera_pending.taken_s = t_s;
-      sensors.arm_camera_pending.r_camera_m = r_camera_m + camera.position_noise_m * position_error;
-      sensors.arm_camera_pending.q_camera_from_fixture =
-          (q_camera_from_fixture * quat_from_rotation_vector(camera.attitude_noise_rad * attitude_error)).normalized();
-    }
-    while (sensors.arm_camera_next_s <= t_s + kTimeTolS) sensors.arm_camera_next_s += camera.period_s;
-  }
-  if (!m.fixture.valid) deliver();
+  m.fixture = sample_with_latency(
+      camera.period_s, camera.latency_s, t_s, state.sensors.arm_camera_next_s, state.sensors.arm_camera_pending,
+      [&](double taken_s) {
+        const GripperTruth g = gripper_truth(params, state, params.fixture_target_m, params.q_target_from_fixture);
+        // The fixture in camera (tool) axes: q_camera_from_fixture = (q_fixture^-1 q_tool)^-1, and
+        // its origin from the camera, -R_camera_from_fixture r (r the tool from the fixture, fixture axes).
+        const Quat q_camera_from_fixture = quat_from_rotation_vector(g.attitude_rad).conjugate();
+        const Vec3 r_camera_m = q_camera_from_fixture * (-g.r_m);
+        const double range_m = r_camera_m.norm();
+        RandomStream& noise = state.streams.arm_camera;  // drawn whether or not the fixture is seen
+        const Vec3 position_error(noise.normal(), noise.normal(), noise.normal());
+        const Vec3 attitude_error(noise.normal(), noise.normal(), noise.normal());
+        model::RelativePoseMeasurement sample;
+        sample.valid = range_m <= camera.range_max_m && range_m > 0.0 &&
+                       r_camera_m.x() >= range_m * std::cos(camera.fov_half_angle_rad);
+        sample.taken_s = taken_s;
+        sample.r_camera_m = r_camera_m + camera.position_noise_m * position_error;
+        sample.q_camera_from_fixture =
+            (q_camera_from_fixture * quat_from_rotation_vector(camera.attitude_noise_rad * attitude_error)).normalized();
+        return sample;
+      });
   return m;
 }
 

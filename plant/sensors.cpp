@@ -72,31 +72,17 @@ model::SensorMeasurements sample_sensors(const model::SensorParams& params, Sens
 model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorParams& params, SensorState& state,
                                                 double t_s, const Quat& q_inertial_from_body,
                                                 const Quat& q_inertial_from_target, RandomStream& noise) {
-  // A small tolerance on the sample times, which are sums of period_s: a sample due at 1/3 s is
-  // taken at the control period starting then, not one period late by rounding.
-  constexpr double kTimeTolS = 1e-9;
-  model::TargetPoseMeasurement out;
-  // Delivered once its latency has passed (before a new sample replaces it: with period_s one
-  // control period and a latency, each sample goes out as the next is taken); a sample taken now
-  // with no latency goes out now too.
-  const auto deliver = [&] {
-    if (state.target_pose_pending.valid && t_s + kTimeTolS >= state.target_pose_pending.taken_s + params.latency_s) {
-      out = state.target_pose_pending;
-      state.target_pose_pending.valid = false;
-    }
-  };
-  deliver();
-  if (t_s + kTimeTolS >= state.target_pose_next_s) {
-    const Vec3 error(noise.normal(), noise.normal(), noise.normal());
-    state.target_pose_pending.valid = true;
-    state.target_pose_pending.taken_s = t_s;
-    state.target_pose_pending.q_body_from_target = (q_inertial_from_body.conjugate() * q_inertial_from_target *
-                                                    quat_from_rotation_vector(params.attitude_noise_rad * error))
-                                                       .normalized();
-    while (state.target_pose_next_s <= t_s + kTimeTolS) state.target_pose_next_s += params.period_s;
-  }
-  if (!out.valid) deliver();
-  return out;
+  return sample_with_latency(params.period_s, params.latency_s, t_s, state.target_pose_next_s,
+                             state.target_pose_pending, [&](double taken_s) {
+                               const Vec3 error(noise.normal(), noise.normal(), noise.normal());
+                               model::TargetPoseMeasurement m;
+                               m.valid = true;
+                               m.taken_s = taken_s;
+                               m.q_body_from_target = (q_inertial_from_body.conjugate() * q_inertial_from_target *
+                                                       quat_from_rotation_vector(params.attitude_noise_rad * error))
+                                                          .normalized();
+                               return m;
+                             });
 }
 
 }  // namespace chaser::plant

@@ -51,6 +51,33 @@ struct SensorState {
   model::RelativePoseMeasurement arm_camera_pending;
 };
 
+// A sensor whose samples are taken at control periods every period_s and delivered latency_s later
+// (the target pose sensor, the arm camera): at run time t_s the pending sample is delivered if its
+// latency has passed (before a new one replaces it: with period_s one control period and a
+// latency, each sample goes out as the next is taken), then a sample is taken if its time has come
+// (take(t_s) returns it, `valid` false when the sensor sees nothing), and a sample taken now with no
+// latency goes out now too. Sample times are sums of period_s, so they carry a small tolerance: a
+// sample due at 1/3 s is taken at the control period starting then, not one period late by rounding.
+template <class Sample, class Take>
+Sample sample_with_latency(double period_s, double latency_s, double t_s, double& next_s, Sample& pending, Take take) {
+  constexpr double kTimeTolS = 1e-9;
+  Sample out;
+  const auto deliver = [&] {
+    if (pending.valid && t_s + kTimeTolS >= pending.taken_s + latency_s) {
+      out = pending;
+      pending.valid = false;
+    }
+  };
+  deliver();
+  if (t_s + kTimeTolS >= next_s) {
+    Sample taken = take(t_s);
+    if (taken.valid) pending = taken;
+    while (next_s <= t_s + kTimeTolS) next_s += period_s;
+  }
+  if (!out.valid) deliver();
+  return out;
+}
+
 // The target pose sensor (model::TargetPoseSensorParams) at run time t_s, called once per control
 // period after sample_sensors: takes a sample of the truth when its period has come (the target's
 // attitude in the chaser's body axes, turned by a random small rotation of the noise), and returns
