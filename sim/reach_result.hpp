@@ -43,6 +43,11 @@ struct ReachResult {
   int camera_samples = 0;             // arm camera samples the flight software used
 };
 
+// One control period of the reach: the gripper's truth at t_s and the tool point's clearance from the
+// keep-out volume (NaN: none). The largest values are taken over the hold (t_s >= hold_from_s), the
+// least clearance over the whole reach; the last period's values are the final ones.
+void add_reach_period(ReachResult& r, const plant::GripperTruth& gripper, double t_s, double clearance_m);
+
 // Whether the gripper stayed inside Table 2 over the hold (every axis of each of the four).
 bool gripper_meets_table2(const ReachResult& r);
 

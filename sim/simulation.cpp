@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -174,26 +175,13 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   if (arm_awake_) {  // judged every period (sim/reach_result.hpp), recorded or not
     truth.arm = plant::sense_arm(plant_);
     truth.gripper = plant::gripper_truth(plant_, reach_goal_target_m_, q_target_from_reach_goal_);
-    ReachResult& reach = result_.reach;
-    reach.flown = true;
-    if (t_s + 1e-9 >= reach.hold_from_s) {
-      const plant::GripperTruth& g = *truth.gripper;
-      reach.max_gripper_error_m = reach.max_gripper_error_m.cwiseMax(g.r_m.cwiseAbs());
-      reach.max_gripper_velocity_mps = reach.max_gripper_velocity_mps.cwiseMax(g.v_mps.cwiseAbs());
-      reach.max_gripper_attitude_rad = reach.max_gripper_attitude_rad.cwiseMax(g.attitude_rad.cwiseAbs());
-      reach.max_gripper_rate_radps = reach.max_gripper_rate_radps.cwiseMax(g.omega_radps.cwiseAbs());
-      ++reach.hold_periods;
-    }
-    reach.final_gripper = *truth.gripper;
-    reach.camera_samples = flight_state_.reach.camera_samples;
-    if (keep_out_) {  // the tool point against the target's keep-out volume, in target axes
-      const Vec3 tool_target_m = reach_goal_target_m_ + q_target_from_reach_goal_ * truth.gripper->r_m;
-      const double clearance_m = model::keep_out_distance_m(scenario_.target.body->keep_out, tool_target_m);
-      if (!(clearance_m >= reach.min_tool_clearance_m)) {  // NaN at first
-        reach.min_tool_clearance_m = clearance_m;
-        reach.min_tool_clearance_at_s = t_s;
-      }
-    }
+    // The tool point against the target's keep-out volume, in target axes (NaN without one).
+    const double clearance_m =
+        keep_out_ ? model::keep_out_distance_m(scenario_.target.body->keep_out,
+                                               reach_goal_target_m_ + q_target_from_reach_goal_ * truth.gripper->r_m)
+                  : std::numeric_limits<double>::quiet_NaN();
+    add_reach_period(result_.reach, *truth.gripper, t_s, clearance_m);
+    result_.reach.camera_samples = flight_state_.reach.camera_samples;
   } else if (shape_.arm && recording_) {  // stowed
     truth.arm.joints = model::kArmJoints;
     for (int j = 0; j < model::kArmJoints; ++j)
