@@ -1,0 +1,169 @@
+// The arm in the plant (plant/arm_joints.hpp) against references of the test's own: the gripper's
+// truth at the arm's waking against the stowed arm's forward kinematics written out here from the
+// scenario (a chain of rotations and offsets) on the rigid chaser's state; its velocity and angular
+// velocity against central differences of its positions and attitudes over 2 ms while the arm is
+// driven; the arm camera's fixture pose against the same kinematics, and its cone and range.
+//
+// Tolerances: positions 1e-9 m (the hand-over places the bodies to 1e-12 m; MuJoCo's compiled chain
+// is the scenario's numbers); velocities 1e-7 m/s and 1e-7 rad/s: central differences at h = 0.25
+// ms, whose truncation h^2 |x'''| / 6 falls 4x per halving of h (measured on the rate: 4.1e-7 rad/s
+// at 1 ms, 1.0e-7 at 0.5 ms, 2.0e-8 at 0.25 ms), rounding 1e-16 x 4 m / 2.5e-4 s ~ 2e-12.
+#include "plant/arm_joints.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/rotation.hpp"
+#include "plant/plant.hpp"
+#include "tests/plant/earth_orbit_scenario.hpp"
+
+namespace chaser::plant {
+namespace {
+
+model::Scenario arm_scenario() {
+  model::Scenario s = testing::tumbling_target_scenario();
+  testing::add_stowed_arm(s);
+  s.faults.clear();
+  return s;
+}
+
+RigidState start(const model::Scenario& s) {
+  RigidState x;
+  x.mass_kg = s.chaser.mass_kg;
+  x.r_lvlh_m = Vec3(3.0, -6.0, 2.0);
+  x.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
+  x.q_inertial_from_body = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.3, 0.5, 0.8).normalized()));
+  x.omega_body_radps = Vec3(1e-3, -2e-3, 0.5e-3);
+  return x;
+}
+
+// The stowed tool point and its attitude in the chaser's body frame, from the scenario's arm: link i
+// turns about its axis at its joint, which sits at joint_position_m in the parent's frame (link 1's
+// parent is the body frame, from mount_body_m); the tool is at gripper.position_link7_m in link 7's.
+struct BodyPose {
+  Vec3 r_m;
+  Mat3 body_from_tool;
+};
+BodyPose stowed_tool(const model::ArmParams& arm) {
+  Vec3 origin = arm.mount_body_m;
+  Mat3 rotation = Mat3::Identity();
+  for (int i = 0; i < model::kArmJoints; ++i) {
+    const model::ArmLinkParams& link = arm.links[static_cast<std::size_t>(i)];
+    origin += rotation * link.joint_position_parent_m;
+    rotation = rotation * Eigen::AngleAxisd(arm.stowed_rad[static_cast<std::size_t>(i)], link.joint_axis).toRotationMatrix();
+  }
+  return {origin + rotation * arm.gripper.position_link7_m, rotation};
+}
+
+struct Awake {
+  model::Scenario s = arm_scenario();
+  model::TargetOrbit circle{[this] {
+    model::OrbitParams o = s.orbit;
+    o.earth.reset();
+    return o;
+  }()};
+  Plant plant = make_plant(s, start(s), 7);
+  const Vec3 fixture_target_m = Vec3(0.4, -0.3, 1.1);
+  const Quat q_target_from_fixture = Quat(Eigen::AngleAxisd(0.7, Vec3(0.2, -1.0, 0.4).normalized()));
+  Awake() {
+    if (auto problem = wake_arm(plant, s)) ADD_FAILURE() << *problem;
+  }
+};
+
+TEST(ArmJoints, TheGrippersTruthAtWakingIsTheStowedArmsKinematics) {
+  Awake a;
+  ASSERT_TRUE(arm_awake(a.plant));
+  const BodyPose tool = stowed_tool(*a.s.chaser.arm);
+  const RigidState& x = chaser_state(a.plant);
+  const Mat3 inertial_from_body = x.q_inertial_from_body.toRotationMatrix();
+  const Mat3 inertial_from_target = target_rotation(a.plant, 0.0).q_inertial_from_target.toRotationMatrix();
+  // The tool from the target's CoM: the chaser's CoM point from LVLH, then the stowed arm.
+  const Vec3 tool_m = q_inertial_from_lvlh(a.plant, a.circle, 0.0) * x.r_lvlh_m +
+                      inertial_from_body * (tool.r_m - a.s.chaser.com_body_m);
+  const Mat3 inertial_from_pose = inertial_from_target * a.q_target_from_fixture.toRotationMatrix();
+  const Vec3 expected = inertial_from_pose.transpose() * (tool_m - inertial_from_target * a.fixture_target_m);
+  const GripperTruth g = gripper_truth(a.plant, a.fixture_target_m, a.q_target_from_fixture);
+  EXPECT_LT((g.r_m - expected).norm(), 1e-9);
+  const Quat q_pose_from_tool(inertial_from_pose.transpose() * inertial_from_body * tool.body_from_tool);
+  EXPECT_LT(quat_from_rotation_vector(g.attitude_rad).angularDistance(q_pose_from_tool), 1e-9);
+}
+
+TEST(ArmJoints, TheGrippersVelocityAndRateAreItsMotionsDerivatives) {
+  Awake a;
+  model::ArmCommand command;
+  for (std::size_t j = 0; j < command.torque_Nm.size(); ++j) command.torque_Nm[j] = 3.0 * std::sin(1.0 + j);
+  command_arm(a.plant, command);
+  begin_plant_period(a.plant.params, a.plant.state, model::ThrusterCommand{}, 0);
+  // The pose's frame in inertial axes at t, and the gripper's world difference from its point.
+  struct Sample {
+    Vec3 d_m;
+    Quat q_tool;
+    Mat3 inertial_from_pose;
+    Vec3 omega_target_inertial;
+    GripperTruth g;
+  };
+  TimeNs at = 0;
+  const auto sample = [&](TimeNs t) {
+    advance_plant(a.plant.params, a.plant.state, at, t);
+    at = t;
+    const TargetRotation target = target_rotation(a.plant, to_seconds(t));
+    const Mat3 inertial_from_pose = (target.q_inertial_from_target * a.q_target_from_fixture).toRotationMatrix();
+    const GripperTruth g = gripper_truth(a.plant, a.fixture_target_m, a.q_target_from_fixture);
+    return Sample{inertial_from_pose * g.r_m,
+                  Quat(inertial_from_pose) * quat_from_rotation_vector(g.attitude_rad),
+                  inertial_from_pose, target.q_inertial_from_target * target.omega_body_radps, g};
+  };
+  for (TimeNs t = 1'000'000; t < 30'000'000; t += 1'000'000) sample(t);  // the arm gets going (1 ms joint steps)
+  const TimeNs h_ns = 250'000;  // 0.25 ms: the differences' error falls 4x per halving (1 ms: 4.1e-7 rad/s; here 2e-8)
+  const Sample before = sample(30'000'000), now = sample(30'000'000 + h_ns), after = sample(30'000'000 + 2 * h_ns);
+  const double h = to_seconds(h_ns);
+  const Vec3 v_expected = now.inertial_from_pose.transpose() * (after.d_m - before.d_m) / (2.0 * h);
+  EXPECT_LT((now.g.v_mps - v_expected).norm(), 1e-7);
+  EXPECT_GT(now.g.v_mps.norm(), 1e-4);  // the arm moves
+  const Quat q_rate((after.q_tool.coeffs() - before.q_tool.coeffs()) / (2.0 * h));
+  const Vec3 omega_tool_inertial = 2.0 * (q_rate * now.q_tool.conjugate()).vec();
+  const Vec3 omega_expected = now.inertial_from_pose.transpose() * (omega_tool_inertial - now.omega_target_inertial);
+  EXPECT_LT((now.g.omega_radps - omega_expected).norm(), 1e-7);
+}
+
+TEST(ArmJoints, TheArmCameraSeesTheFixtureInItsConeAndRangeOnly) {
+  Awake a;
+  a.plant.params.fixture_target_m = a.fixture_target_m;
+  a.plant.params.q_target_from_fixture = a.q_target_from_fixture;
+  model::ArmCameraParams camera;
+  camera.position_noise_m = 0.0;
+  camera.attitude_noise_rad = 0.0;
+  camera.latency_s = 0.0;
+  camera.fov_half_angle_rad = 3.14;  // everything in front and behind but straight back
+  camera.range_max_m = 100.0;
+  a.plant.params.sensors.arm_camera = camera;
+  // The expected view from the stowed kinematics: the fixture in the tool's axes.
+  const BodyPose tool = stowed_tool(*a.s.chaser.arm);
+  const RigidState& x = chaser_state(a.plant);
+  const Mat3 inertial_from_tool = x.q_inertial_from_body.toRotationMatrix() * tool.body_from_tool;
+  const Mat3 inertial_from_target = target_rotation(a.plant, 0.0).q_inertial_from_target.toRotationMatrix();
+  const Vec3 tool_m = q_inertial_from_lvlh(a.plant, a.circle, 0.0) * x.r_lvlh_m +
+                      x.q_inertial_from_body * (tool.r_m - a.s.chaser.com_body_m);
+  const Vec3 fixture_in_camera = inertial_from_tool.transpose() * (inertial_from_target * a.fixture_target_m - tool_m);
+  const Quat q_camera_from_fixture(inertial_from_tool.transpose() * inertial_from_target *
+                                   a.q_target_from_fixture.toRotationMatrix());
+
+  const auto seen = sense_arm_with_camera(a.plant.params, a.plant.state, 0.0);
+  ASSERT_TRUE(seen && seen->fixture.valid);
+  EXPECT_EQ(seen->joints, model::kArmJoints);
+  EXPECT_LT((seen->fixture.r_camera_m - fixture_in_camera).norm(), 1e-9);
+  EXPECT_LT(seen->fixture.q_camera_from_fixture.angularDistance(q_camera_from_fixture), 1e-9);
+  // A cone that misses the fixture, or a range short of it: nothing.
+  const double angle = std::acos(fixture_in_camera.x() / fixture_in_camera.norm());
+  a.plant.params.sensors.arm_camera->fov_half_angle_rad = 0.9 * angle;
+  EXPECT_FALSE(sense_arm_with_camera(a.plant.params, a.plant.state, 0.1)->fixture.valid);
+  a.plant.params.sensors.arm_camera->fov_half_angle_rad = 1.1 * angle;
+  a.plant.params.sensors.arm_camera->range_max_m = 0.9 * fixture_in_camera.norm();
+  EXPECT_FALSE(sense_arm_with_camera(a.plant.params, a.plant.state, 0.2)->fixture.valid);
+  a.plant.params.sensors.arm_camera->range_max_m = 1.1 * fixture_in_camera.norm();
+  EXPECT_TRUE(sense_arm_with_camera(a.plant.params, a.plant.state, 0.3)->fixture.valid);
+}
+
+}  // namespace
+}  // namespace chaser::plant
