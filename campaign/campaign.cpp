@@ -56,11 +56,12 @@ CampaignOutcome run_campaign(const CampaignPlan& plan, const CampaignOptions& op
   const RunRange range = shard_range(options.shard, plan.layout.total_runs());
   RowsScan scan;
   if (options.resume) {
-    scan = scan_rows(options.out_dir, range, plan.layout, plan.nominal.campaign.seed);
+    scan = scan_rows(options.out_dir, range, plan.layout, plan.nominal.campaign.seed, run_column_set(plan.nominal));
     if (!scan.error.empty()) return bad_input("--resume: " + scan.error);
   }
   std::string error;
-  const auto writer = RowsWriter::open(options.out_dir, options.resume ? &scan : nullptr, error);
+  const auto writer =
+      RowsWriter::open(options.out_dir, options.resume ? &scan : nullptr, run_column_set(plan.nominal), error);
   if (!writer) return failure(error);
 
   CampaignOutcome outcome;

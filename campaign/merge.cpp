@@ -26,14 +26,22 @@ struct ShardDir {
 
 CampaignOutcome bad_input(std::string message) { return CampaignOutcome::bad_input(std::move(message)); }
 
-// Every row of the shard is there and nothing after them.
-std::string check_complete(const ShardDir& s) {
+// The column set of a shard's runs.csv, from its header; nullopt for a missing file or another header.
+std::optional<RunColumnSet> column_set_of_file(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / "runs.csv", std::ios::binary);
+  std::string header;
+  if (!in || !std::getline(in, header)) return std::nullopt;
+  return run_column_set_of(header);
+}
+
+// Every row of the shard is there and nothing after them; its columns are `columns`.
+std::string check_complete(const ShardDir& s, RunColumnSet columns) {
   const RunLayout layout(s.info.cases);
   const RunRange expected = shard_range(s.info.shard, layout.total_runs());
   if (expected.begin != s.info.range.begin || expected.end != s.info.range.end)
     return fmt::format("merge: {}: campaign.json shard_runs does not match shard {}/{}", s.dir, s.info.shard.index,
                        s.info.shard.count);
-  const RowsScan scan = scan_rows(s.dir, expected, layout, s.info.seed);
+  const RowsScan scan = scan_rows(s.dir, expected, layout, s.info.seed, columns);
   if (!scan.error.empty()) return fmt::format("merge: {}", scan.error);
   std::error_code ec1, ec2;
   const auto runs_size = fs::file_size(fs::path(s.dir) / "runs.csv", ec1);
@@ -97,8 +105,13 @@ CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::
     shards.push_back({dir, *json, *info});
   }
   if (std::string e = order_shards(shards); !e.empty()) return bad_input(e);
+  // Every shard of one campaign has one scenario, so one column set: the first shard's says which.
+  const std::optional<RunColumnSet> columns = column_set_of_file(shards.front().dir);
+  if (!columns)
+    return bad_input(fmt::format("merge: {}/runs.csv is missing or has other columns than this chaser writes",
+                                 shards.front().dir));
   for (const ShardDir& s : shards)
-    if (std::string e = check_complete(s); !e.empty()) return bad_input(e);
+    if (std::string e = check_complete(s, *columns); !e.empty()) return bad_input(e);
   if (fs::exists(fs::path(out_dir) / "campaign.json") || fs::exists(fs::path(out_dir) / "runs.csv"))
     return bad_input(fmt::format("merge: --out {} already holds a campaign; choose another --out", out_dir));
 
@@ -110,7 +123,7 @@ CampaignOutcome merge_shards(const std::string& out_dir, const std::vector<std::
   merged["shard"] = {0, 1};
   merged["shard_runs"] = {0, total};
   std::ofstream(fs::path(out_dir) / "campaign.json", std::ios::binary) << campaign_json_text(merged);
-  if (!concatenate(shards, out_dir, "runs.csv", runs_header()) ||
+  if (!concatenate(shards, out_dir, "runs.csv", runs_header(*columns)) ||
       !concatenate(shards, out_dir, "glr_runs.csv", kGlrRunsHeader))
     return CampaignOutcome::failure(fmt::format("cannot write the rows files in {}", out_dir));
   std::vector<FaultCase> cases;

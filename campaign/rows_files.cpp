@@ -23,9 +23,10 @@ bool complete_line(std::istream& in, std::string& line) {
   return !in.eof();
 }
 
-bool row_is_valid(const std::string& line, std::int64_t run, const RunLayout& layout, std::uint64_t seed) {
+bool row_is_valid(const std::string& line, std::int64_t run, const RunLayout& layout, std::uint64_t seed,
+                  RunColumnSet columns) {
   const std::vector<std::string_view> f = split_fields(line);
-  if (f.size() != run_columns().size()) return false;
+  if (f.size() != run_columns(columns).size()) return false;
   if (parse_integer(f[0]) != run || f[1] != fmt::format("{}", run_seed(seed, static_cast<std::uint64_t>(run))) ||
       f[2] != to_string(layout.case_of(run)))
     return false;
@@ -37,18 +38,18 @@ bool row_is_valid(const std::string& line, std::int64_t run, const RunLayout& la
 
 // The valid runs.csv prefix: runs done and the byte offset after each row.
 void scan_runs(const fs::path& path, const RunRange& range, const RunLayout& layout, std::uint64_t seed,
-               RowsScan& scan, std::vector<std::uint64_t>& ends) {
+               RunColumnSet columns, RowsScan& scan, std::vector<std::uint64_t>& ends) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   if (!in || !complete_line(in, line)) return;  // no complete header: start afresh
-  if (line != runs_header()) {
+  if (line != runs_header(columns)) {
     scan.error = fmt::format("{} has other columns than this chaser writes", path.string());
     return;
   }
   std::uint64_t offset = line.size() + 1;
   scan.runs_bytes = offset;
   while (range.begin + scan.runs_done < range.end && complete_line(in, line) &&
-         row_is_valid(line, range.begin + scan.runs_done, layout, seed)) {
+         row_is_valid(line, range.begin + scan.runs_done, layout, seed, columns)) {
     offset += line.size() + 1;
     ends.push_back(offset);
     ++scan.runs_done;
@@ -58,8 +59,8 @@ void scan_runs(const fs::path& path, const RunRange& range, const RunLayout& lay
 
 // The valid glr_runs.csv prefix: one line per fault-free run among the runs done, in order. A
 // fault-free run without its line (never expected: the line is written first) is redone.
-void scan_glr(const fs::path& path, const RunRange& range, const RunLayout& layout, RowsScan& scan,
-              const std::vector<std::uint64_t>& ends) {
+void scan_glr(const fs::path& path, const RunRange& range, const RunLayout& layout, std::uint64_t header_bytes,
+              RowsScan& scan, const std::vector<std::uint64_t>& ends) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   const bool header = in && complete_line(in, line) && line == kGlrRunsHeader;
@@ -74,7 +75,7 @@ void scan_glr(const fs::path& path, const RunRange& range, const RunLayout& layo
     }();
     if (!found) {  // keep the runs before this one
       scan.runs_done = i;
-      scan.runs_bytes = i == 0 ? runs_header().size() + 1 : ends[static_cast<std::size_t>(i - 1)];
+      scan.runs_bytes = i == 0 ? header_bytes : ends[static_cast<std::size_t>(i - 1)];
       return;
     }
     offset += line.size() + 1;
@@ -84,16 +85,18 @@ void scan_glr(const fs::path& path, const RunRange& range, const RunLayout& layo
 
 }  // namespace
 
-RowsScan scan_rows(const std::string& dir, const RunRange& range, const RunLayout& layout, std::uint64_t campaign_seed) {
+RowsScan scan_rows(const std::string& dir, const RunRange& range, const RunLayout& layout, std::uint64_t campaign_seed,
+                   RunColumnSet columns) {
   RowsScan scan;
   std::vector<std::uint64_t> ends;
-  scan_runs(fs::path(dir) / "runs.csv", range, layout, campaign_seed, scan, ends);
+  scan_runs(fs::path(dir) / "runs.csv", range, layout, campaign_seed, columns, scan, ends);
   if (!scan.error.empty() || scan.runs_bytes == 0) return scan;
-  scan_glr(fs::path(dir) / "glr_runs.csv", range, layout, scan, ends);
+  scan_glr(fs::path(dir) / "glr_runs.csv", range, layout, runs_header(columns).size() + 1, scan, ends);
   return scan;
 }
 
-std::unique_ptr<RowsWriter> RowsWriter::open(const std::string& dir, const RowsScan* resume_from, std::string& error) {
+std::unique_ptr<RowsWriter> RowsWriter::open(const std::string& dir, const RowsScan* resume_from, RunColumnSet columns,
+                                             std::string& error) {
   const fs::path runs_path = fs::path(dir) / "runs.csv", glr_path = fs::path(dir) / "glr_runs.csv";
   std::error_code ec;
   const bool keep_runs = resume_from && resume_from->runs_bytes > 0;
@@ -108,7 +111,7 @@ std::unique_ptr<RowsWriter> RowsWriter::open(const std::string& dir, const RowsS
     error = fmt::format("cannot open {} and {} for writing", runs_path.string(), glr_path.string());
     return nullptr;
   }
-  if (!keep_runs) std::fputs((runs_header() + "\n").c_str(), runs);
+  if (!keep_runs) std::fputs((runs_header(columns) + "\n").c_str(), runs);
   if (!keep_glr) std::fputs((std::string(kGlrRunsHeader) + "\n").c_str(), glr);
   std::fflush(runs);
   std::fflush(glr);

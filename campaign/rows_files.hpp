@@ -10,6 +10,7 @@
 
 #include "campaign/cases.hpp"
 #include "campaign/run_one.hpp"
+#include "campaign/run_row.hpp"
 
 namespace chaser::campaign {
 
@@ -20,13 +21,16 @@ struct RowsScan {
   std::uint64_t glr_bytes = 0;  // length of glr_runs.csv to keep
   std::string error;            // a file that is not this campaign's
 };
-RowsScan scan_rows(const std::string& dir, const RunRange& range, const RunLayout& layout, std::uint64_t campaign_seed);
+// `columns`: the set this campaign writes (run_column_set of its scenario); a file with another header is an error.
+RowsScan scan_rows(const std::string& dir, const RunRange& range, const RunLayout& layout, std::uint64_t campaign_seed,
+                   RunColumnSet columns);
 
 class RowsWriter {
  public:
   // Fresh: writes both headers. Resume: cuts the files to `scan` and appends after it.
   // Returns nullptr with `error` set when a file cannot be opened.
-  static std::unique_ptr<RowsWriter> open(const std::string& dir, const RowsScan* resume_from, std::string& error);
+  static std::unique_ptr<RowsWriter> open(const std::string& dir, const RowsScan* resume_from, RunColumnSet columns,
+                                          std::string& error);
   ~RowsWriter();
   RowsWriter(const RowsWriter&) = delete;
   RowsWriter& operator=(const RowsWriter&) = delete;

@@ -47,7 +47,7 @@ RunOutput run_one(const CampaignPlan& plan, const flight::FlightParams& flight, 
     record = error_record(setup);
     if (setup.fault_case == FaultCase::kNone) out.glr_line = format_glr_line(run, {});
   }
-  out.row = format_row(record);
+  out.row = format_row(record, run_column_set(plan.nominal));
   out.diverged = record.status != RunStatus::kOk;
   return out;
 }

@@ -1,6 +1,7 @@
 #include "campaign/run_row.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +56,26 @@ SchemeOutcome judge_fdir(const sim::FdirResult& f, const RunRecord& r) {
                         r.schemes[flight::kAttitudeScheme].glr_max_before_onset));
 }
 
+ReachFigures reach_figures(const sim::ReachResult& reach) {
+  if (!reach.flown) {
+    const Vec3 none = Vec3::Constant(kNaN);
+    return {none, none, none, none, none, none, none, none, kNaN, kNaN, false};
+  }
+  const plant::GripperTruth& g = reach.final_gripper;
+  const double deg = 1.0 / kDegToRad;
+  return {g.r_m,
+          g.v_mps,
+          g.attitude_rad * deg,
+          g.omega_radps * deg,
+          reach.max_gripper_error_m,
+          reach.max_gripper_velocity_mps,
+          reach.max_gripper_attitude_rad * deg,
+          reach.max_gripper_rate_radps * deg,
+          *std::max_element(reach.peak_joint_torque_Nm.begin(), reach.peak_joint_torque_Nm.end()),
+          reach.min_tool_clearance_m,
+          sim::gripper_meets_table2(reach)};
+}
+
 RunRecord base_record(const RunSetup& setup) {
   RunRecord r;
   r.run = setup.run;
@@ -101,6 +122,27 @@ void scheme_columns(std::vector<RunColumn>& columns, const std::string& name, in
                        [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).glr_max_before_onset); }, s});
 }
 
+// The reach's columns (ReachFigures): per figure and axis, then the torque, the clearance and the verdict.
+void reach_columns(std::vector<RunColumn>& columns) {
+  // index: (4 over_hold + figure) * 3 + axis, in ReachFigures' order.
+  static constexpr std::array<Vec3 ReachFigures::*, 8> kFields = {
+      &ReachFigures::final_error_m,    &ReachFigures::final_velocity_mps, &ReachFigures::final_attitude_deg,
+      &ReachFigures::final_rate_deg_s, &ReachFigures::max_error_m,        &ReachFigures::max_velocity_mps,
+      &ReachFigures::max_attitude_deg, &ReachFigures::max_rate_deg_s};
+  for (int k = 0; k < 8; ++k)
+    for (int axis = 0; axis < 3; ++axis)
+      columns.push_back({reach_column_name(k >= 4, k % 4, axis), ColumnKind::kNumber,
+                         [](const RunRecord& r, int i, std::string& o) {
+                           number(o, (r.reach.*kFields[static_cast<std::size_t>(i / 3)])(i % 3));
+                         },
+                         k * 3 + axis});
+  columns.insert(columns.end(), {
+      {"reach_peak_joint_torque_Nm", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.peak_joint_torque_Nm); }},
+      {"reach_min_tool_clearance_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.min_tool_clearance_m); }},
+      {"reach_table2_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.table2_met); }},
+  });
+}
+
 }  // namespace
 
 std::string_view to_string(RunStatus s) {
@@ -141,6 +183,7 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
   r.final_rate_error_deg_s = f.final_rate_error_radps / kDegToRad;
   r.min_clearance_unsynchronised_m = std::isfinite(f.min_clearance_unsynchronised_m) ? f.min_clearance_unsynchronised_m : kNaN;
   r.min_clearance_synchronised_m = std::isfinite(f.min_clearance_synchronised_m) ? f.min_clearance_synchronised_m : kNaN;
+  r.reach = reach_figures(result.reach);
   return r;
 }
 
@@ -154,6 +197,7 @@ RunRecord error_record(const RunSetup& setup) {
   r.propellant_kg = kNaN;
   r.final_position_error_m = r.final_speed_mps = r.final_attitude_error_deg = r.final_rate_error_deg_s = kNaN;
   r.min_clearance_unsynchronised_m = r.min_clearance_synchronised_m = kNaN;
+  r.reach = reach_figures(sim::ReachResult{});
   return r;
 }
 
@@ -198,26 +242,47 @@ std::vector<RunColumn> build_run_columns(const std::vector<flight::DiagnosisSche
 
 }  // namespace
 
-const std::vector<RunColumn>& run_columns() {
-  // The diagnosis schemes' columns come from their table, read once (flight/diagnosis_schemes.hpp).
-  static const std::vector<RunColumn> columns = build_run_columns(flight::diagnosis_schemes());
-  return columns;
+std::string reach_column_name(bool over_hold, int figure, int axis) {
+  static constexpr std::array<const char*, 4> kFigures = {"error_{}_m", "velocity_{}_mps", "attitude_{}_deg", "rate_{}_deg_s"};
+  return std::string(over_hold ? "reach_max_" : "reach_final_") +
+         fmt::format(fmt::runtime(kFigures[static_cast<std::size_t>(figure)]), "xyz"[axis]);
 }
 
-std::string runs_header() {
+RunColumnSet run_column_set(const model::Scenario& scenario) {
+  return scenario.capture ? RunColumnSet::kReach : RunColumnSet::kStandard;
+}
+
+const std::vector<RunColumn>& run_columns(RunColumnSet set) {
+  // The diagnosis schemes' columns come from their table, read once (flight/diagnosis_schemes.hpp).
+  static const std::vector<RunColumn> standard = build_run_columns(flight::diagnosis_schemes());
+  static const std::vector<RunColumn> with_reach = [] {
+    std::vector<RunColumn> columns = standard;
+    reach_columns(columns);
+    return columns;
+  }();
+  return set == RunColumnSet::kReach ? with_reach : standard;
+}
+
+std::string runs_header(RunColumnSet set) {
   std::string out;
-  for (const RunColumn& c : run_columns()) {
+  for (const RunColumn& c : run_columns(set)) {
     if (!out.empty()) out += ',';
     out += c.name;
   }
   return out;
 }
 
-std::string format_row(const RunRecord& r) {
+std::optional<RunColumnSet> run_column_set_of(std::string_view header) {
+  for (const RunColumnSet set : {RunColumnSet::kStandard, RunColumnSet::kReach})
+    if (header == runs_header(set)) return set;
+  return std::nullopt;
+}
+
+std::string format_row(const RunRecord& r, RunColumnSet set) {
   std::string out;
-  out.reserve(640);
+  out.reserve(set == RunColumnSet::kReach ? 1280 : 640);
   bool first = true;
-  for (const RunColumn& c : run_columns()) {
+  for (const RunColumn& c : run_columns(set)) {
     if (!first) out += ',';
     first = false;
     c.write(r, c.index, out);

@@ -1,15 +1,18 @@
 #pragma once
 // One runs.csv row (docs/campaigns.md, "runs.csv"): what a run was (seed, dispersed chaser, fault) and
 // what the FDI schemes and the mission made of it. The columns live in ONE table (run_row.cpp,
-// run_columns): adding a column is adding one line there.
+// run_columns): adding a column is adding one line there. A scenario with a capture section has the
+// reach's columns after the others (RunColumnSet::kReach); a file's header says which set it holds.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "campaign/fault_sampling.hpp"
 #include "campaign/plan.hpp"
+#include "core/types.hpp"
 #include "sim/run.hpp"
 
 namespace chaser::campaign {
@@ -26,6 +29,17 @@ struct SchemeOutcome {
   bool missed;                 // fault case and no alarm at or after the onset
   bool wrong_isolation;        // a thruster confirmed that is not the faulty one (any, for case none)
   double glr_max_before_onset; // [-] largest GLR statistic before the onset (whole run for none)
+};
+
+// With a capture (model::CaptureParams): the reach against COMRADE 2018 Table 2 (sim::ReachResult).
+// The gripper against the pre-grasp pose in its axes (x the approach): signed at the end of the run,
+// and the largest |value| per axis over the hold. NaN where the arm never woke.
+struct ReachFigures {
+  Vec3 final_error_m, final_velocity_mps, final_attitude_deg, final_rate_deg_s;
+  Vec3 max_error_m, max_velocity_mps, max_attitude_deg, max_rate_deg_s;
+  double peak_joint_torque_Nm;   // [N m] the largest command over the joints and the reach
+  double min_tool_clearance_m;   // [m] the tool point from the keep-out volume, over the reach
+  bool table2_met;               // sim::gripper_meets_table2
 };
 
 struct RunRecord {
@@ -49,6 +63,7 @@ struct RunRecord {
   // keep-out volume or where the run has no such time).
   double final_position_error_m = 0, final_speed_mps = 0, final_attitude_error_deg = 0, final_rate_error_deg_s = 0;
   double min_clearance_unsynchronised_m = 0, min_clearance_synchronised_m = 0;
+  ReachFigures reach{};
 };
 
 // The record of a flown run; status kDiverged when the monitor stopped it or it left the planned
@@ -72,10 +87,18 @@ struct RunColumn {
   void (*write)(const RunRecord& r, int index, std::string& out);
   int index = 0;  // passed to write: a scheme's slot (-1: the FDIR's) for a scheme's columns
 };
-const std::vector<RunColumn>& run_columns();
+// Which columns a campaign's runs.csv has: the reach's too when its scenario has a capture section.
+enum class RunColumnSet { kStandard, kReach };
+RunColumnSet run_column_set(const model::Scenario& scenario);
+const std::vector<RunColumn>& run_columns(RunColumnSet set);
 
-std::string runs_header();                    // column names joined by commas, no newline
-std::string format_row(const RunRecord& r);   // one row, no newline
+std::string runs_header(RunColumnSet set);  // names joined by commas, no newline
+std::string format_row(const RunRecord& r, RunColumnSet set);  // one row, no newline
+// The name of a reach column per axis: figure 0-3 the gripper's error [m], velocity [m/s], attitude
+// [deg] and rate [deg/s] (ReachFigures' order), at the end of the run or the largest over the hold.
+std::string reach_column_name(bool over_hold, int figure, int axis);
+// The set whose header a runs.csv's first line is; nullopt for another file (an older Chaser's).
+std::optional<RunColumnSet> run_column_set_of(std::string_view header);
 
 // Numbers as the spec writes them: {:.17g}, "nan" for a time that does not exist.
 void append_number(std::string& out, double value);

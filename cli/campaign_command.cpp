@@ -12,6 +12,7 @@
 #include "campaign/merge.hpp"
 #include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
+#include "campaign/reach_tables.hpp"
 #include "campaign/run_one.hpp"
 #include "campaign/run_row.hpp"
 #include "campaign/summary.hpp"
@@ -27,7 +28,9 @@ namespace {
 
 constexpr const char* kPresetTable2 = "fonod2015-table2";
 constexpr const char* kPresetTable5 = "comrade-table5";
-// COMRADE 2018, sec. 7: the paper's Table 5 is the mean of 100 runs; we fly 100 per spin case.
+constexpr const char* kPresetReach = "comrade-reach";
+// COMRADE 2018, sec. 7: the paper's Tables 5 and 6 are means of 100 runs; we fly 100 per spin case
+// (synchronisation) and per combined controller (reach).
 constexpr const char* kTable5Runs = "none=100";
 // Fonod 2015, section V: 200 fault-free runs, 1600 runs per fault case, each scheme judged alone.
 constexpr const char* kTable2Runs = "none=200,stuck_open=1600,stuck_closed=1600,leak=1600,loss=1600";
@@ -90,8 +93,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
-      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {})\n", args.preset,
-                               kPresetTable2, kPresetTable5);
+      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {})\n", args.preset,
+                               kPresetTable2, kPresetTable5, kPresetReach);
       return std::nullopt;
     }
     overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
@@ -153,6 +156,27 @@ int campaign_mpi(const CampaignArgs& args) {
   return code;
 }
 
+// One fault-free campaign of `args` into out_dir/name with `first_override` before the user's --set;
+// false after printing what went wrong (the exit code in `code`).
+bool run_case_campaign(const CampaignArgs& args, const std::string& scenario_path, const std::string& name,
+                       const std::string& first_override, int& code) {
+  CampaignArgs sub = args;
+  sub.preset.clear();
+  sub.also.clear();
+  sub.scenario_path = scenario_path;
+  sub.cases = "none";
+  if (sub.runs.empty()) sub.runs = kTable5Runs;
+  sub.out_dir = (std::filesystem::path(args.out_dir) / name).string();
+  if (!first_override.empty()) sub.overrides.insert(sub.overrides.begin(), first_override);  // the user's --set win
+  const std::optional<Prepared> prepared = prepare(sub);
+  if (!prepared) {
+    code = kExitBadInput;
+    return false;
+  }
+  code = report(campaign::run_campaign(prepared->plan, prepared->options), sub.out_dir);
+  return code == kExitOk;
+}
+
 // --preset comrade-table5 (docs/campaigns.md, "COMRADE Table 5"): one fault-free campaign per
 // spin case S1, S2, S3 of a scenario flying the synchronisation (guidance.synchronised.approach),
 // or one of the scenario as it is (the ASSIST approach), for the scenario and each --also, each in
@@ -187,21 +211,12 @@ int comrade_table5(const CampaignArgs& args) {
   }
   std::vector<campaign::Table5Column> columns;
   for (const Case& c : cases) {
-    CampaignArgs sub = args;
-    sub.preset.clear();
-    sub.also.clear();
-    sub.scenario_path = c.scenario_path;
-    sub.cases = "none";
-    if (sub.runs.empty()) sub.runs = kTable5Runs;
-    sub.out_dir = (std::filesystem::path(args.out_dir) / c.name).string();
-    if (!c.override_text.empty()) sub.overrides.insert(sub.overrides.begin(), c.override_text);  // the user's --set win
     std::cerr << fmt::format("comrade-table5: case {}\n", c.name);
-    const std::optional<Prepared> prepared = prepare(sub);
-    if (!prepared) return kExitBadInput;
-    const int code = report(campaign::run_campaign(prepared->plan, prepared->options), sub.out_dir);
-    if (code != kExitOk) return code;
+    int code = kExitOk;
+    if (!run_case_campaign(args, c.scenario_path, c.name, c.override_text, code)) return code;
     std::string error;
-    const auto column = campaign::read_table5_column(c.name, sub.out_dir + "/runs.csv", error);
+    const auto column = campaign::read_table5_column(
+        c.name, (std::filesystem::path(args.out_dir) / c.name / "runs.csv").string(), error);
     if (!column) {
       std::cerr << ("chaser campaign: " + error + '\n');
       return kExitFailure;
@@ -212,6 +227,45 @@ int comrade_table5(const CampaignArgs& args) {
   std::ofstream(out / "table5.md") << campaign::table5_markdown(columns);
   std::ofstream(out / "table5.csv") << campaign::table5_csv(columns);
   std::cout << fmt::format("comrade-table5: wrote {}/table5.md and table5.csv\n", args.out_dir);
+  return kExitOk;
+}
+
+// --preset comrade-reach (docs/servicing.md, "The reach over 100 dispersed runs"): one fault-free
+// campaign per combined controller (capture.law hinf, then compliance, the paper's order) of a
+// scenario with a capture section, each in its folder under --out and resumable as any campaign;
+// then reach.md and reach.csv beside them: COMRADE Tables 5 (reach) and 6.
+int comrade_reach(const CampaignArgs& args) {
+  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
+    std::cerr << "chaser campaign: --preset comrade-reach runs whole fault-free campaigns in one process: "
+                 "leave out --mpi, --shard, --cases and --also\n";
+    return kExitBadInput;
+  }
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  if (!loaded->scenario->capture) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-reach: {} has no capture section: use "
+                             "scenarios/comrade_capture.yaml\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
+  std::vector<campaign::ReachColumn> columns;
+  for (const char* law : {"hinf", "compliance"}) {
+    std::cerr << fmt::format("comrade-reach: capture.law {}\n", law);
+    int code = kExitOk;
+    if (!run_case_campaign(args, args.scenario_path, law, fmt::format("capture.law={}", law), code)) return code;
+    std::string error;
+    const auto column = campaign::read_reach_column(
+        law, (std::filesystem::path(args.out_dir) / law / "runs.csv").string(), error);
+    if (!column) {
+      std::cerr << ("chaser campaign: " + error + '\n');
+      return kExitFailure;
+    }
+    columns.push_back(*column);
+  }
+  const std::filesystem::path out(args.out_dir);
+  std::ofstream(out / "reach.md") << campaign::reach_markdown(columns);
+  std::ofstream(out / "reach.csv") << campaign::reach_csv(columns);
+  std::cout << fmt::format("comrade-reach: wrote {}/reach.md and reach.csv\n", args.out_dir);
   return kExitOk;
 }
 
@@ -275,7 +329,7 @@ int rerun_one(const CampaignArgs& args) {
   const campaign::RunOutput out = campaign::run_one(prepared->plan, flight, run, args.out_dir);
   const std::filesystem::path row_path = std::filesystem::path(args.out_dir) / "run.csv";
   std::ofstream row_file(row_path, std::ios::binary);
-  row_file << campaign::runs_header() << '\n' << out.row << '\n';
+  row_file << campaign::runs_header(campaign::run_column_set(prepared->plan.nominal)) << '\n' << out.row << '\n';
   if (!row_file) {
     std::cerr << fmt::format("chaser campaign: cannot write {}\n", row_path.string());
     return kExitFailure;
@@ -293,14 +347,16 @@ int campaign_command(const CampaignArgs& args) {
     return kExitBadInput;
   }
   if (args.rerun) {
-    if (args.preset == kPresetTable5 || !args.also.empty()) {
-      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5 or --also (rerun one case's folder: "
-                   "its scenario with --set target.body.spin_case=S1|S2|S3 --cases none)\n";
+    if (args.preset == kPresetTable5 || args.preset == kPresetReach || !args.also.empty()) {
+      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach or --also (rerun one "
+                   "case's folder: its scenario with --set target.body.spin_case=S1|S2|S3 or capture.law=hinf|"
+                   "compliance, and --cases none)\n";
       return kExitBadInput;
     }
     return rerun_one(args);
   }
   if (args.preset == kPresetTable5) return comrade_table5(args);
+  if (args.preset == kPresetReach) return comrade_reach(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";
     return kExitBadInput;

@@ -201,9 +201,10 @@ std::string numpy_type(campaign::ColumnKind kind) {
 // runs.csv's rows as a structured array, each column typed by its ColumnKind.
 py::object runs_array(const std::string& text) {
   const std::vector<std::string> lines = lines_of(text);
-  const std::vector<campaign::RunColumn>& columns = campaign::run_columns();
-  if (lines.empty() || lines.front() != campaign::runs_header())
-    throw std::runtime_error("runs.csv: not this version's header");
+  const std::optional<campaign::RunColumnSet> set =
+      lines.empty() ? std::nullopt : campaign::run_column_set_of(lines.front());
+  if (!set) throw std::runtime_error("runs.csv: not this version's header");
+  const std::vector<campaign::RunColumn>& columns = campaign::run_columns(*set);
   std::vector<std::vector<std::string_view>> rows;
   for (std::size_t r = 1; r < lines.size(); ++r) {
     rows.push_back(campaign::split_fields(lines[r]));

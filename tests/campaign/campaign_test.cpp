@@ -249,7 +249,7 @@ TEST(Campaign, DivergingRunIsRecordedNotFatal) {
   plan.nominal.chaser.mass_kg = 1e-3;
   const RunOutput out = run_one(plan, flight, 0);
   const auto f = split_fields(out.row);
-  const auto header_text = runs_header();
+  const auto header_text = runs_header(RunColumnSet::kStandard);
   const auto header = split_fields(header_text);
   EXPECT_EQ(f[static_cast<std::size_t>(column_index(header, "status"))], "diverged");
   EXPECT_EQ(f[1], std::to_string(run_seed(plan.nominal.campaign.seed, 0)));
@@ -268,7 +268,7 @@ TEST(Campaign, RowMatchesTheRunSetup) {
   const flight::FlightParams flight = flight::make_flight_params(plan.nominal);
   const RunOutput out = run_one(plan, flight, 1);  // split_fields' views point into out.row
   const auto f = split_fields(out.row);
-  EXPECT_EQ(f.size(), run_columns().size());
+  EXPECT_EQ(f.size(), run_columns(RunColumnSet::kStandard).size());
   EXPECT_EQ(f[2], "loss");
   EXPECT_EQ(*parse_integer(f[4]), setup.truth.faults[0].thruster + 1);
   EXPECT_EQ(*parse_number(f[5]), setup.truth.faults[0].loss_size);

@@ -26,9 +26,9 @@ std::vector<std::string> fields(const std::string& line) {
   return out;
 }
 
-std::string column(const RunRecord& r, const std::string& name) {
-  const std::vector<std::string> names = fields(runs_header());
-  const std::vector<std::string> values = fields(format_row(r));
+std::string column(const RunRecord& r, const std::string& name, RunColumnSet set = RunColumnSet::kStandard) {
+  const std::vector<std::string> names = fields(runs_header(set));
+  const std::vector<std::string> values = fields(format_row(r, set));
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return values[i];
   ADD_FAILURE() << "no column " << name;
@@ -53,8 +53,12 @@ TEST(RunRow, ThrustersAreWrittenAsTheNumberOfTheirNameAndZeroForNone) {
 }
 
 // Every field reads back as its column's kind says (the Python module types its array by it): the
-// faulty record has numbers, nan, flags set and unset, a seed above 2^63.
-TEST(RunRow, EveryFieldReadsBackAsItsColumnKind) {
+// faulty record has numbers, nan, flags set and unset, a seed above 2^63; in both column sets.
+class RunRowSets : public ::testing::TestWithParam<RunColumnSet> {};
+INSTANTIATE_TEST_SUITE_P(BothSets, RunRowSets, ::testing::Values(RunColumnSet::kStandard, RunColumnSet::kReach));
+
+TEST_P(RunRowSets, EveryFieldReadsBackAsItsColumnKind) {
+  const RunColumnSet set = GetParam();
   RunSetup setup;
   setup.seed = 18446744073709551557ull;
   setup.fault_case = FaultCase::kStuckClosed;
@@ -62,11 +66,13 @@ TEST(RunRow, EveryFieldReadsBackAsItsColumnKind) {
   RunRecord r = error_record(setup);
   r.capture = true;
   r.propellant_kg = 1.25;
-  const std::vector<std::string> values = fields(format_row(r));
-  ASSERT_EQ(values.size(), run_columns().size());
+  r.reach.final_error_m = Vec3(0.001, -0.002, 0.003);
+  r.reach.table2_met = true;
+  const std::vector<std::string> values = fields(format_row(r, set));
+  ASSERT_EQ(values.size(), run_columns(set).size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     const std::string& v = values[i];
-    const RunColumn& c = run_columns()[i];
+    const RunColumn& c = run_columns(set)[i];
     switch (c.kind) {
       case ColumnKind::kInteger: EXPECT_TRUE(parse_integer(v).has_value()) << c.name << " " << v; break;
       case ColumnKind::kUnsigned: {
@@ -79,8 +85,30 @@ TEST(RunRow, EveryFieldReadsBackAsItsColumnKind) {
       case ColumnKind::kFlag: EXPECT_TRUE(v == "0" || v == "1") << c.name << " " << v; break;
     }
   }
-  EXPECT_EQ(column(r, "seed"), "18446744073709551557");
-  EXPECT_EQ(column(r, "case"), "stuck_closed");
+  EXPECT_EQ(column(r, "seed", set), "18446744073709551557");
+  EXPECT_EQ(column(r, "case", set), "stuck_closed");
+  EXPECT_EQ(run_column_set_of(runs_header(set)), set);  // a file's header says which set it holds
+}
+
+// The reach's set is the standard one followed by the reach's columns, each figure in its own column
+// per axis; a run whose arm never woke has NaN figures and Table 2 not met.
+TEST(RunRow, TheReachSetAddsTheReachFiguresAfterTheStandardColumns) {
+  const std::string standard = runs_header(RunColumnSet::kStandard), reach = runs_header(RunColumnSet::kReach);
+  ASSERT_EQ(reach.substr(0, standard.size() + 1), standard + ",");
+  EXPECT_EQ(run_columns(RunColumnSet::kReach).size(), run_columns(RunColumnSet::kStandard).size() + 8 * 3 + 3);
+  EXPECT_FALSE(run_column_set_of(standard + ",extra").has_value());
+
+  RunRecord r = error_record(RunSetup{});
+  EXPECT_EQ(column(r, "reach_max_rate_z_deg_s", RunColumnSet::kReach), "nan");
+  EXPECT_EQ(column(r, "reach_table2_met", RunColumnSet::kReach), "0");
+  r.reach.final_error_m = Vec3(0.001, -0.002, 0.003);
+  r.reach.max_rate_deg_s = Vec3(0.04, 0.05, 0.125);
+  r.reach.peak_joint_torque_Nm = 6.5;
+  EXPECT_EQ(column(r, "reach_final_error_x_m", RunColumnSet::kReach), "0.001");
+  EXPECT_EQ(column(r, "reach_final_error_y_m", RunColumnSet::kReach), "-0.002");
+  EXPECT_EQ(column(r, "reach_final_error_z_m", RunColumnSet::kReach), "0.0030000000000000001");
+  EXPECT_EQ(column(r, "reach_max_rate_z_deg_s", RunColumnSet::kReach), "0.125");
+  EXPECT_EQ(column(r, "reach_peak_joint_torque_Nm", RunColumnSet::kReach), "6.5");
 }
 
 // split_fields: plain fields, empty ones kept; a field in double quotes (optimize.csv's candidate

@@ -51,12 +51,12 @@ TEST(Table5, ReadsACampaignAndJudgesItAgainstTableOne) {
   std::filesystem::create_directories(dir);
   {
     std::ofstream f(dir / "runs.csv");
-    f << runs_header() << '\n';
-    f << format_row(run(0, true, 0.05)) << '\n' << format_row(run(1, true, 0.07)) << '\n';
-    f << format_row(run(2, false, 0.30)) << '\n';
+    f << runs_header(RunColumnSet::kStandard) << '\n';
+    f << format_row(run(0, true, 0.05), RunColumnSet::kStandard) << '\n' << format_row(run(1, true, 0.07), RunColumnSet::kStandard) << '\n';
+    f << format_row(run(2, false, 0.30), RunColumnSet::kStandard) << '\n';
     RunRecord diverged = run(3, false, 5.0);
     diverged.status = RunStatus::kDiverged;
-    f << format_row(diverged) << '\n';
+    f << format_row(diverged, RunColumnSet::kStandard) << '\n';
   }
   std::string error;
   const auto column = read_table5_column("S1", (dir / "runs.csv").string(), error);

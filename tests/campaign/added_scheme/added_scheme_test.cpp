@@ -86,7 +86,7 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
 }
 
 TEST(AddedScheme, AppearsInRunsCsvAndTheCampaignsTable) {
-  const std::string header = campaign::runs_header();
+  const std::string header = campaign::runs_header(campaign::RunColumnSet::kStandard);
   EXPECT_NE(header.find("deficit_glr_max_before_onset,ramp_detection_s,ramp_isolation_s,ramp_isolated,ramp_false_alarm,"
                         "ramp_missed,ramp_wrong_isolation,ramp_glr_max_before_onset,fdir_detection_s"),
             std::string::npos)

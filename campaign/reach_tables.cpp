@@ -1,0 +1,249 @@
+#include "campaign/reach_tables.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "campaign/csv.hpp"
+#include "campaign/proportion_text.hpp"
+#include "campaign/run_row.hpp"
+#include "sim/reach_result.hpp"
+
+namespace chaser::campaign {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A paper's mean +- 1 sigma; sd NaN where the paper prints "< 0.001".
+struct PaperValue {
+  double mean, sd;
+};
+
+// COMRADE 2018 Table 5, its reach columns (the means and 1 sigma of 100 runs; the velocity row
+// says [m]: m/s), against Table 2's chaser requirements.
+struct ChaserRow {
+  const char* figure;
+  const char* unit;
+  const char* column;  // runs.csv
+  double limit;
+  PaperValue hinf, compliance;
+};
+const std::array<ChaserRow, 4> kChaserRows = {{
+    {"position error", "m", "final_position_error_m", sim::kTable2ChaserPositionM, {0.023, 0.008}, {0.026, 0.011}},
+    {"velocity error", "m/s", "final_speed_mps", sim::kTable2ChaserVelocityMps, {0.002, kNaN}, {0.001, kNaN}},
+    {"pointing error", "deg", "final_attitude_error_deg", sim::kTable2ChaserAttitudeDeg, {0.318, 0.153}, {0.105, 0.077}},
+    {"angular-rate error", "deg/s", "final_rate_error_deg_s", sim::kTable2ChaserRateDegps, {0.075, 0.041}, {0.114, 0.047}},
+}};
+
+// COMRADE 2018 Table 6 (the gripper against the grappling point: means and 1 sigma of its runs, in
+// m, m/s, deg and deg/s), per figure and axis.
+using PaperAxes = std::array<PaperValue, 3>;
+const std::array<PaperAxes, kGripperFigures> kGripperHinf = {{
+    {{{-0.001, 0.004}, {0.002, 0.005}, {-0.001, 0.004}}},
+    {{{0.001, 0.003}, {0.001, 0.003}, {-0.001, 0.002}}},
+    {{{-0.016, 0.105}, {-0.033, 0.140}, {-0.015, 0.293}}},
+    {{{0.011, 0.073}, {-0.004, 0.098}, {0.029, 0.191}}},
+}};
+const std::array<PaperAxes, kGripperFigures> kGripperCompliance = {{
+    {{{0.004, 0.003}, {0.005, 0.003}, {0.003, 0.002}}},
+    {{{0.004, 0.003}, {0.005, 0.003}, {0.005, 0.003}}},
+    {{{0.120, 0.084}, {0.086, 0.054}, {0.182, 0.113}}},
+    {{{0.520, 0.335}, {0.286, 0.217}, {0.434, 0.314}}},
+}};
+
+// How each gripper figure is shown: position and velocity in mm and mm/s.
+struct GripperFigure {
+  const char* name;
+  const char* unit;
+  double scale;  // from runs.csv's unit to the shown one
+};
+constexpr std::array<GripperFigure, kGripperFigures> kGripperShown = {{
+    {"position", "mm", 1e3}, {"velocity", "mm/s", 1e3}, {"attitude", "deg", 1.0}, {"angular rate", "deg/s", 1.0}}};
+
+// Table 2's gripper limit [runs.csv's unit] per figure and axis.
+double gripper_limit(int figure, int axis) {
+  switch (figure) {
+    case 0: return sim::kTable2GripperErrorM[axis];
+    case 1: return sim::kTable2GripperVelocityMps;
+    case 2: return sim::kTable2GripperAttitudeDeg;
+    default: return sim::kTable2GripperRateDegps;
+  }
+}
+
+bool is_hinf(const ReachColumn& c) { return c.law == "hinf"; }
+const char* law_label(const ReachColumn& c) { return is_hinf(c) ? "H-infinity" : "compliance"; }
+const char* paper_label(const ReachColumn& c) { return is_hinf(c) ? "COMRADE H-inf" : "COMRADE compliant"; }
+
+std::string number(double v, const char* format) { return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : "-"; }
+
+std::string mean_sd(double mean, double sd, double scale, const char* format) {
+  if (!std::isfinite(mean)) return "-";
+  const std::string sd_text = std::isfinite(sd) ? number(sd * scale, format) : fmt::format("< {:g}", 0.001 * scale);
+  return fmt::format("{} +- {}", number(mean * scale, format), sd_text);
+}
+
+std::string p95_verdict(double p95, double limit, double scale, const char* format) {
+  if (!std::isfinite(p95)) return "-";
+  return number(p95 * scale, format) + (p95 < limit ? " (met)" : " (**not met**)");
+}
+
+}  // namespace
+
+std::optional<ReachColumn> read_reach_column(const std::string& law, const std::string& runs_csv, std::string& error) {
+  std::ifstream in(runs_csv);
+  std::string header_text;
+  if (!in || !std::getline(in, header_text)) {
+    error = fmt::format("{}: cannot be read", runs_csv);
+    return std::nullopt;
+  }
+  const std::vector<std::string_view> header = split_fields(header_text);
+  bool ok = true;
+  auto index = [&](const std::string& name) {
+    const int i = column_index(header, name);
+    if (i < 0 && ok) {
+      error = fmt::format("{}: no column {} (not a campaign of a scenario with a capture section?)", runs_csv, name);
+      ok = false;
+    }
+    return i;
+  };
+  const int status = index("status"), met = index("reach_table2_met"), torque = index("reach_peak_joint_torque_Nm"),
+            clearance = index("reach_min_tool_clearance_m");
+  std::array<int, 4> chaser_col{};
+  for (std::size_t k = 0; k < kChaserRows.size(); ++k) chaser_col[k] = index(kChaserRows[k].column);
+  std::array<std::array<int, 3>, kGripperFigures> final_col{}, max_col{};
+  for (int f = 0; f < kGripperFigures; ++f)
+    for (int a = 0; a < 3; ++a) {
+      final_col[static_cast<std::size_t>(f)][static_cast<std::size_t>(a)] = index(reach_column_name(false, f, a));
+      max_col[static_cast<std::size_t>(f)][static_cast<std::size_t>(a)] = index(reach_column_name(true, f, a));
+    }
+  if (!ok) return std::nullopt;
+
+  ReachColumn c;
+  c.law = law;
+  c.least_tool_clearance_m = kNaN;
+  std::array<std::vector<double>, 4> chaser;
+  std::array<std::array<std::vector<double>, 3>, kGripperFigures> finals, maxima;
+  std::vector<double> torques;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string_view> f = split_fields(line);
+    if (f.size() != header.size()) {
+      error = fmt::format("{}: row {} has {} fields, the header {}", runs_csv, c.runs + 1, f.size(), header.size());
+      return std::nullopt;
+    }
+    auto value = [&](int col) { return parse_number(f[static_cast<std::size_t>(col)]).value_or(kNaN); };
+    ++c.runs;
+    ++c.table2_met.runs;
+    if (f[static_cast<std::size_t>(status)] != "ok" || !std::isfinite(value(max_col[0][0]))) continue;
+    ++c.flown;
+    c.table2_met.events += f[static_cast<std::size_t>(met)] == "1";
+    for (std::size_t k = 0; k < chaser.size(); ++k) chaser[k].push_back(value(chaser_col[k]));
+    for (std::size_t g = 0; g < finals.size(); ++g)
+      for (std::size_t a = 0; a < 3; ++a) {
+        finals[g][a].push_back(value(final_col[g][a]));
+        maxima[g][a].push_back(value(max_col[g][a]));
+      }
+    torques.push_back(value(torque));
+    const double clear = value(clearance);
+    if (std::isfinite(clear) && !(c.least_tool_clearance_m <= clear)) c.least_tool_clearance_m = clear;
+  }
+  for (std::size_t k = 0; k < chaser.size(); ++k) c.chaser[k] = figure_stats(chaser[k]);
+  for (std::size_t g = 0; g < finals.size(); ++g)
+    for (std::size_t a = 0; a < 3; ++a) {
+      c.gripper_final[g][a] = figure_stats(finals[g][a]);
+      c.gripper_max[g][a] = figure_stats(maxima[g][a]);
+    }
+  c.peak_joint_torque_Nm = figure_stats(torques);
+  return c;
+}
+
+std::string reach_markdown(const std::vector<ReachColumn>& columns) {
+  std::string out =
+      "# COMRADE 2018 Tables 5 and 6, reach: the chaser and the gripper\n\n"
+      "Mean +- 1 sigma at the end of the runs that flew, as the paper gives them (its means of 100 runs),\n"
+      "and the 95th percentile (nearest rank) against COMRADE Table 2: the chaser's at the end, the\n"
+      "gripper's of the largest |value| per axis over the hold at the pre-grasp pose (docs/servicing.md).\n\n"
+      "## Table 5, reach columns: the chaser against the capture point at the end\n\n"
+      "| figure | Table 2 |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} | {} |", paper_label(c), law_label(c));
+  out += "\n|---|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|---|";
+  out += '\n';
+  for (std::size_t k = 0; k < kChaserRows.size(); ++k) {
+    const ChaserRow& row = kChaserRows[k];
+    out += fmt::format("| {} [{}], mean +- 1 sigma | < {:g} |", row.figure, row.unit, row.limit);
+    for (const ReachColumn& c : columns) {
+      const PaperValue& p = is_hinf(c) ? row.hinf : row.compliance;
+      out += fmt::format(" {} | {} |", mean_sd(p.mean, p.sd, 1.0, "{:.3f}"),
+                         mean_sd(c.chaser[k].mean, c.chaser[k].sd, 1.0, "{:.3f}"));
+    }
+    out += fmt::format("\n| {} [{}], 95th percentile | < {:g} |", row.figure, row.unit, row.limit);
+    for (const ReachColumn& c : columns) out += fmt::format(" | {} |", p95_verdict(c.chaser[k].p95, row.limit, 1.0, "{:.3f}"));
+    out += '\n';
+  }
+
+  out += "\n## Table 6: the gripper against the grasping point (x the approach)\n\n| figure | Table 2 |";
+  for (const ReachColumn& c : columns)
+    out += fmt::format(" {} | {}, at the end | {}, over the hold: 95th percentile |", paper_label(c), law_label(c),
+                       law_label(c));
+  out += "\n|---|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|---|---|";
+  out += '\n';
+  for (int g = 0; g < kGripperFigures; ++g) {
+    const GripperFigure& shown = kGripperShown[static_cast<std::size_t>(g)];
+    const char* format = shown.scale > 1.0 ? "{:.1f}" : "{:.3f}";
+    for (int a = 0; a < 3; ++a) {
+      const double limit = gripper_limit(g, a);
+      out += fmt::format("| {} {} [{}] | +- {:g} |", shown.name, "xyz"[a], shown.unit, limit * shown.scale);
+      for (const ReachColumn& c : columns) {
+        const auto ga = std::pair(static_cast<std::size_t>(g), static_cast<std::size_t>(a));
+        const PaperValue& p = (is_hinf(c) ? kGripperHinf : kGripperCompliance)[ga.first][ga.second];
+        const FigureStats& end = c.gripper_final[ga.first][ga.second];
+        out += fmt::format(" {} | {} | {} |", mean_sd(p.mean, p.sd, shown.scale, shown.scale > 1.0 ? "{:.0f}" : "{:.3f}"),
+                           mean_sd(end.mean, end.sd, shown.scale, format),
+                           p95_verdict(c.gripper_max[ga.first][ga.second].p95, limit, shown.scale, format));
+      }
+      out += '\n';
+    }
+  }
+
+  out += "\n## The runs\n\n| | limit |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", law_label(c));
+  out += "\n|---|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|";
+  out += "\n| gripper inside every figure of Table 2 over the hold | |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", proportion_cell(c.table2_met));
+  out += "\n| peak joint torque, largest of the runs [N m] | 176 (repeated peak) |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.peak_joint_torque_Nm.max, "{:.1f}"));
+  out += "\n| the tool point's least clearance from the keep-out volume, least of the runs [m] | > 0 |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.least_tool_clearance_m, "{:.3f}"));
+  out += "\n| runs flown of runs | |";
+  for (const ReachColumn& c : columns) out += fmt::format(" {} of {} |", c.flown, c.runs);
+  out += "\n\nEach law's runs are in its folder (runs.csv, summary.md).\n";
+  return out;
+}
+
+std::string reach_csv(const std::vector<ReachColumn>& columns) {
+  std::string out = "law,figure,n,mean,sd,p95,max\n";
+  auto row = [&](const ReachColumn& c, const std::string& figure, const FigureStats& s) {
+    out += fmt::format("{},{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.law, figure, s.n, s.mean, s.sd, s.p95, s.max);
+  };
+  for (const ReachColumn& c : columns) {
+    for (std::size_t k = 0; k < kChaserRows.size(); ++k) row(c, kChaserRows[k].column, c.chaser[k]);
+    for (int g = 0; g < kGripperFigures; ++g)
+      for (int a = 0; a < 3; ++a) {
+        const auto gi = static_cast<std::size_t>(g), ai = static_cast<std::size_t>(a);
+        row(c, reach_column_name(false, g, a), c.gripper_final[gi][ai]);
+        row(c, reach_column_name(true, g, a), c.gripper_max[gi][ai]);
+      }
+    row(c, "reach_peak_joint_torque_Nm", c.peak_joint_torque_Nm);
+    out += fmt::format("{},reach_table2_met,{},{:.17g},nan,nan,nan\n", c.law, c.table2_met.runs,
+                       c.table2_met.runs > 0 ? static_cast<double>(c.table2_met.events) / c.table2_met.runs : kNaN);
+  }
+  return out;
+}
+
+}  // namespace chaser::campaign
