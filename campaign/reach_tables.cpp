@@ -54,6 +54,8 @@ const std::array<PaperAxes, kGripperFigures> kGripperCompliance = {{
     {{{0.520, 0.335}, {0.286, 0.217}, {0.434, 0.314}}},
 }};
 
+constexpr double kRepeatedPeakTorqueNm = 176.0;  // [N m] COMRADE 2018, the joints' repeated peak torque
+
 // How each gripper figure is shown: position and velocity in mm and mm/s.
 struct GripperFigure {
   const char* name;
@@ -123,10 +125,9 @@ std::optional<ReachColumn> read_reach_column(const std::string& law, const std::
 
   ReachColumn c;
   c.law = law;
-  c.least_tool_clearance_m = kNaN;
   std::array<std::vector<double>, 4> chaser;
   std::array<std::array<std::vector<double>, 3>, kGripperFigures> finals, maxima;
-  std::vector<double> torques;
+  std::vector<double> torques, clearances;
   std::string line;
   while (std::getline(in, line)) {
     const std::vector<std::string_view> f = split_fields(line);
@@ -147,8 +148,7 @@ std::optional<ReachColumn> read_reach_column(const std::string& law, const std::
         maxima[g][a].push_back(value(max_col[g][a]));
       }
     torques.push_back(value(torque));
-    const double clear = value(clearance);
-    if (std::isfinite(clear) && !(c.least_tool_clearance_m <= clear)) c.least_tool_clearance_m = clear;
+    clearances.push_back(value(clearance));
   }
   for (std::size_t k = 0; k < chaser.size(); ++k) c.chaser[k] = figure_stats(chaser[k]);
   for (std::size_t g = 0; g < finals.size(); ++g)
@@ -157,6 +157,7 @@ std::optional<ReachColumn> read_reach_column(const std::string& law, const std::
       c.gripper_max[g][a] = figure_stats(maxima[g][a]);
     }
   c.peak_joint_torque_Nm = figure_stats(torques);
+  c.tool_clearance_m = figure_stats(clearances);
   return c;
 }
 
@@ -216,10 +217,10 @@ std::string reach_markdown(const std::vector<ReachColumn>& columns) {
   for (std::size_t i = 0; i < columns.size(); ++i) out += "---|";
   out += "\n| gripper inside every figure of Table 2 over the hold | |";
   for (const ReachColumn& c : columns) out += fmt::format(" {} |", proportion_cell(c.table2_met));
-  out += "\n| peak joint torque, largest of the runs [N m] | 176 (repeated peak) |";
+  out += fmt::format("\n| peak joint torque, largest of the runs [N m] | {:g} (repeated peak) |", kRepeatedPeakTorqueNm);
   for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.peak_joint_torque_Nm.max, "{:.1f}"));
   out += "\n| the tool point's least clearance from the keep-out volume, least of the runs [m] | > 0 |";
-  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.least_tool_clearance_m, "{:.3f}"));
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.tool_clearance_m.min, "{:.3f}"));
   out += "\n| runs flown of runs | |";
   for (const ReachColumn& c : columns) out += fmt::format(" {} of {} |", c.flown, c.runs);
   out += "\n\nEach law's runs are in its folder (runs.csv, summary.md).\n";
@@ -227,21 +228,27 @@ std::string reach_markdown(const std::vector<ReachColumn>& columns) {
 }
 
 std::string reach_csv(const std::vector<ReachColumn>& columns) {
-  std::string out = "law,figure,n,mean,sd,p95,max\n";
-  auto row = [&](const ReachColumn& c, const std::string& figure, const FigureStats& s) {
-    out += fmt::format("{},{},{},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.law, figure, s.n, s.mean, s.sd, s.p95, s.max);
+  std::string out = "law,figure,n,mean,sd,min,p95,max,limit,paper_mean,paper_sd\n";
+  auto row = [&](const ReachColumn& c, const std::string& figure, const FigureStats& s, double limit, PaperValue paper) {
+    out += fmt::format("{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.law, figure, s.n,
+                       s.mean, s.sd, s.min, s.p95, s.max, limit, paper.mean, paper.sd);
   };
+  const PaperValue none{kNaN, kNaN};
   for (const ReachColumn& c : columns) {
-    for (std::size_t k = 0; k < kChaserRows.size(); ++k) row(c, kChaserRows[k].column, c.chaser[k]);
+    for (std::size_t k = 0; k < kChaserRows.size(); ++k)
+      row(c, kChaserRows[k].column, c.chaser[k], kChaserRows[k].limit,
+          is_hinf(c) ? kChaserRows[k].hinf : kChaserRows[k].compliance);
     for (int g = 0; g < kGripperFigures; ++g)
       for (int a = 0; a < 3; ++a) {
         const auto gi = static_cast<std::size_t>(g), ai = static_cast<std::size_t>(a);
-        row(c, reach_column_name(false, g, a), c.gripper_final[gi][ai]);
-        row(c, reach_column_name(true, g, a), c.gripper_max[gi][ai]);
+        const PaperValue paper = (is_hinf(c) ? kGripperHinf : kGripperCompliance)[gi][ai];
+        row(c, reach_column_name(false, g, a), c.gripper_final[gi][ai], gripper_limit(g, a), paper);
+        row(c, reach_column_name(true, g, a), c.gripper_max[gi][ai], gripper_limit(g, a), none);
       }
-    row(c, "reach_peak_joint_torque_Nm", c.peak_joint_torque_Nm);
-    out += fmt::format("{},reach_table2_met,{},{:.17g},nan,nan,nan\n", c.law, c.table2_met.runs,
-                       c.table2_met.runs > 0 ? static_cast<double>(c.table2_met.events) / c.table2_met.runs : kNaN);
+    row(c, "reach_peak_joint_torque_Nm", c.peak_joint_torque_Nm, kRepeatedPeakTorqueNm, none);
+    const double met = c.table2_met.runs > 0 ? static_cast<double>(c.table2_met.events) / c.table2_met.runs : kNaN;
+    out += fmt::format("{},reach_table2_met,{},{:.17g},nan,nan,nan,nan,nan,nan,nan\n", c.law, c.table2_met.runs, met);
+    row(c, "reach_min_tool_clearance_m", c.tool_clearance_m, 0.0, none);
   }
   return out;
 }

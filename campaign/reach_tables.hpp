@@ -28,7 +28,7 @@ struct ReachColumn {
   std::array<std::array<FigureStats, 3>, kGripperFigures> gripper_final, gripper_max;
   Proportion table2_met;             // runs whose gripper met every figure of Table 2 over the hold
   FigureStats peak_joint_torque_Nm;  // per run, the largest over the joints
-  double least_tool_clearance_m = 0.0;  // [m] over every run; NaN: no keep-out volume
+  FigureStats tool_clearance_m;      // per run, the tool point's least clearance (n 0: no keep-out volume)
 };
 
 // One law's column from its runs.csv (a campaign of a scenario with a capture section); nullopt
@@ -37,7 +37,8 @@ std::optional<ReachColumn> read_reach_column(const std::string& law, const std::
 
 // reach.md: Tables 5 (reach) and 6 beside the paper's, with Table 2's limits.
 std::string reach_markdown(const std::vector<ReachColumn>& columns);
-// reach.csv: one row per law and figure: mean, sd, 95th percentile, maximum.
+// reach.csv: one row per law and figure: its statistics over the runs, Table 2's limit (or the
+// torque limit; 0 for the clearance, a least value) and the paper's mean and sd where it gives them.
 std::string reach_csv(const std::vector<ReachColumn>& columns);
 
 }  // namespace chaser::campaign

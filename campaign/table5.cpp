@@ -49,7 +49,7 @@ FigureStats figure_stats(std::vector<double> values) {
   FigureStats s;
   s.n = static_cast<int>(values.size());
   if (values.empty()) {
-    s.mean = s.sd = s.p95 = s.max = kNaN;
+    s.mean = s.sd = s.min = s.p95 = s.max = kNaN;
     return s;
   }
   s.mean = std::accumulate(values.begin(), values.end(), 0.0) / s.n;
@@ -59,6 +59,7 @@ FigureStats figure_stats(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const auto rank = static_cast<std::size_t>(std::ceil(0.95 * s.n));  // 1-based nearest rank
   s.p95 = values[std::max<std::size_t>(rank, 1) - 1];
+  s.min = values.front();
   s.max = values.back();
   return s;
 }

@@ -15,6 +15,7 @@ namespace chaser::campaign {
 struct FigureStats {
   int n = 0;
   double mean = 0.0, sd = 0.0;  // sd: the sample's (n - 1)
+  double min = 0.0;
   double p95 = 0.0;             // nearest rank: the ceil(0.95 n)-th smallest
   double max = 0.0;
 };

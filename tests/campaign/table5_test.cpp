@@ -27,6 +27,7 @@ TEST(Table5, FigureStatsAreTheSamplesOwn) {
   EXPECT_DOUBLE_EQ(s.mean, 10.5);
   EXPECT_NEAR(s.sd, std::sqrt(35.0), 1e-12);
   EXPECT_EQ(s.p95, 19.0);
+  EXPECT_EQ(s.min, 1.0);
   EXPECT_EQ(s.max, 20.0);
   EXPECT_TRUE(std::isnan(figure_stats({}).mean));
 }
