@@ -348,6 +348,101 @@ def full_table5_rows(t5):
 
 
 # --------------------------------------------------------------------------------------------------
+# COMRADE's reach: one run per law, and the comrade-reach preset's Tables 5 (reach) and 6
+
+def reach_csv(out):
+    """reach.csv of a comrade-reach campaign as {(law, figure): row}, numbers as floats."""
+    with open(Path(out) / "reach.csv", newline="") as f:
+        return {(r["law"], r["figure"]): {k: number(v) for k, v in r.items() if k not in ("law", "figure")}
+                for r in csv.DictReader(f)}
+
+
+REACH_LAWS = ("hinf", "compliance")  # the paper's order
+REACH_CHASER = ("final_position_error_m", "final_speed_mps", "final_attitude_error_deg", "final_rate_error_deg_s")
+# The gripper's figures as runs.csv names them, and how the pages show them (position and velocity in mm).
+REACH_GRIPPER = (("error", "m", 1e3), ("velocity", "mps", 1e3), ("attitude", "deg", 1.0), ("rate", "deg_s", 1.0))
+
+
+def reach_figures():
+    """(figure at the end, figure over the hold, scale) of the gripper's rows, per figure and axis."""
+    return [(f"reach_final_{name}_{axis}_{unit}", f"reach_max_{name}_{axis}_{unit}", scale)
+            for name, unit, scale in REACH_GRIPPER for axis in "xyz"]
+
+
+def over(value, limit, text):
+    """text in bold when value is not below limit (Table 2 not met)."""
+    return text if value < limit else f"**{text}**"
+
+
+def reach_cell(final, hold, scale):
+    """mean +- 1 sigma at the end (the paper's), and in brackets the 95th percentile over the hold."""
+    mean = sig(final["mean"] * scale)
+    sd = fixed(final["sd"] * scale, len(mean.partition(".")[2]))
+    return f"{mean} +- {sd} ({over(hold['p95'], hold['limit'], sig(hold['p95'] * scale))})"
+
+
+def paper_cell(row, scale):
+    """The paper's mean +- 1 sigma as it prints them: to the mm, or to three decimals."""
+    if missing(row["paper_mean"]):
+        return ""
+    decimals = 0 if scale > 1 else 3
+    sd = f"< {0.001 * scale:.{decimals}f}" if missing(row["paper_sd"]) else f"{row['paper_sd'] * scale:.{decimals}f}"
+    return f"{row['paper_mean'] * scale:.{decimals}f} +- {sd}"
+
+
+def comrade_reach_rows(out):
+    t = reach_csv(out)
+    rows = []
+    for name in REACH_CHASER:
+        first = t[(REACH_LAWS[0], name)]
+        cells = [f"< {first['limit']:g}"]
+        for law in REACH_LAWS:
+            r = t[(law, name)]
+            cells += [paper_cell(r, 1.0), reach_cell(r, r, 1.0)]
+        rows.append(cells)
+    for final, hold, scale in reach_figures():
+        cells = [f"+- {t[(REACH_LAWS[0], hold)]['limit'] * scale:g}"]
+        for law in REACH_LAWS:
+            cells += [paper_cell(t[(law, final)], scale), reach_cell(t[(law, final)], t[(law, hold)], scale)]
+        rows.append(cells)
+    met = [t[(law, "reach_table2_met")] for law in REACH_LAWS]
+    rows.append([""] + sum([["", f"{round(m['mean'] * m['n'])} of {int(m['n'])}"] for m in met], []))
+    torque = [t[(law, "reach_peak_joint_torque_Nm")] for law in REACH_LAWS]
+    rows.append([f"{torque[0]['limit']:g}"] + sum([["", fixed(q["max"], 1)] for q in torque], []))
+    clear = [t[(law, "reach_min_tool_clearance_m")] for law in REACH_LAWS]
+    rows.append(["> 0"] + sum([["", fixed(c["min"], 3)] for c in clear], []))
+    return rows
+
+
+REACH_HEADER = ("", "Table 2", "COMRADE H-inf", "H-infinity", "COMRADE compliant", "compliance")
+REACH_LABELS = (("chaser position [m]", "chaser velocity [m/s]", "chaser pointing [deg]", "chaser rate [deg/s]")
+                + tuple(f"gripper {name} {axis} [{unit}]"
+                        for name, unit in (("position", "mm"), ("velocity", "mm/s"), ("attitude", "deg"),
+                                           ("rate", "deg/s")) for axis in "xyz")
+                + ("runs with the gripper inside Table 2 over the hold", "peak joint torque, largest [N m]",
+                   "the tool point's least clearance from the keep-out volume [m]"))
+
+
+def reach_run_rows(compliance, hinf):
+    """One run per law: the gripper's largest |value| per axis over the hold, the torque, the clearance."""
+    runs = [load_json(Path(r) / "summary.json") for r in (compliance, hinf)]
+
+    def axes(r, key, scale, digits):
+        return ", ".join(sig(v * scale, digits) for v in r["reach"]["gripper"][key])
+
+    rows = [[", ".join(f"{v:g}" for v in (10, 22, 22))] + [axes(r, "max_error_m", 1e3, 2) for r in runs],
+            ["2.74"] + [axes(r, "max_attitude_error_deg", 1.0, 2) for r in runs],
+            ["5"] + [axes(r, "max_velocity_mps", 1e3, 2) for r in runs],
+            ["0.1"] + [axes(r, "max_rate_deg_s", 1.0, 2) for r in runs],
+            ["176"] + [fixed(max(r["reach"]["peak_joint_torque_Nm"]), 1) for r in runs],
+            ["> 0"] + [fixed(r["reach"]["min_tool_clearance_m"], 3) for r in runs],
+            ["0.05"] + [sig(r["final_position_error_m"]) for r in runs],
+            ["0.005"] + [sig(r["final_speed_mps"]) for r in runs],
+            ["2"] + [sig(r["final_attitude_error_deg"]) for r in runs]]
+    return rows
+
+
+# --------------------------------------------------------------------------------------------------
 # One run, the thruster set, the FDI design, the H-infinity loops
 
 def sync_run_rows(run):
@@ -776,6 +871,11 @@ COMMANDS = {c.key: c for c in (
     Command("T5", ("campaign", "scenarios/comrade_sync.yaml", "--preset", "comrade-table5", "--also",
                    "scenarios/comrade_assist.yaml", "--out", "OUT"), quick=False),
     Command("sync", ("run", "scenarios/comrade_sync.yaml", "--telemetry", "none", "--out", "OUT"), quick=True),
+    Command("reach", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-reach", "--out", "OUT"),
+            quick=False),
+    Command("capture", ("run", "scenarios/comrade_capture.yaml", "--telemetry", "none", "--out", "OUT"), quick=True),
+    Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--telemetry",
+                             "none", "--out", "OUT"), quick=True),
     Command("msr-thrusters.json", ("thrusters", "scenarios/msr_terminal.yaml", "--json", "OUT"), quick=True),
     Command("fdi-position.json", ("fdi", "design", "scenarios/msr_terminal.yaml", "--model", "position", "--out",
                                   "OUT"), quick=True),
@@ -825,6 +925,18 @@ TABLES = [
           + ("captured (Table 1 at the end)", "least clearance before synchronisation [m]",
              "least clearance after [m]", "propellant, mean [kg]"),
           full_table5_rows, words=("of",)),
+    Table("servicing-reach-run", "docs/servicing.md", ("capture", "capture-hinf"),
+          ("", "Table 2", "compliance", "H-infinity"),
+          ("gripper position, largest over the hold [mm]", "gripper attitude [deg]", "gripper velocity [mm/s]",
+           "gripper rate [deg/s]", "peak joint torque [N m]",
+           "the tool point's least clearance from the keep-out volume, over the reach [m]",
+           "chaser position at the end [m]", "chaser velocity [m/s]", "chaser pointing [deg]"),
+          reach_run_rows, caption="The gripper's figures per axis, x the approach."),
+    Table("servicing-comrade-reach", "docs/servicing.md", ("reach",), REACH_HEADER, REACH_LABELS, comrade_reach_rows,
+          words=("of", "**"),
+          caption="Ours: mean +- 1 sigma at the end of the runs (as the paper's), and in brackets the 95th "
+                  "percentile, the gripper's of its largest |value| per axis over the hold; in bold where it is "
+                  "not inside Table 2."),
     Table("campaigns-fonod2015-table2", "docs/campaigns.md", ("T2-published", "T2-passive", "T2"),
           ("", "case 1", "case 2", "case 3", "case 4"),
           label_pair("paper, position") + label_pair("Chaser, position, published isolation")
