@@ -56,7 +56,8 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--shard 3/3", "--shard: expected I/M with whole numbers 0 <= I < M (got '3/3')");
   expect_bad(out + "--shard x", "--shard");
   expect_bad(out + "--threads 0", "--threads");
-  expect_bad(out + "--preset nope", "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5)");
+  expect_bad(out + "--preset nope",
+             "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
@@ -93,6 +94,40 @@ TEST(CampaignCli, ComradeTable5WritesACaseFolderPerSpinCaseAndTheTable) {
   EXPECT_NE(msr.output.find("--preset comrade-table5: scenarios/msr_terminal.yaml has no COMRADE target"),
             std::string::npos)
       << msr.output;
+  fs::remove_all(dir);
+}
+
+// --preset comrade-reach: one campaign per combined controller of a capture scenario (here one run
+// each, cut to 30 s of the reach), reach.md and reach.csv beside them, each row of runs.csv with the
+// reach's columns, resumable; refused on a scenario without a capture section and with a shard.
+TEST(CampaignCli, ComradeReachWritesALawFolderPerControllerAndTheTables) {
+  const fs::path dir = chaser::testing::scratch_path("chaser_reach_cli");
+  fs::remove_all(dir);
+  const std::string preset = "campaign scenarios/comrade_capture.yaml --preset comrade-reach --runs 1 --threads 2 "
+                             "--set duration_s=2790 --set campaign.horizon_after_onset_s=1290 --out " + dir.string();
+  const CommandResult reach = chaser(preset);
+  ASSERT_EQ(reach.exit_code, 0) << reach.output;
+  for (const char* law : {"hinf", "compliance"}) {
+    const std::string runs = read_file(dir / law / "runs.csv");
+    EXPECT_NE(runs.find(",reach_final_error_x_m,"), std::string::npos) << law;
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;
+  }
+  const std::string table = read_file(dir / "reach.md");
+  EXPECT_NE(table.find("| figure | Table 2 | COMRADE H-inf | H-infinity | COMRADE compliant | compliance |"),
+            std::string::npos) << table;
+  EXPECT_NE(table.find("| runs flown of runs | | 1 of 1 | 1 of 1 |"), std::string::npos) << table;
+  EXPECT_NE(read_file(dir / "reach.csv").find("\nhinf,reach_max_error_x_m,1,"), std::string::npos);
+  const CommandResult again = chaser(preset + " --resume");  // resumable: every law found done
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_file(dir / "reach.md"), table);
+  const CommandResult sync = chaser("campaign scenarios/comrade_sync.yaml --preset comrade-reach --out " + dir.string());
+  EXPECT_EQ(sync.exit_code, 2);
+  EXPECT_NE(sync.output.find("--preset comrade-reach: scenarios/comrade_sync.yaml has no capture section"),
+            std::string::npos) << sync.output;
+  const CommandResult shard =
+      chaser("campaign scenarios/comrade_capture.yaml --preset comrade-reach --shard 0/2 --out " + dir.string());
+  EXPECT_EQ(shard.exit_code, 2);
+  EXPECT_NE(shard.output.find("leave out --mpi, --shard, --cases and --also"), std::string::npos) << shard.output;
   fs::remove_all(dir);
 }
 
