@@ -286,3 +286,17 @@ def test_to_pandas_is_the_runs_table(short_msr):
     assert isinstance(frame, pandas.DataFrame)
     assert list(frame.columns) == list(result.runs.dtype.names) and len(frame) == 5
     assert frame["seed"].tolist() == result.runs["seed"].tolist()
+
+
+def test_a_capture_campaigns_runs_have_the_reachs_fields(tmp_path):
+    """A scenario with a capture section: runs.csv has the reach's columns, and so has the array,
+    value for value (one run cut to 30 s of the reach)."""
+    capture = chaser.load_scenario(str(MSR.parent / "comrade_capture.yaml"),
+                                   overrides=["duration_s=2790", "campaign.horizon_after_onset_s=1290"])
+    c = chaser.campaign(capture, runs=1, cases="none", threads=1, out=str(tmp_path / "c"), progress=False)
+    rows = csv_rows(tmp_path / "c" / "runs.csv")
+    assert "reach_max_rate_z_deg_s" in c.runs.dtype.names
+    assert list(c.runs.dtype.names) == list(rows[0].keys())
+    for name in ("reach_final_error_x_m", "reach_peak_joint_torque_Nm", "reach_table2_met"):
+        assert same_value(rows[0][name], c.runs[name][0]), name
+    assert 0 < c.runs["reach_peak_joint_torque_Nm"][0] < 176
