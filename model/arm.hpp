@@ -81,6 +81,9 @@ struct MultibodySceneParams {
   bool arm_locks = false;
   double lock_timeconst_s = 0.02;               // [s] the locks' solref time constant (critically damped)
   double lock_impedance = 0.9;                  // [-] the locks' solimp d (constant over the violation), < 1
+  // The grasp: a weld "grasp" of the gripper to the target, inactive until engaged at the relative
+  // pose the two have then (plant/multibody/weld.hpp), with the locks' stiffness; false: none.
+  bool grasp_weld = false;
 };
 
 }  // namespace chaser::model

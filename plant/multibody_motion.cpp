@@ -10,6 +10,7 @@
 #include "model/hub_mass_properties.hpp"
 #include "plant/lvlh_eci.hpp"
 #include "plant/multibody/mjcf.hpp"
+#include "plant/multibody/weld.hpp"
 
 namespace chaser::plant {
 
@@ -39,6 +40,7 @@ MultibodyIndices indices_of(const MujocoModel& world) {
   i.joint1_qpos = m.jnt_qposadr[joint1];
   i.joint1_dof = m.jnt_dofadr[joint1];
   i.lock1 = mj_name2id(&m, mjOBJ_EQUALITY, "lock1");
+  i.grasp = mj_name2id(&m, mjOBJ_EQUALITY, "grasp");
   return i;
 }
 
@@ -240,6 +242,7 @@ MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbit
   scene.target_position_m = Vec3::Zero();
   scene.timestep_s = scene_timestep_s;
   scene.arm_locks = true;
+  scene.grasp_weld = true;
   // The locks as stiff as MuJoCo's step allows (time constant 2 h, MuJoCo's stated limit) and 99 %
   // enforced: the stowed arm then gives under the chaser's spin by (1 - d) a0 / (d k), 1.7e-7 rad at
   // 0.5 rad/s (the defaults, 0.02 s and 0.9, gave 2e-4 rad, and the hub 4e-4 m off the rigid plant).
@@ -279,6 +282,14 @@ void set_joint_torques(MultibodyMotionState& state, const std::array<double, mod
 
 void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked) {
   for (int j = 0; j < model::kArmJoints; ++j) state.world.mutable_model().eq_active[params.index.lock1 + j] = locked;
+}
+
+void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state) {
+  multibody::engage_weld_here(state.world, params.index.grasp);
+}
+
+bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state) {
+  return multibody::weld_engaged(state.world, params.index.grasp);
 }
 
 std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionParams& params,

@@ -51,6 +51,7 @@ struct MultibodyIndices {
   int hub = 0, target = 0, first_link = 0;  // body ids: hub, link1..link7, gripper in a row, target
   int hub_qpos = 0, hub_dof = 0, target_qpos = 0, target_dof = 0, joint1_qpos = 0, joint1_dof = 0;
   int lock1 = 0;  // equality ids of lock1..lock7 in a row
+  int grasp = 0;  // equality id of the grasp's weld, gripper to target
 };
 
 struct MultibodyMotionState {
@@ -79,7 +80,8 @@ struct MultibodyMotionParams {
 std::optional<std::string> multibody_problem(const model::Scenario& scenario);
 
 // The scene of `scenario` (which multibody_problem accepts): the hub the chaser less its stowed
-// arm, the arm locked at its stowed angles, the target's body; MuJoCo's step scene_timestep_s.
+// arm, the arm locked at its stowed angles, the target's body, the grasp's weld inactive; MuJoCo's
+// step scene_timestep_s.
 struct MultibodyStart {
   MultibodyMotionParams params;
   MultibodyMotionState state;
@@ -99,6 +101,10 @@ std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionPara
                                                        const MultibodyMotionState& state);
 std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionParams& params,
                                                         const MultibodyMotionState& state);
+
+// The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp).
+void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);
+bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state);
 
 // The environment of the period at t_k: the Earth-orbit plant's (plant/earth_orbit_motion.hpp).
 void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& state, const RigidState& chaser,

@@ -75,16 +75,21 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                    "    <motor name=\"motor{0}\" joint=\"joint{0}\" gear=\"1\" ctrllimited=\"true\" ctrlrange=\"{1} {2}\"/>\n",
                    i, -arm.torque_momentary_Nm, arm.torque_momentary_Nm);
   out += "  </actuator>\n";
+  if (scene.arm_locks || scene.grasp_weld) out += "  <equality>\n";
   if (scene.arm_locks) {
     // q_i = stowed_i: polycoef's constant term with joint2 absent (MuJoCo's <equality><joint>).
-    out += "  <equality>\n";
     for (int i = 0; i < model::kArmJoints; ++i)
       fmt::format_to(std::back_inserter(out),
                      "    <joint name=\"lock{0}\" joint1=\"joint{0}\" polycoef=\"{1} 0 0 0 0\" solref=\"{2} 1\""
                      " solimp=\"{3} {3} 0.001\"/>\n",
                      i + 1, arm.stowed_rad[static_cast<std::size_t>(i)], scene.lock_timeconst_s, scene.lock_impedance);
-    out += "  </equality>\n";
   }
+  if (scene.grasp_weld)  // inactive: engaged with the pose of that moment (plant/multibody/weld.hpp)
+    fmt::format_to(std::back_inserter(out),
+                   "    <weld name=\"grasp\" body1=\"gripper\" body2=\"target\" active=\"false\" solref=\"{0} 1\""
+                   " solimp=\"{1} {1} 0.001\"/>\n",
+                   scene.lock_timeconst_s, scene.lock_impedance);
+  if (scene.arm_locks || scene.grasp_weld) out += "  </equality>\n";
   out += "</mujoco>\n";
   return out;
 }

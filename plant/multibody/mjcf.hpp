@@ -10,7 +10,8 @@
 // is the joint torque [N m], limited to the arm's momentary torque. The world has no gravity and no
 // contact: the orbit's forces and torques are applied per body by the plant, contact comes with
 // the gripper's model. With scene.arm_locks, each joint also has a lock "lock1".."lock7" holding it
-// at arm.stowed_rad (<equality><joint>, its q0 = 0 so the constant is the angle itself).
+// at arm.stowed_rad (<equality><joint>, its q0 = 0 so the constant is the angle itself). With
+// scene.grasp_weld, a weld "grasp" of the gripper to the target, inactive (plant/multibody/weld.hpp).
 #include <string>
 
 #include "model/arm.hpp"

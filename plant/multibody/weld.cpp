@@ -1,0 +1,29 @@
+#include "plant/multibody/weld.hpp"
+
+#include <Eigen/Geometry>
+
+namespace chaser::plant::multibody {
+
+void engage_weld_here(MujocoModel& world, int equality) {
+  mjModel& m = world.mutable_model();
+  mjData& d = world.data();
+  mj_kinematics(&m, &d);  // xpos and xquat of the current qpos
+  const int b1 = m.eq_obj1id[equality], b2 = m.eq_obj2id[equality];
+  const Vec3 x1(d.xpos[3 * b1], d.xpos[3 * b1 + 1], d.xpos[3 * b1 + 2]);
+  const Vec3 x2(d.xpos[3 * b2], d.xpos[3 * b2 + 1], d.xpos[3 * b2 + 2]);
+  const Quat q1(d.xquat[4 * b1], d.xquat[4 * b1 + 1], d.xquat[4 * b1 + 2], d.xquat[4 * b1 + 3]);
+  const Quat q2(d.xquat[4 * b2], d.xquat[4 * b2 + 1], d.xquat[4 * b2 + 2], d.xquat[4 * b2 + 3]);
+  const Vec3 p = q1.conjugate() * (x2 - x1);
+  const Quat q_rel = (q1.conjugate() * q2).normalized();
+  mjtNum* data = m.eq_data + static_cast<std::ptrdiff_t>(mjNEQDATA) * equality;
+  data[0] = data[1] = data[2] = 0.0;  // the anchor: body2's origin
+  data[3] = p.x(), data[4] = p.y(), data[5] = p.z();
+  data[6] = q_rel.w(), data[7] = q_rel.x(), data[8] = q_rel.y(), data[9] = q_rel.z();
+  m.eq_active[equality] = 1;
+}
+
+void release_weld(MujocoModel& world, int equality) { world.mutable_model().eq_active[equality] = 0; }
+
+bool weld_engaged(const MujocoModel& world, int equality) { return world.model().eq_active[equality] != 0; }
+
+}  // namespace chaser::plant::multibody
