@@ -11,6 +11,7 @@
 #include "model/arm.hpp"
 #include "plant/multibody/mjcf.hpp"
 #include "plant/multibody/mujoco_model.hpp"
+#include "tests/plant/multibody/moving_scene.hpp"
 
 namespace chaser::plant::multibody {
 namespace {
@@ -21,29 +22,20 @@ struct Drift {
   double largest_joint_angle_rad = 0;
 };
 
-// The default scene for 1 s: ENVISAT's inertia drifting at 1 cm/s and spinning at 2.5 deg/s
-// (COMRADE's tumble: |p| = 78 kg m/s, |L| ~ 5,400 kg m^2/s), the hub at rest, the arm bent, each
-// joint driven by a 2 N m sine of its own frequency, small enough that no joint reaches its limit
-// (a limit is a stiff constraint whose contact spoils any integrator's order).
+// The moving scene (moving_scene.hpp) for 1 s, its joints driven (no joint reaches its limit: a
+// limit is a stiff constraint whose contact spoils any integrator's order).
 Drift momentum_drift_over_one_second(double timestep_s, double friction_Nm) {
   model::MultibodySceneParams scene;
   scene.timestep_s = timestep_s;
   for (auto& link : scene.arm.links) link.friction_Nm = friction_Nm;
-  scene.hub_inertia_kgm2 = Vec3(1850.0, 1900.0, 1300.0).asDiagonal();
-  scene.target_inertia_kgm2 << 17023.0, 397.0, -2171.0, 397.0, 124826.0, 344.0, -2171.0, 344.0, 129112.0;
-  MujocoModel model(mjcf_of(scene));
+  MujocoModel model = moving_scene(scene);
   mjData& d = model.data();
-  const int target_dof = model.model().jnt_dofadr[model.joint("target_free")];
-  d.qvel[target_dof + 0] = 0.01;
-  d.qvel[target_dof + 4] = 2.5 * std::numbers::pi / 180.0;
   const int joint1 = model.model().jnt_qposadr[model.joint("joint1")];
-  for (int j = 0; j < model::kArmJoints; ++j) d.qpos[joint1 + j] = 0.3 * std::sin(j + 1.0);
-  model.forward();
   const Momentum p0 = model.momentum();
   Drift drift;
   const int steps = static_cast<int>(std::lround(1.0 / timestep_s));
   for (int k = 0; k < steps; ++k) {
-    for (int j = 0; j < model::kArmJoints; ++j) d.ctrl[j] = 2.0 * std::sin((1.0 + 0.7 * j) * d.time);
+    drive_joints(model);
     model.step();
     for (int j = 0; j < model::kArmJoints; ++j)
       drift.largest_joint_angle_rad = std::max(drift.largest_joint_angle_rad, std::abs(d.qpos[joint1 + j]));

@@ -13,6 +13,7 @@
 #include "plant/multibody/mjcf.hpp"
 #include "plant/multibody/mujoco_model.hpp"
 #include "plant/multibody/weld.hpp"
+#include "tests/plant/multibody/moving_scene.hpp"
 
 namespace chaser::plant::multibody {
 namespace {
@@ -32,32 +33,21 @@ RelativePose gripper_to_target(MujocoModel& model) {
   return {qg.conjugate() * (xt - xg), qg.conjugate() * qt};
 }
 
-// The default scene with the weld, the target 4 m ahead drifting at 1 cm/s and spinning at 2.5 deg/s,
-// the arm bent; `torques`: each joint driven by a 2 N m sine, else no joint torque and no friction.
-MujocoModel moving_scene(bool torques) {
+// The moving scene (moving_scene.hpp) with the weld, the target 4 m ahead; `torques`: the joints
+// driven, else no joint torque and no friction.
+MujocoModel weld_scene(bool torques) {
   model::MultibodySceneParams scene;
   scene.grasp_weld = true;
   scene.target_position_m = Vec3(4.0, 0.5, -0.3);
   if (!torques)
     for (auto& link : scene.arm.links) link.friction_Nm = 0.0;
-  scene.hub_inertia_kgm2 = Vec3(1850.0, 1900.0, 1300.0).asDiagonal();
-  scene.target_inertia_kgm2 << 17023.0, 397.0, -2171.0, 397.0, 124826.0, 344.0, -2171.0, 344.0, 129112.0;
-  MujocoModel model(mjcf_of(scene));
-  mjData& d = model.data();
-  const int target_dof = model.model().jnt_dofadr[model.joint("target_free")];
-  d.qvel[target_dof + 0] = 0.01;
-  d.qvel[target_dof + 4] = 2.5 * std::numbers::pi / 180.0;
-  const int joint1 = model.model().jnt_qposadr[model.joint("joint1")];
-  for (int j = 0; j < model::kArmJoints; ++j) d.qpos[joint1 + j] = 0.3 * std::sin(j + 1.0);
-  model.forward();
-  return model;
+  return moving_scene(scene);
 }
 
 void step_for(MujocoModel& model, double seconds, bool torques) {
-  mjData& d = model.data();
   const int steps = static_cast<int>(std::lround(seconds / model.model().opt.timestep));
   for (int k = 0; k < steps; ++k) {
-    for (int j = 0; j < model::kArmJoints; ++j) d.ctrl[j] = torques ? 2.0 * std::sin((1.0 + 0.7 * j) * d.time) : 0.0;
+    if (torques) drive_joints(model);
     model.step();
   }
 }
@@ -69,7 +59,7 @@ double kinetic_energy_J(MujocoModel& model) {
 }
 
 TEST(Weld, EngagedItHoldsThePoseOfItsMomentNotQpos0s) {
-  MujocoModel model = moving_scene(true);
+  MujocoModel model = weld_scene(true);
   const int grasp = mj_name2id(&model.model(), mjOBJ_EQUALITY, "grasp");
   ASSERT_GE(grasp, 0);
   EXPECT_FALSE(weld_engaged(model, grasp));
@@ -93,7 +83,7 @@ TEST(Weld, EngagedItHoldsThePoseOfItsMomentNotQpos0s) {
 }
 
 TEST(Weld, ItsForcesAreInternalAndEngagingIsAnInelasticImpact) {
-  MujocoModel model = moving_scene(false);
+  MujocoModel model = weld_scene(false);
   const int grasp = mj_name2id(&model.model(), mjOBJ_EQUALITY, "grasp");
   step_for(model, 0.3, false);
   const Momentum p0 = model.momentum();
