@@ -9,6 +9,7 @@
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
 #include "campaign/run_row.hpp"
+#include "model/arm.hpp"
 #include "sim/reach_result.hpp"
 
 namespace chaser::campaign {
@@ -54,7 +55,8 @@ const std::array<PaperAxes, kGripperFigures> kGripperCompliance = {{
     {{{0.520, 0.335}, {0.286, 0.217}, {0.434, 0.314}}},
 }};
 
-constexpr double kRepeatedPeakTorqueNm = 176.0;  // [N m] COMRADE 2018, the joints' repeated peak torque
+// [N m] the joints' repeated peak torque: COMRADE 2018's, the default arm's.
+const double kRepeatedPeakTorqueNm = model::ArmParams{}.torque_repeated_peak_Nm;
 
 // How each gripper figure is shown: position and velocity in mm and mm/s.
 struct GripperFigure {
@@ -64,16 +66,6 @@ struct GripperFigure {
 };
 constexpr std::array<GripperFigure, kGripperFigures> kGripperShown = {{
     {"position", "mm", 1e3}, {"velocity", "mm/s", 1e3}, {"attitude", "deg", 1.0}, {"angular rate", "deg/s", 1.0}}};
-
-// Table 2's gripper limit [runs.csv's unit] per figure and axis.
-double gripper_limit(int figure, int axis) {
-  switch (figure) {
-    case 0: return sim::kTable2GripperErrorM[axis];
-    case 1: return sim::kTable2GripperVelocityMps;
-    case 2: return sim::kTable2GripperAttitudeDeg;
-    default: return sim::kTable2GripperRateDegps;
-  }
-}
 
 bool is_hinf(const ReachColumn& c) { return c.law == "hinf"; }
 const char* law_label(const ReachColumn& c) { return is_hinf(c) ? "H-infinity" : "compliance"; }
@@ -197,15 +189,15 @@ std::string reach_markdown(const std::vector<ReachColumn>& columns) {
     const GripperFigure& shown = kGripperShown[static_cast<std::size_t>(g)];
     const char* format = shown.scale > 1.0 ? "{:.1f}" : "{:.3f}";
     for (int a = 0; a < 3; ++a) {
-      const double limit = gripper_limit(g, a);
+      const double limit = sim::table2_gripper_limit(g, a);
       out += fmt::format("| {} {} [{}] | +- {:g} |", shown.name, "xyz"[a], shown.unit, limit * shown.scale);
+      const auto gi = static_cast<std::size_t>(g), ai = static_cast<std::size_t>(a);
       for (const ReachColumn& c : columns) {
-        const auto ga = std::pair(static_cast<std::size_t>(g), static_cast<std::size_t>(a));
-        const PaperValue& p = (is_hinf(c) ? kGripperHinf : kGripperCompliance)[ga.first][ga.second];
-        const FigureStats& end = c.gripper_final[ga.first][ga.second];
+        const PaperValue& p = (is_hinf(c) ? kGripperHinf : kGripperCompliance)[gi][ai];
+        const FigureStats& end = c.gripper_final[gi][ai];
         out += fmt::format(" {} | {} | {} |", mean_sd(p.mean, p.sd, shown.scale, shown.scale > 1.0 ? "{:.0f}" : "{:.3f}"),
                            mean_sd(end.mean, end.sd, shown.scale, format),
-                           p95_verdict(c.gripper_max[ga.first][ga.second].p95, limit, shown.scale, format));
+                           p95_verdict(c.gripper_max[gi][ai].p95, limit, shown.scale, format));
       }
       out += '\n';
     }
@@ -242,8 +234,8 @@ std::string reach_csv(const std::vector<ReachColumn>& columns) {
       for (int a = 0; a < 3; ++a) {
         const auto gi = static_cast<std::size_t>(g), ai = static_cast<std::size_t>(a);
         const PaperValue paper = (is_hinf(c) ? kGripperHinf : kGripperCompliance)[gi][ai];
-        row(c, reach_column_name(false, g, a), c.gripper_final[gi][ai], gripper_limit(g, a), paper);
-        row(c, reach_column_name(true, g, a), c.gripper_max[gi][ai], gripper_limit(g, a), none);
+        row(c, reach_column_name(false, g, a), c.gripper_final[gi][ai], sim::table2_gripper_limit(g, a), paper);
+        row(c, reach_column_name(true, g, a), c.gripper_max[gi][ai], sim::table2_gripper_limit(g, a), none);
       }
     row(c, "reach_peak_joint_torque_Nm", c.peak_joint_torque_Nm, kRepeatedPeakTorqueNm, none);
     const double met = c.table2_met.runs > 0 ? static_cast<double>(c.table2_met.events) / c.table2_met.runs : kNaN;

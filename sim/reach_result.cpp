@@ -1,5 +1,6 @@
 #include "sim/reach_result.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -26,10 +27,11 @@ void add_reach_period(ReachResult& r, const plant::GripperTruth& gripper, double
 bool gripper_meets_table2(const ReachResult& r) {
   constexpr double kDeg = std::numbers::pi / 180.0;
   if (!r.flown || r.hold_periods == 0) return false;
-  for (int k = 0; k < 3; ++k)
-    if (r.max_gripper_error_m(k) > kTable2GripperErrorM[k] || r.max_gripper_attitude_rad(k) > kTable2GripperAttitudeDeg * kDeg ||
-        r.max_gripper_velocity_mps(k) > kTable2GripperVelocityMps || r.max_gripper_rate_radps(k) > kTable2GripperRateDegps * kDeg)
-      return false;
+  const std::array<Vec3, 4> figures = {r.max_gripper_error_m, r.max_gripper_velocity_mps,
+                                       r.max_gripper_attitude_rad / kDeg, r.max_gripper_rate_radps / kDeg};
+  for (int f = 0; f < 4; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (figures[static_cast<std::size_t>(f)](k) > table2_gripper_limit(f, k)) return false;
   return true;
 }
 

@@ -22,6 +22,16 @@ inline constexpr double kTable2ChaserPositionM = 0.05;                          
 inline constexpr double kTable2ChaserVelocityMps = 0.005;                       // [m/s]
 inline constexpr double kTable2ChaserAttitudeDeg = 2.0;                         // [deg]
 inline constexpr double kTable2ChaserRateDegps = 0.5;                           // [deg/s]
+// The gripper's Table 2 limit per figure (0 position [m], 1 velocity [m/s], 2 attitude [deg], 3 rate
+// [deg/s], the order of COMRADE Table 6) and axis (x the approach).
+constexpr double table2_gripper_limit(int figure, int axis) {
+  switch (figure) {
+    case 0: return kTable2GripperErrorM[axis];
+    case 1: return kTable2GripperVelocityMps;
+    case 2: return kTable2GripperAttitudeDeg;
+    default: return kTable2GripperRateDegps;
+  }
+}
 // The hold judged starts this long after the tool's path ends (its settling).
 inline constexpr double kReachSettleS = 10.0;  // [s]
 

@@ -29,13 +29,7 @@ model::Scenario arm_scenario() {
 }
 
 RigidState start(const model::Scenario& s) {
-  RigidState x;
-  x.mass_kg = s.chaser.mass_kg;
-  x.r_lvlh_m = Vec3(3.0, -6.0, 2.0);
-  x.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
-  x.q_inertial_from_body = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.3, 0.5, 0.8).normalized()));
-  x.omega_body_radps = Vec3(1e-3, -2e-3, 0.5e-3);
-  return x;
+  return testing::chaser_start(s.chaser.mass_kg, Vec3(3.0, -6.0, 2.0));
 }
 
 // The stowed tool point and its attitude in the chaser's body frame, from the scenario's arm: link i

@@ -5,6 +5,7 @@
 #include "model/arm.hpp"
 #include "model/scenario.hpp"
 #include "model/hub_mass_properties.hpp"
+#include "plant/rigid_body.hpp"
 
 namespace chaser::plant::testing {
 
@@ -57,6 +58,18 @@ inline void add_stowed_arm(model::Scenario& s, double hub_kg = 1600.0,
   s.chaser.mass_kg = chaser.mass_kg;
   s.chaser.com_body_m = chaser.com_body_m;
   s.chaser.inertia_kgm2 = chaser.inertia_kgm2;
+}
+
+// The chaser's state at the tests' start: `r_lvlh_m` from the target, drifting at a few cm/s and
+// turning slowly about a skew axis.
+inline RigidState chaser_start(double mass_kg, const Vec3& r_lvlh_m = Vec3(3.0, -100.0, 2.0)) {
+  RigidState x;
+  x.mass_kg = mass_kg;
+  x.r_lvlh_m = r_lvlh_m;
+  x.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
+  x.q_inertial_from_body = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.3, 0.5, 0.8).normalized()));
+  x.omega_body_radps = Vec3(1e-3, -2e-3, 0.5e-3);
+  return x;
 }
 
 }  // namespace chaser::plant::testing

@@ -22,13 +22,7 @@ model::Scenario circle_scenario() {
 }
 
 RigidState start() {
-  RigidState x;
-  x.mass_kg = 1600.0;
-  x.r_lvlh_m = Vec3(3.0, -100.0, 2.0);
-  x.v_lvlh_mps = Vec3(0.01, 0.02, -0.03);
-  x.q_inertial_from_body = Quat(Eigen::AngleAxisd(1.1, Vec3(-0.3, 0.5, 0.8).normalized()));
-  x.omega_body_radps = Vec3(1e-3, -2e-3, 0.5e-3);
-  return x;
+  return testing::chaser_start(1600.0);
 }
 
 // Flies n periods of a gentle command (T1 and T3 a tenth of each period).
