@@ -59,7 +59,7 @@ SchemeOutcome judge_fdir(const sim::FdirResult& f, const RunRecord& r) {
 ReachFigures reach_figures(const sim::ReachResult& reach) {
   if (!reach.flown) {
     const Vec3 none = Vec3::Constant(kNaN);
-    return {none, none, none, none, none, none, none, none, kNaN, kNaN, false};
+    return {none, none, none, none, none, none, none, none, kNaN, kNaN, false, kNaN, false};
   }
   const plant::GripperTruth& g = reach.final_gripper;
   const double deg = 1.0 / kDegToRad;
@@ -73,7 +73,9 @@ ReachFigures reach_figures(const sim::ReachResult& reach) {
           reach.max_gripper_rate_radps * deg,
           *std::max_element(reach.peak_joint_torque_Nm.begin(), reach.peak_joint_torque_Nm.end()),
           reach.min_tool_clearance_m,
-          sim::gripper_meets_table2(reach)};
+          sim::gripper_meets_table2(reach),
+          reach.grasp.captured_s,
+          sim::grasp_meets_table2(reach.grasp)};
 }
 
 RunRecord base_record(const RunSetup& setup) {
@@ -122,7 +124,8 @@ void scheme_columns(std::vector<RunColumn>& columns, const std::string& name, in
                        [](const RunRecord& r, int i, std::string& o) { number(o, outcome(r, i).glr_max_before_onset); }, s});
 }
 
-// The reach's columns (ReachFigures): per figure and axis, then the torque, the clearance and the verdict.
+// The reach's columns (ReachFigures): per figure and axis, then the torque, the clearance and the
+// verdict; then the grasp's two.
 void reach_columns(std::vector<RunColumn>& columns) {
   // index: (4 over_hold + figure) * 3 + axis, in ReachFigures' order.
   static constexpr std::array<Vec3 ReachFigures::*, 8> kFields = {
@@ -140,6 +143,8 @@ void reach_columns(std::vector<RunColumn>& columns) {
       {"reach_peak_joint_torque_Nm", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.peak_joint_torque_Nm); }},
       {"reach_min_tool_clearance_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.min_tool_clearance_m); }},
       {"reach_table2_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.table2_met); }},
+      {"grasp_captured_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.grasp_captured_s); }},
+      {"grasp_table2_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.grasp_table2_met); }},
   });
 }
 

@@ -40,6 +40,10 @@ struct ReachFigures {
   double peak_joint_torque_Nm;   // [N m] the largest command over the joints and the reach
   double min_tool_clearance_m;   // [m] the tool point from the keep-out volume, over the reach
   bool table2_met;               // sim::gripper_meets_table2
+  // The grasp that follows the reach (sim::GraspResult): when the gripper locked on the fixture (NaN:
+  // not captured within the run), and whether Table 2 held at the jaws' closure.
+  double grasp_captured_s;       // [s]
+  bool grasp_table2_met;         // sim::grasp_meets_table2
 };
 
 struct RunRecord {

@@ -159,7 +159,7 @@ int campaign_mpi(const CampaignArgs& args) {
 // One fault-free campaign of `args` into out_dir/name with `first_override` before the user's --set;
 // false after printing what went wrong (the exit code in `code`).
 bool run_case_campaign(const CampaignArgs& args, const std::string& scenario_path, const std::string& name,
-                       const std::string& first_override, int& code) {
+                       const std::vector<std::string>& first_overrides, int& code) {
   CampaignArgs sub = args;
   sub.preset.clear();
   sub.also.clear();
@@ -167,7 +167,7 @@ bool run_case_campaign(const CampaignArgs& args, const std::string& scenario_pat
   sub.cases = "none";
   if (sub.runs.empty()) sub.runs = kTable5Runs;
   sub.out_dir = (std::filesystem::path(args.out_dir) / name).string();
-  if (!first_override.empty()) sub.overrides.insert(sub.overrides.begin(), first_override);  // the user's --set win
+  sub.overrides.insert(sub.overrides.begin(), first_overrides.begin(), first_overrides.end());  // the user's --set win
   const std::optional<Prepared> prepared = prepare(sub);
   if (!prepared) {
     code = kExitBadInput;
@@ -213,7 +213,9 @@ int comrade_table5(const CampaignArgs& args) {
   for (const Case& c : cases) {
     std::cerr << fmt::format("comrade-table5: case {}\n", c.name);
     int code = kExitOk;
-    if (!run_case_campaign(args, c.scenario_path, c.name, c.override_text, code)) return code;
+    std::vector<std::string> overrides;
+    if (!c.override_text.empty()) overrides.push_back(c.override_text);
+    if (!run_case_campaign(args, c.scenario_path, c.name, overrides, code)) return code;
     std::string error;
     const auto column = campaign::read_table5_column(
         c.name, (std::filesystem::path(args.out_dir) / c.name / "runs.csv").string(), error);
@@ -248,11 +250,17 @@ int comrade_reach(const CampaignArgs& args) {
                              args.scenario_path);
     return kExitBadInput;
   }
+  // Each run ends with the reach, when the tool leaves the pre-grasp pose: Tables 5 and 6 are the
+  // reach's (the grasp that follows is judged by each run of the scenario as it is).
+  const model::Scenario& s = *loaded->scenario;
+  const double reach_end_s = std::min(s.duration_s, s.capture->approach_start_s());
+  const std::string horizon = fmt::format("campaign.horizon_after_onset_s={}", reach_end_s - s.campaign.onset_s);
   std::vector<campaign::ReachColumn> columns;
   for (const char* law : {"hinf", "compliance"}) {
     std::cerr << fmt::format("comrade-reach: capture.law {}\n", law);
     int code = kExitOk;
-    if (!run_case_campaign(args, args.scenario_path, law, fmt::format("capture.law={}", law), code)) return code;
+    if (!run_case_campaign(args, args.scenario_path, law, {fmt::format("capture.law={}", law), horizon}, code))
+      return code;
     std::string error;
     const auto column = campaign::read_reach_column(
         law, (std::filesystem::path(args.out_dir) / law / "runs.csv").string(), error);

@@ -124,6 +124,8 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.q_target_from_tool = p.q_target_from_body;
   p.grasp_point_target_m = s.target.body->grasp_point_target_m;
   p.pre_grasp_target_m = p.grasp_point_target_m - c.standoff_m * (p.q_target_from_tool * Vec3::UnitX());
+  p.approach_duration_s = c.approach_duration_s;
+  p.grasp = make_grasp(c);
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
   // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
   arm::JointVector stowed;
@@ -146,6 +148,16 @@ void hold_estimates(ReachState& state, const NavEstimate& nav, const std::option
 }
 
 arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, double t_s) {
+  if (params.approach_duration_s > 0.0 && t_s >= params.grasp.approach_start_s) {  // onto the fixture
+    const Blend b = quintic(t_s - params.grasp.approach_start_s, params.approach_duration_s);
+    const Vec3 travel = params.grasp_point_target_m - params.pre_grasp_target_m;
+    arm::FrameMotion f;
+    f.r_m = params.pre_grasp_target_m + b.s * travel;
+    f.v_mps = b.rate * travel;
+    f.a_mps2 = b.acceleration * travel;
+    f.q_world_from_frame = params.q_target_from_tool;
+    return f;
+  }
   const Blend b = quintic(t_s - params.start_s, params.path_duration_s);
   const Vec3 travel = params.pre_grasp_target_m - state.tool_start_target_m;
   const Eigen::AngleAxisd turn(state.q_target_from_tool_start.conjugate() * params.q_target_from_tool);
@@ -193,6 +205,7 @@ void update_from_camera(const ReachParams& params, ReachState& state, const mode
   state.frame_offset_m += kCameraGain * (offset_m - state.frame_offset_m);
   state.frame_rotation_rad += kCameraGain * (rotation_rad - state.frame_rotation_rad);
   ++state.camera_samples;
+  if (params.approach_duration_s > 0.0) grasp_camera_sample(params.grasp, state.grasp, sample, state.nav_t_s);
 }
 
 model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,
@@ -205,6 +218,7 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
     q(j) = joints.q_rad[static_cast<std::size_t>(j)];
     q_dot(j) = joints.q_dot_radps[static_cast<std::size_t>(j)];
   }
+  if (params.approach_duration_s > 0.0) grasp_joint_step(params.grasp, state.grasp, joints, t_s, command);
   const Carried c = carry(params, state, t_s);
   const arm::ArmKinematics kinematics = arm::arm_kinematics(params.servicer, c.r_hub_m, c.q_inertial_from_body, q);
   ToolPoseSample& record = state.tool_history[static_cast<std::size_t>(state.tool_history_next)];

@@ -21,6 +21,7 @@
 #include "flight/arm/servicer_arm.hpp"
 #include "flight/arm/task_space.hpp"
 #include "flight/arm_hinf_control.hpp"
+#include "flight/grasp.hpp"
 #include "flight/navigation.hpp"
 #include "flight/target_estimator.hpp"
 #include "model/capture.hpp"
@@ -45,6 +46,10 @@ struct ReachParams {
   Vec3 grasp_point_target_m = Vec3::Zero();  // the fixture (its frame: q_target_from_tool, as the camera sees it)
   Vec3 pre_grasp_target_m = Vec3::Zero();
   Quat q_target_from_tool = Quat::Identity();
+  // The approach from the pre-grasp pose onto the fixture and the grasp (flight/grasp.hpp); without
+  // a grasp (approach_duration_s 0) the tool stays at the pre-grasp pose.
+  double approach_duration_s = 0.0;          // [s]
+  GraspParams grasp;
   double torque_limit_Nm = 176.0;            // [N m] each joint's command, the drives' repeated peak
   arm::ComplianceGains gains;                // the compliance law's, designed at the stowed arm
   ArmHinfParams hinf;                        // the H-infinity law's loops
@@ -98,7 +103,9 @@ struct ReachState {
   Vec3 held_torque_body_Nm = Vec3::Zero();
   arm::JointVector joint_torque_Nm = arm::JointVector::Zero();
   arm::TaskErrors errors;
+  GraspState grasp;
 };
+
 
 // The period's estimates for the joint loop (called by step_flight every period of the reach).
 void hold_estimates(ReachState& state, const NavEstimate& nav, const std::optional<TargetEstimate>& target, double t_s,
@@ -122,7 +129,8 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
                              double t_s);
 
 // The tool's path in the target's frame at t_s (a quintic blend from the start pose to the
-// pre-grasp pose over path_duration_s, the attitude turned about one axis).
+// pre-grasp pose over path_duration_s, the attitude turned about one axis; from the grasp's
+// approach_start_s, a second from the pre-grasp pose onto the fixture over approach_duration_s).
 arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, double t_s);
 
 }  // namespace chaser::flight

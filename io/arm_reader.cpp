@@ -36,6 +36,16 @@ void read_gripper(MapReader& m, model::GripperParams& out) {
   m.number("mass_kg", Range::left_open(0.0, kMaxLinkMassKg), out.mass_kg);
   m.vec3("com_m", offset, out.com_link7_m);
   m.vec3("inertia_kgm2", Range::left_open(0.0, 1e6), out.inertia_kgm2);
+  if (m.has("jaws")) read_section(m, "jaws", [&](MapReader& j) {  // optional: model/arm.hpp's default
+    model::JawParams& jaws = out.jaws;
+    j.number("open_half_gap_m", Range::left_open(0.0, 0.5), jaws.open_half_gap_m);
+    j.vec3("finger_half_extents_m", Range::left_open(0.0, 0.5), jaws.finger_half_extents_m);
+    j.number("finger_mass_kg", Range::left_open(0.0, kMaxLinkMassKg), jaws.finger_mass_kg);
+    j.number("closing_force_N", Range::left_open(0.0, 1e4), jaws.closing_force_N);
+    j.number("servo_stiffness_Npm", Range::left_open(0.0, 1e7), jaws.servo_stiffness_Npm);
+    j.number("servo_damping_Nspm", Range::left_open(0.0, 1e5), jaws.servo_damping_Nspm);
+    j.number("palm_setback_m", Range::left_open(0.0, 0.5), jaws.palm_setback_m);
+  });
 }
 
 void read_arm(MapReader& r, model::ArmParams& out) {

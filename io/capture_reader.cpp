@@ -29,6 +29,17 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
     m.number("tool_bandwidth_radps", Range::left_open(0.0, 100.0), c.tool_bandwidth_radps);
     m.number("joint_bandwidth_radps", Range::left_open(0.0, 100.0), c.joint_bandwidth_radps);
     m.number("damping_ratio", Range::closed(0.1, 10.0), c.damping_ratio);
+    // The grasp's keys are optional (model/capture.hpp's defaults).
+    if (m.has("pre_grasp_hold_s")) m.number("pre_grasp_hold_s", Range::closed(0.0, 1e4), c.pre_grasp_hold_s);
+    if (m.has("approach_duration_s")) m.number("approach_duration_s", Range::left_open(0.0, 1e4), c.approach_duration_s);
+    if (std::uint64_t samples = 0; m.has("closure_samples") && m.count("closure_samples", samples)) {
+      if (samples < 1 || samples > 100)
+        m.diagnostics().add(m.path_of("closure_samples"), fmt::format("must be in [1, 100] (got {})", samples));
+      else
+        c.closure_samples = static_cast<int>(samples);
+    }
+    if (m.has("lock_dwell_s")) m.number("lock_dwell_s", Range::closed(0.0, 10.0), c.lock_dwell_s);
+    if (m.has("grasp_timeout_s")) m.number("grasp_timeout_s", Range::left_open(0.0, 1e4), c.grasp_timeout_s);
   });
 }
 

@@ -103,6 +103,10 @@ void read_target_body(MapReader& r, model::TargetBodyParams& out) {
   r.angle_deg("spin_rate_deg_s", Range::closed(0.0, kMaxSpinRateDegps), out.spin_rate_radps);
   r.vec3("grasp_point_target_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.grasp_point_target_m);
   r.vec3("capture_point_target_m", Range::closed(-kMaxLayoutExtentM, kMaxLayoutExtentM), out.capture_point_target_m);
+  // The fixture's lip (optional: model/arm.hpp's default), half extents in the grasp pose's axes.
+  if (r.has("fixture")) read_section(r, "fixture", [&](MapReader& m) {
+    m.vec3("half_extents_m", Range::left_open(0.0, 1.0), out.fixture.half_extents_m);
+  });
   read_keep_out(r, out.keep_out);
 }
 

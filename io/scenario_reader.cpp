@@ -108,6 +108,7 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
       m.number("latency_s", Range::non_negative(), c.latency_s);
       m.angle_deg("fov_half_angle_deg", Range::left_open(0.0, 90.0), c.fov_half_angle_rad);
       m.number("range_max_m", Range::left_open(0.0, 100.0), c.range_max_m);
+      m.number("setback_m", Range::closed(0.0, 2.0), c.setback_m);
     });
   }
 }

@@ -31,11 +31,35 @@ struct ArmLinkParams {
   double armature_kgm2 = 0.0;                   // [kg m^2] rotor inertia reflected through the gear
 };
 
+// The gripper's jaws (COMRADE 2018, sec. 4: at the grasping point the gripper "closes rapidly
+// establishing a form closure assuring that the LAR cannot escape", then "closes rigidly"): two
+// fingers either side of the tool point that slide towards it along the tool's z, each a plate
+// driven by a position servo with a force limit, and a palm behind them; the lip of the adapter
+// ring enters between the fingers along the tool's x. Sized for COMRADE Table 2's envelope: a
+// fixture up to 22 mm off along z still lies between the open fingers.
+struct JawParams {
+  double open_half_gap_m = 0.040;                          // [m] each finger's inner face from the tool point, open
+  Vec3 finger_half_extents_m = Vec3(0.03, 0.04, 0.004);    // [m] tool axes: x along the approach, z the closing
+  double finger_mass_kg = 0.3;                             // [kg] each, part of the gripper's mass_kg
+  double closing_force_N = 60.0;                           // [N] each finger's drive at most
+  double servo_stiffness_Npm = 2000.0;                     // [N/m] the fingers' position servo
+  double servo_damping_Nspm = 50.0;                        // [N s/m] critically damped with the finger's mass
+  double palm_setback_m = 0.04;                            // [m] the palm's face behind the tool point along x
+};
+
 struct GripperParams {
   Vec3 position_link7_m = Vec3(0.3, 0.0, 0.0);  // [m] the gripper's tool point in link 7's frame
-  double mass_kg = 10.0;                         // [kg]
-  Vec3 com_link7_m = Vec3(0.15, 0.0, 0.0);       // [m]
-  Vec3 inertia_kgm2 = Vec3(0.05, 0.1, 0.1);      // [kg m^2] principal, about its CoM
+  double mass_kg = 10.0;                         // [kg] with its jaws
+  Vec3 com_link7_m = Vec3(0.15, 0.0, 0.0);       // [m] with the jaws open
+  Vec3 inertia_kgm2 = Vec3(0.05, 0.1, 0.1);      // [kg m^2] principal, about its CoM, with the jaws open
+  JawParams jaws;
+};
+
+// The grasping fixture: the launcher adapter ring's lip at the grasp point, a plate in the grasp
+// pose's axes (x the tool's approach, z across the lip, the jaws' closing direction), centred on
+// the grasp point. ENVISAT's ring is 1.2 m across; its lip a 10 mm flange standing 60 mm proud.
+struct FixtureParams {
+  Vec3 half_extents_m = Vec3(0.03, 0.10, 0.005);  // [m] grasp pose axes
 };
 
 struct ArmParams {
@@ -84,6 +108,14 @@ struct MultibodySceneParams {
   // The grasp: a weld "grasp" of the gripper to the target, inactive until engaged at the relative
   // pose the two have then (plant/multibody/weld.hpp), with the locks' stiffness; false: none.
   bool grasp_weld = false;
+  // The grasp's contact: the gripper's jaws (arm.gripper.jaws: two slide joints "finger_a" and
+  // "finger_b", their position servos after the joints' motors) and the fixture's lip on the target
+  // at fixture_target_m with the axes q_target_from_fixture, contact on between jaws and lip only;
+  // false: no jaws, contact off (the text is then what it was without these fields).
+  bool grasp_contact = false;
+  Vec3 fixture_target_m = Vec3::Zero();            // [m] the grasp point, target axes from its CoM
+  Quat q_target_from_fixture = Quat::Identity();   // the grasp pose's axes (x the approach)
+  FixtureParams fixture;
 };
 
 }  // namespace chaser::model

@@ -25,7 +25,28 @@ struct CaptureParams {
   double tool_bandwidth_radps = 3.0;
   double joint_bandwidth_radps = 1.0;
   double damping_ratio = 3.0;
+  // The grasp (COMRADE 2018, sec. 4): after pre_grasp_hold_s at the pre-grasp pose the tool moves
+  // onto the fixture over approach_duration_s (a quintic, rest to rest); once it has arrived, the
+  // jaws close when closure_samples camera samples in a row put the fixture inside the grappling
+  // envelope (Table 2), and the gripper locks rigidly once both fingers have held the lip for
+  // lock_dwell_s. No closure within grasp_timeout_s of the approach's end: the grasp is abandoned
+  // (the jaws stay open). Captured, the combined controller flies on, its tool held on the fixture
+  // (rigidisation, with the thrusters inhibited and the joints braked, is not built).
+  double pre_grasp_hold_s = 30.0;     // [s]
+  double approach_duration_s = 30.0;  // [s] the standoff covered at 5 mm/s on average
+  int closure_samples = 3;            // [-] consecutive arm camera samples
+  double lock_dwell_s = 0.2;          // [s]
+  double grasp_timeout_s = 30.0;      // [s]
+  // [s] when the tool leaves the pre-grasp pose for the fixture: the reach ends, the capture begins.
+  double approach_start_s() const { return start_s + path_duration_s + pre_grasp_hold_s; }
 };
+
+// COMRADE 2018 Table 2: the gripper's grappling envelope about the fixture (x the approach) and
+// the relative motion allowed at the grasp.
+inline constexpr double kGrapplingEnvelopeM[3] = {0.010, 0.022, 0.022};  // [m]
+inline constexpr double kGrapplingEnvelopeDeg = 2.74;                     // [deg] about each axis
+inline constexpr double kGraspRelativeVelocityMps = 0.005;                // [m/s] per axis
+inline constexpr double kGraspRelativeRateDegps = 0.1;                    // [deg/s] per axis
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
 

@@ -39,6 +39,31 @@ std::array<BodyMassProperties, kArmJoints + 1> arm_bodies(const ArmParams& arm,
   return out;
 }
 
+GripperBodies gripper_bodies(const GripperParams& g) {
+  const JawParams& jaws = g.jaws;
+  const Vec3 h = jaws.finger_half_extents_m;
+  const double m_f = jaws.finger_mass_kg;
+  const Vec3 plate = m_f / 3.0 * Vec3(h.y() * h.y() + h.z() * h.z(), h.x() * h.x() + h.z() * h.z(),
+                                      h.x() * h.x() + h.y() * h.y());  // a box of half extents h
+  GripperBodies out;
+  Mat3 about_com = g.inertia_kgm2.asDiagonal();  // the whole gripper's, about its CoM
+  Vec3 moment_kgm = g.mass_kg * g.com_link7_m;
+  out.body.mass_kg = g.mass_kg;
+  for (int i = 0; i < 2; ++i) {
+    const double side = i == 0 ? 1.0 : -1.0;
+    BodyMassProperties& f = out.fingers[static_cast<std::size_t>(i)];
+    f.mass_kg = m_f;
+    f.com_body_m = g.position_link7_m + Vec3(0.0, 0.0, side * (jaws.open_half_gap_m + h.z()));
+    f.inertia_kgm2 = plate.asDiagonal();
+    out.body.mass_kg -= m_f;
+    moment_kgm -= m_f * f.com_body_m;
+    about_com -= f.inertia_kgm2 + point_inertia(m_f, f.com_body_m - g.com_link7_m);
+  }
+  out.body.com_body_m = moment_kgm / out.body.mass_kg;
+  out.body.inertia_kgm2 = about_com - point_inertia(out.body.mass_kg, out.body.com_body_m - g.com_link7_m);
+  return out;
+}
+
 BodyMassProperties hub_mass_properties(const SpacecraftParams& chaser, const ArmParams& arm) {
   const auto links = arm_bodies(arm, arm.stowed_rad);
   BodyMassProperties hub;

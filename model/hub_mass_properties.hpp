@@ -30,6 +30,16 @@ struct BodyMassProperties {
 std::array<BodyMassProperties, kArmJoints + 1> arm_bodies(const ArmParams& arm,
                                                                   const std::array<double, kArmJoints>& q_rad);
 
+// The gripper as the multibody plant has it (link 7's frame, com_body_m read as from link 7's
+// origin): the two fingers of its jaws, open (uniform plates, model/arm.hpp's JawParams), and the
+// gripper's own body, which is the gripper (mass_kg, com_link7_m, inertia_kgm2, jaws open) less
+// them, by the parallel axes as the hub is the chaser less its arm. finger[0] is on the tool's +z.
+struct GripperBodies {
+  BodyMassProperties body;
+  std::array<BodyMassProperties, 2> fingers;
+};
+GripperBodies gripper_bodies(const GripperParams& gripper);
+
 // The hub: the chaser (mass_kg, com_body_m, inertia_kgm2) less the arm at arm.stowed_rad.
 BodyMassProperties hub_mass_properties(const SpacecraftParams& chaser, const ArmParams& arm);
 

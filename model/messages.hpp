@@ -36,8 +36,9 @@ struct ArmMeasurements {
   JointArray q_rad{};               // [rad] joint angles
   JointArray q_dot_radps{};         // [rad/s] joint rates
   JointArray torque_Nm{};           // [N m] joint torques measured
-  bool gripper_closed = false;      // the gripper holds (its switches)
-  double gripper_opening_m = 0;     // [m]
+  bool gripper_closed = false;      // the jaws hold the fixture: both fingers touch it (their switches)
+  double gripper_opening_m = 0;     // [m] the fingers' inner faces apart
+  bool gripper_locked = false;      // the gripper is closed rigidly on the fixture
   RelativePoseMeasurement fixture;  // the grasp fixture seen by the arm camera
 };
 
@@ -45,7 +46,8 @@ struct ArmMeasurements {
 struct ArmCommand {
   int joints = 0;
   JointArray torque_Nm{};       // [N m] joint torque demands to the inner torque loops
-  bool close_gripper = false;
+  bool close_gripper = false;   // the jaws close (form closure); false: they open
+  bool lock_gripper = false;    // the gripper closes rigidly: done only while the jaws hold the fixture
   bool engage_brakes = false;   // the joints' brakes (rigidisation)
 };
 

@@ -54,6 +54,9 @@ struct ArmCameraParams {
   double latency_s = 0.05;              // [s] in [0, period_s)
   double fov_half_angle_rad = 0.7;      // [rad] the fixture within this cone about the tool's x
   double range_max_m = 3.0;             // [m]
+  // [m] the camera's eye behind the tool point along the tool's x (it looks past the jaws): the
+  // cone and the range are the eye's; the pose it reports is the fixture's from the tool point.
+  double setback_m = 0.2;
 };
 
 struct SensorParams {

@@ -59,6 +59,7 @@ struct TargetBodyParams {
   double spin_rate_radps = 0.0;              // [rad/s] inertial, for spin cases S1-S3
   Vec3 grasp_point_target_m = Vec3::Zero();  // [m] where the gripper takes hold (target axes, from its CoM)
   Vec3 capture_point_target_m = Vec3::Zero();  // [m] where the chaser's CoM holds for capture
+  FixtureParams fixture;                      // the grasping fixture's lip at grasp_point_target_m (model/arm.hpp)
   std::vector<KeepOutBox> keep_out;           // the target's keep-out volume; empty: not checked
 };
 

@@ -44,6 +44,10 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
     m.q_dot_radps[j] = w[j];
     m.torque_Nm[j] = s.joint_torque_Nm[j];
   }
+  const JawReading jaws = read_jaws(*p, s);
+  m.gripper_closed = jaws.holding;
+  m.gripper_opening_m = jaws.opening_m;
+  m.gripper_locked = grasp_engaged(*p, s);
   return m;
 }
 
@@ -55,6 +59,9 @@ void command_arm(Plant& plant, const model::ArmCommand& command) {
   std::array<double, model::kArmJoints> torque{};
   for (std::size_t j = 0; j < torque.size(); ++j) torque[j] = std::clamp(command.torque_Nm[j], -limit, limit);
   set_joint_torques(s, torque);
+  command_jaws(*p, s, command.close_gripper);
+  // The rigid closure: the gripper welded to the fixture where the jaws hold it, never on nothing.
+  if (command.lock_gripper && !grasp_engaged(*p, s) && read_jaws(*p, s).holding) engage_grasp(*p, s);
 }
 
 GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const Vec3& point_target_m,
@@ -105,13 +112,14 @@ std::optional<model::ArmMeasurements> sense_arm_with_camera(const PlantParams& p
         // its origin from the camera, -R_camera_from_fixture r (r the tool from the fixture, fixture axes).
         const Quat q_camera_from_fixture = quat_from_rotation_vector(g.attitude_rad).conjugate();
         const Vec3 r_camera_m = q_camera_from_fixture * (-g.r_m);
-        const double range_m = r_camera_m.norm();
+        const Vec3 r_eye_m = r_camera_m + Vec3(camera.setback_m, 0.0, 0.0);  // the fixture from the camera's eye
+        const double range_m = r_eye_m.norm();
         RandomStream& noise = state.streams.arm_camera;  // drawn whether or not the fixture is seen
         const Vec3 position_error(noise.normal(), noise.normal(), noise.normal());
         const Vec3 attitude_error(noise.normal(), noise.normal(), noise.normal());
         model::RelativePoseMeasurement sample;
         sample.valid = range_m <= camera.range_max_m && range_m > 0.0 &&
-                       r_camera_m.x() >= range_m * std::cos(camera.fov_half_angle_rad);
+                       r_eye_m.x() >= range_m * std::cos(camera.fov_half_angle_rad);
         sample.taken_s = taken_s;
         sample.r_camera_m = r_camera_m + camera.position_noise_m * position_error;
         sample.q_camera_from_fixture =

@@ -26,23 +26,6 @@ void put_vec3(mjtNum* p, const Vec3& v) { p[0] = v.x(), p[1] = v.y(), p[2] = v.z
 Quat quat_at(const mjtNum* p) { return Quat(p[0], p[1], p[2], p[3]); }  // MuJoCo: w, x, y, z
 void put_quat(mjtNum* p, const Quat& q) { p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z(); }
 
-MultibodyIndices indices_of(const MujocoModel& world) {
-  const mjModel& m = world.model();
-  MultibodyIndices i;
-  i.hub = world.body("hub");
-  i.target = world.body("target");
-  i.first_link = world.body("link1");
-  const int hub_free = world.joint("hub_free"), target_free = world.joint("target_free"), joint1 = world.joint("joint1");
-  i.hub_qpos = m.jnt_qposadr[hub_free];
-  i.hub_dof = m.jnt_dofadr[hub_free];
-  i.target_qpos = m.jnt_qposadr[target_free];
-  i.target_dof = m.jnt_dofadr[target_free];
-  i.joint1_qpos = m.jnt_qposadr[joint1];
-  i.joint1_dof = m.jnt_dofadr[joint1];
-  i.lock1 = mj_name2id(&m, mjOBJ_EQUALITY, "lock1");
-  i.grasp = mj_name2id(&m, mjOBJ_EQUALITY, "grasp");
-  return i;
-}
 
 // A free body's frame (its CoM): position and velocity in the world, attitude from body to world
 // (ECI axes), rate in body axes (MuJoCo 2.2.2's free joint: qvel linear in world axes, angular in
@@ -211,6 +194,33 @@ void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, Ri
 
 }  // namespace
 
+MultibodyIndices indices_of(const multibody::MujocoModel& world) {
+  const mjModel& m = world.model();
+  MultibodyIndices i;
+  i.hub = world.body("hub");
+  i.target = world.body("target");
+  i.first_link = world.body("link1");
+  const int hub_free = world.joint("hub_free"), target_free = world.joint("target_free"), joint1 = world.joint("joint1");
+  i.hub_qpos = m.jnt_qposadr[hub_free];
+  i.hub_dof = m.jnt_dofadr[hub_free];
+  i.target_qpos = m.jnt_qposadr[target_free];
+  i.target_dof = m.jnt_dofadr[target_free];
+  i.joint1_qpos = m.jnt_qposadr[joint1];
+  i.joint1_dof = m.jnt_dofadr[joint1];
+  i.lock1 = mj_name2id(&m, mjOBJ_EQUALITY, "lock1");
+  i.grasp = mj_name2id(&m, mjOBJ_EQUALITY, "grasp");
+  i.fixture_geom = mj_name2id(&m, mjOBJ_GEOM, "fixture");
+  const char* fingers[2] = {"finger_a", "finger_b"};
+  for (std::size_t f = 0; f < 2; ++f) {
+    const int joint = mj_name2id(&m, mjOBJ_JOINT, fingers[f]);
+    if (joint < 0) continue;
+    i.finger_qpos[f] = m.jnt_qposadr[joint];
+    i.finger_actuator[f] = mj_name2id(&m, mjOBJ_ACTUATOR, fingers[f]);
+    i.finger_geom[f] = mj_name2id(&m, mjOBJ_GEOM, fingers[f]);
+  }
+  return i;
+}
+
 std::optional<std::string> multibody_problem(const model::Scenario& scenario) {
   if (!scenario.chaser.arm) return "chaser.arm: the multibody plant flies the arm, and the scenario has none";
   if (!scenario.orbit.earth || !scenario.target.body)
@@ -243,6 +253,12 @@ MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbit
   scene.timestep_s = scene_timestep_s;
   scene.arm_locks = true;
   scene.grasp_weld = true;
+  if (scenario.capture && scenario.guidance.synchronised) {  // the jaws and the fixture's lip, in contact: the capture's grasp
+    scene.grasp_contact = true;
+    scene.fixture_target_m = scenario.target.body->grasp_point_target_m;
+    scene.q_target_from_fixture = scenario.guidance.synchronised->q_target_from_body.normalized();
+    scene.fixture = scenario.target.body->fixture;
+  }
   // The locks as stiff as MuJoCo's step allows (time constant 2 h, MuJoCo's stated limit) and 99 %
   // enforced: the stowed arm then gives under the chaser's spin by (1 - d) a0 / (d k), 1.7e-7 rad at
   // 0.5 rad/s (the defaults, 0.02 s and 0.9, gave 2e-4 rad, and the hub 4e-4 m off the rigid plant).
@@ -282,6 +298,31 @@ void set_joint_torques(MultibodyMotionState& state, const std::array<double, mod
 
 void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked) {
   for (int j = 0; j < model::kArmJoints; ++j) state.world.mutable_model().eq_active[params.index.lock1 + j] = locked;
+}
+
+void command_jaws(const MultibodyMotionParams& params, MultibodyMotionState& state, bool closed) {
+  if (params.index.fixture_geom < 0) return;
+  for (const int actuator : params.index.finger_actuator)
+    state.world.data().ctrl[actuator] = closed ? params.scene.arm.gripper.jaws.open_half_gap_m : 0.0;
+}
+
+JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionState& state) {
+  JawReading r;
+  if (params.index.fixture_geom < 0) return r;
+  const mjData& d = state.world.data();
+  const model::JawParams& jaws = params.scene.arm.gripper.jaws;
+  r.opening_m = 2.0 * jaws.open_half_gap_m - d.qpos[params.index.finger_qpos[0]] - d.qpos[params.index.finger_qpos[1]];
+  std::array<bool, 2> touching{};
+  for (int c = 0; c < d.ncon; ++c) {
+    const mjContact& contact = d.contact[c];
+    for (std::size_t f = 0; f < 2; ++f) {
+      const int finger = params.index.finger_geom[f], fixture = params.index.fixture_geom;
+      if ((contact.geom1 == finger && contact.geom2 == fixture) || (contact.geom1 == fixture && contact.geom2 == finger))
+        touching[f] = true;
+    }
+  }
+  r.holding = touching[0] && touching[1];
+  return r;
 }
 
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state) {

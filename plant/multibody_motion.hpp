@@ -52,7 +52,14 @@ struct MultibodyIndices {
   int hub_qpos = 0, hub_dof = 0, target_qpos = 0, target_dof = 0, joint1_qpos = 0, joint1_dof = 0;
   int lock1 = 0;  // equality ids of lock1..lock7 in a row
   int grasp = 0;  // equality id of the grasp's weld, gripper to target
+  // The jaws (scene.grasp_contact; -1 without): the fingers' slide joints (qpos address), their
+  // servos (actuator ids), their geoms and the fixture's.
+  std::array<int, 2> finger_qpos{-1, -1}, finger_actuator{-1, -1}, finger_geom{-1, -1};
+  int fixture_geom = -1;
 };
+
+// The indices of a scene compiled from plant/multibody/mjcf.hpp's text.
+MultibodyIndices indices_of(const multibody::MujocoModel& world);
 
 struct MultibodyMotionState {
   multibody::MujocoModel world;  // the scene and its state; a copy is a deep one
@@ -101,6 +108,17 @@ std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionPara
                                                        const MultibodyMotionState& state);
 std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionParams& params,
                                                         const MultibodyMotionState& state);
+
+// The jaws (with the scene's grasp contact): their servos commanded open (0) or closed (each
+// finger to the tool point, pressing on what lies between with up to closing_force_N); what their
+// sensors read: the fingers' inner faces apart [m], and whether both touch the fixture (a contact
+// of each finger with the lip in MuJoCo's last collision pass: the jaws' switches).
+void command_jaws(const MultibodyMotionParams& params, MultibodyMotionState& state, bool closed);
+struct JawReading {
+  double opening_m = 0.0;
+  bool holding = false;
+};
+JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionState& state);
 
 // The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp).
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);

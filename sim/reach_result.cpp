@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace chaser::sim {
@@ -9,6 +10,7 @@ namespace chaser::sim {
 void add_reach_period(ReachResult& r, const plant::GripperTruth& gripper, double t_s, double clearance_m) {
   constexpr double kTimeTolS = 1e-9;  // the hold's start is a sum of seconds, the period's start a count of ns
   r.flown = true;
+  if (t_s + kTimeTolS >= r.hold_to_s) return;
   if (t_s + kTimeTolS >= r.hold_from_s) {
     r.max_gripper_error_m = r.max_gripper_error_m.cwiseMax(gripper.r_m.cwiseAbs());
     r.max_gripper_velocity_mps = r.max_gripper_velocity_mps.cwiseMax(gripper.v_mps.cwiseAbs());
@@ -33,6 +35,37 @@ bool gripper_meets_table2(const ReachResult& r) {
     for (int k = 0; k < 3; ++k)
       if (figures[static_cast<std::size_t>(f)](k) > table2_gripper_limit(f, k)) return false;
   return true;
+}
+
+bool grasp_meets_table2(const GraspResult& g) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  if (!g.judged) return false;
+  const plant::GripperTruth& a = g.at_closure;
+  const std::array<Vec3, 4> figures = {a.r_m, a.v_mps, a.attitude_rad / kDeg, a.omega_radps / kDeg};
+  for (int f = 0; f < 4; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (!(std::abs(figures[static_cast<std::size_t>(f)](k)) <= table2_gripper_limit(f, k))) return false;
+  return g.chaser_position_m <= kTable2ChaserPositionM && g.chaser_velocity_mps <= kTable2ChaserVelocityMps &&
+         g.chaser_attitude_deg <= kTable2ChaserAttitudeDeg && g.chaser_rate_deg_s <= kTable2ChaserRateDegps;
+}
+
+void add_grasp_period(GraspResult& g, const flight::GraspState& state, const plant::GripperTruth& gripper_at_fixture,
+                      const MonitorSample& sample) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const auto time = [&](double t_s) { return t_s >= 0.0 ? t_s : kNaN; };
+  g.attempted = g.attempted || state.step != flight::GraspStep::kReach;
+  g.outcome = flight::to_string(state.step);
+  g.closure_s = time(state.closure_s);
+  g.lock_s = time(state.lock_s);
+  g.captured_s = time(state.captured_s);
+  if (g.judged || state.closure_s < 0.0) return;
+  g.judged = true;
+  g.at_closure = gripper_at_fixture;
+  const Quat q_body_from_ref = (sample.q_inertial_from_body.conjugate() * sample.q_ref_inertial_from_body).normalized();
+  g.chaser_position_m = (sample.r_lvlh_m - sample.r_ref_lvlh_m).norm();
+  g.chaser_velocity_mps = (sample.v_lvlh_mps - sample.v_ref_lvlh_mps).norm();
+  g.chaser_attitude_deg = 2.0 * std::atan2(q_body_from_ref.vec().norm(), std::abs(q_body_from_ref.w())) * 180.0 / std::numbers::pi;
+  g.chaser_rate_deg_s = (sample.omega_body_radps - sample.omega_ref_body_radps).norm() * 180.0 / std::numbers::pi;
 }
 
 }  // namespace chaser::sim

@@ -8,16 +8,19 @@
 #include <limits>
 
 #include "core/types.hpp"
+#include "flight/grasp.hpp"
 #include "model/arm.hpp"
+#include "model/capture.hpp"
 #include "plant/arm_joints.hpp"
+#include "sim/mission_monitor.hpp"
 
 namespace chaser::sim {
 
 // COMRADE 2018 Table 2.
-inline constexpr double kTable2GripperErrorM[3] = {0.010, 0.022, 0.022};      // [m] x (approach), y, z
-inline constexpr double kTable2GripperAttitudeDeg = 2.74;                       // [deg] about each axis
-inline constexpr double kTable2GripperVelocityMps = 0.005;                      // [m/s] per axis
-inline constexpr double kTable2GripperRateDegps = 0.1;                          // [deg/s] per axis
+inline constexpr const double (&kTable2GripperErrorM)[3] = model::kGrapplingEnvelopeM;  // [m] x (approach), y, z
+inline constexpr double kTable2GripperAttitudeDeg = model::kGrapplingEnvelopeDeg;        // [deg] about each axis
+inline constexpr double kTable2GripperVelocityMps = model::kGraspRelativeVelocityMps;    // [m/s] per axis
+inline constexpr double kTable2GripperRateDegps = model::kGraspRelativeRateDegps;        // [deg/s] per axis
 inline constexpr double kTable2ChaserPositionM = 0.05;                          // [m]
 inline constexpr double kTable2ChaserVelocityMps = 0.005;                       // [m/s]
 inline constexpr double kTable2ChaserAttitudeDeg = 2.0;                         // [deg]
@@ -35,9 +38,31 @@ constexpr double table2_gripper_limit(int figure, int axis) {
 // The hold judged starts this long after the tool's path ends (its settling).
 inline constexpr double kReachSettleS = 10.0;  // [s]
 
+// The grasp (flight/grasp.hpp) judged against COMRADE Table 2 when the jaws are commanded closed:
+// the gripper against the fixture (true values in the grasp pose's axes, x the approach), the
+// chaser against its reference at the capture point. Times NaN where the step never came.
+struct GraspResult {
+  bool attempted = false;          // the approach began within the run
+  const char* outcome = "reach";   // the grasp's last step (flight::to_string(GraspStep))
+  double closure_s = std::numeric_limits<double>::quiet_NaN();   // [s] the jaws commanded closed
+  double lock_s = std::numeric_limits<double>::quiet_NaN();      // [s] the rigid closure commanded
+  double captured_s = std::numeric_limits<double>::quiet_NaN();  // [s] the gripper reported locked
+  bool judged = false;             // closure was commanded: the figures below are set
+  plant::GripperTruth at_closure;
+  double chaser_position_m = std::numeric_limits<double>::quiet_NaN();    // [m] |r - r_ref|
+  double chaser_velocity_mps = std::numeric_limits<double>::quiet_NaN();  // [m/s]
+  double chaser_attitude_deg = std::numeric_limits<double>::quiet_NaN();  // [deg] the rotation's angle
+  double chaser_rate_deg_s = std::numeric_limits<double>::quiet_NaN();    // [deg/s] |w - w_ref|
+};
+
+// Whether the grasp was judged and met every figure of Table 2 at the closure: the gripper inside the
+// envelope, its relative velocity and rate per axis, the chaser's four.
+bool grasp_meets_table2(const GraspResult& g);
+
 struct ReachResult {
   bool flown = false;                 // the arm woke
-  double hold_from_s = 0.0;           // [s] the window judged: [hold_from_s, end of run]
+  double hold_from_s = 0.0;           // [s] the window judged: [hold_from_s, hold_to_s) within the run
+  double hold_to_s = std::numeric_limits<double>::infinity();  // [s] the approach's start (the reach's end)
   int hold_periods = 0;
   // The largest |value| per axis over the hold, and the values at the end.
   Vec3 max_gripper_error_m = Vec3::Zero();
@@ -51,14 +76,22 @@ struct ReachResult {
   double min_tool_clearance_m = std::numeric_limits<double>::quiet_NaN();
   double min_tool_clearance_at_s = std::numeric_limits<double>::quiet_NaN();
   int camera_samples = 0;             // arm camera samples the flight software used
+  GraspResult grasp;
 };
 
 // One control period of the reach: the gripper's truth at t_s and the tool point's clearance from the
 // keep-out volume (NaN: none). The largest values are taken over the hold (t_s >= hold_from_s), the
-// least clearance over the whole reach; the last period's values are the final ones.
+// least clearance over the whole reach; the last period's values are the final ones. Periods from
+// hold_to_s on (the approach onto the fixture) are not the reach's: ignored.
 void add_reach_period(ReachResult& r, const plant::GripperTruth& gripper, double t_s, double clearance_m);
 
 // Whether the gripper stayed inside Table 2 over the hold (every axis of each of the four).
 bool gripper_meets_table2(const ReachResult& r);
+
+// A control period of the capture: the grasp's steps as the flight software has them, and, at the
+// period the jaws are commanded closed, the gripper's truth against the fixture and the chaser's
+// errors (the mission monitor's sample at t_s).
+void add_grasp_period(GraspResult& g, const flight::GraspState& state, const plant::GripperTruth& gripper_at_fixture,
+                      const MonitorSample& sample);
 
 }  // namespace chaser::sim

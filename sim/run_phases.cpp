@@ -36,7 +36,10 @@ std::vector<std::pair<const char*, double>> phase_starts(const model::GuidancePa
 
 std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
   auto starts = phase_starts(s.guidance);
-  if (s.capture) starts.emplace_back("reach", s.capture->start_s);  // the arm wakes (sim/simulation.cpp)
+  if (s.capture) {
+    starts.emplace_back("reach", s.capture->start_s);  // the arm wakes (sim/simulation.cpp)
+    starts.emplace_back("capture", s.capture->approach_start_s());  // onto the fixture, the grasp
+  }
   const double synchronised_from = synchronised_from_s(s);
   std::vector<PlannedPhase> out;
   for (std::size_t i = 0; i < starts.size(); ++i) {

@@ -6,15 +6,14 @@
 //   COMRADE's synchronisation with its approach steps (flight/sync_approach.hpp): "line",
 //   "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "axis_hold",
 //   "transfer", "capture_point_hold"; with a capture section, "reach" from capture.start_s (the
-//   arm wakes on the multibody plant).
+//   arm wakes on the multibody plant) and "capture" from capture.approach_start_s() (the tool onto
+//   the fixture, the grasp: flight/grasp.hpp).
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
 // Each phase carries the requirements judged while it is flown and the plant's configuration it
 // flies in (the reach's: the arm awake). The flight software keeps its own schedule of the same
-// times (it never sees the run's phases: plant and flight meet only through messages). The
-// capture's later phases (grasp, rigidise, ...) will add transitions on events and on requirements
-// held for a dwell.
+// times (it never sees the run's phases: plant and flight meet only through messages).
 #include <vector>
 
 #include "model/scenario.hpp"

@@ -116,6 +116,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
       q_target_from_reach_goal_ = flight_params_.reach->q_target_from_tool;
     }
     result_.reach.hold_from_s = scenario_.capture->start_s + scenario_.capture->path_duration_s + kReachSettleS;
+    result_.reach.hold_to_s = scenario_.capture->approach_start_s();
   }
   for (const PlannedPhase& phase : planned_phases(scenario_)) {
     phase_requirements_.push_back(phase.requirements);
@@ -174,11 +175,15 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   PeriodTruth truth;
   if (arm_awake_) {  // judged every period (sim/reach_result.hpp), recorded or not
     truth.arm = plant::sense_arm(plant_);
-    truth.gripper = plant::gripper_truth(plant_, reach_goal_target_m_, q_target_from_reach_goal_);
+    // The gripper against the pre-grasp pose over the reach, against the fixture from the approach on.
+    constexpr double kTimeTolS = 1e-9;
+    const bool approaching = t_s + kTimeTolS >= result_.reach.hold_to_s;
+    const Vec3& goal_m = approaching ? scenario_.target.body->grasp_point_target_m : reach_goal_target_m_;
+    truth.gripper = plant::gripper_truth(plant_, goal_m, q_target_from_reach_goal_);
     // The tool point against the target's keep-out volume, in target axes (NaN without one).
     const double clearance_m =
         keep_out_ ? model::keep_out_distance_m(scenario_.target.body->keep_out,
-                                               reach_goal_target_m_ + q_target_from_reach_goal_ * truth.gripper->r_m)
+                                               goal_m + q_target_from_reach_goal_ * truth.gripper->r_m)
                   : std::numeric_limits<double>::quiet_NaN();
     add_reach_period(result_.reach, *truth.gripper, t_s, clearance_m);
     result_.reach.camera_samples = flight_state_.reach.camera_samples;
@@ -191,6 +196,8 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                 truth.target.q_inertial_from_target);
   truth.sample.synchronised = phase_requirements_[static_cast<std::size_t>(phase_state_.phase)].synchronised;
+  if (arm_awake_ && flight_params_.reach)
+    add_grasp_period(result_.reach.grasp, flight_state_.reach.grasp, *truth.gripper, truth.sample);
   if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), truth.slosh.begin());
   return truth;
 }

@@ -152,6 +152,31 @@ std::string scheme_text(const std::string& name, const SchemeResult& r, double o
 
 nlohmann::json vec_json(const Vec3& v, double scale = 1.0) { return {scale * v.x(), scale * v.y(), scale * v.z()}; }
 
+// The grasp against COMRADE Table 2 at the jaws' closure (sim/reach_result.hpp).
+nlohmann::json grasp_json(const GraspResult& g) {
+  const plant::GripperTruth& a = g.at_closure;
+  const auto judged = [&](const nlohmann::json& value) { return g.judged ? value : nlohmann::json(nullptr); };
+  return nlohmann::json{
+      {"attempted", g.attempted},
+      {"outcome", g.outcome},
+      {"closure_s", finite_or_null(true, g.closure_s)},
+      {"lock_s", finite_or_null(true, g.lock_s)},
+      {"captured_s", finite_or_null(true, g.captured_s)},
+      {"at_closure", judged(nlohmann::json{
+                         {"axes", "the fixture's: x the approach"},
+                         {"gripper_error_m", vec_json(a.r_m)},
+                         {"gripper_velocity_mps", vec_json(a.v_mps)},
+                         {"gripper_attitude_error_deg", vec_json(a.attitude_rad, kRadToDeg)},
+                         {"gripper_rate_deg_s", vec_json(a.omega_radps, kRadToDeg)},
+                         {"chaser_position_error_m", g.chaser_position_m},
+                         {"chaser_velocity_error_mps", g.chaser_velocity_mps},
+                         {"chaser_attitude_error_deg", g.chaser_attitude_deg},
+                         {"chaser_rate_error_deg_s", g.chaser_rate_deg_s},
+                     })},
+      {"table2_met", grasp_meets_table2(g)},
+  };
+}
+
 // The reach against COMRADE Table 2 (sim/reach_result.hpp): null without a capture.
 nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
   if (!scenario.capture) return nullptr;
@@ -184,20 +209,14 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"min_tool_clearance_m", finite_or_null(true, reach.min_tool_clearance_m)},
       {"min_tool_clearance_at_s", finite_or_null(true, reach.min_tool_clearance_at_s)},
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
+      {"grasp", grasp_json(reach.grasp)},
   };
 }
 
-// The reach's lines of the text report.
-std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
-  if (!scenario.capture) return {};
-  const ReachResult& reach = r.reach;
-  if (!reach.flown) return "  reach: not flown (the run ended before capture.start_s)\n";
-  const auto mm = [](const Vec3& v) { return fmt::format("{:.1f}, {:.1f}, {:.1f}", 1e3 * v.x(), 1e3 * v.y(), 1e3 * v.z()); };
-  const auto deg = [](const Vec3& v) {
-    return fmt::format("{:.2f}, {:.2f}, {:.2f}", kRadToDeg * v.x(), kRadToDeg * v.y(), kRadToDeg * v.z());
-  };
-  double peak = 0.0;
-  for (const double t : reach.peak_joint_torque_Nm) peak = std::max(peak, t);
+// The reach's two lines of the text report.
+template <class Mm, class Deg>
+std::string reach_lines(const model::Scenario& scenario, const ReachResult& reach, const Mm& mm, const Deg& deg,
+                        double peak) {
   return fmt::format(
       "  reach ({} law, {} camera samples): gripper over the hold from {:.0f} s, largest per axis (x the approach): "
       "{} mm, {} mm/s, {} deg, {} deg/s: COMRADE Table 2 {}\n"
@@ -208,6 +227,32 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
       gripper_meets_table2(reach) ? "met" : "NOT met (+-10, 22, 22 mm; 2.74 deg; 5 mm/s; 0.1 deg/s)", peak,
       scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0, reach.min_tool_clearance_m,
       reach.min_tool_clearance_at_s);
+}
+
+// The reach's and the grasp's lines of the text report.
+std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
+  if (!scenario.capture) return {};
+  const ReachResult& reach = r.reach;
+  if (!reach.flown) return "  reach: not flown (the run ended before capture.start_s)\n";
+  const auto mm = [](const Vec3& v) { return fmt::format("{:.1f}, {:.1f}, {:.1f}", 1e3 * v.x(), 1e3 * v.y(), 1e3 * v.z()); };
+  const auto deg = [](const Vec3& v) {
+    return fmt::format("{:.2f}, {:.2f}, {:.2f}", kRadToDeg * v.x(), kRadToDeg * v.y(), kRadToDeg * v.z());
+  };
+  double peak = 0.0;
+  for (const double t : reach.peak_joint_torque_Nm) peak = std::max(peak, t);
+  const GraspResult& g = reach.grasp;
+  std::string grasp;
+  if (g.judged)
+    grasp = fmt::format(
+        "  grasp: {} (jaws closed at {:.1f} s{}); at the closure the gripper {} mm, {} mm/s, {} deg, {} deg/s from the "
+        "fixture, the chaser {:.3f} m, {:.1f} mm/s, {:.2f} deg, {:.3f} deg/s: COMRADE Table 2 {}\n",
+        g.outcome, g.closure_s, std::isnan(g.captured_s) ? std::string() : fmt::format(", locked at {:.2f} s", g.captured_s),
+        mm(g.at_closure.r_m), mm(g.at_closure.v_mps), deg(g.at_closure.attitude_rad), deg(g.at_closure.omega_radps),
+        g.chaser_position_m, 1e3 * g.chaser_velocity_mps, g.chaser_attitude_deg, g.chaser_rate_deg_s,
+        grasp_meets_table2(g) ? "met" : "NOT met");
+  else if (g.attempted)
+    grasp = fmt::format("  grasp: {} (the jaws never closed)\n", g.outcome);
+  return reach_lines(scenario, reach, mm, deg, peak) + grasp;
 }
 
 }  // namespace

@@ -4,11 +4,14 @@
 
 #include <fmt/format.h>
 
+#include "model/hub_mass_properties.hpp"
+
 namespace chaser::plant::multibody {
 
 namespace {
 
 std::string vec(const Vec3& v) { return fmt::format("{} {} {}", v.x(), v.y(), v.z()); }
+std::string quat(const Quat& q) { return fmt::format("{} {} {} {}", q.w(), q.x(), q.y(), q.z()); }
 
 // MuJoCo's fullinertia: "ixx iyy izz ixy ixz iyz".
 std::string full_inertia(const Mat3& I) {
@@ -28,6 +31,56 @@ void append_link(std::string& out, int index, const model::ArmLinkParams& link, 
                  link.armature_kgm2);
 }
 
+// Contact is between the jaws (contype 1, conaffinity 0) and the fixture's lip (contype 0,
+// conaffinity 1) only: MuJoCo pairs two geoms when either's contype meets the other's conaffinity.
+constexpr const char* kJawContact = "contype=\"1\" conaffinity=\"0\"";
+constexpr const char* kFixtureContact = "contype=\"0\" conaffinity=\"1\"";
+
+// The gripper's body: the gripper less its jaws' fingers with the jaws (palm and the two sliding
+// fingers, model/arm.hpp's JawParams), or the whole gripper.
+void append_gripper(std::string& out, const model::MultibodySceneParams& scene, const std::string& indent) {
+  const model::GripperParams& g = scene.arm.gripper;
+  fmt::format_to(std::back_inserter(out), "{}<body name=\"gripper\" pos=\"0 0 0\">\n", indent);
+  if (!scene.grasp_contact) {
+    fmt::format_to(std::back_inserter(out),
+                   "{0}  <inertial pos=\"{1}\" mass=\"{2}\" diaginertia=\"{3}\"/>\n"
+                   "{0}  <site name=\"tool\" pos=\"{4}\"/>\n"
+                   "{0}</body>\n",
+                   indent, vec(g.com_link7_m), g.mass_kg, vec(g.inertia_kgm2), vec(g.position_link7_m));
+    return;
+  }
+  const model::JawParams& jaws = g.jaws;
+  const model::GripperBodies bodies = model::gripper_bodies(g);
+  const Vec3 h = jaws.finger_half_extents_m;
+  // The palm: a plate across the jaws' mouth, its face palm_setback_m behind the tool point.
+  const double palm_half_thickness_m = 0.005;
+  const Vec3 palm_centre = g.position_link7_m - Vec3(jaws.palm_setback_m + palm_half_thickness_m, 0.0, 0.0);
+  const Vec3 palm_half = Vec3(palm_half_thickness_m, h.y(), jaws.open_half_gap_m + 2.0 * h.z());
+  fmt::format_to(std::back_inserter(out),
+                 "{0}  <inertial pos=\"{1}\" mass=\"{2}\" fullinertia=\"{3}\"/>\n"
+                 "{0}  <site name=\"tool\" pos=\"{4}\"/>\n"
+                 "{0}  <geom name=\"palm\" type=\"box\" pos=\"{5}\" size=\"{6}\" {7}/>\n",
+                 indent, vec(bodies.body.com_body_m), bodies.body.mass_kg, full_inertia(bodies.body.inertia_kgm2),
+                 vec(g.position_link7_m), vec(palm_centre), vec(palm_half), kJawContact);
+  const char* names[2] = {"finger_a", "finger_b"};
+  for (int i = 0; i < 2; ++i) {
+    const model::BodyMassProperties& f = bodies.fingers[static_cast<std::size_t>(i)];
+    const double side = i == 0 ? 1.0 : -1.0;
+    // Each finger's frame at its CoM, open; it slides towards the tool point (along -side z) by up
+    // to the open gap, where its inner face reaches the tool's xy plane.
+    fmt::format_to(std::back_inserter(out),
+                   "{0}  <body name=\"{1}\" pos=\"{2}\">\n"
+                   "{0}    <inertial pos=\"0 0 0\" mass=\"{3}\" diaginertia=\"{4}\"/>\n"
+                   "{0}    <joint name=\"{1}\" type=\"slide\" axis=\"0 0 {5}\" limited=\"true\" range=\"0 {6}\""
+                   " damping=\"{7}\"/>\n"
+                   "{0}    <geom name=\"{1}\" type=\"box\" size=\"{8}\" {9}/>\n"
+                   "{0}  </body>\n",
+                   indent, names[i], vec(f.com_body_m), f.mass_kg, vec(f.inertia_kgm2.diagonal()), -side,
+                   jaws.open_half_gap_m, jaws.servo_damping_Nspm, vec(h), kJawContact);
+  }
+  fmt::format_to(std::back_inserter(out), "{}</body>\n", indent);
+}
+
 }  // namespace
 
 std::string mjcf_of(const model::MultibodySceneParams& scene) {
@@ -37,13 +90,14 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                  "<mujoco model=\"chaser_scene\">\n"
                  "  <compiler angle=\"radian\"/>\n"
                  "  <option timestep=\"{}\" integrator=\"{}\" gravity=\"0 0 0\">\n"
-                 "    <flag contact=\"disable\"/>\n"
+                 "{}"
                  "  </option>\n"
                  "  <worldbody>\n"
                  "    <body name=\"hub\" pos=\"0 0 0\">\n"
                  "      <freejoint name=\"hub_free\"/>\n"
                  "      <inertial pos=\"0 0 0\" mass=\"{}\" fullinertia=\"{}\"/>\n",
-                 scene.timestep_s, scene.integrator, scene.hub_mass_kg, full_inertia(scene.hub_inertia_kgm2));
+                 scene.timestep_s, scene.integrator, scene.grasp_contact ? "" : "    <flag contact=\"disable\"/>\n",
+                 scene.hub_mass_kg, full_inertia(scene.hub_inertia_kgm2));
   for (int i = 0; i < model::kArmJoints; ++i) {
     const model::ArmLinkParams& link = arm.links[static_cast<std::size_t>(i)];
     // The hub's frame is at its CoM: the mount moves by the CoM's offset from the reference point.
@@ -52,28 +106,37 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
     append_link(out, i, link, position, 3 + i);
   }
   const std::string indent(static_cast<std::size_t>(2 * (3 + model::kArmJoints)), ' ');
-  fmt::format_to(std::back_inserter(out),
-                 "{0}<body name=\"gripper\" pos=\"0 0 0\">\n"
-                 "{0}  <inertial pos=\"{1}\" mass=\"{2}\" diaginertia=\"{3}\"/>\n"
-                 "{0}  <site name=\"tool\" pos=\"{4}\"/>\n"
-                 "{0}</body>\n",
-                 indent, vec(arm.gripper.com_link7_m), arm.gripper.mass_kg, vec(arm.gripper.inertia_kgm2),
-                 vec(arm.gripper.position_link7_m));
+  append_gripper(out, scene, indent);
   for (int i = model::kArmJoints - 1; i >= 0; --i)
     fmt::format_to(std::back_inserter(out), "{}</body>\n", std::string(static_cast<std::size_t>(2 * (3 + i)), ' '));
   fmt::format_to(std::back_inserter(out),
                  "    </body>\n"
                  "    <body name=\"target\" pos=\"{}\">\n"
                  "      <freejoint name=\"target_free\"/>\n"
-                 "      <inertial pos=\"0 0 0\" mass=\"{}\" fullinertia=\"{}\"/>\n"
-                 "    </body>\n"
-                 "  </worldbody>\n"
-                 "  <actuator>\n",
+                 "      <inertial pos=\"0 0 0\" mass=\"{}\" fullinertia=\"{}\"/>\n",
                  vec(scene.target_position_m), scene.target_mass_kg, full_inertia(scene.target_inertia_kgm2));
+  if (scene.grasp_contact)  // the fixture's lip, centred on the grasp point in the grasp pose's axes
+    fmt::format_to(std::back_inserter(out),
+                   "      <geom name=\"fixture\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{}\" {}/>\n",
+                   vec(scene.fixture_target_m), quat(scene.q_target_from_fixture.normalized()),
+                   vec(scene.fixture.half_extents_m), kFixtureContact);
+  out +=
+      "    </body>\n"
+      "  </worldbody>\n"
+      "  <actuator>\n";
   for (int i = 1; i <= model::kArmJoints; ++i)
     fmt::format_to(std::back_inserter(out),
                    "    <motor name=\"motor{0}\" joint=\"joint{0}\" gear=\"1\" ctrllimited=\"true\" ctrlrange=\"{1} {2}\"/>\n",
                    i, -arm.torque_momentary_Nm, arm.torque_momentary_Nm);
+  if (scene.grasp_contact) {  // the fingers' position servos: ctrl 0 open, open_half_gap_m closed
+    const model::JawParams& jaws = arm.gripper.jaws;
+    for (const char* finger : {"finger_a", "finger_b"})
+      fmt::format_to(std::back_inserter(out),
+                     "    <position name=\"{0}\" joint=\"{0}\" kp=\"{1}\" ctrllimited=\"true\" ctrlrange=\"0 {2}\""
+                     " forcelimited=\"true\" forcerange=\"{3} {4}\"/>\n",
+                     finger, jaws.servo_stiffness_Npm, jaws.open_half_gap_m, -jaws.closing_force_N,
+                     jaws.closing_force_N);
+  }
   out += "  </actuator>\n";
   if (scene.arm_locks || scene.grasp_weld) out += "  <equality>\n";
   if (scene.arm_locks) {

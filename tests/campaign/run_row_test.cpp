@@ -95,7 +95,7 @@ TEST_P(RunRowSets, EveryFieldReadsBackAsItsColumnKind) {
 TEST(RunRow, TheReachSetAddsTheReachFiguresAfterTheStandardColumns) {
   const std::string standard = runs_header(RunColumnSet::kStandard), reach = runs_header(RunColumnSet::kReach);
   ASSERT_EQ(reach.substr(0, standard.size() + 1), standard + ",");
-  EXPECT_EQ(run_columns(RunColumnSet::kReach).size(), run_columns(RunColumnSet::kStandard).size() + 8 * 3 + 3);
+  EXPECT_EQ(run_columns(RunColumnSet::kReach).size(), run_columns(RunColumnSet::kStandard).size() + 8 * 3 + 3 + 2);
   EXPECT_FALSE(run_column_set_of(standard + ",extra").has_value());
 
   RunRecord r = error_record(RunSetup{});
@@ -109,6 +109,12 @@ TEST(RunRow, TheReachSetAddsTheReachFiguresAfterTheStandardColumns) {
   EXPECT_EQ(column(r, "reach_final_error_z_m", RunColumnSet::kReach), "0.0030000000000000001");
   EXPECT_EQ(column(r, "reach_max_rate_z_deg_s", RunColumnSet::kReach), "0.125");
   EXPECT_EQ(column(r, "reach_peak_joint_torque_Nm", RunColumnSet::kReach), "6.5");
+  EXPECT_EQ(column(r, "grasp_captured_s", RunColumnSet::kReach), "nan");
+  EXPECT_EQ(column(r, "grasp_table2_met", RunColumnSet::kReach), "0");
+  r.reach.grasp_captured_s = 2880.25;
+  r.reach.grasp_table2_met = true;
+  EXPECT_EQ(column(r, "grasp_captured_s", RunColumnSet::kReach), "2880.25");
+  EXPECT_EQ(column(r, "grasp_table2_met", RunColumnSet::kReach), "1");
 }
 
 // split_fields: plain fields, empty ones kept; a field in double quotes (optimize.csv's candidate

@@ -43,7 +43,7 @@ std::vector<BadCapture> bad_captures() {
       {"law", {"capture.law=pid"}, "capture.law", "must be one of compliance, hinf (got 'pid')"},
       {"before_the_capture_point", {"capture.start_s=2600"}, "capture.start_s",
        "must be at or after the end of the transfer to the capture point, 2700 s"},
-      {"after_the_end", {"capture.start_s=2900"}, "capture.start_s", "must be before duration_s 2850 (got 2900)"},
+      {"after_the_end", {"capture.start_s=2950"}, "capture.start_s", "must be before duration_s 2900 (got 2950)"},
       {"joint_rate_not_whole_ns", {"capture.joint_rate_hz=3"}, "capture.joint_rate_hz",
        "must divide 1e9 ns into whole nanoseconds (got 3)"},
       {"joint_rate_not_per_period", {"capture.joint_rate_hz=16"}, "capture.joint_rate_hz",

@@ -125,19 +125,24 @@ TEST(RunPhases, TheSynchronisationIsJudgedFromThePhaseStartingWhenTheChaserTurns
 namespace chaser::sim {
 namespace {
 
-// A capture's plan ends with the reach, the one phase whose plant configuration has the arm awake;
-// the synchronisation's phases before it are comrade_sync's.
-TEST(RunPhases, TheCapturesReachIsTheOnePhaseWithTheArmAwake) {
+// A capture's plan ends with the reach and the capture, the two phases whose plant configuration
+// has the arm awake; the synchronisation's phases before them are comrade_sync's.
+TEST(RunPhases, TheCapturesReachAndCaptureAreThePhasesWithTheArmAwake) {
   const model::Scenario capture = load("scenarios/comrade_capture.yaml");
   const std::vector<PlannedPhase> plan = planned_phases(capture);
-  ASSERT_FALSE(plan.empty());
-  EXPECT_STREQ(plan.back().name, "reach");
-  EXPECT_EQ(plan.back().start_s, capture.capture->start_s);
-  EXPECT_TRUE(plan.back().configuration.arm_awake);
-  EXPECT_TRUE(plan.back().requirements.synchronised);
+  ASSERT_GE(plan.size(), 2u);
+  const PlannedPhase& reach = plan[plan.size() - 2];
+  EXPECT_STREQ(reach.name, "reach");
+  EXPECT_EQ(reach.start_s, capture.capture->start_s);
+  EXPECT_STREQ(plan.back().name, "capture");
+  EXPECT_EQ(plan.back().start_s, capture.capture->approach_start_s());
+  for (const PlannedPhase* p : {&reach, &plan.back()}) {
+    EXPECT_TRUE(p->configuration.arm_awake) << p->name;
+    EXPECT_TRUE(p->requirements.synchronised) << p->name;
+  }
   const std::vector<PlannedPhase> sync = planned_phases(load("scenarios/comrade_sync.yaml"));
-  ASSERT_EQ(plan.size(), sync.size() + 1);
-  for (std::size_t i = 0; i + 1 < plan.size(); ++i) {
+  ASSERT_EQ(plan.size(), sync.size() + 2);
+  for (std::size_t i = 0; i + 2 < plan.size(); ++i) {
     EXPECT_STREQ(plan[i].name, sync[i].name);
     EXPECT_FALSE(plan[i].configuration.arm_awake) << plan[i].name;
   }
