@@ -2,6 +2,7 @@
 // The servicer's arm as the plant has it: woken (the multibody plant takes over and the joints'
 // locks open), its joint sensors read and its joint torques commanded, and the truth of where the
 // gripper is against the fixture (for the mission monitor, never for the flight software).
+#include <array>
 #include <optional>
 #include <string>
 
@@ -47,6 +48,20 @@ GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const V
 inline GripperTruth gripper_truth(Plant& plant, const Vec3& point_target_m, const Quat& q_target_from_pose) {
   return gripper_truth(plant.params, plant.state, point_target_m, q_target_from_pose);
 }
+
+// The arm's figure, true, in the target's axes from its CoM: the chaser's body-frame origin (the
+// reference point thrusters and mount are given from) and the hub's attitude,
+// each joint's anchor (a point on its axis) and the tool point. For drawing the capture
+// (python/plot_reach.py's stick figures), never for the flight software. Refreshes MuJoCo's
+// positions derived from the state (mj_kinematics): the state and the run are unchanged.
+struct ArmFigure {
+  Vec3 hub_m = Vec3::Zero();
+  Quat q_target_from_hub = Quat::Identity();
+  std::array<Vec3, model::kArmJoints> joint_m{};
+  Vec3 tool_m = Vec3::Zero();
+};
+ArmFigure arm_figure(const PlantParams& params, PlantState& state);
+inline ArmFigure arm_figure(Plant& plant) { return arm_figure(plant.params, plant.state); }
 
 // The joint sensors (sense_arm) and the arm camera's sample at the control period starting at t_s
 // (model::ArmCameraParams): taken when its period has come, if the fixture (PlantParams'

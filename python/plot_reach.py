@@ -8,9 +8,12 @@ flew (--scenario, by default scenarios/<summary's scenario>.yaml: the arm's join
 Writes into DIR (default RUN_DIR), over the reach (from the arm's waking to the end):
   - reach_joints.png: each joint's angle against its limits, and its commanded torque against the
     repeated-peak and momentary limits;
-  - reach_gripper.png: the gripper against the pre-grasp pose, true values in its axes (x the approach):
-    position, velocity, attitude and rate per axis inside COMRADE 2018 Table 2's envelope, the hold the
-    summary judges shaded.
+  - reach_gripper.png: the gripper against the pre-grasp pose, and from the approach on (the phase
+    `capture`) against the fixture, true values in its axes (x the approach): position, velocity, attitude
+    and rate per axis inside COMRADE 2018 Table 2's envelope, the hold the summary judges shaded;
+  - reach_figures.png: stick figures of the hub, the arm and the target's face at the fixture, true, in
+    the target's axes (a side view, x-z, and a top view, x-y), at the key instants: the arm's waking, the
+    end of the path to the pre-grasp pose, the start of the approach, the jaws' closure and the end.
 """
 import argparse
 import json
@@ -79,7 +82,13 @@ def plot_joints(t, mask, scenario, out):
     plt.close(fig)
 
 
-def plot_gripper(t, mask, hold_from_s, out):
+def approach_start_s(summary):
+    """When the phase `capture` began (the gripper is then judged against the fixture); inf without one."""
+    starts = [float(p["start_s"]) for p in summary.get("phases_flown", []) if p.get("name") == "capture"]
+    return starts[0] if starts else float("inf")
+
+
+def plot_gripper(t, mask, hold_from_s, hold_to_s, out):
     time = t["t_s"][mask]
     panels = [("gripper_err_{}_m", 1e3, "position [mm]", ENVELOPE_MM),
               ("gripper_v_{}_mps", 1e3, "velocity [mm/s]", (VELOCITY_MMPS,) * 3),
@@ -91,18 +100,110 @@ def plot_gripper(t, mask, hold_from_s, out):
             line, = ax.plot(time, scale * t[name.format(c)][mask], label=c)
             for sign in (-1, 1):
                 ax.axhline(sign * limits[k], color=line.get_color(), ls="--", lw=0.8)
-        hold = time >= hold_from_s
+        hold = (time >= hold_from_s) & (time < hold_to_s)
         if hold.any():
-            ax.axvspan(time[hold][0], time[-1], color="0.9", zorder=0)
+            ax.axvspan(time[hold][0], time[hold][-1], color="0.9", zorder=0)
             lim = 3.0 * max(limits)
             ax.set_ylim(-lim, lim)
+        if np.isfinite(hold_to_s):
+            ax.axvline(hold_to_s, color="k", lw=0.8)
         ax.set_ylabel(label)
     axes[0].legend(ncol=3, fontsize=8)
-    axes[-1].set_xlabel("t [s] (shaded: the hold judged against Table 2)")
-    fig.suptitle("The gripper against the pre-grasp pose (true), COMRADE Table 2's envelope dashed")
+    axes[-1].set_xlabel("t [s] (shaded: the hold judged against Table 2; from the black line on, the approach)")
+    fig.suptitle("The gripper against the pre-grasp pose, from the approach on against the fixture (true),\n"
+                 "COMRADE Table 2's envelope dashed")
     fig.tight_layout()
     fig.savefig(out / "reach_gripper.png", dpi=110)
     plt.close(fig)
+
+
+def quat_matrix(w, x, y, z):
+    """The rotation matrix of the unit quaternion (w, x, y, z): v' = R v."""
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def chain_points(t, row):
+    """The arm's figure at a row, target axes [m]: the hub's origin, joints 1..7, the tool point (9 x 3)."""
+    names = ["hub_target"] + [f"joint{j}_target" for j in range(1, JOINTS + 1)] + ["tool_target"]
+    return np.array([[t[f"{n}_{c}_m"][row] for c in XYZ] for n in names])
+
+
+def hub_box_edges(scenario):
+    """The hub's outline in its body axes: the box its thrusters sit on (12 edges, each 2 x 3) [m]."""
+    positions = np.array([th["position_body_m"] for th in scenario.get("thrusters", {}).get("list", [])], float)
+    if positions.size == 0:
+        return []
+    low, high = positions.min(axis=0), positions.max(axis=0)
+    corners = np.array([[(low, high)[(k >> i) & 1][i] for i in range(3)] for k in range(8)])
+    return [corners[[a, b]] for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1]
+
+
+def hub_outline(t, row, edges):
+    """The hub's edges in target axes at a row."""
+    rotation = quat_matrix(*(t[f"q_target_from_hub_{c}"][row] for c in "wxyz"))
+    origin = np.array([t[f"hub_target_{c}_m"][row] for c in XYZ])
+    return [origin + edge @ rotation.T for edge in edges]
+
+
+def key_instants(t, mask, summary):
+    """(label, row) of the instants drawn: the waking, the path's end, the approach, the closure, the end."""
+    time = t["t_s"]
+    rows = np.flatnonzero(mask)
+    if rows.size == 0:
+        return []
+    reach = summary["reach"]
+    wanted = [("the arm wakes", time[rows[0]]), ("at the pre-grasp pose", float(reach["hold_from_s"]))]
+    for phase in summary.get("phases_flown", []):
+        if phase.get("name") == "capture":
+            wanted.append(("the approach begins", float(phase["start_s"])))
+    closure = (reach.get("grasp") or {}).get("closure_s")
+    if closure is not None:
+        wanted.append(("the jaws close", float(closure)))
+    wanted.append(("the end", time[rows[-1]]))
+    instants = []
+    for label, at_s in wanted:
+        row = rows[min(np.searchsorted(time[rows], at_s - 1e-9), rows.size - 1)]
+        if all(row != r for _, r in instants):
+            instants.append((f"{time[row]:,.1f} s: {label}", row))
+    return instants
+
+
+def plot_figures(t, mask, summary, scenario, out):
+    """reach_figures.png; False (nothing written) for a telemetry without the arm's figure."""
+    if "joint1_target_x_m" not in t.dtype.names:
+        return False
+    body = scenario.get("target", {}).get("body", {})
+    grasp = np.array(body.get("grasp_point_target_m", (0.0, 0.0, 0.0)), float)
+    edges = hub_box_edges(scenario)
+    instants = key_instants(t, mask, summary)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 6))
+    for ax, (a, b) in zip(axes, ((0, 2), (0, 1))):
+        for box in body.get("keep_out", []):
+            c, h = np.array(box["centre_target_m"], float), np.array(box["half_extents_m"], float)
+            ax.add_patch(plt.Rectangle((c[a] - h[a], c[b] - h[b]), 2 * h[a], 2 * h[b], color="0.85", zorder=0))
+        ax.plot(grasp[a], grasp[b], "k*", ms=12, label="the fixture (grasp point)")
+        colours = plt.cm.viridis(np.linspace(0.0, 0.9, max(len(instants), 1)))
+        for (label, row), colour in zip(instants, colours):
+            points = chain_points(t, row)
+            ax.plot(points[:, a], points[:, b], "-o", color=colour, ms=3, lw=1.5, label=label)
+            for edge in hub_outline(t, row, edges):
+                ax.plot(edge[:, a], edge[:, b], color=colour, lw=0.6)
+        every = np.vstack([chain_points(t, row) for _, row in instants] + [grasp[None, :]])
+        low, high = every.min(axis=0) - 1.5, every.max(axis=0) + 1.5
+        ax.set_xlim(low[a], high[a])
+        ax.set_ylim(low[b], high[b])
+        ax.set_aspect("equal")
+        ax.set_xlabel(f"target {XYZ[a]} [m]")
+        ax.set_ylabel(f"target {XYZ[b]} [m]")
+        ax.set_title("side view" if b == 2 else "top view")
+    axes[0].legend(fontsize=8, loc="best")
+    fig.suptitle("Hub, arm and the target's keep-out volume (grey), true, in the target's axes")
+    fig.tight_layout()
+    fig.savefig(out / "reach_figures.png", dpi=110)
+    plt.close(fig)
+    return True
 
 
 def main(argv=None):
@@ -124,10 +225,13 @@ def main(argv=None):
     out = Path(args.out) if args.out else run_dir
     out.mkdir(parents=True, exist_ok=True)
     plot_joints(t, mask, scenario, out)
-    plot_gripper(t, mask, float(reach["hold_from_s"]), out)
-    hold = mask & (t["t_s"] >= float(reach["hold_from_s"]))
+    hold_from_s, hold_to_s = float(reach["hold_from_s"]), approach_start_s(summary)
+    plot_gripper(t, mask, hold_from_s, hold_to_s, out)
+    figures = plot_figures(t, mask, summary, scenario, out)
+    hold = mask & (t["t_s"] >= hold_from_s) & (t["t_s"] < hold_to_s)
     ratio = envelope_exceedance(np.column_stack([t[f"gripper_err_{c}_m"][hold] for c in XYZ]) * 1e3, ENVELOPE_MM)
-    print(f"wrote {out / 'reach_joints.png'} and {out / 'reach_gripper.png'}; over the hold the gripper used "
+    written = ["reach_joints.png", "reach_gripper.png"] + (["reach_figures.png"] if figures else [])
+    print(f"wrote {', '.join(str(out / w) for w in written)}; over the hold the gripper used "
           f"{', '.join(f'{r:.0%}' for r in ratio)} of Table 2's position envelope (x, y, z)")
     if args.show:
         plt.show()

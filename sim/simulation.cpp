@@ -186,6 +186,7 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
                                                goal_m + q_target_from_reach_goal_ * truth.gripper->r_m)
                   : std::numeric_limits<double>::quiet_NaN();
     add_reach_period(result_.reach, *truth.gripper, t_s, clearance_m);
+    if (recording_) truth.figure = plant::arm_figure(plant_);
     result_.reach.camera_samples = flight_state_.reach.camera_samples;
   } else if (shape_.arm && recording_) {  // stowed
     truth.arm.joints = model::kArmJoints;
@@ -293,7 +294,8 @@ void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& trut
       .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks)),
       .phase = phase_state_.phase,
       .arm = shape_.arm ? &truth.arm : nullptr,
-      .gripper = truth.gripper ? &*truth.gripper : nullptr};
+      .gripper = truth.gripper ? &*truth.gripper : nullptr,
+      .figure = truth.figure ? &*truth.figure : nullptr};
   double* const row = memory_ ? memory_->new_row().data() : telemetry_->new_row().data();
   if (every_channel_) record_every_channel(record, shape_, row);
   else record_period(channels_, record, row);

@@ -131,6 +131,7 @@ class Simulation {
     std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
     model::ArmMeasurements arm;  // with a capture: the joints (the stowed angles before the arm wakes)
     std::optional<plant::GripperTruth> gripper;  // once the arm is awake
+    std::optional<plant::ArmFigure> figure;       // once the arm is awake, when recorded
   };
   PeriodTruth sample_truth(const flight::FlightOutput& out, double t_s);
   bool judge(const MonitorSample& sample);

@@ -78,6 +78,18 @@ double gripper_value(const PeriodRecord& r, int k) {
   return v(k % 3);
 }
 
+// The arm's figure's values in channel order: the hub (3), its attitude (w, x, y, z), the joints'
+// anchors (3 each), the tool point (3).
+constexpr int kFigureValues = 3 + 4 + 3 * model::kArmJoints + 3;
+double figure_value(const PeriodRecord& r, int k) {
+  if (r.figure == nullptr) return std::numeric_limits<double>::quiet_NaN();
+  const plant::ArmFigure& f = *r.figure;
+  if (k < 3) return f.hub_m(k);
+  if (k < 7) return component(f.q_target_from_hub, k - 3);
+  if (k < 7 + 3 * model::kArmJoints) return f.joint_m[static_cast<std::size_t>((k - 7) / 3)]((k - 7) % 3);
+  return f.tool_m(k - 7 - 3 * model::kArmJoints);
+}
+
 }  // namespace
 
 TelemetryShape telemetry_shape(const model::Scenario& scenario) {
@@ -169,6 +181,14 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
       for (int i = 0; i < 3; ++i)
         t.push_back({fmt::vformat(gripper[g].first, fmt::make_format_args("xyz"[i])), gripper[g].second,
                      [](const PeriodRecord& r, int k) { return gripper_value(r, k); }, 3 * static_cast<int>(g) + i});
+    const auto figure = [&t](std::string name, const char* unit, int k) {
+      t.push_back({std::move(name), unit, [](const PeriodRecord& r, int i) { return figure_value(r, i); }, k});
+    };
+    for (int i = 0; i < 3; ++i) figure(fmt::format("hub_target_{}_m", "xyz"[i]), "m", i);
+    for (int i = 0; i < 4; ++i) figure(fmt::format("q_target_from_hub_{}", "wxyz"[i]), "", 3 + i);
+    for (int j = 0; j < model::kArmJoints; ++j)
+      for (int i = 0; i < 3; ++i) figure(fmt::format("joint{}_target_{}_m", j + 1, "xyz"[i]), "m", 7 + 3 * j + i);
+    for (int i = 0; i < 3; ++i) figure(fmt::format("tool_target_{}_m", "xyz"[i]), "m", kFigureValues - 3 + i);
   }
   if (shape.phases > 1) t.push_back({"phase", "", [](const PeriodRecord& r, int) { return static_cast<double>(r.phase); }, 0});
   return t;
@@ -283,6 +303,7 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
     for (int j = 0; j < model::kArmJoints; ++j) *row++ = arm_angle(r, j);
     for (int j = 0; j < model::kArmJoints; ++j) *row++ = r.flight_state->reach.joint_torque_Nm(j);
     for (int k = 0; k < 12; ++k) *row++ = gripper_value(r, k);
+    for (int k = 0; k < kFigureValues; ++k) *row++ = figure_value(r, k);
   }
   if (shape.phases > 1) *row++ = static_cast<double>(r.phase);
 }

@@ -35,6 +35,7 @@ struct PeriodRecord {
   // pre-grasp pose), true values; null before the arm wakes (the gripper's channels are then NaN).
   const model::ArmMeasurements* arm = nullptr;
   const plant::GripperTruth* gripper = nullptr;
+  const plant::ArmFigure* figure = nullptr;  // the arm's figure in target axes; null before the arm wakes
 };
 
 // What the table has channels for, from the scenario: its thrusters and its slosh tanks.
@@ -63,7 +64,10 @@ struct TelemetryChannel {
 // A capture adds the joints' angles at the period start and the torques the joint loop commanded
 // last (q_arm_1_rad .., tau_arm_1_Nm ..; the stowed angles and 0 before the arm wakes) and the
 // gripper against the reach's goal, true values in the goal's axes (gripper_err_x_m ..,
-// gripper_v_x_mps .., gripper_att_err_x_rad .., gripper_rate_x_radps ..; NaN before the arm wakes).
+// gripper_v_x_mps .., gripper_att_err_x_rad .., gripper_rate_x_radps ..; NaN before the arm wakes),
+// then the arm's figure, true, in the target's axes from its CoM (hub_target_x_m .., the hub's
+// attitude q_target_from_hub_w .., joint1_target_x_m .. joint7_target_z_m, tool_target_x_m ..;
+// NaN before the arm wakes).
 std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape);
 
 std::vector<std::string> channel_names(const std::vector<TelemetryChannel>& channels);

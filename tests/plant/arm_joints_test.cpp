@@ -83,6 +83,50 @@ TEST(ArmJoints, TheGrippersTruthAtWakingIsTheStowedArmsKinematics) {
   EXPECT_LT(quat_from_rotation_vector(g.attitude_rad).angularDistance(q_pose_from_tool), 1e-9);
 }
 
+// The figure python/plot_reach.py draws: at waking, the hub and every joint where the stowed chain
+// puts them (1e-9 m, as the tool above); with the arm driven, the links keep their lengths (1e-9 m:
+// a hinge's anchor is on its axis, so joint i+1's distance from joint i is fixed) and the tool point
+// is the gripper's truth against the pose (the same point by two computations, 1e-12 m).
+TEST(ArmJoints, TheArmsFigureIsTheArmsKinematicsInTargetAxes) {
+  Awake a;
+  const model::ArmParams& arm = *a.s.chaser.arm;
+  const RigidState& x = chaser_state(a.plant);
+  const Mat3 inertial_from_body = x.q_inertial_from_body.toRotationMatrix();
+  const Quat q_inertial_from_target = target_rotation(a.plant, 0.0).q_inertial_from_target;
+  const Mat3 target_from_inertial = q_inertial_from_target.toRotationMatrix().transpose();
+  const Vec3 body_origin_inertial =
+      q_inertial_from_lvlh(a.plant, a.circle, 0.0) * x.r_lvlh_m - inertial_from_body * a.s.chaser.com_body_m;
+  const auto expected_in_target = [&](const Vec3& body_m) {
+    return Vec3(target_from_inertial * (body_origin_inertial + inertial_from_body * body_m));
+  };
+  const ArmFigure f = arm_figure(a.plant);
+  EXPECT_LT((f.hub_m - expected_in_target(Vec3::Zero())).norm(), 1e-9);
+  EXPECT_LT(f.q_target_from_hub.angularDistance(q_inertial_from_target.conjugate() * x.q_inertial_from_body), 1e-9);
+  Vec3 origin = arm.mount_body_m;
+  Mat3 rotation = Mat3::Identity();
+  for (int i = 0; i < model::kArmJoints; ++i) {
+    const model::ArmLinkParams& link = arm.links[static_cast<std::size_t>(i)];
+    origin += rotation * link.joint_position_parent_m;
+    EXPECT_LT((f.joint_m[static_cast<std::size_t>(i)] - expected_in_target(origin)).norm(), 1e-9) << "joint " << i + 1;
+    rotation = rotation * Eigen::AngleAxisd(arm.stowed_rad[static_cast<std::size_t>(i)], link.joint_axis).toRotationMatrix();
+  }
+  EXPECT_LT((f.tool_m - expected_in_target(stowed_tool(arm).r_m)).norm(), 1e-9);
+
+  model::ArmCommand command;
+  for (std::size_t j = 0; j < command.torque_Nm.size(); ++j) command.torque_Nm[j] = 5.0 * std::cos(0.5 + j);
+  command_arm(a.plant, command);
+  begin_plant_period(a.plant.params, a.plant.state, model::ThrusterCommand{}, 0);
+  advance_plant(a.plant.params, a.plant.state, 0, 100'000'000);  // 0.1 s of 1 ms joint steps
+  const ArmFigure moved = arm_figure(a.plant);
+  EXPECT_GT((moved.tool_m - f.tool_m).norm(), 1e-4);  // the arm moved
+  for (int i = 0; i + 1 < model::kArmJoints; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    EXPECT_NEAR((moved.joint_m[k + 1] - moved.joint_m[k]).norm(), (f.joint_m[k + 1] - f.joint_m[k]).norm(), 1e-9);
+  }
+  const GripperTruth g = gripper_truth(a.plant, a.fixture_target_m, a.q_target_from_fixture);
+  EXPECT_LT((moved.tool_m - (a.fixture_target_m + a.q_target_from_fixture * g.r_m)).norm(), 1e-12);
+}
+
 TEST(ArmJoints, TheGrippersVelocityAndRateAreItsMotionsDerivatives) {
   Awake a;
   model::ArmCommand command;

@@ -297,6 +297,8 @@ def test_a_capture_campaigns_runs_have_the_reachs_fields(tmp_path):
     rows = csv_rows(tmp_path / "c" / "runs.csv")
     assert "reach_max_rate_z_deg_s" in c.runs.dtype.names
     assert list(c.runs.dtype.names) == list(rows[0].keys())
-    for name in ("reach_final_error_x_m", "reach_peak_joint_torque_Nm", "reach_table2_met"):
+    for name in ("reach_final_error_x_m", "reach_peak_joint_torque_Nm", "reach_table2_met", "grasp_captured_s",
+                 "grasp_table2_met"):
         assert same_value(rows[0][name], c.runs[name][0]), name
     assert 0 < c.runs["reach_peak_joint_torque_Nm"][0] < 176
+    assert np.isnan(c.runs["grasp_captured_s"][0])  # cut before the approach: no grasp

@@ -22,9 +22,24 @@ chaser:
 """ + "".join("      - {lower_deg: -120, upper_deg: 120}\n" for _ in range(7))
 
 
-def fake_run(run_dir):
+FIGURE_SCENARIO = """
+thrusters:
+  list:
+    - {name: T1, position_body_m: [1.0, 1.0, 1.25]}
+    - {name: T2, position_body_m: [-1.0, -1.0, -1.25]}
+target:
+  body:
+    grasp_point_target_m: [3.9, 0.0, 0.6]
+    keep_out:
+      - {centre_target_m: [-1.1, 0.0, 0.0], half_extents_m: [5.0, 2.0, 2.0]}
+"""
+
+
+def fake_run(run_dir, figure=False):
     """100 periods: the arm wakes at row 20 (the gripper's channels NaN before), the gripper closing in on
-    the pose as 8 mm, 4 mm, 2 mm times exp(-t/10)."""
+    the pose as 8 mm, 4 mm, 2 mm times exp(-t/10). With figure, the arm's figure too: the hub at
+    (7.4, 0, 0.6) m turned 90 deg about z, the joints on a line to the tool, which moves from 6 m to 4.05 m
+    in x over the run."""
     run_dir.mkdir(parents=True)
     t = 0.1 * np.arange(100)
     awake = np.arange(100) >= 20
@@ -37,13 +52,26 @@ def fake_run(run_dir):
         for name, value in ((f"gripper_err_{c}_m", size * decay), (f"gripper_v_{c}_mps", -size / 10.0 * decay),
                             (f"gripper_att_err_{c}_rad", 0.001 * decay), (f"gripper_rate_{c}_radps", -1e-4 * decay)):
             columns[name] = np.where(awake, value, np.nan)
+    if figure:
+        half = np.sqrt(0.5)
+        for c, v in zip("xyz", (7.4, 0.0, 0.6)):
+            columns[f"hub_target_{c}_m"] = np.where(awake, v, np.nan)
+        for c, v in zip("wxyz", (half, 0.0, 0.0, half)):
+            columns[f"q_target_from_hub_{c}"] = np.where(awake, v, np.nan)
+        tool_x = 6.0 - (6.0 - 4.05) * t / t[-1]
+        for j in range(1, 9):
+            name = f"joint{j}_target" if j < 8 else "tool_target"
+            share = j / 8.0
+            for c, hub, tool in zip("xyz", (7.4, 0.0, 0.6), (tool_x, 0.0, 0.6)):
+                columns[f"{name}_{c}_m"] = np.where(awake, hub + share * (tool - hub), np.nan)
     header = ",".join(columns)
     np.savetxt(run_dir / "telemetry.csv", np.column_stack(list(columns.values())), delimiter=",", header=header,
                comments="")
-    (run_dir / "summary.json").write_text(json.dumps({"scenario": "fake_reach",
-                                                      "reach": {"flown": True, "hold_from_s": 5.0}}))
+    (run_dir / "summary.json").write_text(json.dumps({
+        "scenario": "fake_reach", "phases_flown": [{"name": "reach", "start_s": 2.0}, {"name": "capture", "start_s": 7.0}],
+        "reach": {"flown": True, "hold_from_s": 5.0, "grasp": {"closure_s": 8.55}}}))
     scenario = run_dir.parent / "fake_reach.yaml"
-    scenario.write_text(SCENARIO)
+    scenario.write_text(SCENARIO + FIGURE_SCENARIO if figure else SCENARIO)
     return scenario
 
 
@@ -80,3 +108,62 @@ def test_a_run_without_a_reach_is_refused(tmp_path):
     (run / "summary.json").write_text(json.dumps({"scenario": "x", "reach": None}))
     with pytest.raises(SystemExit, match="has no reach"):
         pr.main([str(run)])
+
+
+def test_the_quaternions_matrix_turns_x_to_y_for_90_deg_about_z():
+    half = np.sqrt(0.5)
+    np.testing.assert_allclose(pr.quat_matrix(half, 0.0, 0.0, half) @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], atol=1e-15)
+    r = pr.quat_matrix(0.5, 0.5, -0.5, 0.5)  # any unit quaternion: an orthonormal matrix of determinant 1
+    np.testing.assert_allclose(r @ r.T, np.eye(3), atol=1e-15)
+    assert np.linalg.det(r) == pytest.approx(1.0)
+
+
+def test_the_hubs_outline_is_the_box_its_thrusters_sit_on():
+    import yaml
+    edges = pr.hub_box_edges(yaml.safe_load(FIGURE_SCENARIO))
+    assert len(edges) == 12
+    lengths = sorted(round(float(np.linalg.norm(e[1] - e[0])), 12) for e in edges)
+    assert lengths == [2.0] * 8 + [2.5] * 4
+
+
+def test_the_key_instants_are_the_waking_the_hold_the_approach_the_closure_and_the_end(tmp_path):
+    fake_run(tmp_path / "run", figure=True)
+    t = pr.load_telemetry(tmp_path / "run")
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    instants = pr.key_instants(t, pr.reach_rows(t), summary)
+    assert [row for _, row in instants] == [20, 50, 70, 86, 99]  # 2.0, 5.0, 7.0, 8.55 -> 8.6, 9.9 s
+    assert instants[3][0] == "8.6 s: the jaws close"
+
+
+def test_the_stick_figures_are_drawn_where_the_telemetry_has_the_arms_figure(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run", figure=True)
+    t = pr.load_telemetry(tmp_path / "run")
+    points = pr.chain_points(t, 99)
+    np.testing.assert_allclose(points[0], [7.4, 0.0, 0.6])
+    np.testing.assert_allclose(points[-1], [4.05, 0.0, 0.6])
+    outline = pr.hub_outline(t, 99, pr.hub_box_edges(yaml_load(scenario)))
+    corners = np.vstack(outline)
+    # Turned 90 deg about z: the box's 2 m x-y square stays square, its 1.25 m half-height along z.
+    np.testing.assert_allclose(corners.min(axis=0), [6.4, -1.0, -0.65], atol=1e-12)
+    out = tmp_path / "plots"
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(out)])
+    assert (out / "reach_figures.png").stat().st_size > 10_000
+    assert "reach_figures.png" in capsys.readouterr().out
+
+
+def test_an_older_telemetry_without_the_figure_draws_no_stick_figures(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run")
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(tmp_path / "plots")])
+    assert not (tmp_path / "plots" / "reach_figures.png").exists()
+    assert "reach_figures.png" not in capsys.readouterr().out
+
+
+def yaml_load(path):
+    import yaml
+    return yaml.safe_load(Path(path).read_text())
+
+
+def test_the_hold_ends_where_the_approach_begins():
+    assert pr.approach_start_s({"phases_flown": [{"name": "reach", "start_s": 2760.0},
+                                                 {"name": "capture", "start_s": 2850.0}]}) == 2850.0
+    assert pr.approach_start_s({"phases_flown": [{"name": "reach", "start_s": 2760.0}]}) == float("inf")

@@ -215,3 +215,5 @@ def test_the_capture_steps_like_its_run_with_the_arm_in_its_telemetry():
     assert awake.sum() == 30  # the reach's 3 s of 0.1 s periods
     assert ran.summary["reach"]["flown"]
     assert ran.summary["phases_flown"][-1]["name"] == "reach"
+    grasp = ran.summary["reach"]["grasp"]
+    assert not grasp["attempted"] and grasp["at_closure"] is None and grasp["captured_s"] is None
