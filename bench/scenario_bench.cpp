@@ -105,6 +105,7 @@ struct LoopFixture {
   plant::Plant plant;
   flight::FlightParams flight_params = flight::make_flight_params(scenario);
   flight::FlightState flight_state;
+  model::TargetOrbit circle{scenario.orbit};
   TimeNs period_ns = from_seconds(scenario.control_period_s);
   TimeNs t_ns = 0;
 
@@ -120,7 +121,8 @@ struct LoopFixture {
   }
   model::ThrusterCommand flight_period() { return flight_period_traced().command; }
   flight::FlightOutput flight_period_traced() {
-    last_meas = plant::sense_plant(plant.params, plant.state, t_ns);
+    last_meas = plant::sense_plant(plant.params, plant.state, t_ns,
+                                   plant::q_inertial_from_lvlh(plant, circle, to_seconds(t_ns)));
     return flight::step_flight(flight_params, flight_state, last_meas);
   }
   model::SensorMeasurements last_meas;

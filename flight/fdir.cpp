@@ -156,9 +156,16 @@ void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& st
   if (d.thruster >= 0 && state.detector_isolated_s < 0) state.detector_isolated_s = in.t_s;
 }
 
+// Whether the watch has concluded anything: an alarm of a scheme or the detector, or a confirmation.
+bool watch_concluded(const FdirState& state) {
+  return state.position.alarm || state.attitude.alarm || state.detector.alarm ||
+         state.confirmed_thruster != model::kNoThruster;
+}
+
 // The watch starts (again) at control period `period`: fresh decisions, bank and detector.
 void start_watch(FdirState& state, std::int64_t period, double t_s) {
   state.armed = true;
+  state.lidar_gap = false;
   state.armed_s = t_s;
   state.bank_first_period = period;
   state.event = {};
@@ -305,6 +312,17 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
   if (p.watched.empty() || state.watched < 0) return;  // no FDI, or no parameters for this set
   const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
   if (!state.armed && in.t_s >= state.rearm_s) start_watch(state, in.period, in.t_s);
+  // A LIDAR gap (the target outside its view): no position row this period. The position scheme
+  // pauses (pause_fdi_scheme) and the deficit bank, whose windows need every period's row, stops. At
+  // the gap's end a watch that had concluded nothing starts afresh; one that had keeps what it
+  // concluded, its bank stopped, until a recovery starts the next watch. Nothing is erased.
+  const bool lidar_gap = !meas.lidar_valid;
+  if (lidar_gap) {
+    state.lidar_gap = true;
+  } else if (state.lidar_gap && state.armed && !watch_concluded(state)) {
+    start_watch(state, in.period, in.t_s);
+  }
+  const bool bank_runs = !state.lidar_gap;
   const Vec6& wrench = in.commanded_wrench;
   const Quat q_lvlh_from_body = in.q_inertial_from_lvlh.conjugate() * in.q_est_inertial_from_body;
 
@@ -316,20 +334,24 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
         state.event.active ? fdi::expected_propellant_increment_kg(in.ton, w.mass_flow_kgps, p.period_s) : 0.0;
     out.over_consumption =
         fdi::step_event_resolution(p.event, state.event, meas.propellant_used_kg, expected_kg, alarm_before);
-    if (p.deficit_isolation) step_deficit_bank(w, state, meas, in, q_lvlh_from_body);
-    if (p.deficit_detection) step_detector(p, w, state, in, out);
+    if (p.deficit_isolation && bank_runs) step_deficit_bank(w, state, meas, in, q_lvlh_from_body);
+    if (p.deficit_detection && bank_runs) step_detector(p, w, state, in, out);
   }
 
   fdi::FdiSchemeOutput& position = out.schemes[kPositionScheme];
   fdi::FdiSchemeOutput& attitude = out.schemes[kAttitudeScheme];
-  if (p.position_enabled) {
+  if (p.position_enabled && lidar_gap) {
+    fdi::pause_fdi_scheme(w.position, state.position, position);
+    if (!state.armed) clear_latches(state.position, position);
+  } else if (p.position_enabled) {
     // Eq. 20: u_c = R(Q_tgt, Q_chs) M_F T_on, the commanded force rotated into LVLH with the
     // estimated attitude; y is the LIDAR position.
     const Vec3 u_c = q_lvlh_from_body * Vec3(wrench.head<3>());
     fdi::step_fdi_scheme(w.position, state.position, meas.r_lvlh_m, u_c, in.ton.head<fdi::kSchemeThrusters>(),
                          out.over_consumption, position);
     if (!state.armed) clear_latches(state.position, position);
-    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.position_deficit, state.position, position);
+    if (state.armed && p.deficit_isolation && bank_runs)
+      deficit_confirmation(w, state, state.position_deficit, state.position, position);
     if (position.confirmed >= 0 && state.position_isolated_s < 0) state.position_isolated_s = in.t_s;
   }
   if (p.attitude_enabled) {
@@ -339,7 +361,8 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
     fdi::step_fdi_scheme(w.attitude, state.attitude, angles, Vec3(wrench.tail<3>()),
                          in.ton.head<fdi::kSchemeThrusters>(), out.over_consumption, attitude);
     if (!state.armed) clear_latches(state.attitude, attitude);
-    if (state.armed && p.deficit_isolation) deficit_confirmation(w, state, state.attitude_deficit, state.attitude, attitude);
+    if (state.armed && p.deficit_isolation && bank_runs)
+      deficit_confirmation(w, state, state.attitude_deficit, state.attitude, attitude);
     if (attitude.confirmed >= 0 && state.attitude_isolated_s < 0) state.attitude_isolated_s = in.t_s;
   }
   if (p.schemes > kDeficitScheme + 1) step_registered_schemes(p, state, meas, in, out);

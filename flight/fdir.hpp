@@ -102,6 +102,7 @@ struct SchemeLatch {
 struct FdirState {
   int watched = 0;                  // index into FdirParams::watched
   bool armed = true;                // false from a recovery until rearm_s
+  bool lidar_gap = false;           // the LIDAR has lost the target in this watch: the deficit bank has stopped
   double armed_s = 0;               // [s] when the current watch started
   double rearm_s = -1;              // [s]
   std::int64_t bank_first_period = 0;  // control period of the deficit bank's sample 0

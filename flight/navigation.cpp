@@ -1,5 +1,7 @@
 #include "flight/navigation.hpp"
 
+#include <stdexcept>
+
 namespace chaser::flight {
 
 NavParams make_nav_params(const model::Scenario& s) {
@@ -12,6 +14,10 @@ NavParams make_nav_params(const model::Scenario& s) {
 }
 
 NavState init_nav(const NavParams& /*params*/, const model::SensorMeasurements& first) {
+  if (!first.lidar_valid)
+    throw std::runtime_error(
+        "the LIDAR does not see the target at the run's start (outside sensors.lidar's fov_half_angle_deg or "
+        "range_max_m): the navigation has no position to start from; point the chaser's +x at the target");
   NavState state;
   state.translation.x << first.r_lvlh_m, Vec3::Zero();
   state.attitude.q_inertial_from_body = first.q_inertial_from_body.normalized();
@@ -30,7 +36,8 @@ NavEstimate step_nav(const NavParams& params, NavState& state, const model::Sens
                      const Vec3& force_cmd_lvlh_N_prev) {
   if (meas.t == state.t_last) return nav_estimate(state);
   predict_translation(params.translation, state.translation, force_cmd_lvlh_N_prev);
-  correct_translation(params.translation, state.translation, meas.r_lvlh_m);
+  // A LIDAR gap (the target outside its view): the filter propagates on the commanded force alone.
+  if (meas.lidar_valid) correct_translation(params.translation, state.translation, meas.r_lvlh_m);
   propagate_attitude(params.attitude, state.attitude, meas.omega_body_radps);
   correct_attitude(params.attitude, state.attitude, meas.q_inertial_from_body);
   state.t_last = meas.t;

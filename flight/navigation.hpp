@@ -34,10 +34,13 @@ struct NavState {
   TimeNs t_last = 0;  // [ns] time of the last measurement used
 };
 
-// Position from the LIDAR, velocity zero, attitude from the star tracker, bias zero.
+// Position from the LIDAR, velocity zero, attitude from the star tracker, bias zero. Throws
+// std::runtime_error when the LIDAR does not see the target in the first sample: without a
+// position the flight software cannot start (the scenario's initial state points it elsewhere).
 NavState init_nav(const NavParams& params, const model::SensorMeasurements& first);
 
-// One period: predict with the force commanded last period (LVLH, N), then correct with `meas`.
+// One period: predict with the force commanded last period (LVLH, N), then correct with `meas`
+// (the translation only with a LIDAR sample: in a gap it propagates on the commands alone).
 // A measurement with the same time stamp as the last one used is not applied twice: the current
 // estimate is returned unchanged (so the first period may pass the measurement init_nav consumed).
 NavEstimate step_nav(const NavParams& params, NavState& state, const model::SensorMeasurements& meas,

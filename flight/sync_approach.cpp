@@ -96,8 +96,22 @@ class PoseModel {
     // faded out by the power 1 - s, so that the start's rate is the pointing's, not zero.
     const Quat pointing_turn = on_axis_attitude(times_.rotation_start_s).conjugate() * on_axis.q_inertial_from_body;
     const Quat fading_turn = quat_from_rotation_vector((1.0 - s) * rotation_vector_from_quat(pointing_turn));
-    return {(1.0 - s) * on_axis.r_lvlh_m + s * fixed_point_lvlh,
-            (virtual_target * sync_offset_.slerp(s, plan_.transfer.q_target_from_body) * fading_turn).normalized()};
+    const Vec3 r_lvlh = (1.0 - s) * on_axis.r_lvlh_m + s * fixed_point_lvlh;
+    const Quat spun = (virtual_target * sync_offset_.slerp(s, transfer_start_attitude()) * fading_turn).normalized();
+    // The boresight held on the target's CoM: the virtual target turns about the estimated spin axis,
+    // not about the line of sight (a tumble's axis wanders in the body: 21 deg off the LIDAR's
+    // boresight half-way through S1's spin-up without this), so the least turn that puts body +x
+    // back on the line of sight follows. It is nil at both ends, where the two attitudes point.
+    const Vec3 boresight = spun * Vec3::UnitX();
+    const Vec3 line_of_sight = q_inertial_from_lvlh * (-r_lvlh).normalized();
+    return {r_lvlh, (rotation_towards(boresight, line_of_sight, 1.0) * spun).normalized()};
+  }
+
+  // The transfer's first attitude in the target's frame (flight/sync_guidance.hpp): boresight on the
+  // target, as sync_offset_'s, so that the slerp between them is a roll about the line of sight and
+  // the target stays in view.
+  Quat transfer_start_attitude() const {
+    return transfer_attitude(plan_.transfer.q_target_from_body, start_target_m_, 0.0);
   }
 
   // The pointing attitude on the axis at its end (the rotation's synchronisation starts from it).

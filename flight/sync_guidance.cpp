@@ -1,7 +1,9 @@
 #include "flight/sync_guidance.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/rotation.hpp"
 #include "flight/target_frame.hpp"
 
 namespace chaser::flight {
@@ -12,6 +14,16 @@ Eigen::Vector3d rest_to_rest_quintic(double tau) {
   const double t2 = tau * tau, t3 = t2 * tau;
   return Eigen::Vector3d(t3 * (10.0 - 15.0 * tau + 6.0 * t2), 30.0 * t2 * (1.0 - 2.0 * tau + t2),
                          60.0 * tau * (1.0 - 3.0 * tau + 2.0 * t2));
+}
+
+Quat transfer_attitude(const Quat& q_target_from_body, const Vec3& p_target_m, double s) {
+  const double s2 = s * s, s4 = s2 * s2;
+  const Vec3 boresight = q_target_from_body * Vec3::UnitX();
+  const Vec3 to_target = -p_target_m.normalized();
+  const Vec3 axis = boresight.cross(to_target);
+  const double angle = std::atan2(axis.norm(), boresight.dot(to_target));
+  if (axis.norm() < 1e-12) return q_target_from_body;  // on the line of sight (or opposite it: not a transfer's)
+  return (Quat(Eigen::AngleAxisd((1.0 - s4 * s4) * angle, axis.normalized())) * q_target_from_body).normalized();
 }
 
 GuidanceRef sync_reference(const SyncTransferParams& params, const TargetEstimate& target, const model::LvlhFrame& lvlh,
@@ -30,8 +42,21 @@ GuidanceRef sync_reference(const SyncTransferParams& params, const TargetEstimat
   ref.r_lvlh_m = point.r_m;
   ref.v_lvlh_mps = point.v_mps;
   ref.a_lvlh_mps2 = point.a_mps2;
-  ref.q_inertial_from_body = (target.q_inertial_from_target * params.q_target_from_body).normalized();
-  ref.omega_body_radps = params.q_target_from_body.conjugate() * target.omega_target_radps;
+  // The attitude's own turn in the target's frame, by a central difference of the progress s
+  // (h = 1e-4 of the profile: the turn's second derivative is below 1 rad per unit s^2, so the
+  // difference's error, h^2/6 of the third, is far below the rate loops' noise).
+  const Quat q_target_from_body = transfer_attitude(params.q_target_from_body, p, s[0]);
+  constexpr double kH = 1e-4;
+  const double s_lo = std::max(0.0, s[0] - kH), s_hi = std::min(1.0, s[0] + kH);
+  const Vec3 turn_per_s =
+      s_hi > s_lo ? Vec3(rotation_vector_from_quat(
+                             transfer_attitude(params.q_target_from_body, params.start_target_m + leg * s_lo, s_lo)
+                                 .conjugate() *
+                             transfer_attitude(params.q_target_from_body, params.start_target_m + leg * s_hi, s_hi)) /
+                         (s_hi - s_lo))
+                  : Vec3::Zero();
+  ref.q_inertial_from_body = (target.q_inertial_from_target * q_target_from_body).normalized();
+  ref.omega_body_radps = q_target_from_body.conjugate() * target.omega_target_radps + turn_per_s * (s[1] / duration);
   return ref;
 }
 

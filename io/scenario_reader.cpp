@@ -76,6 +76,7 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
     m.vec3("bias_m", out.lidar.bias_m);
     m.number("delay_s", Range::non_negative(), out.lidar.delay_s);
     m.angle_deg("fov_half_angle_deg", Range::left_open(0.0, 90.0), out.lidar.fov_half_angle_rad);
+    if (m.has("range_max_m")) m.number("range_max_m", Range::left_open(0.0, 1e6), out.lidar.range_max_m);
   });
   read_section(r, "star_tracker", [&](MapReader& m) {
     m.number("noise_sigma_rad", Range::non_negative(), out.star_tracker.noise_sigma_rad);
@@ -96,6 +97,7 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
       m.number("period_s", Range::left_open(0.0, 10.0), out.target_pose->period_s);
       m.angle_deg("attitude_noise_deg", Range::closed(0.0, 30.0), out.target_pose->attitude_noise_rad);
       m.number("latency_s", Range::non_negative(), out.target_pose->latency_s);
+      if (m.has("range_max_m")) m.number("range_max_m", Range::left_open(0.0, 1e6), out.target_pose->range_max_m);
     });
   }
   if (r.has("arm_camera")) {  // optional; its period and latency against the control period in validate_scenario

@@ -60,6 +60,7 @@ struct SensorMeasurements {
   double propellant_used_kg = 0;                   // [kg] tank gauging: propellant used so far
   TargetPoseMeasurement target_pose{};             // pose sensor, when the scenario has one
   std::optional<ArmMeasurements> arm{};            // a plant with an arm only (disengaged: nothing copied)
+  bool lidar_valid = true;                         // false: a LIDAR gap, the target out of its view (r_lvlh_m zero)
 };
 
 // Flight -> plant: commanded on-times for the coming period, by thruster index (0 for the idle

@@ -12,11 +12,15 @@ namespace chaser::model {
 // scenario loader rejects longer delays.
 inline constexpr int kMaxSensorDelayPeriods = 32;
 
-struct LidarParams {  // relative position of the chaser from the target, MSR LVLH axes
+// Relative position of the chaser from the target, MSR LVLH axes. It sees the target only while the
+// target's CoM is inside its cone about the body's +x and within its range: a sample taken then is
+// valid; one taken outside is a gap (model::SensorMeasurements::lidar_valid false), never a value.
+struct LidarParams {
   double noise_sigma_m = 0.001;     // [m] per axis, 1-sigma
   Vec3 bias_m = Vec3::Zero();       // [m]
   double delay_s = 0.0;             // [s]
-  double fov_half_angle_rad = 0.35; // [rad] target must stay within this cone about body +x
+  double fov_half_angle_rad = 0.35; // [rad] the cone's half angle about body +x
+  double range_max_m = 5000.0;      // [m] a rendezvous LIDAR's ranging reach
 };
 
 struct StarTrackerParams {  // chaser attitude q_inertial_from_body
@@ -33,11 +37,14 @@ struct GyroParams {  // chaser body rate omega_body
 
 // A pose sensor on the target: the target's attitude relative to the chaser's body, as a
 // camera or LIDAR pose estimate gives it, taken every period_s and delivered latency_s later
-// (COMRADE 2018 gives 3 Hz for the reach phase; we use it from the synchronisation on).
+// (COMRADE 2018 gives 3 Hz for the reach phase; we use it from the synchronisation on). It looks
+// along the LIDAR's boresight: a sample is taken only while the LIDAR sees the target and the
+// target is within range_max_m (a pose from a point cloud needs it closer than a range does).
 struct TargetPoseSensorParams {
   double period_s = 1.0 / 3.0;        // [s] between samples, in [control period, 10]
   double attitude_noise_rad = 0.0175;  // [rad] 1-sigma per axis, a small rotation in target axes
   double latency_s = 0.1;             // [s] from taking to delivery, in [0, period_s)
+  double range_max_m = 5000.0;        // [m]
 };
 
 // The arm camera (COMRADE 2018, sec. 6.2.1: the gripper-to-grasping-point pose at 10 Hz): on the

@@ -62,10 +62,15 @@ std::span<const SloshState> slosh_states(const Plant& plant) {
 
 void inject_fault(Plant& plant, const model::FaultParams& fault) { plant.state.faults.push_back(fault); }
 
-model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t) {
+model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t,
+                                      const Quat& q_inertial_from_lvlh) {
   const RigidState& chaser = state.chaser;
+  const Vec3 line_of_sight_m = line_of_sight_body_m(chaser.r_lvlh_m, q_inertial_from_lvlh, chaser.q_inertial_from_body);
+  const model::LidarParams& lidar = params.sensors.lidar;
+  const bool lidar_sees = sees_target(lidar.fov_half_angle_rad, lidar.range_max_m, line_of_sight_m);
   model::SensorMeasurements meas = sample_sensors(params.sensors, state.sensors, t, chaser.r_lvlh_m,
-                                                  chaser.q_inertial_from_body, chaser.omega_body_radps, state.streams.sensors);
+                                                  chaser.q_inertial_from_body, chaser.omega_body_radps, state.streams.sensors,
+                                                  lidar_sees);
   meas.propellant_used_kg = state.propellant_used_kg + state.streams.propellant_gauge.normal(
                                                            0.0, params.sensors.propellant.noise_sigma_kg);
   if (params.sensors.arm_camera) meas.arm = sense_arm_with_camera(params, state, to_seconds(t));
@@ -74,8 +79,9 @@ model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& sta
     const Quat q_inertial_from_target =
         visit_motion(params, state, [&](const auto& p, const auto& s) { return target_rotation(p, s, t_s); })
             .q_inertial_from_target;
+    const bool pose_sees = lidar_sees && line_of_sight_m.norm() <= params.sensors.target_pose->range_max_m;
     meas.target_pose = sample_target_pose(*params.sensors.target_pose, state.sensors, t_s, chaser.q_inertial_from_body,
-                                          q_inertial_from_target, state.streams.target_pose);
+                                          q_inertial_from_target, state.streams.target_pose, pose_sees);
   }
   return meas;
 }

@@ -101,7 +101,10 @@ std::span<const SloshState> slosh_states(const Plant& plant);
 // A fault from its onset on (not before the plant's time: the caller checks).
 void inject_fault(Plant& plant, const model::FaultParams& fault);
 
-model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t);
+// The sensors' samples at t (the LIDAR and the pose sensor see the target only inside their view:
+// q_inertial_from_lvlh turns the LIDAR's LVLH line of sight into the body's axes).
+model::SensorMeasurements sense_plant(const PlantParams& params, PlantState& state, TimeNs t,
+                                      const Quat& q_inertial_from_lvlh);
 
 // The period at t_k begins under the command: the latches act, tau(k) is drawn, the thrust profile
 // of [t_k, t_k + T] is scheduled and the disturbances drawn. advance_plant then carries the truth

@@ -53,7 +53,7 @@ SensorState make_sensor_state(const model::SensorParams& params, TimeNs period_n
 
 model::SensorMeasurements sample_sensors(const model::SensorParams& params, SensorState& state, TimeNs t,
                                          const Vec3& r_lvlh_m, const Quat& q_inertial_from_body,
-                                         const Vec3& omega_body_radps, SensorNoise& noise) {
+                                         const Vec3& omega_body_radps, SensorNoise& noise, bool target_in_view) {
   const Vec3 r_meas = r_lvlh_m + params.lidar.bias_m + white_noise(noise.lidar, params.lidar.noise_sigma_m);
   const Vec3 attitude_error =
       params.star_tracker.bias_rad + white_noise(noise.star_tracker, params.star_tracker.noise_sigma_rad);
@@ -63,7 +63,10 @@ model::SensorMeasurements sample_sensors(const model::SensorParams& params, Sens
 
   model::SensorMeasurements out;
   out.t = t;
-  out.r_lvlh_m = push_and_deliver(state.lidar_r_lvlh_m, r_meas);
+  const LidarSample& lidar =
+      push_and_deliver(state.lidar_r_lvlh_m, target_in_view ? LidarSample{r_meas, true} : LidarSample{Vec3::Zero(), false});
+  out.r_lvlh_m = lidar.r_lvlh_m;
+  out.lidar_valid = lidar.valid;
   out.q_inertial_from_body = push_and_deliver(state.star_q_inertial_from_body, q_meas);
   out.omega_body_radps = push_and_deliver(state.gyro_omega_body_radps, omega_meas);
   return out;
@@ -71,18 +74,28 @@ model::SensorMeasurements sample_sensors(const model::SensorParams& params, Sens
 
 model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorParams& params, SensorState& state,
                                                 double t_s, const Quat& q_inertial_from_body,
-                                                const Quat& q_inertial_from_target, RandomStream& noise) {
+                                                const Quat& q_inertial_from_target, RandomStream& noise,
+                                                bool target_in_view) {
   return sample_with_latency(params.period_s, params.latency_s, t_s, state.target_pose_next_s,
                              state.target_pose_pending, [&](double taken_s) {
                                const Vec3 error(noise.normal(), noise.normal(), noise.normal());
                                model::TargetPoseMeasurement m;
-                               m.valid = true;
+                               m.valid = target_in_view;
                                m.taken_s = taken_s;
                                m.q_body_from_target = (q_inertial_from_body.conjugate() * q_inertial_from_target *
                                                        quat_from_rotation_vector(params.attitude_noise_rad * error))
                                                           .normalized();
                                return m;
                              });
+}
+
+Vec3 line_of_sight_body_m(const Vec3& r_lvlh_m, const Quat& q_inertial_from_lvlh, const Quat& q_inertial_from_body) {
+  return q_inertial_from_body.conjugate() * (q_inertial_from_lvlh * (-r_lvlh_m));
+}
+
+bool sees_target(double fov_half_angle_rad, double range_max_m, const Vec3& line_of_sight_body_m) {
+  const double range_m = line_of_sight_body_m.norm();
+  return range_m <= range_max_m && line_of_sight_body_m.x() >= range_m * std::cos(fov_half_angle_rad);
 }
 
 }  // namespace chaser::plant

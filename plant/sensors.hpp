@@ -39,8 +39,14 @@ struct DelayLine {
   int delay_periods = 0;   // [periods] age of the delivered sample
 };
 
+// A LIDAR sample as taken: the measured position, or a gap (valid false, r zero).
+struct LidarSample {
+  Vec3 r_lvlh_m = Vec3::Zero();  // [m]
+  bool valid = true;
+};
+
 struct SensorState {
-  DelayLine<Vec3> lidar_r_lvlh_m;           // [m]
+  DelayLine<LidarSample> lidar_r_lvlh_m;
   DelayLine<Quat> star_q_inertial_from_body;
   DelayLine<Vec3> gyro_omega_body_radps;    // [rad/s]
   // The target pose sensor: its next sample's time and the sample awaiting delivery.
@@ -82,9 +88,12 @@ Sample sample_with_latency(double period_s, double latency_s, double t_s, double
 // period after sample_sensors: takes a sample of the truth when its period has come (the target's
 // attitude in the chaser's body axes, turned by a random small rotation of the noise), and returns
 // the pending one once its latency has passed (invalid otherwise). Allocation-free.
+// target_in_view: the LIDAR sees the target and it is within the pose sensor's range; a sample
+// due while it is not is not taken (its noise drawn all the same).
 model::TargetPoseMeasurement sample_target_pose(const model::TargetPoseSensorParams& params, SensorState& state,
                                                 double t_s, const Quat& q_inertial_from_body,
-                                                const Quat& q_inertial_from_target, RandomStream& noise);
+                                                const Quat& q_inertial_from_target, RandomStream& noise,
+                                                bool target_in_view = true);
 
 // Delays in periods: round(delay_s / T), clamped to [0, kMaxSensorDelayPeriods] (the scenario
 // validator checks both the range and that the delay is a whole number of periods).
@@ -92,8 +101,16 @@ SensorState make_sensor_state(const model::SensorParams& params, TimeNs period_n
 
 // Takes this period's samples of the truth at time t and returns the delivered (delayed)
 // measurements, stamped with t. Call once per control period. Allocation-free.
+// target_in_view: whether the LIDAR sees the target now (lidar_sees_target); the noise is drawn
+// either way, so that a gap does not shift the streams.
 model::SensorMeasurements sample_sensors(const model::SensorParams& params, SensorState& state, TimeNs t,
                                          const Vec3& r_lvlh_m, const Quat& q_inertial_from_body,
-                                         const Vec3& omega_body_radps, SensorNoise& noise);
+                                         const Vec3& omega_body_radps, SensorNoise& noise, bool target_in_view = true);
+
+// The target's CoM from the chaser's CoM in the chaser's body axes [m] (the LIDAR's line of sight).
+Vec3 line_of_sight_body_m(const Vec3& r_lvlh_m, const Quat& q_inertial_from_lvlh, const Quat& q_inertial_from_body);
+
+// Whether the target is inside the cone about the body's +x and within range_max_m.
+bool sees_target(double fov_half_angle_rad, double range_max_m, const Vec3& line_of_sight_body_m);
 
 }  // namespace chaser::plant

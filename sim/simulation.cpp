@@ -141,7 +141,8 @@ const model::SensorMeasurements& Simulation::begin_period() {
     arm_awake_ = true;
   }
   truth_ = plant::chaser_state(plant_);
-  measurements_ = plant::sense_plant(plant_.params, plant_.state, k_ * period_ns_);
+  measurements_ = plant::sense_plant(plant_.params, plant_.state, k_ * period_ns_,
+                                     plant::q_inertial_from_lvlh(plant_, orbit_, to_seconds(k_ * period_ns_)));
   // The FDI's lanes of this period (before a recovery in it changes them), for telemetry only.
   watched_ = recording_ && !flight_params_.fdir.watched.empty() && flight_state_.fdir.watched >= 0
                  ? flight::watched_set(flight_params_.fdir, flight_state_.fdir)

@@ -38,4 +38,13 @@ void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const
   ++state.period;
 }
 
+void pause_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, FdiSchemeOutput& out) {
+  state.residual.started = false;
+  out = FdiSchemeOutput{};
+  out.alarm = state.alarm;
+  out.confirmed = state.confirmed;
+  out.alarm_time_s = state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
+  ++state.period;
+}
+
 }  // namespace chaser::flight::fdi

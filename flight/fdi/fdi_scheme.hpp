@@ -55,6 +55,11 @@ std::vector<std::string> validate(const FdiSchemeParams& params);
 // saves copying a returned struct through the stack every period (a store-forwarding stall).
 void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
                      const SchemeTon& ton, bool over_consumption, FdiSchemeOutput& out);
+// A period without its measurement (a LIDAR gap): the scheme pauses. Its observer is set again from
+// the next measurement (its estimate has drifted on no data), its GLR window and latches are kept,
+// the period count runs on (alarm times stay run times). `out`: the latches, no residual.
+void pause_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, FdiSchemeOutput& out);
+
 inline FdiSchemeOutput step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y,
                                        const Vec3& u_c, const SchemeTon& ton, bool over_consumption) {
   FdiSchemeOutput out;

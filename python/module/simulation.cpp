@@ -41,6 +41,7 @@ py::dict measurements_dict(const model::SensorMeasurements& m, std::int64_t peri
   d["period"] = period;
   d["q_inertial_from_lvlh"] = quaternion(orbit.q_inertial_from_lvlh(to_seconds(m.t)));
   d["r_lvlh_m"] = array(m.r_lvlh_m);
+  d["lidar_valid"] = m.lidar_valid;
   d["q_inertial_from_body"] = quaternion(m.q_inertial_from_body);
   d["omega_body_radps"] = array(m.omega_body_radps);
   d["propellant_used_kg"] = m.propellant_used_kg;

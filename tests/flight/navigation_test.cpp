@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 #include "core/rotation.hpp"
 
 namespace chaser::flight {
@@ -51,6 +54,39 @@ TEST(Navigation, InitialisesFromFirstMeasurementAndIgnoresRepeats) {
   EXPECT_EQ(again.r_lvlh_m, e0.r_lvlh_m);
   EXPECT_EQ(again.v_lvlh_mps, e0.v_lvlh_mps);
   EXPECT_EQ(state.t_last, first.t);
+}
+
+// In a LIDAR gap the translation estimate is the filter's prediction alone (the HCW model under the
+// commanded force), to rounding; the attitude filter runs on. Without the target in view at the
+// start there is nothing to start from: a clear error.
+TEST(Navigation, AGapPropagatesOnTheCommandsAndAStartWithoutTheTargetIsRefused) {
+  const model::Scenario s = test_scenario();
+  const NavParams p = make_nav_params(s);
+  model::SensorMeasurements meas;
+  meas.r_lvlh_m = Vec3(0.3, -20.0, 0.1);
+  NavState state = init_nav(p, meas);
+  const Vec3 force(2.0, -1.0, 0.5);
+  meas.t = kPeriodNs;
+  meas.r_lvlh_m = Vec3(0.31, -19.99, 0.1);
+  step_nav(p, state, meas, force);
+  Vec6 predicted = state.translation.x;
+  meas.lidar_valid = false;
+  meas.r_lvlh_m = Vec3::Zero();
+  for (int k = 2; k < 50; ++k) {
+    meas.t = k * kPeriodNs;
+    predicted = p.translation.Ad * predicted + p.translation.Bd_force * force;
+    const NavEstimate e = step_nav(p, state, meas, force);
+    EXPECT_LE((e.r_lvlh_m - predicted.head<3>()).norm(), 1e-12) << k;
+    EXPECT_LE((e.v_lvlh_mps - predicted.tail<3>()).norm(), 1e-14) << k;
+  }
+  model::SensorMeasurements blind;
+  blind.lidar_valid = false;
+  try {
+    init_nav(p, blind);
+    ADD_FAILURE() << "a start without the target in view was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("fov_half_angle_deg"), std::string::npos) << e.what();
+  }
 }
 
 // With perfect measurements of a thrusting, turning chaser, the estimate converges to the truth:

@@ -115,8 +115,10 @@ TEST(SyncApproach, ApproachAlongTheAxisIsStraightInInertialSpace) {
 }
 
 // At the end of the rotation's synchronisation the chaser turns with the target (attitude
-// q_target q_target_from_body and its rate), at its start it points at the target without turning;
-// the position is the axis point, which for a principal-axis spin is fixed in the target too.
+// q_target q_0, q_0 the transfer's first attitude, flight/sync_guidance.hpp's transfer_attitude at
+// s = 0, and its rate), at its start it points at the target without turning; the position is the
+// axis point, which for a principal-axis spin is fixed in the target too. Throughout, body +x stays
+// on the target (the LIDAR's view).
 TEST(SyncApproach, RotationSynchronisationEndsTurningWithTheTarget) {
   const SyncApproachPlan plan = envisat_like_plan();
   const model::TargetOrbit orbit(kMu, kRadius);
@@ -131,10 +133,17 @@ TEST(SyncApproach, RotationSynchronisationEndsTurningWithTheTarget) {
   EXPECT_LE((*latch.start_target_m - Vec3(0.0, 0.0, 12.0)).norm(), 1e-9);
   const GuidanceRef before_end = fly_to(plan, latch, Quat::Identity(), omega, orbit, 2399.9);
   const TargetEstimate target = spinning_target(Quat::Identity(), omega, 2399.9);
-  const Quat turning = target.q_inertial_from_target * plan.transfer.q_target_from_body;
+  const Quat q_0 = transfer_attitude(plan.transfer.q_target_from_body, *latch.start_target_m, 0.0);
+  EXPECT_LE((q_0 * Vec3::UnitX() + latch.start_target_m->normalized()).norm(), 1e-12);  // on the target
+  const Quat turning = target.q_inertial_from_target * q_0;
   EXPECT_LE(rotation_vector_from_quat(before_end.q_inertial_from_body.conjugate() * turning).norm(), 1e-7);
   // h^2/6 of the spin-up's second rate derivative (w 15 (2 + ...) / D^2 ~ 1e-4 rad/s^3): ~1e-7.
-  EXPECT_LE((before_end.omega_body_radps - plan.transfer.q_target_from_body.conjugate() * omega).norm(), 1e-6);
+  EXPECT_LE((before_end.omega_body_radps - q_0.conjugate() * omega).norm(), 1e-6);
+  for (double t = 2200.0; t <= 2400.0; t += 5.0) {
+    const GuidanceRef ref = fly_to(plan, latch, Quat::Identity(), omega, orbit, t);
+    const Quat q_lvlh_from_body = orbit.q_inertial_from_lvlh(t).conjugate() * ref.q_inertial_from_body;
+    EXPECT_LE((q_lvlh_from_body * Vec3::UnitX() + ref.r_lvlh_m.normalized()).norm(), 1e-9) << t;
+  }
   const Vec3 axis_point_lvlh = orbit.q_inertial_from_lvlh(2399.9).conjugate() * Vec3(0.0, 0.0, 12.0);
   EXPECT_LE((before_end.r_lvlh_m - axis_point_lvlh).norm(), 1e-9);
 }

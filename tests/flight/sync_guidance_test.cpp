@@ -1,11 +1,12 @@
 // The synchronised reference (flight/sync_guidance.hpp) against closed forms: the quintic's ends,
 // a target spinning about a principal axis with LVLH held still (the hold point's centripetal
-// acceleration w^2 rho), the transfer's continuity with the holds at both ends, and the attitude
-// turning with the target.
+// acceleration w^2 rho), the transfer's continuity with the holds at both ends, the attitude
+// turning with the target, and the transfer's attitude keeping the target in the sensors' view.
 #include "flight/sync_guidance.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/rotation.hpp"
@@ -78,6 +79,48 @@ TEST(SyncGuidance, TransferJoinsTheHoldsAtBothEnds) {
   const GuidanceRef mid = sync_reference(transfer, target, lvlh, 1100.0);
   const Vec3 mid_target = target.q_inertial_from_target.conjugate() * mid.r_lvlh_m;  // LVLH = inertial here
   EXPECT_LE((mid_target - Vec3(9.7, 0.0, 0.6)).norm(), 1e-13);
+}
+
+// ENVISAT's transfer: from the angular-momentum axis 12 m out to the capture point (7.4, 0, 0.6) m,
+// facing the adapter ring (body +x along target -x). The boresight is on the target's CoM at the
+// start (1e-12 rad), within 5 deg of it all the way (the header's s^8 bound; the line of sight
+// turns 90 deg), and the capture attitude at the end; the reference's rate is its attitude's
+// derivative (central differences over 0.01 s: error ~ h^2/6 of the rate's second derivative,
+// below 1e-8 rad/s here).
+TEST(SyncGuidance, TransferKeepsTheTargetInTheSensorsView) {
+  const Quat q_capture(0.0, 0.0, 0.0, 1.0);
+  const Vec3 start(0.0, 12.0, 0.0), capture(7.4, 0.0, 0.6);
+  double largest_miss = 0.0;
+  for (int k = 0; k <= 100; ++k) {
+    const double s = k / 100.0;
+    const Vec3 p = start + s * (capture - start);
+    const Quat q = transfer_attitude(q_capture, p, s);
+    const double miss = std::acos(std::clamp((q * Vec3::UnitX()).dot(-p.normalized()), -1.0, 1.0));
+    largest_miss = std::max(largest_miss, miss);
+    if (k == 0) EXPECT_LE(miss, 1e-12);
+  }
+  EXPECT_LE(largest_miss, 5.0 * M_PI / 180.0);
+  EXPECT_LE(transfer_attitude(q_capture, capture, 1.0).angularDistance(q_capture), 1e-15);
+  const double capture_angle = std::acos((q_capture * Vec3::UnitX()).dot(-capture.normalized()));
+  EXPECT_GE(largest_miss, capture_angle);  // measured 4.81 deg at s = 0.93, the capture point's own 4.64
+
+  TargetEstimate target;
+  target.q_inertial_from_target = quat_from_rotation_vector(Vec3(0.3, -0.2, 0.5));
+  target.omega_target_radps = Vec3(0.0, 0.0436, 0.0);
+  model::LvlhFrame lvlh;
+  SyncTransferParams transfer{.start_target_m = start, .capture_target_m = capture, .start_s = 100.0,
+                              .duration_s = 300.0, .q_target_from_body = q_capture};
+  const double h = 0.01;
+  for (const double t : {120.0, 200.0, 250.0, 330.0, 390.0}) {
+    // The target's attitude at t +- h (its rate constant): the reference's inertial attitude's derivative.
+    const auto attitude = [&](double at) {
+      TargetEstimate moved = target;
+      moved.q_inertial_from_target = target.q_inertial_from_target * quat_from_rotation_vector(target.omega_target_radps * (at - t));
+      return sync_reference(transfer, moved, lvlh, at).q_inertial_from_body;
+    };
+    const Vec3 omega_expected = rotation_vector_from_quat(attitude(t - h).conjugate() * attitude(t + h)) / (2.0 * h);
+    EXPECT_LE((sync_reference(transfer, target, lvlh, t).omega_body_radps - omega_expected).norm(), 1e-8) << t;
+  }
 }
 
 }  // namespace

@@ -52,6 +52,7 @@ const BadCase kBadCases[] = {
   {"negative_noise", {"sensors.star_tracker.noise_sigma_rad=-1e-5"}, "sensors.star_tracker.noise_sigma_rad", "must be >= 0"},
   {"env_noise_negative", {"environment.force_noise_sigma_N=-1"}, "environment.force_noise_sigma_N", "must be >= 0"},
   {"fov_too_wide", {"sensors.lidar.fov_half_angle_deg=120"}, "sensors.lidar.fov_half_angle_deg", "must be in (0, 90] (got 120)"},
+  {"lidar_range_zero", {"sensors.lidar.range_max_m=0"}, "sensors.lidar.range_max_m", "must be in (0, 1000000] (got 0)"},
   {"corridor_90", {"guidance.corridor_half_angle_deg=90"}, "guidance.corridor_half_angle_deg", "must be in (0, 90) (got 90)"},
   {"capture_beyond_start", {"guidance.capture_distance_m=25"}, "guidance.capture_distance_m", "must be < guidance.start_distance_m = 20 (got 25)"},
   {"blend_too_long", {"guidance.blend_time_s=600"}, "guidance.blend_time_s", "must be <= guidance.approach_duration_s / 2 = 575"},

@@ -30,7 +30,7 @@ void fly(Plant& plant, int n, TimeNs& t) {
   model::ThrusterCommand command;
   command.ton[0] = command.ton[2] = 0.1;
   for (int k = 0; k < n; ++k, t += plant.params.period_ns) {
-    sense_plant(plant.params, plant.state, t);
+    sense_plant(plant.params, plant.state, t, Quat::Identity());  // for its effect on the state only
     step_plant(plant.params, plant.state, command, t);
   }
 }

@@ -32,7 +32,7 @@ void fly(Plant& plant, int n, TimeNs& t, bool thrust = true) {
   model::ThrusterCommand command;
   if (thrust) command.ton[0] = command.ton[2] = 0.1;
   for (int k = 0; k < n; ++k, t += plant.params.period_ns) {
-    sense_plant(plant.params, plant.state, t);
+    sense_plant(plant.params, plant.state, t, Quat::Identity());  // for its effect on the state only
     step_plant(plant.params, plant.state, command, t);
   }
 }

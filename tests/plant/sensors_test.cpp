@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "core/rotation.hpp"
@@ -162,6 +163,53 @@ TEST(Sensors, TargetPoseNoiseHasItsSigma) {
     n += 3;
   }
   EXPECT_NEAR(std::sqrt(sum_sq / n), 0.01, 0.0005);
+}
+
+// The view: inside the cone about body +x (20 deg here) and the range, on both sides of each edge
+// (the cone's by 1e-6 rad, the range's by 1 mm).
+TEST(Sensors, TheTargetIsSeenInsideTheConeAndRangeOnly) {
+  const double cone = 20.0 * std::numbers::pi / 180.0, range = 100.0;
+  const auto at = [](double angle_rad, double distance_m) {
+    return Vec3(distance_m * std::cos(angle_rad), distance_m * std::sin(angle_rad) * 0.6,
+                distance_m * std::sin(angle_rad) * 0.8);
+  };
+  EXPECT_TRUE(sees_target(cone, range, at(0.0, 30.0)));
+  EXPECT_TRUE(sees_target(cone, range, at(cone - 1e-6, 30.0)));
+  EXPECT_FALSE(sees_target(cone, range, at(cone + 1e-6, 30.0)));
+  EXPECT_TRUE(sees_target(cone, range, at(0.1, range - 1e-3)));
+  EXPECT_FALSE(sees_target(cone, range, at(0.1, range + 1e-3)));
+  EXPECT_FALSE(sees_target(cone, range, Vec3(-30.0, 0.0, 0.0)));  // behind
+  // The line of sight in body axes: the chaser 10 m along LVLH +y, LVLH turned 90 deg about z in
+  // inertial space, the body turned as LVLH: the target is along body -y.
+  const Quat quarter(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitZ()));
+  EXPECT_LE((line_of_sight_body_m(Vec3(0.0, 10.0, 0.0), quarter, quarter) - Vec3(0.0, -10.0, 0.0)).norm(), 1e-14);
+}
+
+// A sample taken out of view is a gap, delivered with the LIDAR's delay like any sample (its
+// position zero, never a value), and it shifts no noise stream: the samples after it are those of
+// a run without the gap, bit for bit. The pose sensor takes no sample out of view.
+TEST(Sensors, AGapIsDeliveredAsAGapAndShiftsNoStream) {
+  model::SensorParams params;
+  params.lidar.delay_s = 0.2;
+  SensorState with_gap = make_sensor_state(params, kPeriodNs), without = make_sensor_state(params, kPeriodNs);
+  SensorNoise noise_gap = make_sensor_noise(9), noise_without = make_sensor_noise(9);
+  for (int k = 0; k < 20; ++k) {
+    const bool in_view = k < 5 || k >= 8;  // taken out of view at 5, 6, 7
+    const auto a = sample_sensors(params, with_gap, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), noise_gap, in_view);
+    const auto b = sample_sensors(params, without, k * kPeriodNs, truth_r(k), truth_q(k), truth_w(k), noise_without);
+    const bool gap = k >= 7 && k < 10;  // delivered 2 periods later
+    EXPECT_EQ(a.lidar_valid, !gap) << k;
+    EXPECT_EQ(a.r_lvlh_m, gap ? Vec3::Zero() : b.r_lvlh_m) << k;
+    EXPECT_EQ(a.q_inertial_from_body.coeffs(), b.q_inertial_from_body.coeffs()) << k;
+    EXPECT_EQ(a.omega_body_radps, b.omega_body_radps) << k;
+  }
+  model::TargetPoseSensorParams pose;
+  pose.period_s = 0.1;
+  pose.latency_s = 0.0;
+  SensorState state;
+  RandomStream noise(3, "test/target_pose");
+  EXPECT_FALSE(sample_target_pose(pose, state, 0.0, Quat::Identity(), Quat::Identity(), noise, false).valid);
+  EXPECT_TRUE(sample_target_pose(pose, state, 0.1, Quat::Identity(), Quat::Identity(), noise, true).valid);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ from conftest import MSR, assert_same_bits, without_wall
 T8_STUCK_OPEN = {"faults": [{"thruster": "T8", "kind": "stuck_open", "onset_s": 1000}]}
 # What a flight callback may see: the sensors' measurements, the time, and the LVLH frame of the
 # flight software's own orbit model. Anything else (a truth key) fails the test.
-FLIGHT_KEYS = {"t_s", "period", "r_lvlh_m", "q_inertial_from_body", "omega_body_radps", "propellant_used_kg",
+FLIGHT_KEYS = {"t_s", "period", "r_lvlh_m", "lidar_valid", "q_inertial_from_body", "omega_body_radps", "propellant_used_kg",
                "q_inertial_from_lvlh"}
 
 

@@ -67,6 +67,23 @@ TEST(FdirClosedLoop, StuckOpenIsDetectedByBothSchemesWithinSeconds) {
   }
 }
 
+// A LIDAR gap erases no conclusion: T1 stuck open with no recovery tumbles the chaser until the
+// LIDAR loses the target (measured: 190 s out of view, from about 40 s after the onset), and every
+// scheme's alarm, isolation and the bank's diagnosis, all made within 3 s, stand at the run's end.
+TEST(FdirClosedLoop, ALidarGapErasesNoConclusion) {
+  model::Scenario scenario = msr_without_recovery();
+  scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 0}};
+  const RunResult r = run_scenario(scenario);
+  EXPECT_GT(r.figures.out_of_view_periods, 100);
+  for (const char* name : {"position", "attitude", "deficit"}) {
+    const SchemeResult& scheme = scheme_result(r.fdir, name);
+    EXPECT_GE(scheme.alarm_s, 1000.0) << name;
+    EXPECT_LT(scheme.isolated_s, 1003.0) << name;
+    EXPECT_EQ(scheme.isolated_thruster, 0) << name;
+  }
+  EXPECT_EQ(scheme_result(r.fdir, "deficit").diagnosed_kind, model::FaultKind::kStuckOpen);
+}
+
 // Issue 3's acceptance, in the loop with nominal parameters: every thruster of branch A and each of
 // the four fault cases of Fonod 2015 (sizes in the middle of the paper's ranges), fault at 1000 s:
 // some scheme detects the fault and every scheme that confirms a thruster names the right one, and
