@@ -136,6 +136,7 @@ class Table:
     words: tuple = ()          # words a cell may hold besides numbers and punctuation
     caption: str = ""          # a line after the table, a template filled by fill(*output paths)
     fill: Callable = None
+    shown_as: str = ""         # the commands as the page's visible note shows them, where they are too long
 
     def quick(self):
         return all(COMMANDS[k].quick for k in self.commands)
@@ -480,6 +481,18 @@ def sync_run_rows(run):
             [f"{sig(s['max_attitude_error_deg'], 3)} deg", ""],
             [f"{sig(100 * s['max_thruster_on_fraction'])} %", ""],
             [f"{sig(s['propellant_used_kg'], 2)} kg", ""]]
+
+
+def envisat_final_approach_rows(*runs):
+    """docs/gnc.md's synchronised final approach on ENVISAT: one run per law, bandwidth and pose noise."""
+    rows = []
+    for run in runs:
+        s = load_json(Path(run) / "summary.json")
+        final = f"{fixed(s['final_position_error_m'], 3)} m" + (" (captured)" if s["capture_achieved"] else "")
+        rows.append([final, f"{fixed(s['final_attitude_error_deg'], 2)} deg", f"{fixed(s['max_position_error_m'], 2)} m",
+                     f"{fixed(s['min_target_clearance_m'], 2)} m", f"{fixed(s['propellant_used_kg'], 2)} kg",
+                     f"{fixed(s['target_out_of_view_s'], 1)} s"])
+    return rows
 
 
 MSR_SETS = ("at the start: branch A (T1..T8)", "after a fault in group A: branch B (T9..T16)")
@@ -885,7 +898,23 @@ FMEA = ("fmea", INVSIM_SCENARIO, "--out", "OUT")
 PAPER = ("--set", "pulses.reading=paper")
 NOISE_OFF = ("--set", "pulses.paper.measurement_noise.range_sigma_m=0", "--set",
              "pulses.paper.measurement_noise.angle_sigma_deg=0", "--set", "pulses.paper.measurement_noise.draws=1")
-COMMANDS = {c.key: c for c in (
+# docs/gnc.md's synchronised final approach on ENVISAT (tests/sim/keep_out_monitor_test.cpp's overrides).
+ENVISAT_FINAL_APPROACH = (
+    "run", "scenarios/comrade_envisat.yaml", "--set",
+    "guidance.synchronised={start_target_m: [0.0, 12.0, 0.0], transfer_start_s: 100, transfer_duration_s: 300, "
+    "q_target_from_body: [0, 0, 0, 1]}", "--set", "duration_s=600")
+ENVISAT_FINAL_APPROACH_ROWS = (("lqr", "0.04", "1.0"), ("hinf", "0.04", "1.0"), ("hinf", "0.08", "1.0"),
+                               ("lqr", "0.04", "0.3"), ("hinf", "0.04", "0.3"))
+
+
+def envisat_final_approach_command(law, bandwidth, noise):
+    return Command(f"envisat-{law}-{bandwidth}-{noise}", ENVISAT_FINAL_APPROACH + (
+        "--set", f"sensors.target_pose={{period_s: 0.3333333333333333, attitude_noise_deg: {noise}, latency_s: 0.1}}",
+        "--set", f"control.law={law}", "--set", f"control.hinf.translation.bandwidth_radps={bandwidth}",
+        "--telemetry", "none", "--out", "OUT"), quick=True)
+
+
+COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in ENVISAT_FINAL_APPROACH_ROWS) + (
     Command("T2", T2_PRESET + ("--out", "OUT"), quick=False),
     Command("T2-published", T2_PRESET + ("--set", "fdi.isolation_method=paper", "--set",
                                          "fdi.active_check.enabled=false", "--out", "OUT"), quick=False),
@@ -989,6 +1018,18 @@ TABLES = [
            "largest attitude error against the reference", "largest thruster on-time, share of a period",
            "propellant"),
           sync_run_rows, words=("m/s", "deg/s", "deg", "kg", "m", "s", "at", "Table")),
+    Table("gnc-envisat-final-approach", "docs/gnc.md",
+          tuple(envisat_final_approach_command(*r).key for r in ENVISAT_FINAL_APPROACH_ROWS),
+          ("law, translation bandwidth", "pose noise", "final error (0.1 m tol)", "attitude", "peak error",
+           "least clearance", "propellant", "target out of view"),
+          ("LQR", "H-infinity, 0.04 rad/s", "H-infinity, 0.08 rad/s", "LQR", "H-infinity, 0.04 rad/s"),
+          lambda *runs: [[f"{noise} deg"] + cells for (_, _, noise), cells in
+                         zip(ENVISAT_FINAL_APPROACH_ROWS, envisat_final_approach_rows(*runs))],
+          words=("m", "deg", "kg", "s", "(captured)"),
+          shown_as="five runs of `chaser run scenarios/comrade_envisat.yaml` with the overrides of "
+                   "tests/sim/keep_out_monitor_test.cpp's final approach, each with its row's `--set control.law=...`, "
+                   "`--set control.hinf.translation.bandwidth_radps=...` and the pose sensor's `attitude_noise_deg` "
+                   "(scripts/doc_tables.py, ENVISAT_FINAL_APPROACH_ROWS; the page's marker holds the whole commands)"),
     Table("scenario-msr-thrusters", "docs/scenario.md", ("msr-thrusters.json",),
           ("set",) + thruster_axes_header() + ("single losses that still span",), MSR_SETS, thrusters_rows,
           words=("T", "none")),
@@ -1079,7 +1120,7 @@ def split_row(line):
 
 
 def note(table):
-    shown = " and ".join(f"`{COMMANDS[k].shown()}`" for k in table.commands)
+    shown = table.shown_as or " and ".join(f"`{COMMANDS[k].shown()}`" for k in table.commands)
     return f"Generated by `make docs` from {shown}."
 
 
