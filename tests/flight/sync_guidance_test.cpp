@@ -97,7 +97,9 @@ TEST(SyncGuidance, TransferKeepsTheTargetInTheSensorsView) {
     const Quat q = transfer_attitude(q_capture, p, s);
     const double miss = std::acos(std::clamp((q * Vec3::UnitX()).dot(-p.normalized()), -1.0, 1.0));
     largest_miss = std::max(largest_miss, miss);
-    if (k == 0) EXPECT_LE(miss, 1e-12);
+    if (k == 0) {
+      EXPECT_LE(miss, 1e-12);
+    }
   }
   EXPECT_LE(largest_miss, 5.0 * M_PI / 180.0);
   EXPECT_LE(transfer_attitude(q_capture, capture, 1.0).angularDistance(q_capture), 1e-15);
