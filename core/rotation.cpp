@@ -37,6 +37,16 @@ Vec3 rotation_vector_from_quat(const Quat& q_in) {
   return (angle / vec_norm) * q.vec();
 }
 
+Quat rotation_towards(const Vec3& u, const Vec3& v, double fraction) {
+  Vec3 axis = u.cross(v);
+  const double angle = std::atan2(axis.norm(), u.dot(v));
+  if (axis.norm() < 1e-12) {
+    axis = u.cross(Vec3::UnitZ());
+    if (axis.norm() < 1e-6) axis = u.cross(Vec3::UnitX());
+  }
+  return Quat(Eigen::AngleAxisd(fraction * angle, axis.normalized()));
+}
+
 Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body) {
   return rotation_vector_from_quat(q_inertial_from_desired.conjugate() * q_inertial_from_body);
 }

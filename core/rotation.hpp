@@ -24,6 +24,11 @@ Quat quat_from_rotation_vector(const Vec3& rotation_vector);
 // Below 0.9 deg a series replaces atan2 (equal to it within 2 ulp; tested).
 Vec3 rotation_vector_from_quat(const Quat& q);
 
+// The rotation by `fraction` of the angle from u to v (unit vectors) about u x v: the least rotation
+// that takes u onto v at fraction 1. When u and v are (anti)parallel, about a fixed perpendicular of
+// u (z x u, or x x u when u is along z).
+Quat rotation_towards(const Vec3& u, const Vec3& v, double fraction);
+
 // Attitude error as a rotation vector in the body frame: the rotation that takes the desired body
 // frame to the actual one, q_desired_from_body = q_inertial_from_desired^-1 * q_inertial_from_body.
 Vec3 attitude_error_body(const Quat& q_inertial_from_desired, const Quat& q_inertial_from_body);

@@ -31,18 +31,6 @@ double progress(double t_s, double start_s, double duration_s) {
   return rest_to_rest_quintic((t_s - start_s) / duration_s)[0];
 }
 
-// The rotation by `fraction` of the angle from u to v about u x v (unit vectors), or about a fixed
-// perpendicular of u when u and v are (anti)parallel and the great circle is not defined by them.
-Quat rotation_towards(const Vec3& u, const Vec3& v, double fraction) {
-  Vec3 axis = u.cross(v);
-  const double angle = std::atan2(axis.norm(), u.dot(v));
-  if (axis.norm() < 1e-12) {
-    axis = u.cross(Vec3::UnitZ());
-    if (axis.norm() < 1e-6) axis = u.cross(Vec3::UnitX());
-  }
-  return Quat(Eigen::AngleAxisd(fraction * angle, axis.normalized()));
-}
-
 // The target's attitude carried from its estimate to t_s: phi = omega dt + omega' dt^2 / 2 (the
 // rate's own turning adds only third-order terms).
 Quat target_attitude_at(const TargetEstimate& target, double t_s) {

@@ -19,11 +19,7 @@ Eigen::Vector3d rest_to_rest_quintic(double tau) {
 Quat transfer_attitude(const Quat& q_target_from_body, const Vec3& p_target_m, double s) {
   const double s2 = s * s, s4 = s2 * s2;
   const Vec3 boresight = q_target_from_body * Vec3::UnitX();
-  const Vec3 to_target = -p_target_m.normalized();
-  const Vec3 axis = boresight.cross(to_target);
-  const double angle = std::atan2(axis.norm(), boresight.dot(to_target));
-  if (axis.norm() < 1e-12) return q_target_from_body;  // on the line of sight (or opposite it: not a transfer's)
-  return (Quat(Eigen::AngleAxisd((1.0 - s4 * s4) * angle, axis.normalized())) * q_target_from_body).normalized();
+  return (rotation_towards(boresight, -p_target_m.normalized(), 1.0 - s4 * s4) * q_target_from_body).normalized();
 }
 
 GuidanceRef sync_reference(const SyncTransferParams& params, const TargetEstimate& target, const model::LvlhFrame& lvlh,

@@ -84,8 +84,7 @@ GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const V
   Mat3 world_from_tool;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) world_from_tool(i, j) = d->site_xmat[9 * site + 3 * i + j];
-  const Quat q_world_from_target =
-      Quat(d->xquat[4 * target], d->xquat[4 * target + 1], d->xquat[4 * target + 2], d->xquat[4 * target + 3]).normalized();
+  const Quat q_world_from_target = multibody::body_attitude(*d, target).normalized();
   const Quat q_world_from_pose = (q_world_from_target * q_target_from_pose).normalized();
   const Mat3 pose_from_world = q_world_from_pose.toRotationMatrix().transpose();
   const Vec3 omega_target = Eigen::Map<const Vec3>(target_velocity);
@@ -108,23 +107,21 @@ ArmFigure arm_figure(const PlantParams& params, PlantState& state) {
   mjData* d = &s.world.data();
   multibody::guarded("the arm's figure", [m, d] { mj_kinematics(m, d); });
   const int target = p->index.target, hub = p->index.hub;
-  const Vec3 r_target = Eigen::Map<const Vec3>(d->xpos + 3 * target);
-  const Quat q_world_from_target =
-      Quat(d->xquat[4 * target], d->xquat[4 * target + 1], d->xquat[4 * target + 2], d->xquat[4 * target + 3]).normalized();
-  const Quat q_world_from_hub =
-      Quat(d->xquat[4 * hub], d->xquat[4 * hub + 1], d->xquat[4 * hub + 2], d->xquat[4 * hub + 3]).normalized();
+  const Vec3 r_target = multibody::body_position(*d, target);
+  const Quat q_world_from_target = multibody::body_attitude(*d, target).normalized();
+  const Quat q_world_from_hub = multibody::body_attitude(*d, hub).normalized();
   const Mat3 target_from_world = q_world_from_target.toRotationMatrix().transpose();
-  const auto in_target = [&](const double* world_m) { return Vec3(target_from_world * (Eigen::Map<const Vec3>(world_m) - r_target)); };
+  const auto in_target = [&](const Vec3& world_m) { return Vec3(target_from_world * (world_m - r_target)); };
+  const auto point = [](const double* xyz) { return Vec3(xyz[0], xyz[1], xyz[2]); };
   ArmFigure out;
   // The hub's MuJoCo frame is at its CoM (plant/multibody/mjcf.cpp): the body frame's origin is
   // hub_com_body_m behind it.
-  const Vec3 origin_world = Eigen::Map<const Vec3>(d->xpos + 3 * hub) - q_world_from_hub * p->scene.hub_com_body_m;
-  out.hub_m = in_target(origin_world.data());
+  out.hub_m = in_target(multibody::body_position(*d, hub) - q_world_from_hub * p->scene.hub_com_body_m);
   out.q_target_from_hub = (q_world_from_target.conjugate() * q_world_from_hub).normalized();
   const int joint1 = mj_name2id(m, mjOBJ_JOINT, "joint1");
   for (int j = 0; j < model::kArmJoints; ++j)
-    out.joint_m[static_cast<std::size_t>(j)] = in_target(d->xanchor + 3 * (joint1 + j));  // joint1..7 in a row
-  out.tool_m = in_target(d->site_xpos + 3 * mj_name2id(m, mjOBJ_SITE, "tool"));
+    out.joint_m[static_cast<std::size_t>(j)] = in_target(point(d->xanchor + 3 * (joint1 + j)));  // joint1..7 in a row
+  out.tool_m = in_target(point(d->site_xpos + 3 * mj_name2id(m, mjOBJ_SITE, "tool")));
   return out;
 }
 

@@ -484,12 +484,13 @@ def sync_run_rows(run):
 
 
 def envisat_final_approach_rows(*runs):
-    """docs/gnc.md's synchronised final approach on ENVISAT: one run per law, bandwidth and pose noise."""
+    """docs/gnc.md's synchronised final approach on ENVISAT: one run per row of ENVISAT_FINAL_APPROACH_ROWS."""
     rows = []
-    for run in runs:
+    for (_, _, noise), run in zip(ENVISAT_FINAL_APPROACH_ROWS, runs):
         s = load_json(Path(run) / "summary.json")
         final = f"{fixed(s['final_position_error_m'], 3)} m" + (" (captured)" if s["capture_achieved"] else "")
-        rows.append([final, f"{fixed(s['final_attitude_error_deg'], 2)} deg", f"{fixed(s['max_position_error_m'], 2)} m",
+        rows.append([f"{noise} deg", final, f"{fixed(s['final_attitude_error_deg'], 2)} deg",
+                     f"{fixed(s['max_position_error_m'], 2)} m",
                      f"{fixed(s['min_target_clearance_m'], 2)} m", f"{fixed(s['propellant_used_kg'], 2)} kg",
                      f"{fixed(s['target_out_of_view_s'], 1)} s"])
     return rows
@@ -1023,8 +1024,7 @@ TABLES = [
           ("law, translation bandwidth", "pose noise", "final error (0.1 m tol)", "attitude", "peak error",
            "least clearance", "propellant", "target out of view"),
           ("LQR", "H-infinity, 0.04 rad/s", "H-infinity, 0.08 rad/s", "LQR", "H-infinity, 0.04 rad/s"),
-          lambda *runs: [[f"{noise} deg"] + cells for (_, _, noise), cells in
-                         zip(ENVISAT_FINAL_APPROACH_ROWS, envisat_final_approach_rows(*runs))],
+          envisat_final_approach_rows,
           words=("m", "deg", "kg", "s", "(captured)"),
           shown_as="five runs of `chaser run scenarios/comrade_envisat.yaml` with the overrides of "
                    "tests/sim/keep_out_monitor_test.cpp's final approach, each with its row's `--set control.law=...`, "

@@ -17,6 +17,15 @@ std::vector<std::string> validate(const FdiSchemeParams& params) {
   return problems;
 }
 
+namespace {
+
+// [s] the first alarm's time since the scheme started, -1 before it.
+double alarm_time_s(const FdiSchemeParams& params, const FdiSchemeState& state) {
+  return state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
+}
+
+}  // namespace
+
 void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const Vec3& y, const Vec3& u_c,
                      const SchemeTon& ton, bool over_consumption, FdiSchemeOutput& out) {
   out.residual = step_residual(params.residual, state.residual, y, u_c);
@@ -34,7 +43,7 @@ void step_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, const
   }
   out.alarm = state.alarm;
   out.confirmed = state.confirmed;
-  out.alarm_time_s = state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
+  out.alarm_time_s = alarm_time_s(params, state);
   ++state.period;
 }
 
@@ -43,7 +52,7 @@ void pause_fdi_scheme(const FdiSchemeParams& params, FdiSchemeState& state, FdiS
   out = FdiSchemeOutput{};
   out.alarm = state.alarm;
   out.confirmed = state.confirmed;
-  out.alarm_time_s = state.alarm ? static_cast<double>(state.alarm_period) * params.period_s : -1.0;
+  out.alarm_time_s = alarm_time_s(params, state);
   ++state.period;
 }
 

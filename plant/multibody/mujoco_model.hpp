@@ -13,6 +13,14 @@
 
 namespace chaser::plant::multibody {
 
+// A body's frame in the world as mj_kinematics left it: its origin [m] and attitude (xpos, xquat).
+inline Vec3 body_position(const mjData& d, int body) {
+  return Vec3(d.xpos[3 * body], d.xpos[3 * body + 1], d.xpos[3 * body + 2]);
+}
+inline Quat body_attitude(const mjData& d, int body) {
+  return Quat(d.xquat[4 * body], d.xquat[4 * body + 1], d.xquat[4 * body + 2], d.xquat[4 * body + 3]);
+}
+
 // Momentum of the whole scene, world frame: linear [kg m/s] and angular about the scene's
 // centre of mass [kg m^2/s].
 struct Momentum {

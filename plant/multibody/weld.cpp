@@ -9,10 +9,8 @@ void engage_weld_here(MujocoModel& world, int equality) {
   mjData& d = world.data();
   mj_kinematics(&m, &d);  // xpos and xquat of the current qpos
   const int b1 = m.eq_obj1id[equality], b2 = m.eq_obj2id[equality];
-  const Vec3 x1(d.xpos[3 * b1], d.xpos[3 * b1 + 1], d.xpos[3 * b1 + 2]);
-  const Vec3 x2(d.xpos[3 * b2], d.xpos[3 * b2 + 1], d.xpos[3 * b2 + 2]);
-  const Quat q1(d.xquat[4 * b1], d.xquat[4 * b1 + 1], d.xquat[4 * b1 + 2], d.xquat[4 * b1 + 3]);
-  const Quat q2(d.xquat[4 * b2], d.xquat[4 * b2 + 1], d.xquat[4 * b2 + 2], d.xquat[4 * b2 + 3]);
+  const Vec3 x1 = body_position(d, b1), x2 = body_position(d, b2);
+  const Quat q1 = body_attitude(d, b1), q2 = body_attitude(d, b2);
   const Vec3 p = q1.conjugate() * (x2 - x1);
   const Quat q_rel = (q1.conjugate() * q2).normalized();
   mjtNum* data = m.eq_data + static_cast<std::ptrdiff_t>(mjNEQDATA) * equality;

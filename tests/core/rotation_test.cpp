@@ -82,5 +82,18 @@ TEST(Rotation, HillFrameConversions) {
   EXPECT_EQ(msr_from_zhou(zhou_from_msr(v)), v);
 }
 
+// The least rotation from u to v: at fraction 1 it takes u onto v (1e-15), at 0.5 it turns u by half
+// the angle in the plane of u and v, and antiparallel vectors turn by pi about a perpendicular of u.
+TEST(Rotation, RotationTowardsTakesUOntoVByTheLeastRotation) {
+  const Vec3 u = Vec3(1.0, 2.0, -0.5).normalized(), v = Vec3(-0.3, 0.4, 2.0).normalized();
+  EXPECT_LE((rotation_towards(u, v, 1.0) * u - v).norm(), 1e-15);
+  const Vec3 half = rotation_towards(u, v, 0.5) * u;
+  EXPECT_NEAR(std::acos(half.dot(u)), 0.5 * std::acos(u.dot(v)), 1e-14);
+  EXPECT_NEAR(half.dot(u.cross(v)), 0.0, 1e-15);
+  EXPECT_LE((rotation_towards(u, -u, 1.0) * u + u).norm(), 1e-15);
+  EXPECT_LE((rotation_towards(Vec3::UnitZ(), -Vec3::UnitZ(), 1.0) * Vec3::UnitZ() + Vec3::UnitZ()).norm(), 1e-15);
+  EXPECT_EQ(rotation_towards(u, u, 0.7).angularDistance(Quat::Identity()), 0.0);
+}
+
 }  // namespace
 }  // namespace chaser
