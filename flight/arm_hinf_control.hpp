@@ -39,7 +39,7 @@ struct ArmHinfParams {
 };
 
 struct ArmHinfState {
-  std::array<LoopState, arm::kTaskDofs> x{};
+  std::array<LoopState, arm::kTaskDofs> x = zero_array<LoopState, arm::kTaskDofs>();
 };
 
 // The thirteen designs (the three axes of a group share their spec). Throws std::runtime_error

@@ -26,6 +26,7 @@
 
 #include "control/axis_design.hpp"
 #include "core/types.hpp"
+#include "core/zero_array.hpp"
 #include "flight/attitude_control.hpp"
 #include "flight/guidance.hpp"
 #include "flight/navigation.hpp"
@@ -53,8 +54,7 @@ struct HinfControlParams {
 };
 
 struct HinfControlState {
-  std::array<LoopState, 6> x{LoopState::Zero(), LoopState::Zero(), LoopState::Zero(),
-                             LoopState::Zero(), LoopState::Zero(), LoopState::Zero()};
+  std::array<LoopState, 6> x = zero_array<LoopState, 6>();
 };
 
 // The loop of one axis design, discretised by Tustin at the period. Throws std::runtime_error when

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "core/zero_array.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -91,7 +92,7 @@ class GlrStatistic {
 };
 
 struct GlrState {
-  std::array<Vec3, kMaxGlrWindow> samples{};  // ring buffer of L0^-1 r (kWhitened)
+  std::array<Vec3, kMaxGlrWindow> samples = zero_array<Vec3, kMaxGlrWindow>();  // ring buffer of L0^-1 r (kWhitened)
   // r_1^2 (kScalar), each stored twice, at slot and slot + N_d: the window's other samples are then
   // the contiguous span after the slot (no test per sample, which the branch predictor can miss).
   std::array<double, 2 * kMaxGlrWindow> r1_squared{};

@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "core/zero_array.hpp"
 #include "flight/fdi/residual_generator.hpp"
 #include "flight/fdi/watched_set.hpp"
 
@@ -75,9 +76,9 @@ struct IsolationParams {
 };
 
 struct IsolationState {
-  std::array<Vec3, kMaxIsolationWindow> residual{};  // r(j)
-  std::array<VecW, kMaxIsolationWindow> ton{};       // T_on,i(j) [-]
-  std::array<Mat3W, kMaxIsolationWindow> signature{};  // s_i(j), kSignature only
+  std::array<Vec3, kMaxIsolationWindow> residual = zero_array<Vec3, kMaxIsolationWindow>();  // r(j)
+  std::array<VecW, kMaxIsolationWindow> ton = zero_array<VecW, kMaxIsolationWindow>();     // T_on,i(j) [-]
+  std::array<Mat3W, kMaxIsolationWindow> signature = zero_array<Mat3W, kMaxIsolationWindow>();  // s_i(j), kSignature only
   int next = 0;                     // ring slot of the next sample
   int count = 0;                    // samples stored, up to the window
   Mat6W signature_state = Mat6W::Zero();  // z_i(k), one column per thruster

@@ -4,7 +4,12 @@
 // (what a mass known to a few per cent leaves of the feed-forward, or a differential drag).
 #include "flight/hinf_control.hpp"
 
+#include <cstring>
+#include <new>
+
 #include <gtest/gtest.h>
+
+#include "flight/arm_hinf_control.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -104,6 +109,25 @@ TEST(HinfControl, LoopIsTheDesignedControllerAndSaturatesAtTheAuthority) {
   EXPECT_EQ(step_loop(loop, big, 1e3), loop.authority);
   big.setZero();
   EXPECT_EQ(step_loop(loop, big, -1e3), -loop.authority);
+}
+
+// The loops' states start at zero whatever the memory held before (an Eigen matrix's default
+// constructor leaves it as it was: the arm's thirteen loops once started from a previous run's
+// heap, which turned a run's result on what the process had flown before). The storage is filled
+// with 0xFF bytes, a NaN in every double, before each state is default-initialised in it, as a
+// member of the flight software's state is (`State{}` would zero it first and prove nothing).
+template <class State>
+void expect_zero_states_over_garbage() {
+  alignas(State) unsigned char storage[sizeof(State)];
+  std::memset(storage, 0xFF, sizeof storage);
+  State* state = new (storage) State;
+  for (const LoopState& x : state->x) EXPECT_TRUE((x.array() == 0.0).all()) << x.transpose();
+  state->~State();
+}
+
+TEST(HinfControl, LoopStatesStartAtZeroWhateverTheMemoryHeld) {
+  expect_zero_states_over_garbage<HinfControlState>();
+  expect_zero_states_over_garbage<ArmHinfState>();
 }
 
 }  // namespace
