@@ -10,8 +10,10 @@
 // reference point, as the thrusters do) plus links[0].joint_position_parent_m.
 #include <array>
 #include <string>
+#include <vector>
 
 #include "core/types.hpp"
+#include "model/keep_out.hpp"
 
 namespace chaser::model {
 
@@ -68,6 +70,12 @@ struct ArmParams {
   GripperParams gripper;
   double torque_repeated_peak_Nm = 176.0;  // [N m] COMRADE 2018, Table 3 footnote
   double torque_momentary_Nm = 314.0;      // [N m] the drive's hard limit (the motors' control range)
+  // [rad/s] the inner joint-torque loop's bandwidth: each joint's torque follows its demand through
+  // 1 / (s / w + 1) (a first-order lag, MuJoCo's filter actuator). A torque-sensed drive closes
+  // this loop at several kHz in its own electronics; its closed-loop bandwidth is of the order of
+  // tens of Hz (ours: 300 rad/s, 48 Hz, an assumption). The loop's gain also divides the drive's
+  // friction, which is why a scenario gives the joints' friction as what is left of it.
+  double torque_loop_bandwidth_radps = 300.0;
   // [rad] the joint angles of the stowed arm, the configuration the rigid chaser's mass properties
   // (chaser.mass_kg, inertia_kgm2, com_body_m) include it in: shoulder pitched 90 deg to +y, the
   // elbow folded back 110 deg, the wrist 70 deg, a Z folded in front of the +x face; inside every
@@ -97,6 +105,10 @@ struct MultibodySceneParams {
   double target_mass_kg = 7828.0;
   Mat3 target_inertia_kgm2 = Mat3::Identity();  // [kg m^2] about the target's CoM, target axes
   Vec3 target_position_m = Vec3(8.0, 0.0, 0.0); // [m] the target's CoM at q = 0, scene frame
+  // The target's outer shape (target.body.keep_out: ENVISAT's bus and solar array), boxes "shape0",
+  // "shape1", ... on the target without contact or mass (its mass and inertia are the <inertial>'s):
+  // the scene's geometry, for reading distances and drawing; empty: none.
+  std::vector<KeepOutBox> target_shape;
   double timestep_s = 1e-3;                     // [s] MuJoCo's step
   std::string integrator = "RK4";               // "Euler", "RK4" or "implicit"
   // Each joint locked at arm.stowed_rad by an <equality><joint> constraint ("lock1".."lock7"),

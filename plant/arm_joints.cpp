@@ -37,12 +37,12 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
   const MultibodyMotionParams* p = multibody_params(params);
   if (p == nullptr) return m;
   const auto& s = std::get<MultibodyMotionState>(state.motion);
-  const auto q = joint_angles_rad(*p, s), w = joint_rates_radps(*p, s);
+  const auto q = joint_angles_rad(*p, s), w = joint_rates_radps(*p, s), tau = joint_torques_applied_Nm(*p, s);
   m.joints = model::kArmJoints;
   for (std::size_t j = 0; j < q.size(); ++j) {
     m.q_rad[j] = q[j];
     m.q_dot_radps[j] = w[j];
-    m.torque_Nm[j] = s.joint_torque_Nm[j];
+    m.torque_Nm[j] = tau[j];
   }
   const JawReading jaws = read_jaws(*p, s);
   m.gripper_closed = jaws.holding;

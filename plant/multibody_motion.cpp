@@ -209,6 +209,7 @@ MultibodyIndices indices_of(const multibody::MujocoModel& world) {
   i.joint1_dof = m.jnt_dofadr[joint1];
   i.lock1 = mj_name2id(&m, mjOBJ_EQUALITY, "lock1");
   i.grasp = mj_name2id(&m, mjOBJ_EQUALITY, "grasp");
+  i.motor1 = mj_name2id(&m, mjOBJ_ACTUATOR, "motor1");
   i.fixture_geom = mj_name2id(&m, mjOBJ_GEOM, "fixture");
   const char* fingers[2] = {"finger_a", "finger_b"};
   for (std::size_t f = 0; f < 2; ++f) {
@@ -250,6 +251,7 @@ MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbit
   scene.target_mass_kg = scenario.target.body->mass_kg;
   scene.target_inertia_kgm2 = scenario.target.body->inertia_kgm2;
   scene.target_position_m = Vec3::Zero();
+  scene.target_shape = scenario.target.body->keep_out;
   scene.timestep_s = scene_timestep_s;
   scene.arm_locks = true;
   scene.grasp_weld = true;
@@ -347,6 +349,15 @@ std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionPar
   return w;
 }
 
+std::array<double, model::kArmJoints> joint_torques_applied_Nm(const MultibodyMotionParams& params,
+                                                               const MultibodyMotionState& state) {
+  std::array<double, model::kArmJoints> tau{};
+  const mjModel& m = state.world.model();
+  const int act1 = params.index.motor1 - (m.nu - m.na);  // MuJoCo 2.2: the stateful actuators come last, act in order
+  for (int j = 0; j < model::kArmJoints; ++j) tau[static_cast<std::size_t>(j)] = state.world.data().act[act1 + j];
+  return tau;
+}
+
 void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& state, const RigidState& chaser,
                   TimeNs t_k, TimeNs period_ns) {
   begin_period(params.earth, state.earth, chaser, t_k, period_ns);
@@ -354,7 +365,8 @@ void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& sta
 
 void advance(const MultibodyMotionParams& params, MultibodyMotionState& state, RigidState& chaser,
              const ThrustProfile& profile, const PeriodDisturbance& disturbance, TimeNs from_ns, TimeNs to_ns) {
-  for (int j = 0; j < model::kArmJoints; ++j) state.world.data().ctrl[j] = state.joint_torque_Nm[static_cast<std::size_t>(j)];
+  for (int j = 0; j < model::kArmJoints; ++j)
+    state.world.data().ctrl[params.index.motor1 + j] = state.joint_torque_Nm[static_cast<std::size_t>(j)];
   for (int i = 0; i < profile.count; ++i) {
     const ThrustPiece& piece = profile.pieces[i];
     const TimeNs begin_ns = std::max(piece.t_begin_ns, from_ns), end_ns = std::min(piece.t_end_ns, to_ns);

@@ -52,6 +52,7 @@ struct MultibodyIndices {
   int hub_qpos = 0, hub_dof = 0, target_qpos = 0, target_dof = 0, joint1_qpos = 0, joint1_dof = 0;
   int lock1 = 0;  // equality ids of lock1..lock7 in a row
   int grasp = 0;  // equality id of the grasp's weld, gripper to target
+  int motor1 = 0;  // actuator ids of the joints' torque loops motor1..motor7 in a row
   // The jaws (scene.grasp_contact; -1 without): the fingers' slide joints (qpos address), their
   // servos (actuator ids), their geoms and the fixture's.
   std::array<int, 2> finger_qpos{-1, -1}, finger_actuator{-1, -1}, finger_geom{-1, -1};
@@ -101,13 +102,16 @@ MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbit
 // The Earth-orbit plant's state of the same bodies (for the hand-back), its environment carried on.
 EarthOrbitState earth_orbit_state(const MultibodyMotionState& state);
 
-// The arm: torques held over the next advance, the locks on or off, the joint angles and rates now.
+// The arm: torque demands held over the next advance, the locks on or off, the joint angles and
+// rates now, and the torques the drives apply now (their inner loops' outputs, which lag the demands).
 void set_joint_torques(MultibodyMotionState& state, const std::array<double, model::kArmJoints>& torque_Nm);
 void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked);
 std::array<double, model::kArmJoints> joint_angles_rad(const MultibodyMotionParams& params,
                                                        const MultibodyMotionState& state);
 std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionParams& params,
                                                         const MultibodyMotionState& state);
+std::array<double, model::kArmJoints> joint_torques_applied_Nm(const MultibodyMotionParams& params,
+                                                               const MultibodyMotionState& state);
 
 // The jaws (with the scene's grasp contact): their servos commanded open (0) or closed (each
 // finger to the tool point, pressing on what lies between with up to closing_force_N); what their

@@ -115,6 +115,10 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                  "      <freejoint name=\"target_free\"/>\n"
                  "      <inertial pos=\"0 0 0\" mass=\"{}\" fullinertia=\"{}\"/>\n",
                  vec(scene.target_position_m), scene.target_mass_kg, full_inertia(scene.target_inertia_kgm2));
+  for (std::size_t i = 0; i < scene.target_shape.size(); ++i)
+    fmt::format_to(std::back_inserter(out),
+                   "      <geom name=\"shape{}\" type=\"box\" pos=\"{}\" size=\"{}\" contype=\"0\" conaffinity=\"0\"/>\n", i,
+                   vec(scene.target_shape[i].centre_target_m), vec(scene.target_shape[i].half_extents_m));
   if (scene.grasp_contact)  // the fixture's lip, centred on the grasp point in the grasp pose's axes
     fmt::format_to(std::back_inserter(out),
                    "      <geom name=\"fixture\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{}\" {}/>\n",
@@ -124,11 +128,8 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
       "    </body>\n"
       "  </worldbody>\n"
       "  <actuator>\n";
-  for (int i = 1; i <= model::kArmJoints; ++i)
-    fmt::format_to(std::back_inserter(out),
-                   "    <motor name=\"motor{0}\" joint=\"joint{0}\" gear=\"1\" ctrllimited=\"true\" ctrlrange=\"{1} {2}\"/>\n",
-                   i, -arm.torque_momentary_Nm, arm.torque_momentary_Nm);
-  if (scene.grasp_contact) {  // the fingers' position servos: ctrl 0 open, open_half_gap_m closed
+  // The fingers' position servos first: MuJoCo 2.2 wants the actuators without state before those with.
+  if (scene.grasp_contact) {  // ctrl 0 open, open_half_gap_m closed
     const model::JawParams& jaws = arm.gripper.jaws;
     for (const char* finger : {"finger_a", "finger_b"})
       fmt::format_to(std::back_inserter(out),
@@ -137,6 +138,14 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                      finger, jaws.servo_stiffness_Npm, jaws.open_half_gap_m, -jaws.closing_force_N,
                      jaws.closing_force_N);
   }
+  // The inner joint-torque loops: the torque applied follows the demand (ctrl) through
+  // 1 / (s / w + 1), MuJoCo's filter dynamics (act' = (ctrl - act) / T, T = 1 / w, integrated with
+  // the state), the force the activation (gain 1, no bias).
+  for (int i = 1; i <= model::kArmJoints; ++i)
+    fmt::format_to(std::back_inserter(out),
+                   "    <general name=\"motor{0}\" joint=\"joint{0}\" gear=\"1\" dyntype=\"filter\" dynprm=\"{3}\""
+                   " gainprm=\"1\" biastype=\"none\" ctrllimited=\"true\" ctrlrange=\"{1} {2}\"/>\n",
+                   i, -arm.torque_momentary_Nm, arm.torque_momentary_Nm, 1.0 / arm.torque_loop_bandwidth_radps);
   out += "  </actuator>\n";
   if (scene.arm_locks || scene.grasp_weld) out += "  <equality>\n";
   if (scene.arm_locks) {

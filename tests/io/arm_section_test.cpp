@@ -33,8 +33,10 @@ std::string arm_yaml(const model::ArmParams& arm, const std::string& links = "")
                         l.friction_Nm, l.damping_Nms, l.armature_kgm2);
   const model::GripperParams& g = arm.gripper;
   return fmt::format("chaser.arm={{mount_body_m: {}, torque_repeated_peak_Nm: {}, torque_momentary_Nm: {}, "
+                     "torque_loop_bandwidth_radps: {}, "
                      "links: [{}], gripper: {{tool_position_m: {}, mass_kg: {}, com_m: {}, inertia_kgm2: {}}}}}",
                      vec(arm.mount_body_m), arm.torque_repeated_peak_Nm, arm.torque_momentary_Nm,
+                     arm.torque_loop_bandwidth_radps,
                      links.empty() ? list : links, vec(g.position_link7_m), g.mass_kg, vec(g.com_link7_m),
                      vec(g.inertia_kgm2));
 }
@@ -47,6 +49,7 @@ TEST(ArmSection, TheDefaultArmReadsBackExactly) {
   const model::ArmParams& read = *r.scenario->chaser.arm;
   EXPECT_EQ(read.mount_body_m, arm.mount_body_m);
   EXPECT_EQ(read.torque_momentary_Nm, 314.0);
+  EXPECT_EQ(read.torque_loop_bandwidth_radps, 300.0);
   for (std::size_t i = 0; i < arm.links.size(); ++i) {
     EXPECT_EQ(read.links[i].joint_position_parent_m, arm.links[i].joint_position_parent_m) << i;
     EXPECT_EQ(read.links[i].joint_axis, arm.links[i].joint_axis) << i;
@@ -88,6 +91,8 @@ std::vector<BadArm> bad_arms() {
        "chaser.arm.links.5.friction_Nm", "must be less than torque_repeated_peak_Nm 176"},
       {"torques", {arm_yaml(with([](model::ArmParams& a) { a.torque_repeated_peak_Nm = 400.0; }))},
        "chaser.arm.torque_repeated_peak_Nm", "must be at most torque_momentary_Nm 314 (got 400)"},
+      {"torque_loop", {arm_yaml(with([](model::ArmParams& a) { a.torque_loop_bandwidth_radps = 5000.0; }))},
+       "chaser.arm.torque_loop_bandwidth_radps", "must be in [1, 1000] (got 5000)"},
       {"gripper_inertia", {arm_yaml(with([](model::ArmParams& a) { a.gripper.inertia_kgm2 = Vec3(0.1, 0.1, 1.0); }))},
        "chaser.arm.gripper.inertia_kgm2", "violate the triangle inequality"},
       {"out_of_reach", {arm_yaml(with([](model::ArmParams& a) { a.mount_body_m = Vec3(-1.05, 0.0, 0.0); }))},

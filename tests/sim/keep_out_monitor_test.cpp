@@ -29,13 +29,13 @@ TEST(KeepOutMonitor, AssistHoldsAtItsBerthingClearance) {
   EXPECT_GT(r.figures.min_target_clearance_at_s, 0.0);
 }
 
-// ENVISAT tumbles at the 30 m hold: the bus's farthest corner from its CoM is sqrt(6.1^2 + 2^2 +
-// 2^2) = 6.72 m out, so the clearance can never fall below 30 - 6.72 - 1 = 22.28 m there (less the
-// hold's errors), nor exceed 30 - 2 - 1 = 27 m, the nearest face. A scenario without a keep-out
-// volume reports none.
-TEST(KeepOutMonitor, EnvisatTumblesWithinItsBusEnvelope) {
+// ENVISAT tumbles at the 30 m hold: the farthest corner of its shape from its CoM is the solar
+// array's tip, sqrt(22.1^2 + 2.5^2 + 0.1^2) = 22.24 m out, so the clearance can never fall below
+// 30 - 22.24 - 1 = 6.76 m there (less the hold's errors), nor exceed 30 - 2 - 1 = 27 m, the bus's
+// nearest face. A scenario without a keep-out volume reports none.
+TEST(KeepOutMonitor, EnvisatTumblesWithinItsEnvelope) {
   const RunResult r = run_scenario(load("scenarios/comrade_envisat.yaml"));
-  EXPECT_GE(r.figures.min_target_clearance_m, 30.0 - std::sqrt(6.1 * 6.1 + 8.0) - 1.0 - 0.02);
+  EXPECT_GE(r.figures.min_target_clearance_m, 30.0 - std::sqrt(22.1 * 22.1 + 2.5 * 2.5 + 0.1 * 0.1) - 1.0 - 0.02);
   EXPECT_LE(r.figures.min_target_clearance_m, 27.0);
   const RunResult msr = run_scenario(load("scenarios/msr_terminal.yaml"));
   EXPECT_EQ(msr.figures.min_target_clearance_m, std::numeric_limits<double>::infinity());

@@ -44,6 +44,34 @@ TEST(Mjcf, TheCompiledSceneHoldsTheParametersExactly) {
   EXPECT_NEAR(arm_mass_kg, 80.0, 1e-12);  // default_arm()'s total, gripper included
 }
 
+TEST(Mjcf, TheTargetsShapeIsGeometryWithoutMassOrContact) {
+  model::MultibodySceneParams scene;
+  scene.target_inertia_kgm2 = Vec3(17023.0, 124826.0, 129112.0).asDiagonal();
+  MujocoModel bare(mjcf_of(scene));
+  scene.target_shape = {{Vec3(-1.1, 0.0, 0.0), Vec3(5.0, 2.0, 2.0)}, {Vec3(12.9, -5.0, 0.0), Vec3(7.0, 2.5, 0.1)}};
+  MujocoModel shaped(mjcf_of(scene));
+  const mjModel& m = shaped.model();
+  const int target = shaped.body("target");
+  for (std::size_t i = 0; i < scene.target_shape.size(); ++i) {
+    const int geom = mj_name2id(&m, mjOBJ_GEOM, ("shape" + std::to_string(i)).c_str());
+    ASSERT_GE(geom, 0);
+    EXPECT_EQ(m.geom_bodyid[geom], target);
+    EXPECT_EQ(m.geom_type[geom], mjGEOM_BOX);
+    EXPECT_EQ(m.geom_contype[geom], 0);
+    EXPECT_EQ(m.geom_conaffinity[geom], 0);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(m.geom_size[3 * geom + k], scene.target_shape[i].half_extents_m[k]);
+      EXPECT_EQ(m.geom_pos[3 * geom + k], scene.target_shape[i].centre_target_m[k]);
+    }
+  }
+  // The boxes add no mass and move neither the CoM nor the inertia: the <inertial>'s are the target's.
+  EXPECT_EQ(m.body_mass[target], bare.model().body_mass[bare.body("target")]);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(m.body_inertia[3 * target + k], bare.model().body_inertia[3 * bare.body("target") + k]);
+    EXPECT_EQ(m.body_ipos[3 * target + k], bare.model().body_ipos[3 * bare.body("target") + k]);
+  }
+}
+
 TEST(Mjcf, TheStretchedArmPutsTheToolPointWhereTheLinksSayAndTheTextIsStable) {
   model::MultibodySceneParams scene;
   scene.hub_com_body_m = Vec3(0.02, -0.01, 0.03);  // the hub's frame is at its CoM
