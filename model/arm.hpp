@@ -121,7 +121,7 @@ struct MultibodySceneParams {
   // pose the two have then (plant/multibody/weld.hpp), with the locks' stiffness; false: none.
   bool grasp_weld = false;
   // The grasp's contact: the gripper's jaws (arm.gripper.jaws: two slide joints "finger_a" and
-  // "finger_b", their position servos after the joints' motors) and the fixture's lip on the target
+  // "finger_b", their position servos before the joints' torque loops) and the fixture's lip on the target
   // at fixture_target_m with the axes q_target_from_fixture, contact on between jaws and lip only;
   // false: no jaws, contact off (the text is then what it was without these fields).
   bool grasp_contact = false;
