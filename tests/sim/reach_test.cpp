@@ -22,8 +22,8 @@ model::Scenario capture_scenario(std::vector<std::string> overrides = {}) {
 double largest(const std::array<double, model::kArmJoints>& v) { return *std::max_element(v.begin(), v.end()); }
 
 // With the arm camera (COMRADE 2018's Fig. 11): the gripper's position, attitude and velocity
-// inside Table 2 over the whole hold (measured: 8.9, 6.0, 3.1 mm; 0.35, 0.36, 0.17 deg; 3.9,
-// 4.5, 4.3 mm/s), the chaser within Table 2 at the end, the joints far below their 176 N m (6.7
+// inside Table 2 over the whole hold (measured: 8.9, 6.1, 3.2 mm; 0.35, 0.34, 0.16 deg; 4.0,
+// 4.5, 4.3 mm/s), the chaser within Table 2 at the end, the joints far below their 176 N m (17.6
 // N m). The rate is not, on one axis: 0.14 deg/s about z against 0.1 (docs/servicing.md, "The reach").
 TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   const RunResult r = run_scenario(capture_scenario());
@@ -50,8 +50,8 @@ TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   EXPECT_LT(r.figures.final_attitude_error_rad, kTable2ChaserAttitudeDeg * model::kArmDegToRad);
   // The grasp: the jaws close on the third camera sample inside the envelope after the approach
   // (2,880.2 s), both fingers hold the lip 0.2 s later and the gripper locks. At the closure the
-  // gripper is inside every figure of Table 2 (measured 6.9, 0.6, 0.2 mm; 0.5, 0.4, 0.02 mm/s;
-  // 0.03 deg/s at most) and so is the chaser (0.038 m, 1.8 mm/s, 0.47 deg, 0.02 deg/s).
+  // gripper is inside every figure of Table 2 (measured 6.9, 0.6, 0.2 mm; 0.5, 1.1, 0.02 mm/s;
+  // 0.05 deg/s at most) and so is the chaser (0.038 m, 1.9 mm/s, 0.47 deg, 0.02 deg/s).
   const GraspResult& grasp = reach.grasp;
   EXPECT_TRUE(grasp.attempted);
   EXPECT_STREQ(grasp.outcome, "captured");
@@ -81,7 +81,7 @@ TEST(Reach, WithoutTheArmCameraTheTargetsEstimateLeavesTheGripperOutside) {
 }
 
 // The H-infinity law flies the same reach: the gripper inside the position envelope (measured 6.0,
-// 6.9, 6.7 mm), the joints below their limit (22.5 N m); its loops' near-integral action hunts
+// 7.1, 6.7 mm), the joints below their limit (21.9 N m); its loops' near-integral action hunts
 // against the joints' friction (a roll rate of 2.9 deg/s, docs/servicing.md).
 TEST(Reach, TheHinfLawFliesTheSameReach) {
   const RunResult r = run_scenario(capture_scenario({"capture.law=hinf"}));
