@@ -352,8 +352,7 @@ std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionPar
 std::array<double, model::kArmJoints> joint_torques_applied_Nm(const MultibodyMotionParams& params,
                                                                const MultibodyMotionState& state) {
   std::array<double, model::kArmJoints> tau{};
-  const mjModel& m = state.world.model();
-  const int act1 = params.index.motor1 - (m.nu - m.na);  // MuJoCo 2.2: the stateful actuators come last, act in order
+  const int act1 = multibody::activation_index(state.world.model(), params.index.motor1);
   for (int j = 0; j < model::kArmJoints; ++j) tau[static_cast<std::size_t>(j)] = state.world.data().act[act1 + j];
   return tau;
 }

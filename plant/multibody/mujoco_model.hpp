@@ -21,6 +21,11 @@ inline Quat body_attitude(const mjData& d, int body) {
   return Quat(d.xquat[4 * body], d.xquat[4 * body + 1], d.xquat[4 * body + 2], d.xquat[4 * body + 3]);
 }
 
+// Where an actuator with state (a filter, as the joints' torque loops) keeps it in mjData::act.
+// MuJoCo 2.2 has no actuator_actadr: the actuators with state come after every one without (its
+// compiler refuses another order), one activation each, in order.
+inline int activation_index(const mjModel& m, int actuator) { return actuator - (m.nu - m.na); }
+
 // Momentum of the whole scene, world frame: linear [kg m/s] and angular about the scene's
 // centre of mass [kg m^2/s].
 struct Momentum {

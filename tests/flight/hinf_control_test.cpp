@@ -4,16 +4,15 @@
 // (what a mass known to a few per cent leaves of the feed-forward, or a differential drag).
 #include "flight/hinf_control.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <new>
 
 #include <gtest/gtest.h>
 
 #include "flight/arm_hinf_control.hpp"
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 
 namespace chaser::flight {
 namespace {
