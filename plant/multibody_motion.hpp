@@ -8,7 +8,7 @@
 // point under the Earth-orbit plant's target model: a_ref = g(r_ref) + S_t, g gravity to J2 at every
 // step, S_t the target's slow terms (drag, solar pressure, the Sun and the Moon) held per window as
 // that plant holds them (plant/orbit_propagator.hpp). The world is then an inertial frame for every
-// body once each body b gets the applied force (xfrc_applied, at its CoM)
+// body once each body b gets the applied force (at its CoM; as generalised forces, qfrc_applied)
 //   f_b = m_b [g(r_ref + x_b) - g(r_ref)]                     the tide, Battin's difference
 //       + m_b S_rel                                          chaser bodies: their differential slow terms
 //       + (m_b / M_chaser) F_dist                            chaser bodies: the period's LVLH disturbance
@@ -19,8 +19,11 @@
 //           + gravity gradient and magnetic torque with the hub's own inertia, held per period
 //   target: gravity gradient and magnetic torque held per period (the Earth-orbit plant's own)
 //   links:  gravity gradient of each link's own inertia (their point masses' share comes with the tide)
-// evaluated at each MuJoCo step's midpoint (positions x + v h / 2, attitudes q + q' h / 2): held
-// over the step by MuJoCo's RK4, a force so placed is right to second order in h.
+// evaluated at each MuJoCo step's midpoint (positions x + v h / 2, attitudes q + q' h / 2) and held
+// over the step by MuJoCo's RK4: a force so placed is right to second order in h. The links' wrenches
+// are mapped to the joints once per step, through the Jacobian at its start (the .cpp's apply_loads:
+// off by ~5e-9 N on ~1e-4 N tides); the hub's and the target's enter their free joints exactly, the
+// torques in body axes.
 //
 // The thrust profile's pieces are integrated exactly to their edges: a piece of dt is n =
 // ceil(dt / h) equal MuJoCo steps (h the scene's timestep, opt.timestep set to dt / n).

@@ -95,6 +95,47 @@ void MujocoModel::step() {
     throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
 }
 
+int MujocoModel::begin_step() {
+  const int bad_before = bad_state_warnings(*data_);
+  mjModel* m = model_;
+  mjData* d = data_;
+  guarded("stepping", [m, d] {
+    mj_checkPos(m, d);
+    mj_checkVel(m, d);
+    mj_fwdPosition(m, d);  // mj_forwardSkip's position and velocity stages (MuJoCo 2.2.2)
+    mj_sensorPos(m, d);
+    if (mjENABLED(mjENBL_ENERGY)) mj_energyPos(m, d);
+    mj_fwdVelocity(m, d);
+    mj_sensorVel(m, d);
+    if (mjENABLED(mjENBL_ENERGY)) mj_energyVel(m, d);
+  });
+  return bad_before;
+}
+
+void MujocoModel::finish_step(int bad_before) {
+  const double t_s = data_->time;
+  mjModel* m = model_;
+  mjData* d = data_;
+  guarded("stepping", [m, d] {
+    switch (m->opt.integrator) {
+      case mjINT_RK4:
+      case mjINT_EULER:
+        mj_forwardSkip(m, d, mjSTAGE_VEL, 0);  // the rest of mj_forward: actuation, accelerations, constraints
+        mj_checkAcc(m, d);
+        if (mjENABLED(mjENBL_FWDINV)) mj_compareFwdInv(m, d);
+        if (m->opt.integrator == mjINT_RK4)
+          mj_RungeKutta(m, d, 4);
+        else
+          mj_Euler(m, d);
+        break;
+      default:  // 2.2.2 does not export its implicit integrator: the whole step, evaluated anew
+        mj_step(m, d);
+    }
+  });
+  if (bad_state_warnings(*data_) != bad_before)
+    throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
+}
+
 void MujocoModel::forward() {
   mjModel* m = model_;
   mjData* d = data_;

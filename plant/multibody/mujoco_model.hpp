@@ -55,6 +55,22 @@ class MujocoModel {
   // mj_step: one step of the model's integrator. Throws MujocoError naming the time when MuJoCo
   // raises an error or finds a non-finite acceleration (the step is then not taken).
   void step();
+  // The same step with the applied forces set by `apply()` inside the step's first evaluation: once
+  // its positions and velocities are evaluated (mj_fwdPosition, mj_fwdVelocity: the bodies' poses,
+  // centres of mass, Jacobians' cdof and velocities at the step's start) and before its
+  // accelerations. A caller whose forces depend on that state reads it there instead of running a
+  // kinematics pass of its own before step(), which costs a quarter of an RK4 step's kinematics and
+  // normalises qpos's quaternions a second time. It is mj_step's own sequence (mj_checkPos,
+  // mj_checkVel, mj_forward, mj_checkAcc, the integrator) split at the velocity stage: the same
+  // state to the bit as step() after forces computed from the start on a copy, for RK4 and Euler
+  // (tests/plant/multibody/mujoco_model_test.cpp). `apply` runs outside MuJoCo's error guard and
+  // may throw.
+  template <class Apply>
+  void step_applying(Apply&& apply) {
+    const int bad_before = begin_step();
+    apply();
+    finish_step(bad_before);
+  }
   // mj_forward: positions, velocities and accelerations consistent with qpos, qvel and the inputs.
   void forward();
 
@@ -69,6 +85,8 @@ class MujocoModel {
   int actuator(const char* name) const;
 
  private:
+  int begin_step();  // the checks and the first evaluation's position and velocity stages
+  void finish_step(int bad_before);  // the rest of the evaluation and the integrator
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   int index(int type, const char* name, const char* what) const;

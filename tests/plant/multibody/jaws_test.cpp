@@ -88,6 +88,32 @@ TEST(Jaws, TheGripperWithItsOpenFingersHasTheGrippersMassProperties) {
   EXPECT_LT((inertia_kgm2 - Mat3(g.inertia_kgm2.asDiagonal())).norm(), 1e-9 * g.inertia_kgm2.norm());
 }
 
+// The contact is the three predefined pairs of the jaws with the lip and nothing else (no broad
+// phase: collision="predefined", every geom out of the dynamic pass), each with the contact MuJoCo
+// would mix from its two geoms: condim 3, friction 1, its default soft contact (0.02 s, damping
+// ratio 1; impedance 0.9 to 0.95 over 1 mm).
+TEST(Jaws, TheContactIsTheJawsWithTheLipOnlyAtMujocosDefaultSoftContact) {
+  const MujocoModel model = jaw_scene(Vec3::Zero(), Vec3::Zero());
+  const mjModel& m = model.model();
+  EXPECT_EQ(m.opt.collision, mjCOL_PAIR);
+  for (int g = 0; g < m.ngeom; ++g) EXPECT_EQ(m.geom_contype[g] | m.geom_conaffinity[g], 0) << "geom " << g;
+  ASSERT_EQ(m.npair, 3);
+  const int fixture = mj_name2id(&m, mjOBJ_GEOM, "fixture");
+  const char* jaws[3] = {"palm", "finger_a", "finger_b"};
+  for (int p = 0; p < m.npair; ++p) {
+    SCOPED_TRACE(jaws[p]);
+    EXPECT_EQ(m.pair_geom1[p], mj_name2id(&m, mjOBJ_GEOM, jaws[p]));
+    EXPECT_EQ(m.pair_geom2[p], fixture);
+    EXPECT_EQ(m.pair_dim[p], 3);
+    EXPECT_EQ(m.pair_friction[5 * p], 1.0);
+    EXPECT_EQ(m.pair_solref[mjNREF * p], 0.02);
+    EXPECT_EQ(m.pair_solref[mjNREF * p + 1], 1.0);
+    EXPECT_EQ(m.pair_solimp[mjNIMP * p], 0.9);
+    EXPECT_EQ(m.pair_solimp[mjNIMP * p + 1], 0.95);
+    EXPECT_EQ(m.pair_margin[p], 0.0);
+  }
+}
+
 TEST(Jaws, TheLipStrikingThePalmInjectsNoEnergyAndKeepsMomentum) {
   // The lip between the open fingers, 1 cm ahead of the palm's face (0.04 m behind the tool point,
   // the lip 0.03 m deep), coming at 5 cm/s with 1 cm/s across: it strikes the palm after 0.2 s.
