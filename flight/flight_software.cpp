@@ -98,8 +98,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
     if (meas.arm && meas.arm->fixture.valid) update_from_camera(*params.reach, state.reach, meas.arm->fixture);
   }
+  // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, no pulse, nothing fired.
+  const bool inhibited = reaching && state.reach.thrusters_inhibited;
   Vec3 reach_force_inertial_N, reach_torque_body_Nm;
-  if (reaching && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
+  if (inhibited) {
+    out.force_demand_lvlh_N.setZero();
+    out.torque_demand_body_Nm.setZero();
+  } else if (reaching && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
     // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
     out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * reach_force_inertial_N;
     out.torque_demand_body_Nm = reach_torque_body_Nm;
@@ -120,7 +125,8 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
 
   out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
   // The check chosen last period, if any: its pulse rides on this period's allocation.
-  const TestPulse pulse{.thruster = state.active_check.next, .on_fraction = params.active_check.pulse_fraction};
+  const TestPulse pulse{.thruster = inhibited ? model::kNoThruster : state.active_check.next,
+                        .on_fraction = params.active_check.pulse_fraction};
   ThrusterManagementOutput managed =
       manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
 
@@ -154,6 +160,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                      .fdi_listening = fdi_listening(state.fdir)},
                     out.command.ton);
 
+  if (inhibited) out.command.ton.fill(0.0);
   out.command.latch_closed_groups = state.thrusters.closed_groups;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;

@@ -127,6 +127,7 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.approach_duration_s = c.approach_duration_s;
   p.grasp = make_grasp(c);
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
+  if (c.rigidise) p.rigidise = RigidiseLawParams{.rigidise = *c.rigidise, .torque_limit_Nm = p.torque_limit_Nm};
   // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
   arm::JointVector stowed;
   for (int j = 0; j < model::kArmJoints; ++j) stowed(j) = s.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
@@ -219,6 +220,17 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
     q_dot(j) = joints.q_dot_radps[static_cast<std::size_t>(j)];
   }
   if (params.approach_duration_s > 0.0) grasp_joint_step(params.grasp, state.grasp, joints, t_s, command);
+  if (params.rigidise && state.grasp.step == GraspStep::kCaptured) {  // COMRADE 2018, sec. 4: the arm alone
+    model::ArmCommand rigidise = step_rigidise(*params.rigidise, state.rigidise, joints, t_s);
+    rigidise.close_gripper = command.close_gripper;
+    rigidise.lock_gripper = command.lock_gripper;
+    state.thrusters_inhibited = true;
+    state.platform_force_inertial_N.setZero();
+    state.platform_torque_body_Nm.setZero();
+    for (int j = 0; j < model::kArmJoints; ++j) state.joint_torque_Nm(j) = rigidise.torque_Nm[static_cast<std::size_t>(j)];
+    state.has_output = true;
+    return rigidise;
+  }
   const Carried c = carry(params, state, t_s);
   const arm::ArmKinematics kinematics = arm::arm_kinematics(params.servicer, c.r_hub_m, c.q_inertial_from_body, q);
   ToolPoseSample& record = state.tool_history[static_cast<std::size_t>(state.tool_history_next)];

@@ -23,6 +23,7 @@
 #include "flight/arm_hinf_control.hpp"
 #include "flight/grasp.hpp"
 #include "flight/navigation.hpp"
+#include "flight/rigidise.hpp"
 #include "flight/target_estimator.hpp"
 #include "model/capture.hpp"
 #include "model/messages.hpp"
@@ -53,6 +54,9 @@ struct ReachParams {
   double torque_limit_Nm = 176.0;            // [N m] each joint's command, the drives' repeated peak
   arm::ComplianceGains gains;                // the compliance law's, designed at the stowed arm
   ArmHinfParams hinf;                        // the H-infinity law's loops
+  // Captured: the rigidisation (flight/rigidise.hpp) in place of the combined law, the thrusters
+  // inhibited; without it the combined law flies on.
+  std::optional<RigidiseLawParams> rigidise;
 };
 
 // With capture (and chaser.arm): the reach's parameters; the H-infinity loops designed here.
@@ -104,6 +108,8 @@ struct ReachState {
   arm::JointVector joint_torque_Nm = arm::JointVector::Zero();
   arm::TaskErrors errors;
   GraspState grasp;
+  RigidiseState rigidise;
+  bool thrusters_inhibited = false;  // the rigidisation flies: the thrusters fire nothing
 };
 
 
@@ -122,7 +128,8 @@ bool platform_command(const ReachParams& params, ReachState& state, double t_s, 
 void update_from_camera(const ReachParams& params, ReachState& state, const model::RelativePoseMeasurement& sample);
 
 // One step of the joint loop at t_s: the law on the joints measured now and the estimates carried
-// to t_s; the joint torques to hold until the next step. Until the target's estimate exists, the
+// to t_s; the joint torques to hold until the next step. Once captured, with a rigidisation, its
+// law instead, and the thrusters inhibited from then on. Until the target's estimate exists, the
 // joints hold still (zero torque is not holding: they are commanded to their angles by the law's
 // own joint-space damping only once the reach has started).
 model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,

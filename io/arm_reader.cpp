@@ -56,6 +56,8 @@ void read_arm(MapReader& r, model::ArmParams& out) {
   r.number("torque_repeated_peak_Nm", Range::left_open(0.0, kMaxTorqueNm), out.torque_repeated_peak_Nm);
   r.number("torque_momentary_Nm", Range::left_open(0.0, kMaxTorqueNm), out.torque_momentary_Nm);
   // Optional (model/arm.hpp's default).
+  if (r.has("brake_holding_torque_Nm"))
+    r.number("brake_holding_torque_Nm", Range::left_open(0.0, kMaxTorqueNm), out.brake_holding_torque_Nm);
   if (r.has("torque_loop_bandwidth_radps"))
     r.number("torque_loop_bandwidth_radps", Range::closed(1.0, kMaxTorqueLoopBandwidthRadps),
              out.torque_loop_bandwidth_radps);

@@ -40,6 +40,23 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
     }
     if (m.has("lock_dwell_s")) m.number("lock_dwell_s", Range::closed(0.0, 10.0), c.lock_dwell_s);
     if (m.has("grasp_timeout_s")) m.number("grasp_timeout_s", Range::left_open(0.0, 1e4), c.grasp_timeout_s);
+    if (m.has("rigidise")) {
+      c.rigidise.emplace();
+      read_section(m, "rigidise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
+        model::RigidiseParams& r = *c.rigidise;
+        if (g.has("stiffness_Nm_per_rad")) g.number("stiffness_Nm_per_rad", Range::closed(0.0, 1e6), r.stiffness_Nm_per_rad);
+        if (g.has("damping_Nms_per_rad")) g.number("damping_Nms_per_rad", Range::left_open(0.0, 1e7), r.damping_Nms_per_rad);
+        std::string saturation;
+        if (g.has("saturation") && g.text("saturation", saturation)) {
+          if (saturation == "linear") r.saturation = model::RigidiseSaturation::kLinear;
+          else if (saturation == "clip") r.saturation = model::RigidiseSaturation::kClip;
+          else g.diagnostics().add(g.path_of("saturation"), fmt::format("must be one of linear, clip (got '{}')", saturation));
+        }
+        if (g.has("linear_limit_Nm")) g.number("linear_limit_Nm", Range::left_open(0.0, 1e5), r.linear_limit_Nm);
+        if (g.has("brake_rate_degps")) g.number("brake_rate_degps", Range::left_open(0.0, 10.0), r.brake_rate_degps);
+        if (g.has("brake_dwell_s")) g.number("brake_dwell_s", Range::closed(0.0, 1e3), r.brake_dwell_s);
+      });
+    }
   });
 }
 
@@ -77,6 +94,12 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
       c.platform_rate_hz * s.control_period_s > 1.0 + 1e-9)
     d.add("capture.platform_rate_hz", fmt::format("must be at most the control rate, 1 / control_period_s = {} Hz (got {})",
                                                   format_number(1.0 / s.control_period_s), format_number(c.platform_rate_hz)));
+  // The linear saturation's L inside its limit M, the drives' repeated peak.
+  if (c.rigidise && s.chaser.arm && d.clean("capture.rigidise.linear_limit_Nm") &&
+      !(c.rigidise->linear_limit_Nm < s.chaser.arm->torque_repeated_peak_Nm))
+    d.add("capture.rigidise.linear_limit_Nm",
+          fmt::format("must be below chaser.arm.torque_repeated_peak_Nm {} (got {})",
+                      format_number(s.chaser.arm->torque_repeated_peak_Nm), format_number(c.rigidise->linear_limit_Nm)));
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
     d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
 }

@@ -76,6 +76,10 @@ struct ArmParams {
   // tens of Hz (ours: 300 rad/s, 48 Hz, an assumption). The loop's gain also divides the drive's
   // friction, which is why a scenario gives the joints' friction as what is left of it.
   double torque_loop_bandwidth_radps = 300.0;
+  // [N m] each joint's brake (the rigidisation's, model/capture.hpp): engaged, it holds its joint
+  // by friction up to this torque and slips beyond (MuJoCo's frictionloss). Above the momentary
+  // limit, so that no drive can back-drive it; an assumption, the paper gives none.
+  double brake_holding_torque_Nm = 500.0;
   // [rad] the joint angles of the stowed arm, the configuration the rigid chaser's mass properties
   // (chaser.mass_kg, inertia_kgm2, com_body_m) include it in: shoulder pitched 90 deg to +y, the
   // elbow folded back 110 deg, the wrist 70 deg, a Z folded in front of the +x face; inside every

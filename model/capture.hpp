@@ -3,11 +3,38 @@
 // the servicer's 13 degrees of freedom (COMRADE 2018, sec. 6), the tool's path to the pre-grasp
 // pose, and the joints' rate. Read by io/capture_reader.cpp; flown by flight/reach.hpp; the plant
 // becomes the multibody one at start_s (sim/simulation.cpp).
+#include <optional>
 #include <string>
 
 namespace chaser::model {
 
 enum class CaptureLaw { kCompliance, kHinf };
+
+// The rigidisation's saturation of the joint torques (COMRADE 2018, sec. 6.2.2 and its Fig. 13):
+// the paper's linear saturation (identity up to L, then approaching the limit M along a tanh) or a
+// plain clip at M.
+enum class RigidiseSaturation { kLinear, kClip };
+
+// The rigidisation (COMRADE 2018, sec. 4 and 6.2.2; the optional section capture.rigidise): once
+// the capture is confirmed the thrusters are inhibited and the arm alone damps the relative motion,
+// u = -s(K_d q' + K_p (q - q_d)) on every joint, q_d the joints' angles at the capture's
+// confirmation, s saturating at the arm's repeated peak (chaser.arm.torque_repeated_peak_Nm); once
+// every joint's rate has stayed below brake_rate_degps for brake_dwell_s the brakes engage and the
+// drives are off (the brakes: chaser.arm.brake_holding_torque_Nm).
+// The gains: K_p must hold the chaser's centripetal load (turning with ENVISAT at 2.5 deg/s, ~12 N
+// about the composite's CoM, now carried by the arm: tens of N m at the shoulder) to a fraction of a
+// degree; K_d is bounded by the arm's self-motion: seven joints close a chain of six degrees of
+// freedom between hub and target, so one mode moves the links alone, with a link's small inertia.
+// At K_d = 10,000 N m s/rad that mode outran the 1 kHz joint loop and the torque loop's lag (the
+// roll joints limit-cycled at the drive's 176 N m after an H-infinity capture); 2,000 damps it.
+struct RigidiseParams {
+  double stiffness_Nm_per_rad = 1000.0;     // [N m/rad] K_p, every joint
+  double damping_Nms_per_rad = 2000.0;     // [N m s/rad] K_d, every joint (bounded: the comment above)
+  RigidiseSaturation saturation = RigidiseSaturation::kLinear;
+  double linear_limit_Nm = 88.0;            // [N m] L: the law's torque passes unchanged up to it (< M)
+  double brake_rate_degps = 0.01;           // [deg/s] every joint's rate below this ...
+  double brake_dwell_s = 1.0;               // [s] ... for this long: the brakes engage
+};
 
 struct CaptureParams {
   double start_s = 0.0;            // [s] the arm wakes: the reach begins
@@ -30,13 +57,16 @@ struct CaptureParams {
   // jaws close when closure_samples camera samples in a row put the fixture inside the grappling
   // envelope (Table 2), and the gripper locks rigidly once both fingers have held the lip for
   // lock_dwell_s. No closure within grasp_timeout_s of the approach's end: the grasp is abandoned
-  // (the jaws stay open). Captured, the combined controller flies on, its tool held on the fixture
-  // (rigidisation, with the thrusters inhibited and the joints braked, is not built).
+  // (the jaws stay open). Captured: the rigidisation (below), or without it the combined controller
+  // flies on, its tool held on the fixture.
   double pre_grasp_hold_s = 30.0;     // [s]
   double approach_duration_s = 30.0;  // [s] the standoff covered at 5 mm/s on average
   int closure_samples = 3;            // [-] consecutive arm camera samples
   double lock_dwell_s = 0.2;          // [s]
   double grasp_timeout_s = 30.0;      // [s]
+  // The rigidisation after the capture; without it the combined controller flies on, its tool held
+  // on the fixture.
+  std::optional<RigidiseParams> rigidise;
   // [s] when the tool leaves the pre-grasp pose for the fixture: the reach ends, the capture begins.
   double approach_start_s() const { return start_s + path_duration_s + pre_grasp_hold_s; }
 };
@@ -49,5 +79,6 @@ inline constexpr double kGraspRelativeVelocityMps = 0.005;                // [m/
 inline constexpr double kGraspRelativeRateDegps = 0.1;                    // [deg/s] per axis
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
+inline const char* to_string(RigidiseSaturation s) { return s == RigidiseSaturation::kClip ? "clip" : "linear"; }
 
 }  // namespace chaser::model

@@ -39,6 +39,7 @@ struct ArmMeasurements {
   bool gripper_closed = false;      // the jaws hold the fixture: both fingers touch it (their switches)
   double gripper_opening_m = 0;     // [m] the fingers' inner faces apart
   bool gripper_locked = false;      // the gripper is closed rigidly on the fixture
+  bool brakes_engaged = false;      // the joints' brakes hold
   RelativePoseMeasurement fixture;  // the grasp fixture seen by the arm camera
 };
 

@@ -48,6 +48,7 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
   m.gripper_closed = jaws.holding;
   m.gripper_opening_m = jaws.opening_m;
   m.gripper_locked = grasp_engaged(*p, s);
+  m.brakes_engaged = s.brakes_engaged;
   return m;
 }
 
@@ -59,6 +60,7 @@ void command_arm(Plant& plant, const model::ArmCommand& command) {
   std::array<double, model::kArmJoints> torque{};
   for (std::size_t j = 0; j < torque.size(); ++j) torque[j] = std::clamp(command.torque_Nm[j], -limit, limit);
   set_joint_torques(s, torque);
+  if (command.engage_brakes && !s.brakes_engaged) engage_brakes(*p, s);
   command_jaws(*p, s, command.close_gripper);
   // The rigid closure: the gripper welded to the fixture where the jaws hold it, never on nothing.
   if (command.lock_gripper && !grasp_engaged(*p, s) && read_jaws(*p, s).holding) engage_grasp(*p, s);

@@ -75,6 +75,7 @@ struct MultibodyMotionState {
   Vec3 v_ref_eci_mps = Vec3::Zero();  // [m/s]
   // [N m] the joint torques held over the next advance (the arm's inner loop sets them).
   std::array<double, model::kArmJoints> joint_torque_Nm{};
+  bool brakes_engaged = false;  // the joints' brakes hold (engage_brakes)
 };
 
 struct MultibodyMotionParams {
@@ -126,6 +127,11 @@ struct JawReading {
   bool holding = false;
 };
 JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionState& state);
+
+// The joints' brakes (the rigidisation): each joint's friction becomes the brake's holding torque
+// (chaser.arm.brake_holding_torque_Nm, MuJoCo's frictionloss: the joint sticks while the torque it
+// must carry stays below, and slips at that torque beyond). Engaged for good.
+void engage_brakes(const MultibodyMotionParams& params, MultibodyMotionState& state);
 
 // The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp).
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);

@@ -462,6 +462,16 @@ def reach_run_rows(compliance, hinf):
              ["0.1"] + [at_closure(g, "gripper_rate_deg_s", 1.0) for g in grasps],
              ["0.05 m, 5 mm/s, 2 deg, 0.5 deg/s"] + [chaser_at_closure(g) for g in grasps],
              ["every figure"] + ["met" if g["table2_met"] else "**not met**" for g in grasps]]
+    rigid = [r["reach"].get("rigidisation") for r in runs]
+
+    def rigid_cell(g, value):
+        return value(g) if g else "-"
+
+    rows += [[""] + [rigid_cell(g, lambda g: "-" if g["brakes_s"] is None else fixed(g["brakes_s"] - g["start_s"], 1))
+                     for g in rigid],
+             ["176"] + [rigid_cell(g, lambda g: fixed(max(g["peak_joint_torque_Nm"]), 1)) for g in rigid],
+             [""] + [rigid_cell(g, lambda g: sig(max(abs(v) for v in g["final_joint_angle_error_deg"]), 2)) for g in rigid],
+             [""] + [rigid_cell(g, lambda g: sig(max(abs(v) for v in g["final_joint_rate_deg_s"]), 2)) for g in rigid]]
     return rows
 
 
@@ -985,7 +995,10 @@ TABLES = [
            "chaser position at the end of the run [m]", "chaser velocity [m/s]", "chaser pointing [deg]",
            "the grasp", "gripper position at the closure [mm]", "gripper attitude at the closure [deg]",
            "gripper velocity at the closure [mm/s]", "gripper rate at the closure [deg/s]",
-           "chaser at the closure", "Table 2 at the closure"),
+           "chaser at the closure", "Table 2 at the closure",
+           "rigidisation: the brakes engaged, after the capture [s]", "rigidisation: peak joint torque [N m]",
+           "rigidised: the joints from where it held them, largest [deg]",
+           "rigidised: the joints' rates at the end, largest [deg/s]"),
           reach_run_rows, words=("m", "mm/s", "deg", "deg/s", "s", "at", "closure", "locked", "captured", "abandoned",
                                  "met", "**not", "met**", "every", "figure"),
           caption="The gripper's figures per axis, x the approach; over the hold against the pre-grasp pose, "

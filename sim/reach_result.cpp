@@ -68,4 +68,16 @@ void add_grasp_period(GraspResult& g, const flight::GraspState& state, const pla
   g.chaser_rate_deg_s = (sample.omega_body_radps - sample.omega_ref_body_radps).norm() * 180.0 / std::numbers::pi;
 }
 
+void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints) {
+  if (!state.started) return;
+  r.flown = true;
+  r.start_s = state.started_s;
+  if (state.brakes_s >= 0.0) r.brakes_s = state.brakes_s;
+  for (int j = 0; j < model::kArmJoints; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    r.final_angle_error_rad[i] = joints.q_rad[i] - state.q_hold_rad(j);
+    r.final_rate_radps[i] = joints.q_dot_radps[i];
+  }
+}
+
 }  // namespace chaser::sim

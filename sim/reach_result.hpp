@@ -9,6 +9,7 @@
 
 #include "core/types.hpp"
 #include "flight/grasp.hpp"
+#include "flight/rigidise.hpp"
 #include "model/arm.hpp"
 #include "model/capture.hpp"
 #include "plant/arm_joints.hpp"
@@ -59,6 +60,18 @@ struct GraspResult {
 // envelope, its relative velocity and rate per axis, the chaser's four.
 bool grasp_meets_table2(const GraspResult& g);
 
+// The rigidisation (flight/rigidise.hpp; COMRADE 2018 Table 7's figures): when it began (the capture
+// confirmed) and the brakes engaged, each joint's peak torque command over it, and at the run's end
+// each joint's angle from where the rigidisation held it and its rate. NaN where it never came.
+struct RigidiseResult {
+  bool flown = false;
+  double start_s = std::numeric_limits<double>::quiet_NaN();   // [s]
+  double brakes_s = std::numeric_limits<double>::quiet_NaN();  // [s]
+  std::array<double, model::kArmJoints> peak_torque_Nm{};      // [N m] the commands, every joint step
+  std::array<double, model::kArmJoints> final_angle_error_rad{};  // [rad] q - q_d at the end
+  std::array<double, model::kArmJoints> final_rate_radps{};       // [rad/s] at the end
+};
+
 struct ReachResult {
   bool flown = false;                 // the arm woke
   double hold_from_s = 0.0;           // [s] the window judged: [hold_from_s, hold_to_s) within the run
@@ -77,6 +90,7 @@ struct ReachResult {
   double min_tool_clearance_at_s = std::numeric_limits<double>::quiet_NaN();
   int camera_samples = 0;             // arm camera samples the flight software used
   GraspResult grasp;
+  RigidiseResult rigidise;
 };
 
 // One control period of the reach: the gripper's truth at t_s and the tool point's clearance from the
@@ -93,5 +107,9 @@ bool gripper_meets_table2(const ReachResult& r);
 // errors (the mission monitor's sample at t_s).
 void add_grasp_period(GraspResult& g, const flight::GraspState& state, const plant::GripperTruth& gripper_at_fixture,
                       const MonitorSample& sample);
+
+// A control period with the rigidisation flown (state.started): its times, and the joints now as
+// the final ones.
+void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints);
 
 }  // namespace chaser::sim

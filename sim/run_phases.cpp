@@ -52,6 +52,15 @@ std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
   return out;
 }
 
+std::vector<ConditionalPhase> conditional_phases(const model::Scenario& s) {
+  if (!s.capture || !s.capture->rigidise) return {};
+  const ConditionalPhase phase{.requirements = {.synchronised = true}, .configuration = {.arm_awake = true}};
+  ConditionalPhase rigidisation = phase, rigidised = phase;
+  rigidisation.name = "rigidisation";
+  rigidised.name = "rigidised";
+  return {rigidisation, rigidised};
+}
+
 PhaseSequenceParams run_phases(const model::Scenario& scenario) {
   const std::vector<PlannedPhase> plan = planned_phases(scenario);
   PhaseSequenceParams p;
@@ -63,6 +72,18 @@ PhaseSequenceParams run_phases(const model::Scenario& scenario) {
                              .reason = "time"});
     p.phases.push_back(std::move(phase));
   }
+  const std::vector<ConditionalPhase> conditional = conditional_phases(scenario);
+  if (conditional.empty()) return p;
+  p.flag_names = {"captured", "braked"};
+  const int capture = phase_index(p, "capture");
+  const int rigidisation = static_cast<int>(p.phases.size());
+  if (capture >= 0)  // the first exit: it wins over a planned one in the same period
+    p.phases[static_cast<std::size_t>(capture)].exits.insert(
+        p.phases[static_cast<std::size_t>(capture)].exits.begin(),
+        {.condition = held_for(kCapturedFlag, 0), .to_phase = rigidisation, .reason = "captured"});
+  p.phases.push_back({.name = conditional[0].name,
+                      .exits = {{.condition = held_for(kBrakedFlag, 0), .to_phase = rigidisation + 1, .reason = "brakes engaged"}}});
+  p.phases.push_back({.name = conditional[1].name, .exits = {}});
   return p;
 }
 

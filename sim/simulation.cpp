@@ -122,6 +122,10 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
     phase_requirements_.push_back(phase.requirements);
     phase_configuration_.push_back(phase.configuration);
   }
+  for (const ConditionalPhase& phase : conditional_phases(scenario_)) {
+    phase_requirements_.push_back(phase.requirements);
+    phase_configuration_.push_back(phase.configuration);
+  }
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {});
@@ -167,7 +171,7 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   tally(out, t_s);
   if (memory_ || (telemetry_ && telemetry_->ok())) record(out, truth, t_s);
   done_ = ++k_ >= periods_;
-  if (!done_) step_phases(phase_params_, phase_state_, k_ * period_ns_, 0, 0);  // the next period's phase
+  if (!done_) step_phases(phase_params_, phase_state_, k_ * period_ns_, phase_flags(), 0);  // the next period's phase
 }
 
 // The target's attitude and rate and the slosh at t_k are needed for telemetry and the keep-out
@@ -189,6 +193,7 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
     add_reach_period(result_.reach, *truth.gripper, t_s, clearance_m);
     if (recording_) truth.figure = plant::arm_figure(plant_);
     result_.reach.camera_samples = flight_state_.reach.camera_samples;
+    add_rigidise_period(result_.reach.rigidise, flight_state_.reach.rigidise, truth.arm);
   } else if (shape_.arm && recording_) {  // stowed
     truth.arm.joints = model::kArmJoints;
     for (int j = 0; j < model::kArmJoints; ++j)
@@ -202,6 +207,15 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
     add_grasp_period(result_.reach.grasp, flight_state_.reach.grasp, *truth.gripper, truth.sample);
   if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), truth.slosh.begin());
   return truth;
+}
+
+// The conditions the run's phases change on (sim/run_phases.hpp's flags), from the flight
+// software's state after the period: the capture confirmed, the brakes engaged.
+std::uint64_t Simulation::phase_flags() const {
+  std::uint64_t flags = 0;
+  if (flight_state_.reach.grasp.step == flight::GraspStep::kCaptured) flags |= std::uint64_t{1} << kCapturedFlag;
+  if (flight_state_.reach.rigidise.brakes_s >= 0.0) flags |= std::uint64_t{1} << kBrakedFlag;
+  return flags;
 }
 
 bool Simulation::judge(const MonitorSample& sample) { return monitor_period(scenario_, sample, result_.figures); }
@@ -241,8 +255,9 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
     if (flight_params_.reach) {
       const model::ArmCommand command_now =
           flight::step_reach(*flight_params_.reach, flight_state_.reach, plant::sense_arm(plant_), to_seconds(t));
-      for (std::size_t j = 0; j < result_.reach.peak_joint_torque_Nm.size(); ++j)
-        result_.reach.peak_joint_torque_Nm[j] = std::max(result_.reach.peak_joint_torque_Nm[j], std::abs(command_now.torque_Nm[j]));
+      auto& peak = flight_state_.reach.rigidise.started ? result_.reach.rigidise.peak_torque_Nm
+                                                         : result_.reach.peak_joint_torque_Nm;
+      for (std::size_t j = 0; j < peak.size(); ++j) peak[j] = std::max(peak[j], std::abs(command_now.torque_Nm[j]));
       plant::command_arm(plant_, command_now);
     }
     plant::advance_plant(plant_.params, plant_.state, t, std::min(t + joint_period_ns_, t_end));

@@ -135,6 +135,7 @@ class Simulation {
   };
   PeriodTruth sample_truth(const flight::FlightOutput& out, double t_s);
   bool judge(const MonitorSample& sample);
+  std::uint64_t phase_flags() const;
   void propagate(const model::ThrusterCommand& command, TimeNs t_k);
   void propagate_with_arm(const model::ThrusterCommand& command, TimeNs t_k);
   void tally(const flight::FlightOutput& out, double t_s);

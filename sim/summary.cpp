@@ -177,6 +177,23 @@ nlohmann::json grasp_json(const GraspResult& g) {
   };
 }
 
+// The rigidisation (sim/reach_result.hpp): null where it was not flown.
+nlohmann::json rigidise_json(const RigidiseResult& r) {
+  if (!r.flown) return nullptr;
+  std::array<double, model::kArmJoints> angle_deg{}, rate_deg_s{};
+  for (std::size_t j = 0; j < angle_deg.size(); ++j) {
+    angle_deg[j] = kRadToDeg * r.final_angle_error_rad[j];
+    rate_deg_s[j] = kRadToDeg * r.final_rate_radps[j];
+  }
+  return nlohmann::json{
+      {"start_s", r.start_s},
+      {"brakes_s", finite_or_null(true, r.brakes_s)},
+      {"peak_joint_torque_Nm", r.peak_torque_Nm},
+      {"final_joint_angle_error_deg", angle_deg},
+      {"final_joint_rate_deg_s", rate_deg_s},
+  };
+}
+
 // The reach against COMRADE Table 2 (sim/reach_result.hpp): null without a capture.
 nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
   if (!scenario.capture) return nullptr;
@@ -210,6 +227,7 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"min_tool_clearance_at_s", finite_or_null(true, reach.min_tool_clearance_at_s)},
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
       {"grasp", grasp_json(reach.grasp)},
+      {"rigidisation", rigidise_json(reach.rigidise)},
   };
 }
 
@@ -252,7 +270,21 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
         grasp_meets_table2(g) ? "met" : "NOT met");
   else if (g.attempted)
     grasp = fmt::format("  grasp: {} (the jaws never closed)\n", g.outcome);
-  return reach_lines(scenario, reach, mm, deg, peak) + grasp;
+  std::string rigidisation;
+  if (const RigidiseResult& rg = reach.rigidise; rg.flown) {
+    double peak_rg = 0.0, angle = 0.0, rate = 0.0;
+    for (std::size_t j = 0; j < rg.peak_torque_Nm.size(); ++j) {
+      peak_rg = std::max(peak_rg, rg.peak_torque_Nm[j]);
+      angle = std::max(angle, std::abs(rg.final_angle_error_rad[j]));
+      rate = std::max(rate, std::abs(rg.final_rate_radps[j]));
+    }
+    rigidisation = fmt::format(
+        "  rigidisation: from {:.1f} s, thrusters inhibited; {}; peak joint torque {:.1f} N m; at the end the joints "
+        "within {:.3f} deg of where it held them, rates within {:.4f} deg/s\n",
+        rg.start_s, std::isnan(rg.brakes_s) ? std::string("brakes not engaged") : fmt::format("brakes engaged at {:.1f} s", rg.brakes_s),
+        peak_rg, kRadToDeg * angle, kRadToDeg * rate);
+  }
+  return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation;
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ TEST(CaptureSection, TheShippedScenarioReadsBack) {
   EXPECT_EQ(s.sensors.arm_camera->period_s, 0.1);
   EXPECT_NEAR(s.chaser.arm->stowed_rad[5], 20.0 * model::kArmDegToRad, 1e-15);
   EXPECT_FALSE(load_scenario_file("scenarios/comrade_sync.yaml").scenario->capture);  // optional
+  ASSERT_TRUE(s.capture->rigidise);
+  EXPECT_EQ(s.capture->rigidise->damping_Nms_per_rad, 2000.0);
+  EXPECT_EQ(s.capture->rigidise->saturation, model::RigidiseSaturation::kLinear);
+  EXPECT_EQ(s.chaser.arm->brake_holding_torque_Nm, 500.0);  // the default
 }
 
 struct BadCapture {
@@ -61,6 +65,16 @@ std::vector<BadCapture> bad_captures() {
       {"stowed_outside_limits", {"chaser.arm.stowed_deg=[0, 130, 0, -110, 0, 20, 0]"}, "chaser.arm.stowed_deg.1",
        "must be within the joint's limits [-120, 120] deg (got 130)"},
       {"stowed_count", {"chaser.arm.stowed_deg=[0, 90, 0]"}, "chaser.arm.stowed_deg", "must be a list of 7 angles"},
+      {"rigidise_saturation", {"capture.rigidise.saturation=tanh"}, "capture.rigidise.saturation",
+       "must be one of linear, clip (got 'tanh')"},
+      {"rigidise_linear_limit_at_m", {"capture.rigidise.linear_limit_Nm=176"}, "capture.rigidise.linear_limit_Nm",
+       "must be below chaser.arm.torque_repeated_peak_Nm 176 (got 176)"},
+      {"rigidise_no_damping", {"capture.rigidise.damping_Nms_per_rad=0"}, "capture.rigidise.damping_Nms_per_rad",
+       "must be in (0, 10000000]"},
+      {"rigidise_brake_rate", {"capture.rigidise.brake_rate_degps=-0.01"}, "capture.rigidise.brake_rate_degps",
+       "must be in (0, 10]"},
+      {"brake_holding_torque", {"chaser.arm.brake_holding_torque_Nm=0"}, "chaser.arm.brake_holding_torque_Nm",
+       "must be in (0, 100000]"},
   };
 }
 

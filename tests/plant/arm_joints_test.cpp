@@ -165,6 +165,53 @@ TEST(ArmJoints, TheGrippersVelocityAndRateAreItsMotionsDerivatives) {
   EXPECT_LT((now.g.omega_radps - omega_expected).norm(), 1e-7);
 }
 
+// The brakes (plant::engage_brakes through command_arm) hold a joint by friction up to their
+// holding torque. Joint 4 (the elbow) driven at 0.8 of it barely creeps: MuJoCo's friction is a
+// soft constraint, whose stick lets a loaded joint creep at (1 - d) / (d b) of its free
+// acceleration (d = 0.999, b = 2 / (d T) = 1000 / s: ~2e-6 rad/s here; measured 7e-6, bound 2e-5
+// rad/s, 1e-3 deg/s; with MuJoCo's default friction constraint it crept at 7e-3 rad/s). At 1.2 of
+// it the joint slips against the holding torque, and at 2.2 of it too: the brake takes its holding
+// torque off either drive's, so over the first 0.1 s (the other joints braked in both: the same
+// effective inertia) their rates are as (110 - 50) / (60 - 50) = 6, within 5 % (the
+// configuration moves by 0.02 rad in that time).
+TEST(ArmJoints, TheBrakesHoldAJointBelowTheirTorqueAndSlipAbove) {
+  constexpr double kHoldingNm = 50.0;
+  constexpr std::size_t kElbow = 3;
+  struct Elbow {
+    double rate_at_0p1s_radps = 0.0, rate_at_1s_radps = 0.0, turned_rad = 0.0;
+  };
+  const auto drive_elbow = [&](double torque_Nm, bool braked) {
+    model::Scenario s = arm_scenario();
+    s.chaser.arm->brake_holding_torque_Nm = kHoldingNm;
+    Plant plant = make_plant(s, start(s), 7);
+    if (auto problem = wake_arm(plant, s)) ADD_FAILURE() << *problem;
+    model::ArmCommand command;
+    command.engage_brakes = braked;
+    command.torque_Nm[kElbow] = torque_Nm;
+    command_arm(plant, command);
+    EXPECT_EQ(sense_arm(plant).brakes_engaged, braked);
+    const double q0 = sense_arm(plant).q_rad[kElbow];
+    Elbow e;
+    for (TimeNs t = 0; t < 1'000'000'000; t += 100'000'000) {  // ten 0.1 s periods, thrusters off
+      begin_plant_period(plant.params, plant.state, model::ThrusterCommand{}, t);
+      advance_plant(plant.params, plant.state, t, t + 100'000'000);
+      if (t == 0) e.rate_at_0p1s_radps = sense_arm(plant).q_dot_radps[kElbow];
+    }
+    e.rate_at_1s_radps = sense_arm(plant).q_dot_radps[kElbow];
+    e.turned_rad = sense_arm(plant).q_rad[kElbow] - q0;
+    return e;
+  };
+  const Elbow held = drive_elbow(0.8 * kHoldingNm, true);
+  const Elbow slipped = drive_elbow(1.2 * kHoldingNm, true);
+  const Elbow slipped_harder = drive_elbow(2.2 * kHoldingNm, true);
+  const Elbow free = drive_elbow(1.2 * kHoldingNm, false);
+  EXPECT_LT(std::abs(held.rate_at_1s_radps), 2e-5);
+  EXPECT_LT(std::abs(held.turned_rad), 2e-5);
+  EXPECT_GT(std::abs(free.turned_rad), 0.5);  // the drive turns the free elbow
+  EXPECT_GT(slipped.rate_at_1s_radps, 5.0 * slipped.rate_at_0p1s_radps);  // it keeps slipping
+  EXPECT_NEAR(slipped_harder.rate_at_0p1s_radps / slipped.rate_at_0p1s_radps, 6.0, 0.3);
+}
+
 TEST(ArmJoints, TheArmCameraSeesTheFixtureInItsConeAndRangeOnly) {
   Awake a;
   a.plant.params.fixture_target_m = a.fixture_target_m;
