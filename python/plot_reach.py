@@ -148,7 +148,8 @@ def hub_outline(t, row, edges):
 
 
 def key_instants(t, mask, summary):
-    """(label, row) of the instants drawn: the waking, the path's end, the approach, the closure, the end."""
+    """(label, row) of the instants drawn: the waking, the path's end, the approach, the closure, the
+    brakes (after a rigidisation), the end."""
     time = t["t_s"]
     rows = np.flatnonzero(mask)
     if rows.size == 0:
@@ -161,6 +162,9 @@ def key_instants(t, mask, summary):
     closure = (reach.get("grasp") or {}).get("closure_s")
     if closure is not None:
         wanted.append(("the jaws close", float(closure)))
+    brakes = (reach.get("rigidisation") or {}).get("brakes_s")
+    if brakes is not None:
+        wanted.append(("the brakes engage", float(brakes)))
     wanted.append(("the end", time[rows[-1]]))
     instants = []
     for label, at_s in wanted:

@@ -135,6 +135,15 @@ def test_the_key_instants_are_the_waking_the_hold_the_approach_the_closure_and_t
     assert instants[3][0] == "8.6 s: the jaws close"
 
 
+def test_after_a_rigidisation_the_brakes_are_a_key_instant_too(tmp_path):
+    fake_run(tmp_path / "run", figure=True)
+    t = pr.load_telemetry(tmp_path / "run")
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    summary["reach"]["rigidisation"] = {"start_s": 8.8, "brakes_s": 9.42}
+    instants = pr.key_instants(t, pr.reach_rows(t), summary)
+    assert [label for label, _ in instants][-2:] == ["9.5 s: the brakes engage", "9.9 s: the end"]
+
+
 def test_the_stick_figures_are_drawn_where_the_telemetry_has_the_arms_figure(tmp_path, capsys):
     scenario = fake_run(tmp_path / "run", figure=True)
     t = pr.load_telemetry(tmp_path / "run")
