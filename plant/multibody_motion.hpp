@@ -76,6 +76,10 @@ struct MultibodyMotionState {
   // [N m] the joint torques held over the next advance (the arm's inner loop sets them).
   std::array<double, model::kArmJoints> joint_torque_Nm{};
   bool brakes_engaged = false;  // the joints' brakes hold (engage_brakes)
+  // The gripper locked on the fixture (engage_grasp): the fingers held at these slides [m], the
+  // jaws' contact off (the weld carries the grasp).
+  bool jaws_locked = false;
+  std::array<double, 2> locked_finger_m{};
 };
 
 struct MultibodyMotionParams {
@@ -133,7 +137,9 @@ JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionS
 // must carry stays below, and slips at that torque beyond). Engaged for good.
 void engage_brakes(const MultibodyMotionParams& params, MultibodyMotionState& state);
 
-// The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp).
+// The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp);
+// the jaws then locked where they hold the lip, their contact off (the weld's forces replace it),
+// and read as holding from then on.
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);
 bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state);
 

@@ -27,10 +27,11 @@ Vec3 tool_at_qpos0() {
 
 // The scene with jaws and the fixture's lip `lip_from_tool_m` from the tool point at qpos0 (world
 // axes = the grasp pose's axes), the target moving at `target_velocity_mps`; no joint friction.
-MujocoModel jaw_scene(const Vec3& lip_from_tool_m, const Vec3& target_velocity_mps) {
+MujocoModel jaw_scene(const Vec3& lip_from_tool_m, const Vec3& target_velocity_mps, bool weld = false) {
   model::MultibodySceneParams scene;
   for (auto& link : scene.arm.links) link.friction_Nm = 0.0;
   scene.grasp_contact = true;
+  scene.grasp_weld = weld;
   scene.target_position_m = tool_at_qpos0() + lip_from_tool_m + Vec3(2.0, 0.0, 0.0);
   scene.fixture_target_m = Vec3(-2.0, 0.0, 0.0);  // the lip 2 m from the target's CoM along -x
   MujocoModel model(mjcf_of(scene));
@@ -157,6 +158,38 @@ TEST(Jaws, TheSwitchesSeeTheLipHeldByBothFingersAndNothingWhenTheyCloseOnNothing
     // on nothing they close to the tool point.
     EXPECT_NEAR(r.opening_m, with_lip ? 2.0 * params.scene.fixture.half_extents_m.z() : 0.0, 1e-3);
   }
+}
+
+// The rigid closure (engage_grasp) welds the gripper to the lip the jaws hold and locks the jaws:
+// their contact is then off (its forces are internal to the welded pair), they read as holding,
+// and each finger stays where it was (its servo held there: within 1e-6 m over 1 s with the arm
+// driven), the momentum kept (the weld is internal too: the links' drives exchange ~1 kg m/s
+// between the bodies, the scene's total stays within 1e-7 kg m/s of it; measured 2.6e-8).
+TEST(Jaws, LockedTheJawsStayOnTheLipWithTheirContactOff) {
+  MujocoModel world = jaw_scene(Vec3::Zero(), Vec3::Zero(), true);
+  MultibodyMotionParams params;
+  params.scene.grasp_contact = true;
+  params.index = indices_of(world);
+  MultibodyMotionState state{.world = world, .earth = {}};
+  command_jaws(params, state, true);
+  for (int k = 0; k < 500; ++k) state.world.step();  // 0.5 s: the jaws close on the lip
+  ASSERT_TRUE(read_jaws(params, state).holding);
+  engage_grasp(params, state);
+  EXPECT_TRUE(grasp_engaged(params, state));
+  EXPECT_TRUE(state.world.model().opt.disableflags & mjDSBL_CONTACT);
+  const double opening_m = read_jaws(params, state).opening_m;
+  const Vec3 p0 = state.world.momentum().linear_kgmps;
+  const int motor1 = params.index.motor1;
+  for (int k = 0; k < 1000; ++k) {  // 1 s, the arm's joints driven
+    command_jaws(params, state, true);
+    for (int j = 0; j < model::kArmJoints; ++j) state.world.data().ctrl[motor1 + j] = 3.0 * std::sin(1e-2 * k + j);
+    state.world.step();
+  }
+  EXPECT_EQ(state.world.data().ncon, 0);
+  const JawReading r = read_jaws(params, state);
+  EXPECT_TRUE(r.holding);
+  EXPECT_NEAR(r.opening_m, opening_m, 1e-6);
+  EXPECT_LT((state.world.momentum().linear_kgmps - p0).norm(), 1e-7);
 }
 
 }  // namespace
