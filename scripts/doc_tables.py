@@ -884,6 +884,96 @@ def invsim_paper_table6_fill(out):
     return fill
 
 
+# --------------------------------------------------------------------------------------------------
+# Active checks all along (docs/fdi.md): the Table 2 preset without checks and with them all along
+
+def fdir_case_stats(out):
+    """Per case of a Table 2 campaign, the FDIR as a whole: runs, counts of P_nd, P_f and P_i, mean and
+    largest t_d [s] after the onset, mean propellant [g], captures and corridors kept."""
+    summary = campaign_summary(out)
+    runs = campaign_runs(out)
+    stats = {}
+    for case in ("none",) + FAULT_CASES:
+        if ("fdir", case) not in summary:  # a campaign of some cases only
+            continue
+        row = summary["fdir", case]
+        n = int(row["runs"])
+        count = {k: 0 if missing(row[k]) else round(row[k] * n) for k in ("P_nd", "P_f", "P_i")}
+        mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
+        td = [number(r["fdir_detection_s"]) for r in mine if not missing(number(r["fdir_detection_s"]))]
+        stats[case] = dict(n=n, **count, mean_td=sum(td) / len(td) if td else math.nan,
+                           max_td=max(td) if td else math.nan,
+                           propellant_g=1e3 * row["mean_propellant_kg"],
+                           captures=sum(int(r["capture"]) for r in mine),
+                           corridor=sum(int(r["corridor_kept"]) for r in mine))
+    return stats
+
+
+def checks_all_along_rows(passive, all_along):
+    """Without checks / with checks all along: the FDIR per case (docs/fdi.md)."""
+    cols = [fdir_case_stats(passive), fdir_case_stats(all_along)]
+    base = cols[0]["none"]["propellant_g"]
+
+    def td(c):
+        return f"{fixed(c['mean_td'], 2)} / {fixed(c['max_td'], 1)} s"
+
+    def counts(c, *keys):
+        return ", ".join(f"{c[k]:,}" for k in keys) + f" of {c['n']:,}"
+
+    rows = [[f"{c['none']['P_f']} of {c['none']['n']}, {fixed(c['none']['propellant_g'], 1)} g"
+             + ("" if k == 0 else f" (+{fixed(100.0 * (c['none']['propellant_g'] / base - 1.0), 1)} %)")
+             for k, c in enumerate(cols)]]
+    for case in FAULT_CASES:
+        rows.append([f"{counts(c[case], 'P_nd', 'P_f', 'P_i')}; {td(c[case])}" for c in cols])
+    rows.append([" / ".join(f"{c[k]['captures']:,}" for k in ("none",) + FAULT_CASES) for c in cols])
+    rows.append([" / ".join(f"{c[k]['corridor']:,}" for k in ("none",) + FAULT_CASES) for c in cols])
+    return rows
+
+
+# The bound, the pulse and what is informative, traded on a smaller campaign with checks all along:
+# (label, pulse cell, overrides); the first row without checks, the shipped bound and pulse marked.
+CHECK_TRADE_ROWS = (
+    ("none (no checks)", "-", ("fdi.active_check.enabled=false",)),
+    ("15", "5 ms", ("fdi.active_check.max_unverified_s=15", "fdi.active_check.pulse_s=0.005")),
+    ("25", "5 ms", ("fdi.active_check.pulse_s=0.005",)),
+    ("40", "5 ms", ("fdi.active_check.max_unverified_s=40", "fdi.active_check.pulse_s=0.005")),
+    ("25 (shipped)", "7.5 ms (shipped)", ()),
+    ("25", "10 ms", ("fdi.active_check.pulse_s=0.01",)),
+    ("40", "10 ms", ("fdi.active_check.max_unverified_s=40", "fdi.active_check.pulse_s=0.01")),
+    ("60", "10 ms", ("fdi.active_check.max_unverified_s=60", "fdi.active_check.pulse_s=0.01")),
+    ("25", "10 ms, informative from 10 ms", ("fdi.active_check.pulse_s=0.01",
+                                             "fdi.active_check.informative_on_time_s=0.01")),
+)
+
+
+def check_trade_command(k):
+    overrides = sum((("--set", o) for o in ("fdi.active_check.arm_range_m=1e9",) + CHECK_TRADE_ROWS[k][2]), ())
+    return Command(f"T2-checks-{k}", T2_PRESET + ("--runs", "none=50,stuck_closed=200,loss=200") + overrides
+                   + ("--out", "OUT"), quick=False)
+
+
+def check_trade_rows(*outs):
+    stats = [fdir_case_stats(out) for out in outs]
+    base = stats[0]["none"]["propellant_g"]
+
+    def td(c):
+        cell = f"{fixed(c['mean_td'], 1)} / {fixed(c['max_td'], 1)} s"
+        return cell if c["P_i"] == c["n"] else f"{cell} (P_i {c['P_i']}/{c['n']})"
+
+    rows = []
+    for (label, pulse, _), c in zip(CHECK_TRADE_ROWS, stats):
+        grams = c["none"]["propellant_g"]
+        extra = "" if grams == base else f" (+{fixed(100.0 * (grams / base - 1.0), 1)} %)"
+        rows.append([pulse, f"{fixed(grams, 1)} g{extra}", td(c["stuck_closed"]), td(c["loss"])])
+    return rows
+
+
+def check_trade_fill(*outs):
+    stats = [fdir_case_stats(out) for out in outs]
+    return {"nd": sum(c[k]["P_nd"] for c in stats for k in ("stuck_closed", "loss")),
+            "pf": sum(c[k]["P_f"] for c in stats for k in ("none", "stuck_closed", "loss"))}
+
+
 DRIFT_MODES = ("d1/d2~+e2/e1~", "d2/d2~+e2/e1~", "d2/d1~+e1/e2~", "d1/d1~+e1/e2~")
 
 
@@ -930,6 +1020,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("T2-published", T2_PRESET + ("--set", "fdi.isolation_method=paper", "--set",
                                          "fdi.active_check.enabled=false", "--out", "OUT"), quick=False),
     Command("T2-passive", T2_PRESET + ("--set", "fdi.active_check.enabled=false", "--out", "OUT"), quick=False),
+    Command("T2-all-along", T2_PRESET + ("--set", "fdi.active_check.arm_range_m=1e9", "--out", "OUT"), quick=False),
+) + tuple(check_trade_command(k) for k in range(len(CHECK_TRADE_ROWS))) + (
     Command("T5", ("campaign", "scenarios/comrade_sync.yaml", "--preset", "comrade-table5", "--also",
                    "scenarios/comrade_assist.yaml", "--out", "OUT"), quick=False),
     Command("sync", ("run", "scenarios/comrade_sync.yaml", "--telemetry", "none", "--out", "OUT"), quick=True),
@@ -1020,6 +1112,22 @@ TABLES = [
                   "Largest P_f of any row: {pf} ({n0} fault-free runs included). Wrong isolations without "
                   "checks: {wrong} of the three schemes' {named}.",
           fill=campaigns_table2_fill),
+    Table("fdi-checks-all-along", "docs/fdi.md", ("T2-passive", "T2-all-along"),
+          ("FDIR (every scheme)", "without checks", "with checks all along"),
+          ("fault-free: P_f, mean propellant", "stuck open: P_nd, P_f, P_i; mean / max t_d",
+           "stuck closed: P_nd, P_f, P_i; mean / max t_d", "leak: P_nd, P_f, P_i; mean / max t_d",
+           "loss: P_nd, P_f, P_i; mean / max t_d", "captured (fault-free / stuck open / closed / leak / loss)",
+           "corridor kept (the same)"),
+          checks_all_along_rows, words=("of", "g", "s", "%")),
+    Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
+          ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
+           "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,
+          words=("ms", "g", "s", "%", "P_i", "(shipped)", "shipped", "none", "no", "checks", "informative", "from"),
+          caption="Missed detections over every row's faulty runs: {nd}; false alarms over all its runs: {pf}.",
+          fill=check_trade_fill,
+          shown_as="nine campaigns `chaser campaign scenarios/msr_terminal.yaml --preset fonod2015-table2 --runs "
+                   "none=50,stuck_closed=200,loss=200 --set fdi.active_check.arm_range_m=1e9` with each row's "
+                   "`--set fdi.active_check...` (scripts/doc_tables.py, CHECK_TRADE_ROWS)"),
     Table("campaigns-fonod2015-envelope", "docs/campaigns.md", ("T2",),
           ("scheme", "fault-free GLR envelope maximum", "suggested J_th (margin 1.5)"), ("position", "attitude"),
           envelope_rows),
