@@ -98,8 +98,9 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
     if (meas.arm && meas.arm->fixture.valid) update_from_camera(*params.reach, state.reach, meas.arm->fixture);
   }
-  // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, no pulse, nothing fired.
-  const bool inhibited = reaching && state.reach.thrusters_inhibited;
+  // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, nothing released (the
+  // TMU's owed impulse included), no test pulse, so the allocation commands nothing.
+  const bool inhibited = reaching && thrusters_inhibited(state.reach);
   Vec3 reach_force_inertial_N, reach_torque_body_Nm;
   if (inhibited) {
     out.force_demand_lvlh_N.setZero();
@@ -123,7 +124,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   Vec6 demand_wrench;
   demand_wrench << q_body_from_lvlh * out.force_demand_lvlh_N, out.torque_demand_body_Nm;
 
-  out.released_wrench = tmu_release(params.tmu, state.tmu, demand_wrench);
+  out.released_wrench = inhibited ? Vec6::Zero().eval() : tmu_release(params.tmu, state.tmu, demand_wrench);
   // The check chosen last period, if any: its pulse rides on this period's allocation.
   const TestPulse pulse{.thruster = inhibited ? model::kNoThruster : state.active_check.next,
                         .on_fraction = params.active_check.pulse_fraction};
@@ -160,7 +161,6 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                      .fdi_listening = fdi_listening(state.fdir)},
                     out.command.ton);
 
-  if (inhibited) out.command.ton.fill(0.0);
   out.command.latch_closed_groups = state.thrusters.closed_groups;
   out.commanded_wrench = managed.commanded_wrench;
   out.allocation_feasible = managed.feasible;

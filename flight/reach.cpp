@@ -224,11 +224,7 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
     model::ArmCommand rigidise = step_rigidise(*params.rigidise, state.rigidise, joints, t_s);
     rigidise.close_gripper = command.close_gripper;
     rigidise.lock_gripper = command.lock_gripper;
-    state.thrusters_inhibited = true;
-    state.platform_force_inertial_N.setZero();
-    state.platform_torque_body_Nm.setZero();
     for (int j = 0; j < model::kArmJoints; ++j) state.joint_torque_Nm(j) = rigidise.torque_Nm[static_cast<std::size_t>(j)];
-    state.has_output = true;
     return rigidise;
   }
   const Carried c = carry(params, state, t_s);

@@ -109,8 +109,10 @@ struct ReachState {
   arm::TaskErrors errors;
   GraspState grasp;
   RigidiseState rigidise;
-  bool thrusters_inhibited = false;  // the rigidisation flies: the thrusters fire nothing
 };
+
+// The rigidisation flies (it began at the capture's confirmation): the thrusters are inhibited.
+inline bool thrusters_inhibited(const ReachState& state) { return state.rigidise.started(); }
 
 
 // The period's estimates for the joint loop (called by step_flight every period of the reach).

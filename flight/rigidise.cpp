@@ -20,9 +20,8 @@ model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& 
   const model::RigidiseParams& r = params.rigidise;
   model::ArmCommand command;
   command.joints = model::kArmJoints;
-  if (!state.started) {
+  if (!state.started()) {
     for (int j = 0; j < model::kArmJoints; ++j) state.q_hold_rad(j) = joints.q_rad[static_cast<std::size_t>(j)];
-    state.started = true;
     state.started_s = t_s;
   }
   if (state.brakes_s < 0.0) {

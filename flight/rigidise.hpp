@@ -31,11 +31,11 @@ struct RigidiseLawParams {
 };
 
 struct RigidiseState {
-  bool started = false;
   arm::JointVector q_hold_rad = arm::JointVector::Zero();  // q_d: the angles at the capture's confirmation
-  double started_s = -1.0;     // [s]
+  double started_s = -1.0;     // [s] the first step (-1: not yet)
   double quiet_since_s = -1.0; // [s] every joint's rate below the threshold since (-1: not now)
   double brakes_s = -1.0;      // [s] the brakes were commanded (-1: not yet)
+  bool started() const { return started_s >= 0.0; }
 };
 
 // One joint step at t_s: the law's torques, or the brakes once engaged. The first call holds the

@@ -69,7 +69,7 @@ void add_grasp_period(GraspResult& g, const flight::GraspState& state, const pla
 }
 
 void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints) {
-  if (!state.started) return;
+  if (!state.started()) return;
   r.flown = true;
   r.start_s = state.started_s;
   if (state.brakes_s >= 0.0) r.brakes_s = state.brakes_s;

@@ -108,7 +108,7 @@ bool gripper_meets_table2(const ReachResult& r);
 void add_grasp_period(GraspResult& g, const flight::GraspState& state, const plant::GripperTruth& gripper_at_fixture,
                       const MonitorSample& sample);
 
-// A control period with the rigidisation flown (state.started): its times, and the joints now as
+// A control period with the rigidisation flown (state.started()): its times, and the joints now as
 // the final ones.
 void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints);
 

@@ -255,7 +255,7 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
     if (flight_params_.reach) {
       const model::ArmCommand command_now =
           flight::step_reach(*flight_params_.reach, flight_state_.reach, plant::sense_arm(plant_), to_seconds(t));
-      auto& peak = flight_state_.reach.rigidise.started ? result_.reach.rigidise.peak_torque_Nm
+      auto& peak = flight_state_.reach.rigidise.started() ? result_.reach.rigidise.peak_torque_Nm
                                                          : result_.reach.peak_joint_torque_Nm;
       for (std::size_t j = 0; j < peak.size(); ++j) peak[j] = std::max(peak[j], std::abs(command_now.torque_Nm[j]));
       plant::command_arm(plant_, command_now);

@@ -34,9 +34,9 @@ void append_link(std::string& out, int index, const model::ArmLinkParams& link, 
 // Contact is between the jaws (palm and fingers) and the fixture's lip only, as three predefined
 // pairs (<contact><pair>, collision="predefined"): MuJoCo then skips its broad phase over all the
 // bodies, which cost ~6 % of a reach run at every RK4 stage with the jaws far from the lip; a pair's
-// contact parameters are those MuJoCo would mix from its geoms. No geom is in the dynamic pass.
-constexpr const char* kJawContact = "contype=\"0\" conaffinity=\"0\"";
-constexpr const char* kFixtureContact = "contype=\"0\" conaffinity=\"0\"";
+// contact parameters are those MuJoCo would mix from its geoms. No geom (jaws, lip, the target's
+// shape) is in the dynamic pass.
+constexpr const char* kNoDynamicContact = "contype=\"0\" conaffinity=\"0\"";
 
 // The gripper's body: the gripper less its jaws' fingers with the jaws (palm and the two sliding
 // fingers, model/arm.hpp's JawParams), or the whole gripper.
@@ -63,7 +63,7 @@ void append_gripper(std::string& out, const model::MultibodySceneParams& scene, 
                  "{0}  <site name=\"tool\" pos=\"{4}\"/>\n"
                  "{0}  <geom name=\"palm\" type=\"box\" pos=\"{5}\" size=\"{6}\" {7}/>\n",
                  indent, vec(bodies.body.com_body_m), bodies.body.mass_kg, full_inertia(bodies.body.inertia_kgm2),
-                 vec(g.position_link7_m), vec(palm_centre), vec(palm_half), kJawContact);
+                 vec(g.position_link7_m), vec(palm_centre), vec(palm_half), kNoDynamicContact);
   const char* names[2] = {"finger_a", "finger_b"};
   for (int i = 0; i < 2; ++i) {
     const model::BodyMassProperties& f = bodies.fingers[static_cast<std::size_t>(i)];
@@ -78,7 +78,7 @@ void append_gripper(std::string& out, const model::MultibodySceneParams& scene, 
                    "{0}    <geom name=\"{1}\" type=\"box\" size=\"{8}\" {9}/>\n"
                    "{0}  </body>\n",
                    indent, names[i], vec(f.com_body_m), f.mass_kg, vec(f.inertia_kgm2.diagonal()), -side,
-                   jaws.open_half_gap_m, jaws.servo_damping_Nspm, vec(h), kJawContact);
+                   jaws.open_half_gap_m, jaws.servo_damping_Nspm, vec(h), kNoDynamicContact);
   }
   fmt::format_to(std::back_inserter(out), "{}</body>\n", indent);
 }
@@ -121,13 +121,13 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                  vec(scene.target_position_m), scene.target_mass_kg, full_inertia(scene.target_inertia_kgm2));
   for (std::size_t i = 0; i < scene.target_shape.size(); ++i)
     fmt::format_to(std::back_inserter(out),
-                   "      <geom name=\"shape{}\" type=\"box\" pos=\"{}\" size=\"{}\" contype=\"0\" conaffinity=\"0\"/>\n", i,
-                   vec(scene.target_shape[i].centre_target_m), vec(scene.target_shape[i].half_extents_m));
+                   "      <geom name=\"shape{}\" type=\"box\" pos=\"{}\" size=\"{}\" {}/>\n", i,
+                   vec(scene.target_shape[i].centre_target_m), vec(scene.target_shape[i].half_extents_m), kNoDynamicContact);
   if (scene.grasp_contact)  // the fixture's lip, centred on the grasp point in the grasp pose's axes
     fmt::format_to(std::back_inserter(out),
                    "      <geom name=\"fixture\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{}\" {}/>\n",
                    vec(scene.fixture_target_m), quat(scene.q_target_from_fixture.normalized()),
-                   vec(scene.fixture.half_extents_m), kFixtureContact);
+                   vec(scene.fixture.half_extents_m), kNoDynamicContact);
   out +=
       "    </body>\n"
       "  </worldbody>\n"

@@ -83,16 +83,24 @@ MujocoModel& MujocoModel::operator=(MujocoModel&& other) noexcept {
   return *this;
 }
 
+namespace {
+
+// MuJoCo resets the state when a position, velocity or acceleration is not finite (or too large)
+// and only counts a warning: that is a diverged step, never a state to fly on.
+void throw_if_diverged(const mjData& d, int bad_before, double t_s) {
+  if (bad_state_warnings(d) != bad_before)
+    throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
+}
+
+}  // namespace
+
 void MujocoModel::step() {
   const double t_s = data_->time;
   const int bad_before = bad_state_warnings(*data_);
   mjModel* m = model_;
   mjData* d = data_;
   guarded("stepping", [m, d] { mj_step(m, d); });
-  // MuJoCo resets the state when a position, velocity or acceleration is not finite (or too large)
-  // and only counts a warning: that is a diverged step, never a state to fly on.
-  if (bad_state_warnings(*data_) != bad_before)
-    throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
+  throw_if_diverged(*data_, bad_before, t_s);
 }
 
 int MujocoModel::begin_step() {
@@ -132,8 +140,7 @@ void MujocoModel::finish_step(int bad_before) {
         mj_step(m, d);
     }
   });
-  if (bad_state_warnings(*data_) != bad_before)
-    throw MujocoError(fmt::format("MuJoCo: the multibody step diverged at t = {} s (a non-finite or runaway state)", t_s));
+  throw_if_diverged(*data_, bad_before, t_s);
 }
 
 void MujocoModel::forward() {
