@@ -100,11 +100,19 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   }
   // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, nothing released (the
   // TMU's owed impulse included), no test pulse, so the allocation commands nothing.
-  const bool inhibited = reaching && thrusters_inhibited(state.reach);
+  const bool inhibited = reaching && thrusters_inhibited(*params.reach, state.reach);
   Vec3 reach_force_inertial_N, reach_torque_body_Nm;
   if (inhibited) {
     out.force_demand_lvlh_N.setZero();
     out.torque_demand_body_Nm.setZero();
+  } else if (reaching && stabilising(*params.reach, state.reach) && meas.arm) {
+    // The composite detumbled by a pure couple (flight/stabilise.hpp): no force asked for.
+    arm::JointVector q;
+    for (int j = 0; j < model::kArmJoints; ++j) q(j) = meas.arm->q_rad[static_cast<std::size_t>(j)];
+    out.force_demand_lvlh_N.setZero();
+    out.torque_demand_body_Nm =
+        stabilise_couple(*params.reach->stabilise, params.reach->servicer, state.reach.stabilise, q,
+                         out.estimate.q_inertial_from_body, out.estimate.omega_body_radps, t_s);
   } else if (reaching && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
     // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
     out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * reach_force_inertial_N;

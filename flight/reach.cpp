@@ -128,6 +128,12 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.grasp = make_grasp(c);
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
   if (c.rigidise) p.rigidise = RigidiseLawParams{.rigidise = *c.rigidise, .torque_limit_Nm = p.torque_limit_Nm};
+  if (c.rigidise && c.stabilise)  // the target as the catalogue has it, where the grasp holds it
+    p.stabilise = StabiliseLawParams{.stabilise = *c.stabilise,
+                                     .target = {.mass_kg = s.target.body->mass_kg,
+                                                .inertia_kgm2 = s.target.body->inertia_kgm2,
+                                                .grasp_point_target_m = p.grasp_point_target_m,
+                                                .q_target_from_tool = p.q_target_from_tool}};
   // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
   arm::JointVector stowed;
   for (int j = 0; j < model::kArmJoints; ++j) stowed(j) = s.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];

@@ -24,6 +24,7 @@
 #include "flight/grasp.hpp"
 #include "flight/navigation.hpp"
 #include "flight/rigidise.hpp"
+#include "flight/stabilise.hpp"
 #include "flight/target_estimator.hpp"
 #include "model/capture.hpp"
 #include "model/messages.hpp"
@@ -57,6 +58,9 @@ struct ReachParams {
   // Captured: the rigidisation (flight/rigidise.hpp) in place of the combined law, the thrusters
   // inhibited; without it the combined law flies on.
   std::optional<RigidiseLawParams> rigidise;
+  // Once the rigidisation's brakes hold: the stabilisation (flight/stabilise.hpp), the thrusters
+  // detumbling the composite; without it they stay inhibited.
+  std::optional<StabiliseLawParams> stabilise;
 };
 
 // With capture (and chaser.arm): the reach's parameters; the H-infinity loops designed here.
@@ -109,10 +113,18 @@ struct ReachState {
   arm::TaskErrors errors;
   GraspState grasp;
   RigidiseState rigidise;
+  StabiliseState stabilise;
 };
 
-// The rigidisation flies (it began at the capture's confirmation): the thrusters are inhibited.
-inline bool thrusters_inhibited(const ReachState& state) { return state.rigidise.started(); }
+// The rigidisation flies (it began at the capture's confirmation): the thrusters are inhibited,
+// until the brakes hold where a stabilisation follows.
+inline bool thrusters_inhibited(const ReachParams& params, const ReachState& state) {
+  return state.rigidise.started() && !(params.stabilise && state.rigidise.brakes_s >= 0.0);
+}
+// The brakes hold and a stabilisation follows: the thrusters detumble the composite.
+inline bool stabilising(const ReachParams& params, const ReachState& state) {
+  return params.stabilise && state.rigidise.started() && state.rigidise.brakes_s >= 0.0;
+}
 
 
 // The period's estimates for the joint loop (called by step_flight every period of the reach).

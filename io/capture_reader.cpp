@@ -57,6 +57,14 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
         if (g.has("brake_dwell_s")) g.number("brake_dwell_s", Range::closed(0.0, 1e3), r.brake_dwell_s);
       });
     }
+    if (m.has("stabilise")) {
+      c.stabilise.emplace();
+      read_section(m, "stabilise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
+        model::StabiliseParams& st = *c.stabilise;
+        if (g.has("duration_s")) g.number("duration_s", Range::closed(1.0, 1e5), st.duration_s);
+        if (g.has("bandwidth_radps")) g.number("bandwidth_radps", Range::closed(1e-3, 10.0), st.bandwidth_radps);
+      });
+    }
   });
 }
 
@@ -100,6 +108,8 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
     d.add("capture.rigidise.linear_limit_Nm",
           fmt::format("must be below chaser.arm.torque_repeated_peak_Nm {} (got {})",
                       format_number(s.chaser.arm->torque_repeated_peak_Nm), format_number(c.rigidise->linear_limit_Nm)));
+  if (c.stabilise && !c.rigidise)
+    d.add("capture.stabilise", "needs capture.rigidise (the stabilisation begins once its brakes hold)");
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
     d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
 }

@@ -36,6 +36,18 @@ struct RigidiseParams {
   double brake_dwell_s = 1.0;               // [s] ... for this long: the brakes engage
 };
 
+// The stabilisation (COMRADE 2018, sec. 4 and 6.1.4; the optional section capture.stabilise, after
+// a rigidisation): once the brakes hold, the thrusters detumble the composite of chaser, braked arm
+// and target with a pure couple, following a reference for the composite's angular momentum that
+// decays linearly from its value at the start to zero over duration_s (the paper's "decaying
+// reference profile in terms of angular rate": the rate is the momentum through the inertia), the
+// momentum's error removed at bandwidth_radps (flight/stabilise.hpp). The duration sets the couple
+// (the momentum over the duration) and so the loads the braked joints carry.
+struct StabiliseParams {
+  double duration_s = 300.0;       // [s] the reference's momentum from its start value to zero
+  double bandwidth_radps = 0.02;   // [rad/s] the momentum error's decay rate (low: flight/stabilise.hpp)
+};
+
 struct CaptureParams {
   double start_s = 0.0;            // [s] the arm wakes: the reach begins
   CaptureLaw law = CaptureLaw::kCompliance;
@@ -67,6 +79,9 @@ struct CaptureParams {
   // The rigidisation after the capture; without it the combined controller flies on, its tool held
   // on the fixture.
   std::optional<RigidiseParams> rigidise;
+  // The stabilisation once the rigidisation's brakes hold (needs rigidise); without it the
+  // thrusters stay inhibited.
+  std::optional<StabiliseParams> stabilise;
   // [s] when the tool leaves the pre-grasp pose for the fixture: the reach ends, the capture begins.
   double approach_start_s() const { return start_s + path_duration_s + pre_grasp_hold_s; }
 };
@@ -77,6 +92,10 @@ inline constexpr double kGrapplingEnvelopeM[3] = {0.010, 0.022, 0.022};  // [m]
 inline constexpr double kGrapplingEnvelopeDeg = 2.74;                     // [deg] about each axis
 inline constexpr double kGraspRelativeVelocityMps = 0.005;                // [m/s] per axis
 inline constexpr double kGraspRelativeRateDegps = 0.1;                    // [deg/s] per axis
+
+// COMRADE 2018 Table 3: the stabilisation brings the composite's angular rate below this, the
+// braked joints' loads within the drives' repeated and momentary peaks.
+inline constexpr double kStabilisedRateDegps = 0.5;  // [deg/s]
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
 inline const char* to_string(RigidiseSaturation s) { return s == RigidiseSaturation::kClip ? "clip" : "linear"; }

@@ -52,6 +52,12 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
   return m;
 }
 
+std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant) {
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) return {};
+  return brake_loads_Nm(*p, std::get<MultibodyMotionState>(plant.state.motion));
+}
+
 void command_arm(Plant& plant, const model::ArmCommand& command) {
   const MultibodyMotionParams* p = multibody_params(plant);
   if (p == nullptr) return;

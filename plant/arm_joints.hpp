@@ -26,6 +26,11 @@ bool arm_awake(const Plant& plant);
 model::ArmMeasurements sense_arm(const Plant& plant);
 model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& state);
 
+// Braked, each joint's load [N m]: the torque its brake carries, at the last MuJoCo step's start
+// (plant/multibody_motion.hpp); zeros before the brakes engage or without the arm awake. Truth,
+// for judging the loads against the drives' limits, never a sensor.
+std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant);
+
 // The joint torques held from now to the next command, each clamped at the drive's hard limit
 // (chaser.arm.torque_momentary_Nm): the inner torque loop cannot give more.
 void command_arm(Plant& plant, const model::ArmCommand& command);

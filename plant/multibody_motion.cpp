@@ -186,6 +186,19 @@ void set_hub_mass(const MultibodyMotionParams& p, MultibodyMotionState& s, doubl
   m.body_subtreemass[0] = m.body_subtreemass[ix.hub] + m.body_subtreemass[ix.target];
 }
 
+// Each braked joint's load at the step's start: its friction row's constraint force (a row per dof
+// with frictionloss, Jacobian the unit vector: the force is the torque about the joint). Read from
+// the step's first evaluation, whose state is the step's start: RK4's later stages leave their own
+// intermediate evaluations in efc_force.
+void read_brake_loads(const MultibodyMotionParams& p, const mjData& d, std::array<double, model::kArmJoints>& load_Nm) {
+  load_Nm.fill(0.0);
+  for (int i = 0; i < d.nefc; ++i) {
+    const int j = d.efc_id[i] - p.index.joint1_dof;
+    if (d.efc_type[i] == mjCNSTR_FRICTION_DOF && j >= 0 && j < model::kArmJoints)
+      load_Nm[static_cast<std::size_t>(j)] = d.efc_force[i];
+  }
+}
+
 void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, RigidState& chaser, TimeNs dt_ns,
                      const PieceInput& u) {
   const double dt_s = to_seconds(dt_ns);
@@ -195,7 +208,10 @@ void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, Ri
   const PieceLoads loads = piece_loads(p, s, u);
   for (int k = 0; k < steps; ++k) {
     if (loads.mass_flow_kgps != 0.0) set_hub_mass(p, s, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps - p.arm_mass_kg);
-    s.world.step_applying([&] { apply_loads(p, s, loads, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps, h); });
+    s.world.step_applying([&] { apply_loads(p, s, loads, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps, h); },
+                          [&](const mjData& d) {
+                            if (s.brakes_engaged) read_brake_loads(p, d, s.brake_load_Nm);
+                          });
     step_reference(p, s.earth.env, s.r_ref_eci_m, s.v_ref_eci_mps, h);
     chaser.mass_kg -= h * loads.mass_flow_kgps;
   }
@@ -387,6 +403,10 @@ std::array<double, model::kArmJoints> joint_rates_radps(const MultibodyMotionPar
   std::array<double, model::kArmJoints> w{};
   for (int j = 0; j < model::kArmJoints; ++j) w[static_cast<std::size_t>(j)] = state.world.data().qvel[params.index.joint1_dof + j];
   return w;
+}
+
+std::array<double, model::kArmJoints> brake_loads_Nm(const MultibodyMotionParams&, const MultibodyMotionState& state) {
+  return state.brake_load_Nm;
 }
 
 std::array<double, model::kArmJoints> joint_torques_applied_Nm(const MultibodyMotionParams& params,

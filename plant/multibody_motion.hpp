@@ -76,6 +76,8 @@ struct MultibodyMotionState {
   // [N m] the joint torques held over the next advance (the arm's inner loop sets them).
   std::array<double, model::kArmJoints> joint_torque_Nm{};
   bool brakes_engaged = false;  // the joints' brakes hold (engage_brakes)
+  // [N m] braked, each joint's load (the torque its brake carries) at the last MuJoCo step's start.
+  std::array<double, model::kArmJoints> brake_load_Nm{};
   // The gripper locked on the fixture (engage_grasp): the fingers held at these slides [m], the
   // jaws' contact off (the weld carries the grasp).
   bool jaws_locked = false;
@@ -136,6 +138,10 @@ JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionS
 // (chaser.arm.brake_holding_torque_Nm, MuJoCo's frictionloss: the joint sticks while the torque it
 // must carry stays below, and slips at that torque beyond). Engaged for good.
 void engage_brakes(const MultibodyMotionParams& params, MultibodyMotionState& state);
+// Braked, the torque each brake carries [N m] (the joint's load: its friction constraint's force)
+// at the start of the last MuJoCo step; zero before the brakes engage.
+std::array<double, model::kArmJoints> brake_loads_Nm(const MultibodyMotionParams& params,
+                                                     const MultibodyMotionState& state);
 
 // The grasp: the gripper welded to the target at the pose they have now (plant/multibody/weld.hpp);
 // the jaws then locked where they hold the lip, their contact off (the weld's forces replace it),

@@ -13,7 +13,10 @@ Writes into DIR (default RUN_DIR), over the reach (from the arm's waking to the 
     and rate per axis inside COMRADE 2018 Table 2's envelope, the hold the summary judges shaded;
   - reach_figures.png: stick figures of the hub, the arm and the target's face at the fixture, true, in
     the target's axes (a side view, x-z, and a top view, x-y), at the key instants: the arm's waking, the
-    end of the path to the pre-grasp pose, the start of the approach, the jaws' closure and the end.
+    end of the path to the pre-grasp pose, the start of the approach, the jaws' closure and the end;
+  - reach_stabilisation.png, after a stabilisation (summary.json's reach.stabilisation): from the brakes
+    on, the target's true rate per axis and its magnitude against COMRADE 2018 Table 3's 0.5 deg/s, and
+    each braked joint's load against the drives' repeated and momentary peaks.
 """
 import argparse
 import json
@@ -210,6 +213,45 @@ def plot_figures(t, mask, summary, scenario, out):
     return True
 
 
+def rate_magnitude_degps(t, rows):
+    """The target's true rate [deg/s] at the rows: its magnitude (the composite's, once braked)."""
+    w = np.column_stack([t[f"omega_target_body_{c}_radps"][rows] for c in XYZ])
+    return np.degrees(np.linalg.norm(w, axis=1))
+
+
+def plot_stabilisation(t, summary, scenario, out):
+    """reach_stabilisation.png; False (nothing written) without a stabilisation or its load channels."""
+    stabilisation = (summary.get("reach") or {}).get("stabilisation")
+    if not stabilisation or "load_arm_1_Nm" not in t.dtype.names:
+        return False
+    _, _, repeated, momentary = arm_limits(scenario)
+    brakes_s = float((summary["reach"].get("rigidisation") or {}).get("brakes_s") or stabilisation["start_s"])
+    rows = t["t_s"] >= brakes_s - 1e-9
+    time = t["t_s"][rows]
+    fig, axes = plt.subplots(2, 1, figsize=(11, 8), sharex=True)
+    for c in XYZ:
+        axes[0].plot(time, np.degrees(t[f"omega_target_body_{c}_radps"][rows]), lw=1, label=f"target {c}")
+    axes[0].plot(time, rate_magnitude_degps(t, rows), "k", lw=1.5, label="magnitude")
+    axes[0].axhline(float(stabilisation["goal_rate_deg_s"]), color="r", ls="--", lw=1, label="Table 3: 0.5 deg/s")
+    axes[0].set_ylabel("rate [deg/s]")
+    axes[0].legend(fontsize=8, ncol=5)
+    axes[0].set_title("The composite's rate (the target's, true, its axes) from the brakes on")
+    for j in range(JOINTS):
+        axes[1].plot(time, t[f"load_arm_{j + 1}_Nm"][rows], lw=0.8, label=f"joint {j + 1}")
+    for limit, style in ((repeated, "--"), (momentary, ":")):
+        axes[1].axhline(limit, color="r", ls=style, lw=1)
+        axes[1].axhline(-limit, color="r", ls=style, lw=1)
+    axes[1].set_ylabel("brake load [N m]")
+    axes[1].set_xlabel("t [s]")
+    axes[1].legend(fontsize=8, ncol=7)
+    axes[1].set_title(f"The braked joints' loads, sampled each period (peak over every step: "
+                      f"{float(stabilisation['peak_joint_load_Nm']):.1f} N m)")
+    fig.tight_layout()
+    fig.savefig(out / "reach_stabilisation.png", dpi=110)
+    plt.close(fig)
+    return True
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run_dir")
@@ -232,9 +274,11 @@ def main(argv=None):
     hold_from_s, hold_to_s = float(reach["hold_from_s"]), approach_start_s(summary)
     plot_gripper(t, mask, hold_from_s, hold_to_s, out)
     figures = plot_figures(t, mask, summary, scenario, out)
+    stabilisation = plot_stabilisation(t, summary, scenario, out)
     hold = mask & (t["t_s"] >= hold_from_s) & (t["t_s"] < hold_to_s)
     ratio = envelope_exceedance(np.column_stack([t[f"gripper_err_{c}_m"][hold] for c in XYZ]) * 1e3, ENVELOPE_MM)
-    written = ["reach_joints.png", "reach_gripper.png"] + (["reach_figures.png"] if figures else [])
+    written = (["reach_joints.png", "reach_gripper.png"] + (["reach_figures.png"] if figures else [])
+               + (["reach_stabilisation.png"] if stabilisation else []))
     print(f"wrote {', '.join(str(out / w) for w in written)}; over the hold the gripper used "
           f"{', '.join(f'{r:.0%}' for r in ratio)} of Table 2's position envelope (x, y, z)")
     if args.show:

@@ -80,4 +80,22 @@ void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, 
   }
 }
 
+void add_stabilise_period(StabiliseResult& r, const flight::StabiliseState& state, const Vec3& omega_target_radps,
+                          double chaser_mass_kg, double t_s) {
+  if (!state.started()) return;
+  const Vec3 rate_degps = omega_target_radps * (180.0 / std::numbers::pi);
+  if (!r.flown) {
+    r.flown = true;
+    r.start_s = state.started_s;
+    r.initial_rate_degps = rate_degps.norm();
+    r.start_mass_kg = chaser_mass_kg;
+  }
+  if (rate_degps.norm() >= model::kStabilisedRateDegps)
+    r.below_goal_s = std::numeric_limits<double>::quiet_NaN();
+  else if (std::isnan(r.below_goal_s))
+    r.below_goal_s = t_s;
+  r.final_rate_target_degps = rate_degps;
+  r.propellant_kg = r.start_mass_kg - chaser_mass_kg;
+}
+
 }  // namespace chaser::sim

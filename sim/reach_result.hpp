@@ -10,6 +10,7 @@
 #include "core/types.hpp"
 #include "flight/grasp.hpp"
 #include "flight/rigidise.hpp"
+#include "flight/stabilise.hpp"
 #include "model/arm.hpp"
 #include "model/capture.hpp"
 #include "plant/arm_joints.hpp"
@@ -70,6 +71,22 @@ struct RigidiseResult {
   std::array<double, model::kArmJoints> peak_torque_Nm{};      // [N m] the commands, every joint step
   std::array<double, model::kArmJoints> final_angle_error_rad{};  // [rad] q - q_d at the end
   std::array<double, model::kArmJoints> final_rate_radps{};       // [rad/s] at the end
+  // [N m] each brake's largest load (plant::brake_loads_Nm), every joint step from the engagement on
+  std::array<double, model::kArmJoints> peak_brake_load_Nm{};
+};
+
+// The stabilisation (flight/stabilise.hpp; COMRADE 2018 Tables 3 and 8): when it began, the
+// target's true rate (the composite's: it is rigid) against Table 3's kStabilisedRateDegps, the
+// propellant it took. The braked joints' loads over it are the rigidisation's peak_brake_load_Nm.
+struct StabiliseResult {
+  bool flown = false;
+  double start_s = std::numeric_limits<double>::quiet_NaN();        // [s]
+  double initial_rate_degps = std::numeric_limits<double>::quiet_NaN();  // [deg/s] |w| at the start
+  // [s] the rate below the goal from then to the end (NaN: above it at the end)
+  double below_goal_s = std::numeric_limits<double>::quiet_NaN();
+  Vec3 final_rate_target_degps = Vec3::Zero();  // [deg/s] at the end, the target's axes (Table 8's)
+  double start_mass_kg = 0.0;                   // [kg] the chaser's at the start
+  double propellant_kg = 0.0;                   // [kg] from the start to the end
 };
 
 struct ReachResult {
@@ -91,6 +108,7 @@ struct ReachResult {
   int camera_samples = 0;             // arm camera samples the flight software used
   GraspResult grasp;
   RigidiseResult rigidise;
+  StabiliseResult stabilise;
 };
 
 // One control period of the reach: the gripper's truth at t_s and the tool point's clearance from the
@@ -111,5 +129,10 @@ void add_grasp_period(GraspResult& g, const flight::GraspState& state, const pla
 // A control period with the rigidisation flown (state.started()): its times, and the joints now as
 // the final ones.
 void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints);
+
+// A control period with the stabilisation flown (state.started()): the target's true rate (its
+// axes) and the chaser's mass at t_s.
+void add_stabilise_period(StabiliseResult& r, const flight::StabiliseState& state, const Vec3& omega_target_radps,
+                          double chaser_mass_kg, double t_s);
 
 }  // namespace chaser::sim

@@ -57,7 +57,7 @@ std::vector<ConditionalPhase> conditional_phases(const model::Scenario& s) {
   const ConditionalPhase phase{.requirements = {.synchronised = true}, .configuration = {.arm_awake = true}};
   ConditionalPhase rigidisation = phase, rigidised = phase;
   rigidisation.name = "rigidisation";
-  rigidised.name = "rigidised";
+  rigidised.name = s.capture->stabilise ? "stabilisation" : "rigidised";
   return {rigidisation, rigidised};
 }
 

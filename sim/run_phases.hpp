@@ -8,7 +8,7 @@
 //   "transfer", "capture_point_hold"; with a capture section, "reach" from capture.start_s (the
 //   arm wakes on the multibody plant) and "capture" from capture.approach_start_s() (the tool onto
 //   the fixture, the grasp: flight/grasp.hpp), then on conditions "rigidisation" and "rigidised"
-//   (conditional_phases below).
+//   or "stabilisation" (conditional_phases below).
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
@@ -49,7 +49,8 @@ std::vector<PlannedPhase> planned_phases(const model::Scenario& scenario);
 
 // The phases entered on a condition, not at a planned time: with capture.rigidise, "rigidisation"
 // from the "capture" phase once the capture is confirmed (flag kCapturedFlag: the gripper reported
-// locked, flight/grasp.hpp) and "rigidised" once the brakes are commanded (kBrakedFlag). They
+// locked, flight/grasp.hpp) and "rigidised" once the brakes are commanded (kBrakedFlag; with
+// capture.stabilise "stabilisation": the thrusters detumble the composite, flight/stabilise.hpp). They
 // follow the planned phases in the sequence's list; the run raises the flags from the flight
 // software's state (sim/simulation.cpp). Synchronised, with the arm awake.
 inline constexpr int kCapturedFlag = 0;

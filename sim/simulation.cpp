@@ -199,7 +199,11 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
     for (int j = 0; j < model::kArmJoints; ++j)
       truth.arm.q_rad[static_cast<std::size_t>(j)] = scenario_.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
   }
-  if (recording_ || keep_out_) truth.target = plant::target_rotation(plant_, t_s);
+  const bool stabilising = arm_awake_ && flight_state_.reach.stabilise.started();
+  if (recording_ || keep_out_ || stabilising) truth.target = plant::target_rotation(plant_, t_s);
+  if (stabilising)
+    add_stabilise_period(result_.reach.stabilise, flight_state_.reach.stabilise, truth.target.omega_body_radps,
+                         truth_.mass_kg, t_s);
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                 truth.target.q_inertial_from_target);
   truth.sample.synchronised = phase_requirements_[static_cast<std::size_t>(phase_state_.phase)].synchronised;
@@ -261,6 +265,11 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
       plant::command_arm(plant_, command_now);
     }
     plant::advance_plant(plant_.params, plant_.state, t, std::min(t + joint_period_ns_, t_end));
+    if (flight_state_.reach.rigidise.brakes_s >= 0.0) {  // braked: the joints' loads, every joint step
+      const auto load = plant::brake_loads_Nm(plant_);
+      auto& peak = result_.reach.rigidise.peak_brake_load_Nm;
+      for (std::size_t j = 0; j < peak.size(); ++j) peak[j] = std::max(peak[j], std::abs(load[j]));
+    }
   }
 }
 

@@ -191,6 +191,26 @@ nlohmann::json rigidise_json(const RigidiseResult& r) {
       {"peak_joint_torque_Nm", r.peak_torque_Nm},
       {"final_joint_angle_error_deg", angle_deg},
       {"final_joint_rate_deg_s", rate_deg_s},
+      {"peak_brake_load_Nm", r.peak_brake_load_Nm},
+  };
+}
+
+// The stabilisation (sim/reach_result.hpp): null where it was not flown. Judged against COMRADE
+// Table 3: the rate below 0.5 deg/s at the end, every braked joint's load within the repeated peak.
+nlohmann::json stabilise_json(const model::Scenario& scenario, const ReachResult& reach) {
+  const StabiliseResult& s = reach.stabilise;
+  if (!s.flown) return nullptr;
+  const double peak = *std::ranges::max_element(reach.rigidise.peak_brake_load_Nm);
+  const double limit = scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0;
+  return nlohmann::json{
+      {"start_s", s.start_s},
+      {"initial_rate_deg_s", s.initial_rate_degps},
+      {"below_goal_s", finite_or_null(true, s.below_goal_s)},
+      {"goal_rate_deg_s", model::kStabilisedRateDegps},
+      {"final_rate_target_deg_s", vec_json(s.final_rate_target_degps)},
+      {"peak_joint_load_Nm", peak},
+      {"propellant_kg", s.propellant_kg},
+      {"table3_met", !std::isnan(s.below_goal_s) && peak <= limit},
   };
 }
 
@@ -228,6 +248,7 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
       {"grasp", grasp_json(reach.grasp)},
       {"rigidisation", rigidise_json(reach.rigidise)},
+      {"stabilisation", stabilise_json(scenario, reach)},
   };
 }
 
@@ -284,7 +305,20 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
         rg.start_s, std::isnan(rg.brakes_s) ? std::string("brakes not engaged") : fmt::format("brakes engaged at {:.1f} s", rg.brakes_s),
         peak_rg, kRadToDeg * angle, kRadToDeg * rate);
   }
-  return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation;
+  std::string stabilisation;
+  if (const StabiliseResult& st = reach.stabilise; st.flown) {
+    const double load = *std::ranges::max_element(reach.rigidise.peak_brake_load_Nm);
+    const double limit = scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0;
+    stabilisation = fmt::format(
+        "  stabilisation: from {:.1f} s at {:.2f} deg/s; {}; at the end {:.3f}, {:.3f}, {:.3f} deg/s (target axes); "
+        "peak braked joint load {:.1f} N m (limit {:.0f}); {:.2f} kg of propellant: COMRADE Table 3 {}\n",
+        st.start_s, st.initial_rate_degps,
+        std::isnan(st.below_goal_s) ? fmt::format("not below {} deg/s at the end", model::kStabilisedRateDegps)
+                                    : fmt::format("below {} deg/s from {:.1f} s", model::kStabilisedRateDegps, st.below_goal_s),
+        st.final_rate_target_degps.x(), st.final_rate_target_degps.y(), st.final_rate_target_degps.z(), load, limit,
+        st.propellant_kg, !std::isnan(st.below_goal_s) && load <= limit ? "met" : "NOT met");
+  }
+  return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation + stabilisation;
 }
 
 }  // namespace

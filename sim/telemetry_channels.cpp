@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -68,6 +69,12 @@ namespace {
 double arm_angle(const PeriodRecord& r, int j) {
   return r.arm != nullptr && r.arm->joints > j ? r.arm->q_rad[static_cast<std::size_t>(j)]
                                                : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Joint j's brake load [N m] over the period's last MuJoCo step (0 unbraked, or without the arm awake).
+double brake_load(const PeriodRecord& r, int j) {
+  const auto* multibody = std::get_if<plant::MultibodyMotionState>(&r.plant->motion);
+  return multibody != nullptr ? multibody->brake_load_Nm[static_cast<std::size_t>(j)] : 0.0;
 }
 
 // The gripper's 12 values in channel order: error, velocity, attitude error, rate (3 each).
@@ -175,6 +182,8 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
     for (int j = 0; j < model::kArmJoints; ++j)
       t.push_back({fmt::format("tau_arm_{}_Nm", j + 1), "Nm",
                    [](const PeriodRecord& r, int k) { return r.flight_state->reach.joint_torque_Nm(k); }, j});
+    for (int j = 0; j < model::kArmJoints; ++j)
+      t.push_back({fmt::format("load_arm_{}_Nm", j + 1), "Nm", [](const PeriodRecord& r, int k) { return brake_load(r, k); }, j});
     const std::array<std::pair<const char*, const char*>, 4> gripper = {
         {{"gripper_err_{}_m", "m"}, {"gripper_v_{}_mps", "mps"}, {"gripper_att_err_{}_rad", "rad"}, {"gripper_rate_{}_radps", "radps"}}};
     for (std::size_t g = 0; g < gripper.size(); ++g)
@@ -302,6 +311,7 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
   if (shape.arm) {
     for (int j = 0; j < model::kArmJoints; ++j) *row++ = arm_angle(r, j);
     for (int j = 0; j < model::kArmJoints; ++j) *row++ = r.flight_state->reach.joint_torque_Nm(j);
+    for (int j = 0; j < model::kArmJoints; ++j) *row++ = brake_load(r, j);
     for (int k = 0; k < 12; ++k) *row++ = gripper_value(r, k);
     for (int k = 0; k < kFigureValues; ++k) *row++ = figure_value(r, k);
   }

@@ -120,21 +120,29 @@ int MujocoModel::begin_step() {
   return bad_before;
 }
 
-void MujocoModel::finish_step(int bad_before) {
+bool MujocoModel::finish_evaluation() {
+  mjModel* m = model_;
+  mjData* d = data_;
+  if (m->opt.integrator != mjINT_RK4 && m->opt.integrator != mjINT_EULER) return false;
+  guarded("stepping", [m, d] {
+    mj_forwardSkip(m, d, mjSTAGE_VEL, 0);  // the rest of mj_forward: actuation, accelerations, constraints
+    mj_checkAcc(m, d);
+    if (mjENABLED(mjENBL_FWDINV)) mj_compareFwdInv(m, d);
+  });
+  return true;
+}
+
+void MujocoModel::integrate(int bad_before) {
   const double t_s = data_->time;
   mjModel* m = model_;
   mjData* d = data_;
   guarded("stepping", [m, d] {
     switch (m->opt.integrator) {
       case mjINT_RK4:
+        mj_RungeKutta(m, d, 4);
+        break;
       case mjINT_EULER:
-        mj_forwardSkip(m, d, mjSTAGE_VEL, 0);  // the rest of mj_forward: actuation, accelerations, constraints
-        mj_checkAcc(m, d);
-        if (mjENABLED(mjENBL_FWDINV)) mj_compareFwdInv(m, d);
-        if (m->opt.integrator == mjINT_RK4)
-          mj_RungeKutta(m, d, 4);
-        else
-          mj_Euler(m, d);
+        mj_Euler(m, d);
         break;
       default:  // 2.2.2 does not export its implicit integrator: the whole step, evaluated anew
         mj_step(m, d);

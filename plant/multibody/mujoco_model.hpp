@@ -67,9 +67,21 @@ class MujocoModel {
   // may throw.
   template <class Apply>
   void step_applying(Apply&& apply) {
+    step_applying(apply, [](const mjData&) {});
+  }
+  // The same, with `observe(data)` called once the step's first evaluation is whole (its constraint
+  // forces efc_force at the step's start, before RK4's later stages overwrite them with their own).
+  template <class Apply, class Observe>
+  void step_applying(Apply&& apply, Observe&& observe) {
     const int bad_before = begin_step();
     apply();
-    finish_step(bad_before);
+    if (finish_evaluation()) {
+      observe(static_cast<const mjData&>(*data_));
+      integrate(bad_before);
+    } else {  // an integrator whose step evaluates itself: its one evaluation is the step's start
+      integrate(bad_before);
+      observe(static_cast<const mjData&>(*data_));
+    }
   }
   // mj_forward: positions, velocities and accelerations consistent with qpos, qvel and the inputs.
   void forward();
@@ -86,7 +98,9 @@ class MujocoModel {
 
  private:
   int begin_step();  // the checks and the first evaluation's position and velocity stages
-  void finish_step(int bad_before);  // the rest of the evaluation and the integrator
+  // The rest of the first evaluation (false: the integrator evaluates itself, in integrate).
+  bool finish_evaluation();
+  void integrate(int bad_before);  // the integrator, from the evaluated start
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   int index(int type, const char* name, const char* what) const;

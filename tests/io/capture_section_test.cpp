@@ -33,6 +33,9 @@ TEST(CaptureSection, TheShippedScenarioReadsBack) {
   EXPECT_EQ(s.capture->rigidise->damping_Nms_per_rad, 2000.0);
   EXPECT_EQ(s.capture->rigidise->saturation, model::RigidiseSaturation::kLinear);
   EXPECT_EQ(s.chaser.arm->brake_holding_torque_Nm, 500.0);  // the default
+  ASSERT_TRUE(s.capture->stabilise);
+  EXPECT_EQ(s.capture->stabilise->duration_s, 300.0);
+  EXPECT_EQ(s.capture->stabilise->bandwidth_radps, 0.02);
 }
 
 struct BadCapture {
@@ -47,7 +50,7 @@ std::vector<BadCapture> bad_captures() {
       {"law", {"capture.law=pid"}, "capture.law", "must be one of compliance, hinf (got 'pid')"},
       {"before_the_capture_point", {"capture.start_s=2600"}, "capture.start_s",
        "must be at or after the end of the transfer to the capture point, 2700 s"},
-      {"after_the_end", {"capture.start_s=2950"}, "capture.start_s", "must be before duration_s 2900 (got 2950)"},
+      {"after_the_end", {"capture.start_s=3300"}, "capture.start_s", "must be before duration_s 3250 (got 3300)"},
       {"joint_rate_not_whole_ns", {"capture.joint_rate_hz=3"}, "capture.joint_rate_hz",
        "must divide 1e9 ns into whole nanoseconds (got 3)"},
       {"joint_rate_not_per_period", {"capture.joint_rate_hz=16"}, "capture.joint_rate_hz",
@@ -73,6 +76,14 @@ std::vector<BadCapture> bad_captures() {
        "must be in (0, 10000000]"},
       {"rigidise_brake_rate", {"capture.rigidise.brake_rate_degps=-0.01"}, "capture.rigidise.brake_rate_degps",
        "must be in (0, 10]"},
+      {"stabilise_duration", {"capture.stabilise.duration_s=0"}, "capture.stabilise.duration_s", "must be in [1, 100000]"},
+      {"stabilise_bandwidth", {"capture.stabilise.bandwidth_radps=20"}, "capture.stabilise.bandwidth_radps",
+       "must be in [0.001, 10]"},
+      {"stabilise_without_rigidise",
+       {"capture={start_s: 2760, law: compliance, path_duration_s: 60, standoff_m: 0.15, joint_rate_hz: 1000, "
+        "platform_rate_hz: 10, hub_bandwidth_radps: 1, tool_bandwidth_radps: 4, joint_bandwidth_radps: 1, "
+        "damping_ratio: 1, stabilise: {duration_s: 300}}"},
+       "capture.stabilise", "needs capture.rigidise"},
       {"brake_holding_torque", {"chaser.arm.brake_holding_torque_Nm=0"}, "chaser.arm.brake_holding_torque_Nm",
        "must be in (0, 100000]"},
   };

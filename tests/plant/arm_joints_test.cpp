@@ -174,11 +174,15 @@ TEST(ArmJoints, TheGrippersVelocityAndRateAreItsMotionsDerivatives) {
 // torque off either drive's, so over the first 0.1 s (the other joints braked in both: the same
 // effective inertia) their rates are as (110 - 50) / (60 - 50) = 6, within 5 % (the
 // configuration moves by 0.02 rad in that time).
+// The brake's load (brake_loads_Nm, its friction row's force) is the drive's torque while it holds
+// (the joint static: nothing else acts about it, to the creep's ~1e-5 N m of inertia), and the
+// holding torque itself while it slips (the row at its bound), within 0.1 %; nothing unbraked.
 TEST(ArmJoints, TheBrakesHoldAJointBelowTheirTorqueAndSlipAbove) {
   constexpr double kHoldingNm = 50.0;
   constexpr std::size_t kElbow = 3;
   struct Elbow {
     double rate_at_0p1s_radps = 0.0, rate_at_1s_radps = 0.0, turned_rad = 0.0;
+    std::array<double, model::kArmJoints> load_at_1s_Nm{};
   };
   const auto drive_elbow = [&](double torque_Nm, bool braked) {
     model::Scenario s = arm_scenario();
@@ -199,6 +203,7 @@ TEST(ArmJoints, TheBrakesHoldAJointBelowTheirTorqueAndSlipAbove) {
     }
     e.rate_at_1s_radps = sense_arm(plant).q_dot_radps[kElbow];
     e.turned_rad = sense_arm(plant).q_rad[kElbow] - q0;
+    e.load_at_1s_Nm = brake_loads_Nm(plant);
     return e;
   };
   const Elbow held = drive_elbow(0.8 * kHoldingNm, true);
@@ -210,6 +215,9 @@ TEST(ArmJoints, TheBrakesHoldAJointBelowTheirTorqueAndSlipAbove) {
   EXPECT_GT(std::abs(free.turned_rad), 0.5);  // the drive turns the free elbow
   EXPECT_GT(slipped.rate_at_1s_radps, 5.0 * slipped.rate_at_0p1s_radps);  // it keeps slipping
   EXPECT_NEAR(slipped_harder.rate_at_0p1s_radps / slipped.rate_at_0p1s_radps, 6.0, 0.3);
+  EXPECT_NEAR(held.load_at_1s_Nm[kElbow], -0.8 * kHoldingNm, 1e-3 * kHoldingNm);
+  EXPECT_NEAR(slipped.load_at_1s_Nm[kElbow], -kHoldingNm, 1e-3 * kHoldingNm);
+  for (const double load : free.load_at_1s_Nm) EXPECT_EQ(load, 0.0);
 }
 
 TEST(ArmJoints, TheArmCameraSeesTheFixtureInItsConeAndRangeOnly) {

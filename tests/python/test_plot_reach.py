@@ -35,7 +35,7 @@ target:
 """
 
 
-def fake_run(run_dir, figure=False):
+def fake_run(run_dir, figure=False, stabilisation=False):
     """100 periods: the arm wakes at row 20 (the gripper's channels NaN before), the gripper closing in on
     the pose as 8 mm, 4 mm, 2 mm times exp(-t/10). With figure, the arm's figure too: the hub at
     (7.4, 0, 0.6) m turned 90 deg about z, the joints on a line to the tool, which moves from 6 m to 4.05 m
@@ -64,12 +64,21 @@ def fake_run(run_dir, figure=False):
             share = j / 8.0
             for c, hub, tool in zip("xyz", (7.4, 0.0, 0.6), (tool_x, 0.0, 0.6)):
                 columns[f"{name}_{c}_m"] = np.where(awake, hub + share * (tool - hub), np.nan)
+    if stabilisation:  # braked at 9 s: the target's rate 3, 4, 0 (x 0.01 rad/s) falling linearly to zero at 10 s
+        share = np.clip(10.0 - t, 0.0, 1.0)
+        for c, v in zip("xyz", (0.03, 0.04, 0.0)):
+            columns[f"omega_target_body_{c}_radps"] = v * share
+        for j in range(1, 8):
+            columns[f"load_arm_{j}_Nm"] = np.where(t >= 9.0, 10.0 * j * share, 0.0)
     header = ",".join(columns)
     np.savetxt(run_dir / "telemetry.csv", np.column_stack(list(columns.values())), delimiter=",", header=header,
                comments="")
     (run_dir / "summary.json").write_text(json.dumps({
         "scenario": "fake_reach", "phases_flown": [{"name": "reach", "start_s": 2.0}, {"name": "capture", "start_s": 7.0}],
-        "reach": {"flown": True, "hold_from_s": 5.0, "grasp": {"closure_s": 8.55}}}))
+        "reach": {"flown": True, "hold_from_s": 5.0, "grasp": {"closure_s": 8.55},
+                  **({"rigidisation": {"start_s": 8.6, "brakes_s": 9.0},
+                      "stabilisation": {"start_s": 9.0, "goal_rate_deg_s": 0.5, "peak_joint_load_Nm": 70.0}}
+                     if stabilisation else {})}}))
     scenario = run_dir.parent / "fake_reach.yaml"
     scenario.write_text(SCENARIO + FIGURE_SCENARIO if figure else SCENARIO)
     return scenario
@@ -176,3 +185,28 @@ def test_the_hold_ends_where_the_approach_begins():
     assert pr.approach_start_s({"phases_flown": [{"name": "reach", "start_s": 2760.0},
                                                  {"name": "capture", "start_s": 2850.0}]}) == 2850.0
     assert pr.approach_start_s({"phases_flown": [{"name": "reach", "start_s": 2760.0}]}) == float("inf")
+
+
+def test_the_composite_rate_is_the_targets_rate_magnitude(tmp_path):
+    fake_run(tmp_path / "run", stabilisation=True)
+    t = pr.load_telemetry(tmp_path / "run")
+    rows = t["t_s"] >= 9.0 - 1e-9
+    # |(0.03, 0.04, 0)| = 0.05 rad/s = 2.865 deg/s at the brakes, falling linearly to zero at 10 s.
+    rate = pr.rate_magnitude_degps(t, rows)
+    np.testing.assert_allclose(rate[0], np.degrees(0.05), rtol=1e-12)
+    np.testing.assert_allclose(rate[5], np.degrees(0.05) * 0.5, rtol=1e-9)
+
+
+def test_after_a_stabilisation_its_rates_and_loads_are_drawn(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run", stabilisation=True)
+    out = tmp_path / "plots"
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(out)])
+    assert (out / "reach_stabilisation.png").stat().st_size > 10_000
+    assert "reach_stabilisation.png" in capsys.readouterr().out
+
+
+def test_without_a_stabilisation_nothing_of_it_is_drawn(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run")
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(tmp_path / "plots")])
+    assert not (tmp_path / "plots" / "reach_stabilisation.png").exists()
+    assert "reach_stabilisation.png" not in capsys.readouterr().out

@@ -41,7 +41,7 @@ TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   EXPECT_EQ(r.phases[n - 3].end_reason, "captured");
   EXPECT_EQ(r.phases[n - 2].name, "rigidisation");
   EXPECT_EQ(r.phases[n - 2].end_reason, "brakes engaged");
-  EXPECT_EQ(r.phases.back().name, "rigidised");
+  EXPECT_EQ(r.phases.back().name, "stabilisation");
   const ReachResult& reach = r.reach;
   ASSERT_TRUE(reach.flown);
   EXPECT_GT(reach.hold_periods, 100);
@@ -57,7 +57,10 @@ TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   EXPECT_GT(reach.min_tool_clearance_m, 0.1);
   EXPECT_LT(reach.min_tool_clearance_m, 0.16);
   EXPECT_GE(reach.min_tool_clearance_at_s, reach.hold_from_s);
-  EXPECT_LT(r.figures.final_position_error_m, kTable2ChaserPositionM);
+  // At the run's end, after the stabilisation, the chaser is where the braked arm holds it: within
+  // Table 1's 0.1 m of the capture point (measured 0.068 m: 0.026 at the brakes, then the braked
+  // joints creep under the thrusters' pulses, the wrist by 0.42 deg; docs/servicing.md).
+  EXPECT_LT(r.figures.final_position_error_m, 0.1);
   EXPECT_LT(r.figures.final_attitude_error_rad, kTable2ChaserAttitudeDeg * model::kArmDegToRad);
   // The grasp: the jaws close on the third camera sample inside the envelope after the approach
   // (2,880.2 s), both fingers hold the lip 0.2 s later and the gripper locks. At the closure the
@@ -73,7 +76,7 @@ TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   EXPECT_TRUE(grasp_meets_table2(grasp));
 
   // The rigidisation (flight/rigidise.hpp) from the joint step the gripper reported itself locked:
-  // from the next control period (the phase's start) no thruster fires; the arm alone brings every joint below 0.01
+  // from the next control period (the phase's start) to the brakes no thruster fires; the arm alone brings every joint below 0.01
   // deg/s, which it holds for the dwell, and the brakes engage (measured 11.5 s after the capture);
   // its torques stay far below the drives' 176 N m (measured 10.0 N m) and the joints end within a
   // degree of where it held them (0.57 deg: the arm now carries the chaser's centripetal load);
@@ -92,12 +95,41 @@ TEST(Reach, TheComplianceLawPutsTheGripperInsideTable2sEnvelope) {
   }
   const std::size_t channels = telemetry.channels.size();
   int periods_after = 0;
+  int periods_firing_after = 0;
   for (std::size_t row = 0; row < telemetry.rows(); ++row) {
-    if (telemetry.values[row * channels] < r.phases[n - 2].start_s - 1e-9) continue;
-    ++periods_after;
-    for (std::size_t c = 1; c < channels; ++c) EXPECT_EQ(telemetry.values[row * channels + c], 0.0) << telemetry.channels[c];
+    const double t_s = telemetry.values[row * channels];
+    if (t_s < r.phases[n - 2].start_s - 1e-9) continue;
+    bool firing = false;
+    for (std::size_t c = 1; c < channels; ++c) firing = firing || telemetry.values[row * channels + c] != 0.0;
+    if (t_s < r.phases.back().start_s - 1e-9) {
+      ++periods_after;
+      EXPECT_FALSE(firing) << t_s;
+    } else {
+      periods_firing_after += firing;
+    }
   }
   EXPECT_GT(periods_after, 100);
+
+  // The stabilisation (flight/stabilise.hpp) from the brakes' period: the thrusters detumble the
+  // composite from 2.74 deg/s (ENVISAT's 2.5 and the chaser's share) along the momentum's linear
+  // reference over 300 s, so below Table 3's 0.5 deg/s after ~82 % of it (measured 241.6 s) and
+  // at the end 0.002-0.004 deg/s per axis (Table 8's H-infinity: 0.023, 0.006, 0.013). The braked
+  // joints' loads peak where the thrusters' full-thrust pulses reach them (measured 91.9 N m, the
+  // period's mean couple ~30 N m; the brakes' engagement 84 N m), within the 176 N m repeated peak;
+  // 3.05 kg of propellant.
+  const StabiliseResult& stabilise = reach.stabilise;
+  ASSERT_TRUE(stabilise.flown);
+  EXPECT_NEAR(stabilise.start_s, r.phases.back().start_s, 1e-9);
+  EXPECT_NEAR(stabilise.start_s, rigidise.brakes_s, 0.1 + 1e-9);
+  EXPECT_GT(periods_firing_after, 1000);
+  EXPECT_NEAR(stabilise.initial_rate_degps, 2.74, 0.05);
+  EXPECT_GT(stabilise.below_goal_s, stabilise.start_s + 200.0);
+  EXPECT_LT(stabilise.below_goal_s, stabilise.start_s + 260.0);
+  EXPECT_LT(stabilise.final_rate_target_degps.cwiseAbs().maxCoeff(), 0.02);
+  EXPECT_GT(largest(rigidise.peak_brake_load_Nm), 20.0);
+  EXPECT_LT(largest(rigidise.peak_brake_load_Nm), 176.0);
+  EXPECT_GT(stabilise.propellant_kg, 2.0);
+  EXPECT_LT(stabilise.propellant_kg, 4.0);
 }
 
 // Without the camera (Fig. 12: the fixture where the target estimator puts it) the gripper misses
@@ -134,6 +166,11 @@ TEST(Reach, TheHinfLawFliesTheSameReach) {
   // same (measured 10.5 s after the capture, the torques at most 27.8 N m).
   EXPECT_LT(r.reach.rigidise.brakes_s, r.reach.rigidise.start_s + 20.0);
   EXPECT_LT(largest(r.reach.rigidise.peak_torque_Nm), 60.0);
+  // And the stabilisation from there detumbles the composite the same (measured 0.006 deg/s at
+  // most per axis at the end, the loads 90.5 N m).
+  EXPECT_FALSE(std::isnan(r.reach.stabilise.below_goal_s));
+  EXPECT_LT(r.reach.stabilise.final_rate_target_degps.cwiseAbs().maxCoeff(), 0.02);
+  EXPECT_LT(largest(r.reach.rigidise.peak_brake_load_Nm), 176.0);
 }
 
 // The same scenario and seed give the same bits: MuJoCo's pipeline, the joint loop and the camera.
