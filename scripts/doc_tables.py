@@ -17,6 +17,7 @@ The published numbers a table compares against (the papers' rows) are constants 
     /usr/bin/python3 scripts/doc_tables.py --check-format  # every block registered, well formed, parseable
 
 The chaser binary is $CHASER_CLI, else build/cli/chaser. `make docs` runs --write after the build.
+A command may also be a Python script of this repository (python/fdi_matrix.py), run on that binary.
 --root DIR checks or writes the pages (README.md, docs/*.md) under DIR instead, the commands still
 run here (the tests check tampered copies so).
 """
@@ -110,16 +111,24 @@ def cell_parses(cell, words):
 
 @dataclass(frozen=True)
 class Command:
-    """A chaser command whose output files tables are made from; OUT is where its output goes."""
+    """A chaser command whose output files tables are made from; OUT is where its output goes.
+    With `script`, a Python script of this repository instead, run by this interpreter with
+    `--binary CHASER` (the chaser program it runs) and, for --threads, `--jobs N`."""
     key: str          # also the name shown for OUT in the pages
-    args: tuple       # after `chaser`, with "OUT" for the output path
+    args: tuple       # after `chaser` (or the script), with "OUT" for the output path
     quick: bool       # runs in seconds
+    script: str = ""  # relative to the repository root, e.g. python/fdi_matrix.py; "" for chaser
 
     def shown(self):
-        return "chaser " + " ".join(self.key if a == "OUT" else shlex.quote(a) for a in self.args)
+        program = f"/usr/bin/python3 {self.script}" if self.script else "chaser"
+        return program + " " + " ".join(self.key if a == "OUT" else shlex.quote(a) for a in self.args)
 
     def argv(self, cli, out, threads):
-        argv = [cli] + [str(out) if a == "OUT" else a for a in self.args]
+        args = [str(out) if a == "OUT" else a for a in self.args]
+        if self.script:
+            return ([sys.executable, str(ROOT / self.script)] + args + ["--binary", str(cli)]
+                    + (["--jobs", str(threads)] if threads else []))
+        argv = [cli] + args
         if threads and self.args[0] == "campaign":
             argv += ["--threads", str(threads)]
         return argv
@@ -999,6 +1008,113 @@ def invsim_drift_rows(shipped, mirrored, still):
 
 
 # --------------------------------------------------------------------------------------------------
+# The in-loop FDI matrix (docs/fdi.md): python/fdi_matrix.py, T1..T8 x four cases, fault at 1000 s
+
+MATRIX = ("scenarios/msr_terminal.yaml", "--seeds", "0", "--set", "fdi.active_check.enabled=false")
+MATRIX_THRUSTERS = tuple(f"T{i}" for i in range(1, 9))
+MATRIX_WORDS = ("ok", "FA") + tuple(f"**{t}**" for t in MATRIX_THRUSTERS)
+# The isolation methods compared: (label, Command key, overrides after MATRIX's).
+ISOLATION_ROWS = (
+    ("`paper`", "fdi-matrix-paper", ("fdi.isolation_method=paper",)),
+    ("`signature`, settle 60, N 10", "fdi-matrix-signature-60-10",
+     ("fdi.isolation_method=signature", "fdi.isolation_settle=60", "fdi.isolation_window=10")),
+    ("`signature`, settle 60, N 50", "fdi-matrix-signature-60-50",
+     ("fdi.isolation_method=signature", "fdi.isolation_settle=60", "fdi.isolation_window=50")),
+    ("`signature`, settle 140, N 10", "fdi-matrix-signature-140-10",
+     ("fdi.isolation_method=signature", "fdi.isolation_settle=140", "fdi.isolation_window=10")),
+    ("`signature`, settle 140, N 50", "fdi-matrix-signature-140-50",
+     ("fdi.isolation_method=signature", "fdi.isolation_settle=140", "fdi.isolation_window=50")),
+    ("`paper`, n_r = 3, J_th = 30", "fdi-matrix-paper-nr3",
+     ("fdi.isolation_method=paper", "fdi.position.residual_dimension=3", "fdi.attitude.residual_dimension=3",
+      "fdi.glr_threshold=30")),
+)
+
+
+def matrix_command(key, overrides=()):
+    return Command(key, MATRIX + sum((("--set", o) for o in overrides), ()) + ("--out", "OUT"), quick=True,
+                   script="python/fdi_matrix.py")
+
+
+def matrix_runs(out):
+    """matrix.csv of an fdi_matrix.py run: the faulty runs as {(case, thruster): row}, the fields as written."""
+    with open(Path(out) / "matrix.csv", newline="") as f:
+        return {(r["case"], r["thruster"]): r for r in csv.DictReader(f) if r["thruster"]}
+
+
+def matrix_cell(r, scheme):
+    """detection / isolation time [s after the onset] and `ok` or the wrong thruster, as fdi_matrix.py's matrix.md."""
+    detection = fixed(number(r[f"{scheme}_detection_s"]), 1)
+    if r[f"{scheme}_false_alarm"] == "1":
+        return f"FA {detection}"
+    if r[f"{scheme}_detected"] != "1":
+        return "-"
+    named = r[f"{scheme}_isolated"]
+    if not named:
+        return f"{detection} / -"
+    verdict = "ok" if r[f"{scheme}_correct"] == "1" else f"**{named}**"
+    return f"{detection} / {fixed(number(r[f'{scheme}_isolation_s']), 1)} {verdict}"
+
+
+def matrix_mean(values):
+    """numpy's mean to 0.1, as fdi_matrix.py's matrix.md has it (the same digit where a mean falls on a half)."""
+    import numpy as np
+    return fixed(float(np.mean(values)), 1) if values else "-"
+
+
+def matrix_rows(out, scheme):
+    """Per fault case: each thruster's cell, right isolations of the 8, mean t_d (detected) / t_i (right)."""
+    runs = matrix_runs(out)
+    rows = []
+    for case in FAULT_CASES:
+        case_runs = [runs[case, t] for t in MATRIX_THRUSTERS]
+        detected = [number(r[f"{scheme}_detection_s"]) for r in case_runs if r[f"{scheme}_detected"] == "1"]
+        right = [number(r[f"{scheme}_isolation_s"]) for r in case_runs if r[f"{scheme}_correct"] == "1"]
+        rows.append([matrix_cell(r, scheme) for r in case_runs]
+                    + [f"{len(right)}/{len(case_runs)}", f"{matrix_mean(detected)} / {matrix_mean(right)}"])
+    return rows
+
+
+def right_of_detected(runs, scheme):
+    """right / detected, in bold when every detected fault is isolated right."""
+    detected = sum(r[f"{scheme}_detected"] == "1" for r in runs)
+    right = sum(r[f"{scheme}_correct"] == "1" for r in runs)
+    cell = f"{right}/{detected}"
+    return f"**{cell}**" if detected and right == detected else cell
+
+
+def isolation_methods_rows(*outs):
+    rows = []
+    for out in outs:
+        runs = matrix_runs(out)
+        rows.append([right_of_detected([r for (case, _), r in runs.items() if case == c], "attitude")
+                     for c in FAULT_CASES] + [right_of_detected(list(runs.values()), "position")])
+    return rows
+
+
+MATRIX_HEADER = MATRIX_THRUSTERS + ("right", "mean t_d / t_i")
+# The detection settings compared (published isolation): (label, Command key, overrides after MATRIX's).
+TUNING_ROWS = (
+    ("default (N_d 10, J_th 20, n_r 1)", "fdi-matrix-paper", ("fdi.isolation_method=paper",)),
+    ("N_d = 5", "fdi-matrix-paper-nd5", ("fdi.isolation_method=paper", "fdi.glr_window=5")),
+    ("N_d = 20", "fdi-matrix-paper-nd20", ("fdi.isolation_method=paper", "fdi.glr_window=20")),
+    ("J_th = 14", "fdi-matrix-paper-jth14", ("fdi.isolation_method=paper", "fdi.glr_threshold=14")),
+    ("n_r = 3, J_th = 30", "fdi-matrix-paper-nr3", ISOLATION_ROWS[-1][2]),
+)
+
+
+def tuning_rows(*outs):
+    """Per setting and scheme: faults detected of 8 per case, with the mean detection time [s after the onset]."""
+    def cells(runs, scheme):
+        out = []
+        for case in FAULT_CASES:
+            times = [number(r[f"{scheme}_detection_s"]) for (c, _), r in runs.items()
+                     if c == case and r[f"{scheme}_detected"] == "1"]
+            out.append(f"{len(times)} ({matrix_mean(times)})" if times else "0")
+        return " / ".join(out)
+    return [[cells(matrix_runs(out), "position"), cells(matrix_runs(out), "attitude")] for out in outs]
+
+
+# --------------------------------------------------------------------------------------------------
 # The registry
 
 T2_PRESET = ("campaign", "scenarios/msr_terminal.yaml", "--preset", "fonod2015-table2")
@@ -1057,7 +1173,9 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("fmea-noise-off-no-drift", FMEA + PAPER + NOISE_OFF + (
         "--set", "initial.position_hill_m=[100.038,0,-0.023]",
         "--set", "initial.velocity_hill_mps=[-0.0076,0,-0.0087]"), quick=True),
-)}
+    # python/fdi_matrix.py (docs/fdi.md): each a matrix of 32 runs, about 3 s on two cores
+    matrix_command("fdi-matrix"),
+) + tuple(matrix_command(key, overrides) for _, key, overrides in ISOLATION_ROWS + TUNING_ROWS[1:4])}
 
 FAULT_HEADER = ("", "stuck open", "stuck closed", "leak 10-30 %", "loss 40-90 %")
 CONTROL_LOOPS = ("x", "y", "z", "rx", "ry", "rz")
@@ -1140,6 +1258,22 @@ TABLES = [
           shown_as="nine campaigns `chaser campaign scenarios/msr_terminal.yaml --preset fonod2015-table2 --runs "
                    "none=50,stuck_closed=200,loss=200 --set fdi.active_check.arm_range_m=1e9` with each row's "
                    "`--set fdi.active_check...` (scripts/doc_tables.py, CHECK_TRADE_ROWS)"),
+    Table("fdi-matrix-paper-attitude", "docs/fdi.md", ("fdi-matrix-paper",), ("attitude",) + MATRIX_HEADER,
+          FAULT_CASES, lambda out: matrix_rows(out, "attitude"), words=MATRIX_WORDS),
+    Table("fdi-matrix-paper-position", "docs/fdi.md", ("fdi-matrix-paper",), ("position",) + MATRIX_HEADER,
+          FAULT_CASES, lambda out: matrix_rows(out, "position"), words=MATRIX_WORDS),
+    Table("fdi-isolation-methods", "docs/fdi.md", tuple(key for _, key, _ in ISOLATION_ROWS),
+          ("isolation", "attitude SO", "SC", "leak", "loss", "position (all)"), tuple(r[0] for r in ISOLATION_ROWS),
+          isolation_methods_rows, words=("**",),
+          shown_as="six matrices `/usr/bin/python3 python/fdi_matrix.py " + " ".join(MATRIX)
+                   + "` with each row's `--set fdi...` (scripts/doc_tables.py, ISOLATION_ROWS)"),
+    Table("fdi-detection-tuning", "docs/fdi.md", tuple(key for _, key, _ in TUNING_ROWS),
+          ("setting", "position: SO / SC / leak / loss", "attitude: SO / SC / leak / loss"),
+          tuple(r[0] for r in TUNING_ROWS), tuning_rows, words=("/",),
+          shown_as="five matrices `/usr/bin/python3 python/fdi_matrix.py " + " ".join(MATRIX)
+                   + "` with each row's `--set fdi...` (scripts/doc_tables.py, TUNING_ROWS)"),
+    Table("fdi-matrix-deficit", "docs/fdi.md", ("fdi-matrix",), ("deficit scheme",) + MATRIX_HEADER,
+          FAULT_CASES, lambda out: matrix_rows(out, "deficit"), words=MATRIX_WORDS),
     Table("campaigns-fonod2015-envelope", "docs/campaigns.md", ("T2",),
           ("scheme", "fault-free GLR envelope maximum", "suggested J_th (margin 1.5)"), ("position", "attitude"),
           envelope_rows),
