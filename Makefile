@@ -47,7 +47,8 @@ fmea: build
 
 # COMRADE 2018's synchronisation (docs/servicing.md): one flight and its plots, then Table 5 by
 # Monte Carlo, 100 runs per spin case and ASSIST's approach (~35 s on 2 cores), and its scatter;
-# the reach: one flight and its plots, then Tables 5 (reach) and 6, 100 runs per law (~7 min).
+# the capture: one flight (reach, grasp, rigidisation, stabilisation) and its plots, then Tables 5
+# (reach) and 6, 100 runs per law (~6 min), and Table 8, 20 runs per spin case (~10 min).
 servicing: build
 	@./$(BUILD)/cli/chaser run scenarios/comrade_sync.yaml --out $(SERVICING_OUT)/flight
 	@$(PYTHON) python/plot_servicing.py $(SERVICING_OUT)/flight
@@ -58,9 +59,11 @@ servicing: build
 	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/reach
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-reach \
 	  --out $(SERVICING_OUT)/reach-campaign
+	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-stabilise \
+	  --out $(SERVICING_OUT)/stabilise-campaign
 
 # Every generated results table in README.md and docs/ rewritten from its command's output
-# (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take ~14 minutes on 2 cores).
+# (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take ~25 minutes on 2 cores).
 docs: build
 	@CHASER_CLI=./$(BUILD)/cli/chaser $(PYTHON) scripts/doc_tables.py --write
 

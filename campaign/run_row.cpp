@@ -59,8 +59,9 @@ SchemeOutcome judge_fdir(const sim::FdirResult& f, const RunRecord& r) {
 ReachFigures reach_figures(const sim::ReachResult& reach) {
   if (!reach.flown) {
     const Vec3 none = Vec3::Constant(kNaN);
-    return {none, none, none, none, none, none, none, none, kNaN, kNaN, false, kNaN, false};
+    return {none, none, none, none, none, none, none, none, kNaN, kNaN, false, kNaN, false, kNaN, none, kNaN, kNaN, false};
   }
+  const sim::StabiliseResult& st = reach.stabilise;
   const plant::GripperTruth& g = reach.final_gripper;
   const double deg = 1.0 / kDegToRad;
   return {g.r_m,
@@ -75,7 +76,12 @@ ReachFigures reach_figures(const sim::ReachResult& reach) {
           reach.min_tool_clearance_m,
           sim::gripper_meets_table2(reach),
           reach.grasp.captured_s,
-          sim::grasp_meets_table2(reach.grasp)};
+          sim::grasp_meets_table2(reach.grasp),
+          st.flown ? st.below_goal_s - st.start_s : kNaN,
+          st.flown ? st.final_rate_target_degps : Vec3::Constant(kNaN).eval(),
+          st.flown ? sim::peak_brake_load_Nm(reach) : kNaN,
+          st.flown ? st.propellant_kg : kNaN,
+          sim::stabilise_meets_table3(reach)};
 }
 
 RunRecord base_record(const RunSetup& setup) {
@@ -145,6 +151,15 @@ void reach_columns(std::vector<RunColumn>& columns) {
       {"reach_table2_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.table2_met); }},
       {"grasp_captured_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.grasp_captured_s); }},
       {"grasp_table2_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.grasp_table2_met); }},
+      {"stabilise_below_goal_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.stabilise_below_goal_s); }},
+  });
+  for (int axis = 0; axis < 3; ++axis)
+    columns.push_back({fmt::format("stabilise_final_rate_{}_deg_s", "xyz"[axis]), ColumnKind::kNumber,
+                       [](const RunRecord& r, int i, std::string& o) { number(o, r.reach.stabilise_final_rate_deg_s(i)); }, axis});
+  columns.insert(columns.end(), {
+      {"stabilise_peak_load_Nm", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.stabilise_peak_load_Nm); }},
+      {"stabilise_propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.stabilise_propellant_kg); }},
+      {"stabilise_table3_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.stabilise_table3_met); }},
   });
 }
 

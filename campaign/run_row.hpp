@@ -44,6 +44,14 @@ struct ReachFigures {
   // not captured within the run), and whether Table 2 held at the jaws' closure.
   double grasp_captured_s;       // [s]
   bool grasp_table2_met;         // sim::grasp_meets_table2
+  // The stabilisation after the brakes (sim::StabiliseResult; NaN where it was not flown): the time
+  // from its start to the rate staying below 0.5 deg/s (NaN: not by the end), the target's rate at
+  // the end (its axes), the braked joints' peak load, its propellant, and Table 3's verdict.
+  double stabilise_below_goal_s; // [s]
+  Vec3 stabilise_final_rate_deg_s;
+  double stabilise_peak_load_Nm; // [N m]
+  double stabilise_propellant_kg;
+  bool stabilise_table3_met;     // sim::stabilise_meets_table3
 };
 
 struct RunRecord {

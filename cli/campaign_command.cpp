@@ -13,6 +13,7 @@
 #include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
 #include "campaign/reach_tables.hpp"
+#include "campaign/stabilise_tables.hpp"
 #include "campaign/run_one.hpp"
 #include "campaign/run_row.hpp"
 #include "campaign/summary.hpp"
@@ -29,9 +30,13 @@ namespace {
 constexpr const char* kPresetTable2 = "fonod2015-table2";
 constexpr const char* kPresetTable5 = "comrade-table5";
 constexpr const char* kPresetReach = "comrade-reach";
+constexpr const char* kPresetStabilise = "comrade-stabilise";
 // COMRADE 2018, sec. 7: the paper's Tables 5 and 6 are means of 100 runs; we fly 100 per spin case
 // (synchronisation) and per combined controller (reach).
 constexpr const char* kTable5Runs = "none=100";
+// The stabilisation's runs fly the whole capture scenario (~18 s each, 15 s of it the arm on
+// MuJoCo): 20 per spin case keeps the preset near 10 minutes on 2 cores (--runs gives more).
+constexpr const char* kStabiliseRuns = "none=20";
 // Fonod 2015, section V: 200 fault-free runs, 1600 runs per fault case, each scheme judged alone.
 constexpr const char* kTable2Runs = "none=200,stuck_open=1600,stuck_closed=1600,leak=1600,loss=1600";
 
@@ -93,8 +98,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
-      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {})\n", args.preset,
-                               kPresetTable2, kPresetTable5, kPresetReach);
+      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {})\n", args.preset,
+                               kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise);
       return std::nullopt;
     }
     overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
@@ -277,6 +282,52 @@ int comrade_reach(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// --preset comrade-stabilise (docs/servicing.md, "The stabilisation over dispersed runs"): one
+// fault-free campaign per spin case S1, S2, S3 of a scenario with capture.stabilise, each the whole
+// run (synchronisation, reach, capture, rigidisation, stabilisation), in its folder under --out and
+// resumable as any campaign; then stabilise.md and stabilise.csv beside them: COMRADE Table 8.
+int comrade_stabilise(const CampaignArgs& args) {
+  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
+    std::cerr << "chaser campaign: --preset comrade-stabilise runs whole fault-free campaigns in one process: "
+                 "leave out --mpi, --shard, --cases and --also\n";
+    return kExitBadInput;
+  }
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  const model::Scenario& s = *loaded->scenario;
+  if (!s.capture || !s.capture->stabilise || !s.target.body) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-stabilise: {} has no capture.stabilise section: use "
+                             "scenarios/comrade_capture.yaml\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
+  CampaignArgs with_runs = args;
+  if (with_runs.runs.empty()) with_runs.runs = kStabiliseRuns;
+  // Each run flies the scenario's whole duration_s (a campaign's run ends at onset_s + the horizon).
+  const std::string horizon = fmt::format("campaign.horizon_after_onset_s={}", s.duration_s - s.campaign.onset_s);
+  std::vector<campaign::StabiliseColumn> columns;
+  for (const char* spin_case : {"S1", "S2", "S3"}) {
+    std::cerr << fmt::format("comrade-stabilise: spin case {}\n", spin_case);
+    int code = kExitOk;
+    if (!run_case_campaign(with_runs, args.scenario_path, spin_case,
+                           {fmt::format("target.body.spin_case={}", spin_case), horizon}, code))
+      return code;
+    std::string error;
+    const auto column = campaign::read_stabilise_column(
+        spin_case, (std::filesystem::path(args.out_dir) / spin_case / "runs.csv").string(), error);
+    if (!column) {
+      std::cerr << ("chaser campaign: " + error + '\n');
+      return kExitFailure;
+    }
+    columns.push_back(*column);
+  }
+  const std::filesystem::path out(args.out_dir);
+  std::ofstream(out / "stabilise.md") << campaign::stabilise_markdown(columns);
+  std::ofstream(out / "stabilise.csv") << campaign::stabilise_csv(columns);
+  std::cout << fmt::format("comrade-stabilise: wrote {}/stabilise.md and stabilise.csv\n", args.out_dir);
+  return kExitOk;
+}
+
 // --rerun ... --of DIR: the campaign the options describe must be the one DIR holds (its
 // campaign.json, shards aside): run I of another campaign is another run, and nothing would say so.
 std::string check_rerun_of(const std::string& dir, const campaign::CampaignPlan& plan) {
@@ -355,8 +406,9 @@ int campaign_command(const CampaignArgs& args) {
     return kExitBadInput;
   }
   if (args.rerun) {
-    if (args.preset == kPresetTable5 || args.preset == kPresetReach || !args.also.empty()) {
-      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach or --also (rerun one "
+    if (args.preset == kPresetTable5 || args.preset == kPresetReach || args.preset == kPresetStabilise ||
+        !args.also.empty()) {
+      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise or --also (rerun one "
                    "case's folder: its scenario with --set target.body.spin_case=S1|S2|S3 or capture.law=hinf|"
                    "compliance, and --cases none)\n";
       return kExitBadInput;
@@ -365,6 +417,7 @@ int campaign_command(const CampaignArgs& args) {
   }
   if (args.preset == kPresetTable5) return comrade_table5(args);
   if (args.preset == kPresetReach) return comrade_reach(args);
+  if (args.preset == kPresetStabilise) return comrade_stabilise(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";
     return kExitBadInput;

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
+#include <fmt/format.h>
 
+#include "control/composite_design.hpp"
 #include "control/six_axis_design.hpp"
 #include "core/rotation.hpp"
 #include "flight/arm/computed_torque.hpp"
@@ -133,7 +136,18 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
                                      .target = {.mass_kg = s.target.body->mass_kg,
                                                 .inertia_kgm2 = s.target.body->inertia_kgm2,
                                                 .grasp_point_target_m = p.grasp_point_target_m,
-                                                .q_target_from_tool = p.q_target_from_tool}};
+                                                .q_target_from_tool = p.q_target_from_tool},
+                                     .period_s = s.control_period_s};
+  if (p.stabilise && c.stabilise->law == model::StabiliseLaw::kHinf) {  // COMRADE 2018, sec. 6.1.4
+    const auto specs = control::composite_specs(s);
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      const control::AxisDesign design = control::design_axis(specs[i]);
+      if (!design.ok())
+        throw std::runtime_error(fmt::format("capture.stabilise.hinf: the {} loop's H-infinity design failed ({})",
+                                             specs[i].name, design.synthesis.message));
+      p.stabilise->hinf_loops[i] = discrete_loop(design, s.control_period_s);
+    }
+  }
   // The compliance gains at the stowed arm on a hub at rest (the tasks' inertias barely change over the reach).
   arm::JointVector stowed;
   for (int j = 0; j < model::kArmJoints; ++j) stowed(j) = s.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];

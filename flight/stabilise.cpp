@@ -64,7 +64,17 @@ Vec3 stabilise_couple(const StabiliseLawParams& params, const arm::ServicerArmPa
   const double share = stabilise_reference_share(p, state, t_s);
   const Vec3 reference = share * state.momentum0_inertial_Nms;
   const Vec3 reference_rate = share > 0.0 ? Vec3(-state.momentum0_inertial_Nms / p.duration_s) : Vec3::Zero();
-  const Vec3 couple_inertial = reference_rate + p.bandwidth_radps * (reference - momentum_inertial);
+  Vec3 couple_inertial;
+  if (p.law == model::StabiliseLaw::kHinf) {
+    for (int i = 0; i < 3; ++i)
+      couple_inertial(i) = reference_rate(i) + step_loop(params.hinf_loops[static_cast<std::size_t>(i)],
+                                                         state.loops[static_cast<std::size_t>(i)],
+                                                         state.impulse_reference_Nms2(i) - state.impulse_Nms2(i));
+    state.impulse_Nms2 += params.period_s * momentum_inertial;
+    state.impulse_reference_Nms2 += params.period_s * reference;
+  } else {
+    couple_inertial = reference_rate + p.bandwidth_radps * (reference - momentum_inertial);
+  }
   return q_inertial_from_body.conjugate() * couple_inertial;
 }
 

@@ -25,7 +25,11 @@
 // tumble, and the feedback chases it: the bandwidth k trades the couple's peak against how fast a
 // true error goes (tests/flight/stabilise_test.cpp, the target's inertia 20 % off: the couple peaks
 // at 1.8 |H_0| / D with k = 0.02 rad/s, 2.7 with 0.05, 3.4 with 0.1).
+#include <array>
+
+#include "core/zero_array.hpp"
 #include "flight/arm/servicer_arm.hpp"
+#include "flight/hinf_control.hpp"
 #include "model/capture.hpp"
 
 namespace chaser::flight {
@@ -55,17 +59,29 @@ CompositeInertia composite_inertia(const arm::ServicerArmParams& servicer, const
 struct StabiliseLawParams {
   model::StabiliseParams stabilise;
   GraspedTarget target;
+  double period_s = 0.1;  // [s] the control period: the angular impulse's step, the H-infinity loops'
+  // law kHinf: per inertial axis, the loop on the angular impulse (control/composite_design.hpp),
+  // discretised at the period.
+  std::array<DiscreteLoop, 3> hinf_loops{};
 };
 
 struct StabiliseState {
   double started_s = -1.0;                 // [s] (-1: not yet)
   Mat3 inertia_kgm2 = Mat3::Zero();        // [kg m^2] J, chaser axes, about the composite's CoM
   Vec3 momentum0_inertial_Nms = Vec3::Zero();  // [N m s] H_0
+  // law kHinf: the angular impulse estimated and its reference (sums of the momentum over the
+  // periods so far, inertial axes) and the loops' states.
+  Vec3 impulse_Nms2 = Vec3::Zero();
+  Vec3 impulse_reference_Nms2 = Vec3::Zero();
+  std::array<LoopState, 3> loops = zero_array<LoopState, 3>();
   bool started() const { return started_s >= 0.0; }
 };
 
-// The couple [N m, chaser axes] at t_s from the attitude and rate estimates. The first call begins
-// the stabilisation: J from the servicer at the joints' angles, H_0 the momentum estimated now.
+// The couple [N m, chaser axes] at t_s from the attitude and rate estimates, once per control
+// period. The first call begins the stabilisation: J from the servicer at the joints' angles, H_0
+// the momentum estimated now. With law kHinf the couple is dH_ref/dt + K(Phi_ref - Phi) per
+// inertial axis, Phi the angular impulse: the sum of the momentum times the period over the
+// periods before (the reference's likewise, so that the two are integrated alike).
 Vec3 stabilise_couple(const StabiliseLawParams& params, const arm::ServicerArmParams& servicer, StabiliseState& state,
                       const arm::JointVector& joint_angles_rad, const Quat& q_inertial_from_body,
                       const Vec3& omega_body_radps, double t_s);

@@ -2,6 +2,7 @@
 // their checks against the rest of the scenario (the arm, the run, the synchronisation, the
 // multibody plant's needs) in validate_capture below.
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -62,7 +63,14 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
       read_section(m, "stabilise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
         model::StabiliseParams& st = *c.stabilise;
         if (g.has("duration_s")) g.number("duration_s", Range::closed(1.0, 1e5), st.duration_s);
+        std::string law;
+        if (g.has("law") && g.text("law", law)) {
+          if (law == "momentum") st.law = model::StabiliseLaw::kMomentum;
+          else if (law == "hinf") st.law = model::StabiliseLaw::kHinf;
+          else g.diagnostics().add(g.path_of("law"), fmt::format("must be one of momentum, hinf (got '{}')", law));
+        }
         if (g.has("bandwidth_radps")) g.number("bandwidth_radps", Range::closed(1e-3, 10.0), st.bandwidth_radps);
+        if (g.has("hinf")) read_section(g, "hinf", [&](MapReader& h) { read_hinf_loop(h, "error_scale_Nms2", st.hinf); });
       });
     }
   });
@@ -108,6 +116,13 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
     d.add("capture.rigidise.linear_limit_Nm",
           fmt::format("must be below chaser.arm.torque_repeated_peak_Nm {} (got {})",
                       format_number(s.chaser.arm->torque_repeated_peak_Nm), format_number(c.rigidise->linear_limit_Nm)));
+  // The stabilisation's H-infinity loops: omega_B below the Nyquist frequency of the control period.
+  if (c.stabilise && c.stabilise->law == model::StabiliseLaw::kHinf && d.clean("capture.stabilise.hinf") &&
+      d.clean("control_period_s") && !(c.stabilise->hinf.bandwidth_radps < 0.5 * std::numbers::pi / s.control_period_s))
+    d.add("capture.stabilise.hinf.bandwidth_radps",
+          fmt::format("must be below half the Nyquist frequency, pi / (2 control_period_s) = {} rad/s (got {})",
+                      format_number(0.5 * std::numbers::pi / s.control_period_s),
+                      format_number(c.stabilise->hinf.bandwidth_radps)));
   if (c.stabilise && !c.rigidise)
     d.add("capture.stabilise", "needs capture.rigidise (the stabilisation begins once its brakes hold)");
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)

@@ -48,11 +48,6 @@ void read_guidance(MapReader& r, model::GuidanceParams& out) {
   }
 }
 
-// LQR weights (model/gnc.hpp): input weights r > 0 so that the input cost is positive definite;
-// position and angle weights > 0 too, for without them the Riccati equation has no stabilising
-// solution; rate weights >= 0. Modulation thresholds and the anti-windup clamp > 0.
-namespace {
-
 // One loop family of control.hinf (model::HinfLoopWeights). The bandwidth is bounded by the period
 // in validate_scenario (it must lie below the Nyquist frequency pi / T).
 void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWeights& out) {
@@ -62,6 +57,11 @@ void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWe
   r.number(error_scale_key, Range::positive(), out.error_scale);
   if (r.has("input_disturbance")) r.number("input_disturbance", Range::closed(0.0, 10.0), out.input_disturbance);
 }
+
+// LQR weights (model/gnc.hpp): input weights r > 0 so that the input cost is positive definite;
+// position and angle weights > 0 too, for without them the Riccati equation has no stabilising
+// solution; rate weights >= 0. Modulation thresholds and the anti-windup clamp > 0.
+namespace {
 
 constexpr int kMaxModesPerFamily = 4;
 constexpr int kMaxGridPoints = 20;

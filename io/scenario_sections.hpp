@@ -47,6 +47,9 @@ void read_faults(MapReader& root, std::vector<model::FaultParams>& out);
 void read_navigation(MapReader& r, model::NavigationParams& out);
 void read_guidance(MapReader& r, model::GuidanceParams& out);
 void read_control(MapReader& r, model::ControlParams& out);
+// One loop family of H-infinity weights (control.hinf.translation/rotation, capture.stabilise.hinf),
+// its error scale under error_scale_key.
+void read_hinf_loop(MapReader& r, const char* error_scale_key, model::HinfLoopWeights& out);
 void read_initial(MapReader& r, model::InitialState& out);
 void read_fdi(MapReader& r, model::FdiParams& out);
 void read_campaign(MapReader& r, model::CampaignParams& out);

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "model/gnc.hpp"
+
 namespace chaser::model {
 
 enum class CaptureLaw { kCompliance, kHinf };
@@ -43,9 +45,19 @@ struct RigidiseParams {
 // reference profile in terms of angular rate": the rate is the momentum through the inertia), the
 // momentum's error removed at bandwidth_radps (flight/stabilise.hpp). The duration sets the couple
 // (the momentum over the duration) and so the loads the braked joints carry.
+// The couple's law: the momentum's error fed back at bandwidth_radps (kMomentum), or COMRADE's
+// H-infinity loops (sec. 6.1.4; kHinf): one S/KS design per inertial axis on the angular impulse
+// (the momentum's integral, a double integrator in the couple) behind the reference's couple
+// (flight/stabilise.hpp, control/composite_design.hpp).
+enum class StabiliseLaw { kMomentum, kHinf };
+
 struct StabiliseParams {
   double duration_s = 300.0;       // [s] the reference's momentum from its start value to zero
-  double bandwidth_radps = 0.02;   // [rad/s] the momentum error's decay rate (low: flight/stabilise.hpp)
+  StabiliseLaw law = StabiliseLaw::kMomentum;
+  double bandwidth_radps = 0.02;   // [rad/s] kMomentum: the momentum error's decay rate (low: flight/stabilise.hpp)
+  // kHinf: the loops' weights (error_scale in N m s^2: an angular-impulse error this large may ask
+  // for the couple's whole authority), and the inertia's relative error the robustness grid spans.
+  HinfLoopWeights hinf{0.02, 2.0, 1e-3, 2000.0, 0.0};
 };
 
 struct CaptureParams {
@@ -98,6 +110,7 @@ inline constexpr double kGraspRelativeRateDegps = 0.1;                    // [de
 inline constexpr double kStabilisedRateDegps = 0.5;  // [deg/s]
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
+inline const char* to_string(StabiliseLaw law) { return law == StabiliseLaw::kHinf ? "hinf" : "momentum"; }
 inline const char* to_string(RigidiseSaturation s) { return s == RigidiseSaturation::kClip ? "clip" : "linear"; }
 
 }  // namespace chaser::model

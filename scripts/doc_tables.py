@@ -424,6 +424,45 @@ def comrade_reach_rows(out):
     return rows
 
 
+SPIN_CASES = ("S1", "S2", "S3")
+
+
+def stabilise_csv(out):
+    """stabilise.csv of a comrade-stabilise campaign as {(case, figure): row}, numbers as floats."""
+    with open(Path(out) / "stabilise.csv", newline="") as f:
+        return {(r["case"], r["figure"]): {k: number(v) for k, v in r.items() if k not in ("case", "figure")}
+                for r in csv.DictReader(f)}
+
+
+def comrade_stabilise_rows(out):
+    """COMRADE Table 8 beside the paper's, per spin case, with Table 3's verdicts (campaign/stabilise_tables.hpp)."""
+    t = stabilise_csv(out)
+    rows = []
+    for axis in "xyz":
+        name = f"stabilise_final_rate_{axis}_deg_s"
+        rows.append([f"{t[(SPIN_CASES[0], name)]['paper']:.3f}"]
+                    + [f"{t[(c, name)]['mean']:.4f} +- {t[(c, name)]['sd']:.4f}" for c in SPIN_CASES])
+    rows.append([""] + [fixed(t[(c, "stabilise_final_rate_norm_deg_s")]["p95"], 4) for c in SPIN_CASES])
+    rows.append([""] + [f"{fixed(t[(c, 'stabilise_below_goal_s')]['mean'], 1)} "
+                        f"({fixed(t[(c, 'stabilise_below_goal_s')]['p95'], 1)})" for c in SPIN_CASES])
+    rows.append([""] + [f"{fixed(t[(c, 'stabilise_peak_load_Nm')]['mean'], 1)} "
+                        f"({fixed(t[(c, 'stabilise_peak_load_Nm')]['p95'], 1)})" for c in SPIN_CASES])
+    rows.append([""] + [f"{t[(c, 'stabilise_propellant_kg')]['mean']:.2f} +- {t[(c, 'stabilise_propellant_kg')]['sd']:.2f}"
+                        for c in SPIN_CASES])
+    met = []
+    for c in SPIN_CASES:
+        runs = campaign_runs(Path(out) / c)
+        met.append(f"{sum(r['stabilise_table3_met'] == '1' for r in runs)} of {len(runs)}")
+    rows.append([""] + met)
+    return rows
+
+
+STABILISE_LABELS = ("rate X at the end [deg/s], mean +- 1 sigma", "rate Y", "rate Z",
+                    "rate at the end, magnitude, 95th percentile [deg/s] (Table 3: < 0.5)",
+                    "below 0.5 deg/s for good, after the brakes [s]: mean (95th percentile)",
+                    "braked joints' peak load [N m]: mean (95th percentile; Table 3: < 176)",
+                    "propellant [kg], mean +- 1 sigma", "runs meeting Table 3")
+
 REACH_HEADER = ("", "Table 2", "COMRADE H-inf", "H-infinity", "COMRADE compliant", "compliance")
 REACH_LABELS = (("chaser position [m]", "chaser velocity [m/s]", "chaser pointing [deg]", "chaser rate [deg/s]")
                 + tuple(f"gripper {name} {axis} [{unit}]"
@@ -1115,6 +1154,88 @@ def tuning_rows(*outs):
 
 
 # --------------------------------------------------------------------------------------------------
+# ENVISAT's H-infinity loops flown (docs/control.md), the synchronisation's process noise (docs/gnc.md)
+
+ENVISAT = "scenarios/comrade_envisat.yaml"
+NO_CHECKS = ("--set", "fdi.active_check.enabled=false")
+# The input-disturbance weight W_d on every loop: (label, value; None for the scenario's own 0.003).
+INPUT_DISTURBANCE_ROWS = (("0", "0"), ("0.003 (shipped)", None), ("0.01", "0.01"), ("0.03", "0.03"), ("0.1", "0.1"))
+
+
+def input_disturbance_overrides(value):
+    if value is None:
+        return ()
+    return ("--set", f"control.hinf.translation.input_disturbance={value}",
+            "--set", f"control.hinf.rotation.input_disturbance={value}")
+
+
+def input_disturbance_design_key(value):
+    return "envisat-control.json" if value is None else f"envisat-control-wd-{value}.json"
+
+
+def input_disturbance_campaign_key(value):
+    return f"envisat-hinf-wd-{'shipped' if value is None else value}"
+
+
+def input_disturbance_commands():
+    """Per weight, the design and a 100-run fault-free campaign flying it, checks off (the shipped
+    design is envisat-control.json's)."""
+    designs = tuple(Command(input_disturbance_design_key(v), ("control", "design", ENVISAT)
+                            + input_disturbance_overrides(v) + ("--out", "OUT"), quick=True)
+                    for _, v in INPUT_DISTURBANCE_ROWS if v is not None)
+    campaigns = tuple(Command(input_disturbance_campaign_key(v), ("campaign", ENVISAT, "--runs", "100", "--cases", "none",
+                                                                  "--set", "control.law=hinf") + NO_CHECKS
+                              + input_disturbance_overrides(v) + ("--out", "OUT"), quick=False)
+                      for _, v in INPUT_DISTURBANCE_ROWS)  # 100 runs each: make docs, not make test
+    return designs + campaigns
+
+
+def runs_propellant(runs):
+    return [number(r["propellant_kg"]) for r in runs]
+
+
+def input_disturbance_rows(*outs):
+    """Per weight: gamma of x, the phase margins of x and rx, the grid's least PM over the six loops;
+    the campaign's capture rate and mean propellant."""
+    designs, campaigns = outs[:len(outs) // 2], outs[len(outs) // 2:]
+    rows = []
+    for design, campaign in zip(designs, campaigns):
+        axes = {a["axis"]: a for a in control_loops(design)}
+        runs = campaign_runs(campaign)
+        captured = sum(int(r["capture"]) for r in runs)
+        rows.append([fixed(axes["x"]["gamma"], 3),
+                     f"{fixed(axes['x']['margins']['phase_margin_deg'], 1)} / "
+                     f"{fixed(axes['rx']['margins']['phase_margin_deg'], 1)} deg",
+                     f"{fixed(min(a['robustness']['min_phase_margin_deg'] for a in axes.values()), 1)} deg",
+                     f"{fixed(100.0 * captured / len(runs), 0)} %",
+                     f"{fixed(statistics.fmean(runs_propellant(runs)), 4)} kg"])
+    return rows
+
+
+# The law and the allocation norm against each other: (label, control.law, control.allocation_norm).
+ENVISAT_LAW_ROWS = (("LQR, p = 1", "lqr", "1"), ("H-infinity, p = 1", "hinf", "1"), ("LQR, p = 2", "lqr", "2"),
+                    ("LQR, p = inf", "lqr", "inf"), ("H-infinity, p = 2", "hinf", "2"))
+
+
+def envisat_law_command(law, norm):
+    return Command(f"envisat-{law}-p{norm}", ("campaign", ENVISAT, "--runs", "200", "--cases", "none",
+                                              "--set", f"control.law={law}", "--set", f"control.allocation_norm={norm}")
+                   + NO_CHECKS + ("--out", "OUT"), quick=False)
+
+
+def envisat_law_rows(*outs):
+    """Per campaign: runs captured and with the corridor kept, of all; propellant mean (sd, max) [kg]."""
+    rows = []
+    for out in outs:
+        runs = campaign_runs(out)
+        kg = runs_propellant(runs)
+        n = len(runs)
+        rows.append([f"{sum(int(r['capture']) for r in runs)} / {n}", f"{sum(int(r['corridor_kept']) for r in runs)} / {n}",
+                     f"{fixed(statistics.fmean(kg), 4)} kg ({fixed(statistics.stdev(kg), 4)}, {fixed(max(kg), 4)})"])
+    return rows
+
+
+# --------------------------------------------------------------------------------------------------
 # The registry
 
 T2_PRESET = ("campaign", "scenarios/msr_terminal.yaml", "--preset", "fonod2015-table2")
@@ -1151,6 +1272,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("reach", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-reach", "--out", "OUT"),
             quick=False),
     Command("capture", ("run", "scenarios/comrade_capture.yaml", "--telemetry", "none", "--out", "OUT"), quick=True),
+    Command("stabilise", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-stabilise", "--out", "OUT"),
+            quick=False),
     Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--telemetry",
                              "none", "--out", "OUT"), quick=True),
     Command("msr-thrusters.json", ("thrusters", "scenarios/msr_terminal.yaml", "--json", "OUT"), quick=True),
@@ -1175,7 +1298,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
         "--set", "initial.velocity_hill_mps=[-0.0076,0,-0.0087]"), quick=True),
     # python/fdi_matrix.py (docs/fdi.md): each a matrix of 32 runs, about 3 s on two cores
     matrix_command("fdi-matrix"),
-) + tuple(matrix_command(key, overrides) for _, key, overrides in ISOLATION_ROWS + TUNING_ROWS[1:4])}
+) + tuple(matrix_command(key, overrides) for _, key, overrides in ISOLATION_ROWS + TUNING_ROWS[1:4])
+  + input_disturbance_commands() + tuple(envisat_law_command(law, norm) for _, law, norm in ENVISAT_LAW_ROWS)}
 
 FAULT_HEADER = ("", "stuck open", "stuck closed", "leak 10-30 %", "loss 40-90 %")
 CONTROL_LOOPS = ("x", "y", "z", "rx", "ry", "rz")
@@ -1225,6 +1349,10 @@ TABLES = [
           caption="The gripper's figures per axis, x the approach; over the hold against the pre-grasp pose, "
                   "at the closure against the fixture. The COMRADE 2018 column: Table 2's figures, and from the "
                   "run's end on the table each row names."),
+    Table("servicing-comrade-stabilise", "docs/servicing.md", ("stabilise",), ("", "COMRADE H-inf") + SPIN_CASES,
+          STABILISE_LABELS, comrade_stabilise_rows, words=("+-", "of"),
+          caption="COMRADE H-inf: the paper's Table 8 (one run of its H-infinity stabilisation). Ours: 20 "
+                  "dispersed runs per spin case, each the whole capture scenario."),
     Table("servicing-comrade-reach", "docs/servicing.md", ("reach",), REACH_HEADER, REACH_LABELS, comrade_reach_rows,
           words=("of", "**"),
           caption="Ours: mean +- 1 sigma at the end of the runs (as the paper's), and in brackets the 95th "
@@ -1364,6 +1492,24 @@ TABLES = [
            "twin d1/d1~+e1/e2~ (flown)"),
           ("Table 3 (y' = +0.131 m/s)", "mirrored (y, y' negated)", "no drift (y = y' = 0)"), invsim_drift_rows,
           words=("**",)),
+    Table("control-input-disturbance", "docs/control.md",
+          tuple(input_disturbance_design_key(v) for _, v in INPUT_DISTURBANCE_ROWS)
+          + tuple(input_disturbance_campaign_key(v) for _, v in INPUT_DISTURBANCE_ROWS),
+          ("input_disturbance", "gamma (x)", "PM (x / rx)", "robust min PM", "ENVISAT capture (100 runs)",
+           "propellant, mean"), tuple(r[0] for r in INPUT_DISTURBANCE_ROWS), input_disturbance_rows,
+          words=("deg", "kg"),
+          shown_as="`chaser control design scenarios/comrade_envisat.yaml` and `chaser campaign "
+                   "scenarios/comrade_envisat.yaml --runs 100 --cases none --set control.law=hinf --set "
+                   "fdi.active_check.enabled=false`, each with its row's `--set control.hinf.translation.input_disturbance=...` "
+                   "and `--set control.hinf.rotation.input_disturbance=...` (none for the shipped 0.003; "
+                   "scripts/doc_tables.py, INPUT_DISTURBANCE_ROWS)"),
+    Table("control-envisat-laws", "docs/control.md",
+          tuple(envisat_law_command(law, norm).key for _, law, norm in ENVISAT_LAW_ROWS),
+          ("law, norm", "capture", "corridor", "propellant mean (sd, max)"), tuple(r[0] for r in ENVISAT_LAW_ROWS),
+          envisat_law_rows, words=("kg",),
+          shown_as="five campaigns `chaser campaign scenarios/comrade_envisat.yaml --runs 200 --cases none "
+                   "--set fdi.active_check.enabled=false` with each row's `--set control.law=...` and "
+                   "`--set control.allocation_norm=...` (scripts/doc_tables.py, ENVISAT_LAW_ROWS)"),
 ]
 TABLES_BY_ID = {t.id: t for t in TABLES}
 

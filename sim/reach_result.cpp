@@ -1,5 +1,6 @@
 #include "sim/reach_result.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -80,8 +81,16 @@ void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, 
   }
 }
 
+double peak_brake_load_Nm(const ReachResult& r) {
+  return *std::max_element(r.rigidise.peak_brake_load_Nm.begin(), r.rigidise.peak_brake_load_Nm.end());
+}
+
+bool stabilise_meets_table3(const ReachResult& r) {
+  return r.stabilise.flown && !std::isnan(r.stabilise.below_goal_s) && peak_brake_load_Nm(r) <= r.stabilise.load_limit_Nm;
+}
+
 void add_stabilise_period(StabiliseResult& r, const flight::StabiliseState& state, const Vec3& omega_target_radps,
-                          double chaser_mass_kg, double t_s) {
+                          double chaser_mass_kg, double load_limit_Nm, double t_s) {
   if (!state.started()) return;
   const Vec3 rate_degps = omega_target_radps * (180.0 / std::numbers::pi);
   if (!r.flown) {
@@ -89,6 +98,7 @@ void add_stabilise_period(StabiliseResult& r, const flight::StabiliseState& stat
     r.start_s = state.started_s;
     r.initial_rate_degps = rate_degps.norm();
     r.start_mass_kg = chaser_mass_kg;
+    r.load_limit_Nm = load_limit_Nm;
   }
   if (rate_degps.norm() >= model::kStabilisedRateDegps)
     r.below_goal_s = std::numeric_limits<double>::quiet_NaN();

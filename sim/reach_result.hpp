@@ -87,6 +87,7 @@ struct StabiliseResult {
   Vec3 final_rate_target_degps = Vec3::Zero();  // [deg/s] at the end, the target's axes (Table 8's)
   double start_mass_kg = 0.0;                   // [kg] the chaser's at the start
   double propellant_kg = 0.0;                   // [kg] from the start to the end
+  double load_limit_Nm = 0.0;                   // [N m] the drives' repeated peak (chaser.arm), Table 3's
 };
 
 struct ReachResult {
@@ -130,9 +131,14 @@ void add_grasp_period(GraspResult& g, const flight::GraspState& state, const pla
 // the final ones.
 void add_rigidise_period(RigidiseResult& r, const flight::RigidiseState& state, const model::ArmMeasurements& joints);
 
+// Table 3 met: the rate below kStabilisedRateDegps at the end, every braked joint's peak load within
+// the drives' repeated peak.
+bool stabilise_meets_table3(const ReachResult& r);
+double peak_brake_load_Nm(const ReachResult& r);  // [N m] over the joints
+
 // A control period with the stabilisation flown (state.started()): the target's true rate (its
 // axes) and the chaser's mass at t_s.
 void add_stabilise_period(StabiliseResult& r, const flight::StabiliseState& state, const Vec3& omega_target_radps,
-                          double chaser_mass_kg, double t_s);
+                          double chaser_mass_kg, double load_limit_Nm, double t_s);
 
 }  // namespace chaser::sim

@@ -203,7 +203,7 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   if (recording_ || keep_out_ || stabilising) truth.target = plant::target_rotation(plant_, t_s);
   if (stabilising)
     add_stabilise_period(result_.reach.stabilise, flight_state_.reach.stabilise, truth.target.omega_body_radps,
-                         truth_.mass_kg, t_s);
+                         truth_.mass_kg, scenario_.chaser.arm->torque_repeated_peak_Nm, t_s);
   truth.sample = monitor_sample(t_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_s), truth_, out.reference,
                                 truth.target.q_inertial_from_target);
   truth.sample.synchronised = phase_requirements_[static_cast<std::size_t>(phase_state_.phase)].synchronised;

@@ -200,17 +200,17 @@ nlohmann::json rigidise_json(const RigidiseResult& r) {
 nlohmann::json stabilise_json(const model::Scenario& scenario, const ReachResult& reach) {
   const StabiliseResult& s = reach.stabilise;
   if (!s.flown) return nullptr;
-  const double peak = *std::ranges::max_element(reach.rigidise.peak_brake_load_Nm);
-  const double limit = scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0;
   return nlohmann::json{
+      {"law", model::to_string(scenario.capture->stabilise->law)},
       {"start_s", s.start_s},
       {"initial_rate_deg_s", s.initial_rate_degps},
       {"below_goal_s", finite_or_null(true, s.below_goal_s)},
       {"goal_rate_deg_s", model::kStabilisedRateDegps},
       {"final_rate_target_deg_s", vec_json(s.final_rate_target_degps)},
-      {"peak_joint_load_Nm", peak},
+      {"peak_joint_load_Nm", peak_brake_load_Nm(reach)},
+      {"load_limit_Nm", s.load_limit_Nm},
       {"propellant_kg", s.propellant_kg},
-      {"table3_met", !std::isnan(s.below_goal_s) && peak <= limit},
+      {"table3_met", stabilise_meets_table3(reach)},
   };
 }
 
@@ -307,16 +307,14 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
   }
   std::string stabilisation;
   if (const StabiliseResult& st = reach.stabilise; st.flown) {
-    const double load = *std::ranges::max_element(reach.rigidise.peak_brake_load_Nm);
-    const double limit = scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0;
     stabilisation = fmt::format(
-        "  stabilisation: from {:.1f} s at {:.2f} deg/s; {}; at the end {:.3f}, {:.3f}, {:.3f} deg/s (target axes); "
+        "  stabilisation ({} law): from {:.1f} s at {:.2f} deg/s; {}; at the end {:.3f}, {:.3f}, {:.3f} deg/s (target axes); "
         "peak braked joint load {:.1f} N m (limit {:.0f}); {:.2f} kg of propellant: COMRADE Table 3 {}\n",
-        st.start_s, st.initial_rate_degps,
+        model::to_string(scenario.capture->stabilise->law), st.start_s, st.initial_rate_degps,
         std::isnan(st.below_goal_s) ? fmt::format("not below {} deg/s at the end", model::kStabilisedRateDegps)
                                     : fmt::format("below {} deg/s from {:.1f} s", model::kStabilisedRateDegps, st.below_goal_s),
-        st.final_rate_target_degps.x(), st.final_rate_target_degps.y(), st.final_rate_target_degps.z(), load, limit,
-        st.propellant_kg, !std::isnan(st.below_goal_s) && load <= limit ? "met" : "NOT met");
+        st.final_rate_target_degps.x(), st.final_rate_target_degps.y(), st.final_rate_target_degps.z(),
+        peak_brake_load_Nm(reach), st.load_limit_Nm, st.propellant_kg, stabilise_meets_table3(reach) ? "met" : "NOT met");
   }
   return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation + stabilisation;
 }

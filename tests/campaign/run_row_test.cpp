@@ -95,7 +95,7 @@ TEST_P(RunRowSets, EveryFieldReadsBackAsItsColumnKind) {
 TEST(RunRow, TheReachSetAddsTheReachFiguresAfterTheStandardColumns) {
   const std::string standard = runs_header(RunColumnSet::kStandard), reach = runs_header(RunColumnSet::kReach);
   ASSERT_EQ(reach.substr(0, standard.size() + 1), standard + ",");
-  EXPECT_EQ(run_columns(RunColumnSet::kReach).size(), run_columns(RunColumnSet::kStandard).size() + 8 * 3 + 3 + 2);
+  EXPECT_EQ(run_columns(RunColumnSet::kReach).size(), run_columns(RunColumnSet::kStandard).size() + 8 * 3 + 3 + 2 + 7);
   EXPECT_FALSE(run_column_set_of(standard + ",extra").has_value());
 
   RunRecord r = error_record(RunSetup{});
@@ -115,6 +115,19 @@ TEST(RunRow, TheReachSetAddsTheReachFiguresAfterTheStandardColumns) {
   r.reach.grasp_table2_met = true;
   EXPECT_EQ(column(r, "grasp_captured_s", RunColumnSet::kReach), "2880.25");
   EXPECT_EQ(column(r, "grasp_table2_met", RunColumnSet::kReach), "1");
+  EXPECT_EQ(column(r, "stabilise_below_goal_s", RunColumnSet::kReach), "nan");
+  EXPECT_EQ(column(r, "stabilise_final_rate_y_deg_s", RunColumnSet::kReach), "nan");
+  EXPECT_EQ(column(r, "stabilise_table3_met", RunColumnSet::kReach), "0");
+  r.reach.stabilise_below_goal_s = 241.5;
+  r.reach.stabilise_final_rate_deg_s = Vec3(0.001, -0.25, 0.003);
+  r.reach.stabilise_peak_load_Nm = 91.5;
+  r.reach.stabilise_propellant_kg = 3.25;
+  r.reach.stabilise_table3_met = true;
+  EXPECT_EQ(column(r, "stabilise_below_goal_s", RunColumnSet::kReach), "241.5");
+  EXPECT_EQ(column(r, "stabilise_final_rate_y_deg_s", RunColumnSet::kReach), "-0.25");
+  EXPECT_EQ(column(r, "stabilise_peak_load_Nm", RunColumnSet::kReach), "91.5");
+  EXPECT_EQ(column(r, "stabilise_propellant_kg", RunColumnSet::kReach), "3.25");
+  EXPECT_EQ(column(r, "stabilise_table3_met", RunColumnSet::kReach), "1");
 }
 
 // split_fields: plain fields, empty ones kept; a field in double quotes (optimize.csv's candidate

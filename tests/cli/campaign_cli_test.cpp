@@ -57,7 +57,7 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--shard x", "--shard");
   expect_bad(out + "--threads 0", "--threads");
   expect_bad(out + "--preset nope",
-             "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach)");
+             "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach, comrade-stabilise)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
@@ -128,6 +128,34 @@ TEST(CampaignCli, ComradeReachWritesALawFolderPerControllerAndTheTables) {
       chaser("campaign scenarios/comrade_capture.yaml --preset comrade-reach --shard 0/2 --out " + dir.string());
   EXPECT_EQ(shard.exit_code, 2);
   EXPECT_NE(shard.output.find("leave out --mpi, --shard, --cases and --also"), std::string::npos) << shard.output;
+  fs::remove_all(dir);
+}
+
+// --preset comrade-stabilise: one campaign per spin case of a scenario with capture.stabilise (here
+// one run each, the stabilisation cut to 25 s of a 20 s reference), stabilise.md and stabilise.csv
+// beside them, each row with the stabilisation's columns; refused on a scenario without the section.
+TEST(CampaignCli, ComradeStabiliseWritesASpinCaseFolderPerCaseAndTable8) {
+  const fs::path dir = chaser::testing::scratch_path("chaser_stabilise_cli");
+  fs::remove_all(dir);
+  const std::string preset = "campaign scenarios/comrade_capture.yaml --preset comrade-stabilise --runs 1 --threads 2 "
+                             "--set duration_s=2920 --set campaign.horizon_after_onset_s=1420 "
+                             "--set capture.stabilise.duration_s=20 --out " + dir.string();
+  const CommandResult done = chaser(preset);
+  ASSERT_EQ(done.exit_code, 0) << done.output;
+  for (const char* spin_case : {"S1", "S2", "S3"}) {
+    const std::string runs = read_file(dir / spin_case / "runs.csv");
+    EXPECT_NE(runs.find(",stabilise_final_rate_x_deg_s,"), std::string::npos) << spin_case;
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;
+  }
+  const std::string table = read_file(dir / "stabilise.md");
+  EXPECT_NE(table.find("| figure | Table 3 | COMRADE H-inf | S1 | S2 | S3 |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| runs flown of runs | | | 1 of 1 | 1 of 1 | 1 of 1 |"), std::string::npos) << table;
+  EXPECT_NE(read_file(dir / "stabilise.csv").find("\nS2,stabilise_peak_load_Nm,1,"), std::string::npos);
+  const CommandResult sync =
+      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-stabilise --out " + dir.string());
+  EXPECT_EQ(sync.exit_code, 2);
+  EXPECT_NE(sync.output.find("--preset comrade-stabilise: scenarios/comrade_sync.yaml has no capture.stabilise section"),
+            std::string::npos) << sync.output;
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,157 @@
+#include "campaign/stabilise_tables.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "campaign/csv.hpp"
+#include "campaign/proportion_text.hpp"
+#include "model/arm.hpp"
+#include "model/capture.hpp"
+
+namespace chaser::campaign {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// COMRADE 2018 Table 8: its H-infinity stabilisation's angular rate [deg/s] per axis (one value each).
+constexpr std::array<double, 3> kPaperRateDegps = {-0.023, 0.006, 0.013};
+// [N m] the joints' repeated peak torque: COMRADE 2018's, the default arm's.
+const double kRepeatedPeakTorqueNm = model::ArmParams{}.torque_repeated_peak_Nm;
+
+std::string number(double v, const char* format) { return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : "-"; }
+
+std::string mean_sd(const FigureStats& s, const char* format) {
+  if (s.n == 0) return "-";
+  return fmt::format("{} +- {}", number(s.mean, format), number(s.sd, format));
+}
+
+std::string p95_verdict(const FigureStats& s, double limit, const char* format) {
+  if (s.n == 0) return "-";
+  return number(s.p95, format) + (s.p95 < limit ? " (met)" : " (**not met**)");
+}
+
+}  // namespace
+
+std::optional<StabiliseColumn> read_stabilise_column(const std::string& name, const std::string& runs_csv,
+                                                     std::string& error) {
+  std::ifstream in(runs_csv);
+  std::string header_text;
+  if (!in || !std::getline(in, header_text)) {
+    error = fmt::format("{}: cannot be read", runs_csv);
+    return std::nullopt;
+  }
+  const std::vector<std::string_view> header = split_fields(header_text);
+  bool ok = true;
+  auto index = [&](const std::string& column) {
+    const int i = column_index(header, column);
+    if (i < 0 && ok) {
+      error = fmt::format("{}: no column {} (not a campaign of a scenario with a capture section?)", runs_csv, column);
+      ok = false;
+    }
+    return i;
+  };
+  const int status = index("status"), below = index("stabilise_below_goal_s"), load = index("stabilise_peak_load_Nm"),
+            propellant = index("stabilise_propellant_kg"), met = index("stabilise_table3_met");
+  std::array<int, 3> rate_col{};
+  for (int a = 0; a < 3; ++a) rate_col[static_cast<std::size_t>(a)] = index(fmt::format("stabilise_final_rate_{}_deg_s", "xyz"[a]));
+  if (!ok) return std::nullopt;
+
+  StabiliseColumn c;
+  c.name = name;
+  std::array<std::vector<double>, 3> rates;
+  std::vector<double> norms, belows, loads, propellants;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string_view> f = split_fields(line);
+    if (f.size() != header.size()) {
+      error = fmt::format("{}: row {} has {} fields, the header {}", runs_csv, c.runs + 1, f.size(), header.size());
+      return std::nullopt;
+    }
+    auto value = [&](int col) { return parse_number(f[static_cast<std::size_t>(col)]).value_or(kNaN); };
+    ++c.runs;
+    ++c.table3_met.runs;
+    const double peak = value(load);
+    if (f[static_cast<std::size_t>(status)] != "ok" || !std::isfinite(peak)) continue;  // not flown
+    ++c.flown;
+    c.table3_met.events += f[static_cast<std::size_t>(met)] == "1";
+    double norm2 = 0.0;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double w = value(rate_col[a]);
+      rates[a].push_back(w);
+      norm2 += w * w;
+    }
+    norms.push_back(std::sqrt(norm2));
+    if (const double t = value(below); std::isfinite(t)) belows.push_back(t);
+    loads.push_back(peak);
+    propellants.push_back(value(propellant));
+  }
+  for (std::size_t a = 0; a < 3; ++a) c.final_rate_deg_s[a] = figure_stats(rates[a]);
+  c.final_rate_norm_deg_s = figure_stats(norms);
+  c.below_goal_s = figure_stats(belows);
+  c.peak_load_Nm = figure_stats(loads);
+  c.propellant_kg = figure_stats(propellants);
+  return c;
+}
+
+std::string stabilise_markdown(const std::vector<StabiliseColumn>& columns) {
+  std::string out = fmt::format(
+      "# COMRADE 2018 Table 8: ENVISAT's detumbling, the stabilisation\n\n"
+      "Mean +- 1 sigma at the end of the runs whose stabilisation flew, as the paper gives its rates\n"
+      "(one run's, its H-infinity controller), and the 95th percentile (nearest rank) against COMRADE\n"
+      "Table 3: the composite's rate below {} deg/s, the braked joints within the drives' repeated peak\n"
+      "(docs/servicing.md).\n\n"
+      "| figure | Table 3 | COMRADE H-inf |",
+      model::kStabilisedRateDegps);
+  for (const StabiliseColumn& c : columns) out += fmt::format(" {} |", c.name);
+  out += "\n|---|---|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|";
+  out += '\n';
+  for (std::size_t a = 0; a < 3; ++a) {
+    out += fmt::format("| angular rate {} at the end [deg/s], mean +- 1 sigma | | {:.3f} |", "XYZ"[a], kPaperRateDegps[a]);
+    for (const StabiliseColumn& c : columns) out += fmt::format(" {} |", mean_sd(c.final_rate_deg_s[a], "{:.4f}"));
+    out += '\n';
+  }
+  out += fmt::format("| angular rate at the end, magnitude [deg/s], 95th percentile | < {:g} | |", model::kStabilisedRateDegps);
+  for (const StabiliseColumn& c : columns)
+    out += fmt::format(" {} |", p95_verdict(c.final_rate_norm_deg_s, model::kStabilisedRateDegps, "{:.4f}"));
+  out += fmt::format("\n| below {:g} deg/s for good, after the brakes [s], mean (95th percentile) | | |",
+                     model::kStabilisedRateDegps);
+  for (const StabiliseColumn& c : columns)
+    out += c.below_goal_s.n == 0 ? std::string(" - |")
+                                 : fmt::format(" {} ({}) |", number(c.below_goal_s.mean, "{:.1f}"), number(c.below_goal_s.p95, "{:.1f}"));
+  out += fmt::format("\n| braked joints' peak load [N m], mean; 95th percentile | < {:g} | |", kRepeatedPeakTorqueNm);
+  for (const StabiliseColumn& c : columns)
+    out += c.peak_load_Nm.n == 0 ? std::string(" - |")
+                                 : fmt::format(" {}; {} |", number(c.peak_load_Nm.mean, "{:.1f}"),
+                                               p95_verdict(c.peak_load_Nm, kRepeatedPeakTorqueNm, "{:.1f}"));
+  out += "\n| propellant [kg], mean +- 1 sigma | | |";
+  for (const StabiliseColumn& c : columns) out += fmt::format(" {} |", mean_sd(c.propellant_kg, "{:.2f}"));
+  out += "\n| Table 3 met (runs) | | |";
+  for (const StabiliseColumn& c : columns) out += fmt::format(" {} |", proportion_cell(c.table3_met));
+  out += "\n| runs flown of runs | | |";
+  for (const StabiliseColumn& c : columns) out += fmt::format(" {} of {} |", c.flown, c.runs);
+  out += "\n\nEach case's runs are in its folder (runs.csv, summary.md).\n";
+  return out;
+}
+
+std::string stabilise_csv(const std::vector<StabiliseColumn>& columns) {
+  std::string out = "case,figure,n,mean,sd,min,p95,max,limit,paper\n";
+  auto row = [&](const StabiliseColumn& c, const std::string& figure, const FigureStats& s, double limit, double paper) {
+    out += fmt::format("{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.name, figure, s.n, s.mean,
+                       s.sd, s.min, s.p95, s.max, limit, paper);
+  };
+  for (const StabiliseColumn& c : columns) {
+    for (std::size_t a = 0; a < 3; ++a)
+      row(c, fmt::format("stabilise_final_rate_{}_deg_s", "xyz"[a]), c.final_rate_deg_s[a], kNaN, kPaperRateDegps[a]);
+    row(c, "stabilise_final_rate_norm_deg_s", c.final_rate_norm_deg_s, model::kStabilisedRateDegps, kNaN);
+    row(c, "stabilise_below_goal_s", c.below_goal_s, kNaN, kNaN);
+    row(c, "stabilise_peak_load_Nm", c.peak_load_Nm, kRepeatedPeakTorqueNm, kNaN);
+    row(c, "stabilise_propellant_kg", c.propellant_kg, kNaN, kNaN);
+  }
+  return out;
+}
+
+}  // namespace chaser::campaign
