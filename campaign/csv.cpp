@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include <fmt/format.h>
 
 namespace chaser::campaign {
 
@@ -50,6 +53,40 @@ int column_index(const std::vector<std::string_view>& header, std::string_view n
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i] == name) return static_cast<int>(i);
   return -1;
+}
+
+std::optional<std::vector<int>> CsvTable::columns(const std::vector<std::string>& names, const std::string& path,
+                                                  std::string_view why_missing, std::string& error) const {
+  std::vector<int> out;
+  for (const std::string& name : names) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) {
+      error = fmt::format("{}: no column {} {}", path, name, why_missing);
+      return std::nullopt;
+    }
+    out.push_back(static_cast<int>(it - header.begin()));
+  }
+  return out;
+}
+
+std::optional<CsvTable> read_csv_table(const std::string& path, std::string& error) {
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line)) {
+    error = fmt::format("{}: cannot be read", path);
+    return std::nullopt;
+  }
+  CsvTable t;
+  for (const std::string_view f : split_fields(line)) t.header.emplace_back(f);
+  while (std::getline(in, line)) {
+    const std::vector<std::string_view> f = split_fields(line);
+    if (f.size() != t.header.size()) {
+      error = fmt::format("{}: row {} has {} fields, the header {}", path, t.rows.size() + 1, f.size(), t.header.size());
+      return std::nullopt;
+    }
+    t.rows.emplace_back(f.begin(), f.end());
+  }
+  return t;
 }
 
 }  // namespace chaser::campaign

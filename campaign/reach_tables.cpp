@@ -87,60 +87,45 @@ std::string p95_verdict(double p95, double limit, double scale, const char* form
 }  // namespace
 
 std::optional<ReachColumn> read_reach_column(const std::string& law, const std::string& runs_csv, std::string& error) {
-  std::ifstream in(runs_csv);
-  std::string header_text;
-  if (!in || !std::getline(in, header_text)) {
-    error = fmt::format("{}: cannot be read", runs_csv);
-    return std::nullopt;
-  }
-  const std::vector<std::string_view> header = split_fields(header_text);
-  bool ok = true;
-  auto index = [&](const std::string& name) {
-    const int i = column_index(header, name);
-    if (i < 0 && ok) {
-      error = fmt::format("{}: no column {} (not a campaign of a scenario with a capture section?)", runs_csv, name);
-      ok = false;
-    }
-    return i;
-  };
-  const int status = index("status"), met = index("reach_table2_met"), torque = index("reach_peak_joint_torque_Nm"),
-            clearance = index("reach_min_tool_clearance_m");
-  std::array<int, 4> chaser_col{};
-  for (std::size_t k = 0; k < kChaserRows.size(); ++k) chaser_col[k] = index(kChaserRows[k].column);
-  std::array<std::array<int, 3>, kGripperFigures> final_col{}, max_col{};
+  const std::optional<CsvTable> table = read_csv_table(runs_csv, error);
+  if (!table) return std::nullopt;
+  // Columns: status, the verdict, the torque, the clearance, the chaser's four, then per gripper
+  // figure and axis the final and the over-the-hold value.
+  std::vector<std::string> names = {"status", "reach_table2_met", "reach_peak_joint_torque_Nm", "reach_min_tool_clearance_m"};
+  for (const ChaserRow& row : kChaserRows) names.emplace_back(row.column);
   for (int f = 0; f < kGripperFigures; ++f)
     for (int a = 0; a < 3; ++a) {
-      final_col[static_cast<std::size_t>(f)][static_cast<std::size_t>(a)] = index(reach_column_name(false, f, a));
-      max_col[static_cast<std::size_t>(f)][static_cast<std::size_t>(a)] = index(reach_column_name(true, f, a));
+      names.push_back(reach_column_name(false, f, a));
+      names.push_back(reach_column_name(true, f, a));
     }
-  if (!ok) return std::nullopt;
+  const auto col = table->columns(names, runs_csv, "(not a campaign of a scenario with a capture section?)", error);
+  if (!col) return std::nullopt;
+  constexpr std::size_t kStatus = 0, kMet = 1, kTorque = 2, kClearance = 3, kChaser = 4, kGripper = 8;
+  const auto gripper = [](std::size_t figure, std::size_t axis, bool over_hold) {
+    return kGripper + 2 * (3 * figure + axis) + (over_hold ? 1 : 0);
+  };
 
   ReachColumn c;
   c.law = law;
   std::array<std::vector<double>, 4> chaser;
   std::array<std::array<std::vector<double>, 3>, kGripperFigures> finals, maxima;
   std::vector<double> torques, clearances;
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::vector<std::string_view> f = split_fields(line);
-    if (f.size() != header.size()) {
-      error = fmt::format("{}: row {} has {} fields, the header {}", runs_csv, c.runs + 1, f.size(), header.size());
-      return std::nullopt;
-    }
-    auto value = [&](int col) { return parse_number(f[static_cast<std::size_t>(col)]).value_or(kNaN); };
+  for (const std::vector<std::string>& f : table->rows) {
+    auto field = [&](std::size_t k) -> const std::string& { return f[static_cast<std::size_t>((*col)[k])]; };
+    auto value = [&](std::size_t k) { return parse_number(field(k)).value_or(kNaN); };
     ++c.runs;
     ++c.table2_met.runs;
-    if (f[static_cast<std::size_t>(status)] != "ok" || !std::isfinite(value(max_col[0][0]))) continue;
+    if (field(kStatus) != "ok" || !std::isfinite(value(gripper(0, 0, true)))) continue;
     ++c.flown;
-    c.table2_met.events += f[static_cast<std::size_t>(met)] == "1";
-    for (std::size_t k = 0; k < chaser.size(); ++k) chaser[k].push_back(value(chaser_col[k]));
+    c.table2_met.events += field(kMet) == "1";
+    for (std::size_t k = 0; k < chaser.size(); ++k) chaser[k].push_back(value(kChaser + k));
     for (std::size_t g = 0; g < finals.size(); ++g)
       for (std::size_t a = 0; a < 3; ++a) {
-        finals[g][a].push_back(value(final_col[g][a]));
-        maxima[g][a].push_back(value(max_col[g][a]));
+        finals[g][a].push_back(value(gripper(g, a, false)));
+        maxima[g][a].push_back(value(gripper(g, a, true)));
       }
-    torques.push_back(value(torque));
-    clearances.push_back(value(clearance));
+    torques.push_back(value(kTorque));
+    clearances.push_back(value(kClearance));
   }
   for (std::size_t k = 0; k < chaser.size(); ++k) c.chaser[k] = figure_stats(chaser[k]);
   for (std::size_t g = 0; g < finals.size(); ++g)

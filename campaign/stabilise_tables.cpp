@@ -1,7 +1,6 @@
 #include "campaign/stabilise_tables.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include <fmt/format.h>
@@ -37,56 +36,38 @@ std::string p95_verdict(const FigureStats& s, double limit, const char* format) 
 
 std::optional<StabiliseColumn> read_stabilise_column(const std::string& name, const std::string& runs_csv,
                                                      std::string& error) {
-  std::ifstream in(runs_csv);
-  std::string header_text;
-  if (!in || !std::getline(in, header_text)) {
-    error = fmt::format("{}: cannot be read", runs_csv);
-    return std::nullopt;
-  }
-  const std::vector<std::string_view> header = split_fields(header_text);
-  bool ok = true;
-  auto index = [&](const std::string& column) {
-    const int i = column_index(header, column);
-    if (i < 0 && ok) {
-      error = fmt::format("{}: no column {} (not a campaign of a scenario with a capture section?)", runs_csv, column);
-      ok = false;
-    }
-    return i;
-  };
-  const int status = index("status"), below = index("stabilise_below_goal_s"), load = index("stabilise_peak_load_Nm"),
-            propellant = index("stabilise_propellant_kg"), met = index("stabilise_table3_met");
-  std::array<int, 3> rate_col{};
-  for (int a = 0; a < 3; ++a) rate_col[static_cast<std::size_t>(a)] = index(fmt::format("stabilise_final_rate_{}_deg_s", "xyz"[a]));
-  if (!ok) return std::nullopt;
+  const std::optional<CsvTable> table = read_csv_table(runs_csv, error);
+  if (!table) return std::nullopt;
+  const auto col = table->columns({"status", "stabilise_below_goal_s", "stabilise_peak_load_Nm", "stabilise_propellant_kg",
+                                   "stabilise_table3_met", "stabilise_final_rate_x_deg_s", "stabilise_final_rate_y_deg_s",
+                                   "stabilise_final_rate_z_deg_s"},
+                                  runs_csv, "(not a campaign of a scenario with a capture section?)", error);
+  if (!col) return std::nullopt;
+  enum { kStatus, kBelow, kLoad, kPropellant, kMet, kRateX };
 
   StabiliseColumn c;
   c.name = name;
   std::array<std::vector<double>, 3> rates;
   std::vector<double> norms, belows, loads, propellants;
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::vector<std::string_view> f = split_fields(line);
-    if (f.size() != header.size()) {
-      error = fmt::format("{}: row {} has {} fields, the header {}", runs_csv, c.runs + 1, f.size(), header.size());
-      return std::nullopt;
-    }
-    auto value = [&](int col) { return parse_number(f[static_cast<std::size_t>(col)]).value_or(kNaN); };
+  for (const std::vector<std::string>& f : table->rows) {
+    auto field = [&](int k) -> const std::string& { return f[static_cast<std::size_t>((*col)[static_cast<std::size_t>(k)])]; };
+    auto value = [&](int k) { return parse_number(field(k)).value_or(kNaN); };
     ++c.runs;
     ++c.table3_met.runs;
-    const double peak = value(load);
-    if (f[static_cast<std::size_t>(status)] != "ok" || !std::isfinite(peak)) continue;  // not flown
+    const double peak = value(kLoad);
+    if (field(kStatus) != "ok" || !std::isfinite(peak)) continue;  // not flown
     ++c.flown;
-    c.table3_met.events += f[static_cast<std::size_t>(met)] == "1";
+    c.table3_met.events += field(kMet) == "1";
     double norm2 = 0.0;
-    for (std::size_t a = 0; a < 3; ++a) {
-      const double w = value(rate_col[a]);
-      rates[a].push_back(w);
+    for (int a = 0; a < 3; ++a) {
+      const double w = value(kRateX + a);
+      rates[static_cast<std::size_t>(a)].push_back(w);
       norm2 += w * w;
     }
     norms.push_back(std::sqrt(norm2));
-    if (const double t = value(below); std::isfinite(t)) belows.push_back(t);
+    if (const double t = value(kBelow); std::isfinite(t)) belows.push_back(t);
     loads.push_back(peak);
-    propellants.push_back(value(propellant));
+    propellants.push_back(value(kPropellant));
   }
   for (std::size_t a = 0; a < 3; ++a) c.final_rate_deg_s[a] = figure_stats(rates[a]);
   c.final_rate_norm_deg_s = figure_stats(norms);

@@ -66,26 +66,13 @@ FigureStats figure_stats(std::vector<double> values) {
 
 std::optional<Table5Column> read_table5_column(const std::string& name, const std::string& runs_csv,
                                                std::string& error) {
-  std::ifstream in(runs_csv);
-  std::string line;
-  if (!in || !std::getline(in, line)) {
-    error = fmt::format("{}: cannot be read", runs_csv);
-    return std::nullopt;
-  }
-  const std::string header_text = line;
-  const std::vector<std::string_view> header = split_fields(header_text);
-  const std::array<const char*, 9> names = {"status", "capture", "final_position_error_m", "final_speed_mps",
-                                            "final_attitude_error_deg", "final_rate_error_deg_s",
-                                            "min_clearance_unsynchronised_m", "min_clearance_synchronised_m",
-                                            "propellant_kg"};
-  std::array<int, 9> col{};
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    col[k] = column_index(header, names[k]);
-    if (col[k] < 0) {
-      error = fmt::format("{}: no column {} (a runs.csv of an older Chaser?)", runs_csv, names[k]);
-      return std::nullopt;
-    }
-  }
+  const std::optional<CsvTable> table = read_csv_table(runs_csv, error);
+  if (!table) return std::nullopt;
+  const auto col = table->columns({"status", "capture", "final_position_error_m", "final_speed_mps",
+                                   "final_attitude_error_deg", "final_rate_error_deg_s", "min_clearance_unsynchronised_m",
+                                   "min_clearance_synchronised_m", "propellant_kg"},
+                                  runs_csv, "(a runs.csv of an older Chaser?)", error);
+  if (!col) return std::nullopt;
   Table5Column c;
   c.name = name;
   std::array<std::vector<double>, 4> errors;
@@ -94,18 +81,14 @@ std::optional<Table5Column> read_table5_column(const std::string& name, const st
   auto least = [](double& so_far, double v) {
     if (std::isfinite(v) && !(so_far <= v)) so_far = v;
   };
-  while (std::getline(in, line)) {
-    const std::vector<std::string_view> f = split_fields(line);
-    if (f.size() != header.size()) {
-      error = fmt::format("{}: row {} has {} fields, the header {}", runs_csv, c.runs + 1, f.size(), header.size());
-      return std::nullopt;
-    }
+  for (const std::vector<std::string>& f : table->rows) {
+    auto field = [&](int k) -> const std::string& { return f[static_cast<std::size_t>((*col)[static_cast<std::size_t>(k)])]; };
     ++c.runs;
     ++c.captured.runs;
-    if (f[static_cast<std::size_t>(col[0])] != "ok") continue;  // a diverged or failed run: not captured
+    if (field(0) != "ok") continue;  // a diverged or failed run: not captured
     ++c.flown;
-    c.captured.events += f[static_cast<std::size_t>(col[1])] == "1";
-    auto value = [&](int k) { return parse_number(f[static_cast<std::size_t>(col[static_cast<std::size_t>(k)])]).value_or(kNaN); };
+    c.captured.events += field(1) == "1";
+    auto value = [&](int k) { return parse_number(field(k)).value_or(kNaN); };
     for (int k = 0; k < 4; ++k) errors[static_cast<std::size_t>(k)].push_back(value(2 + k));
     least(c.least_clearance_unsynchronised_m, value(6));
     least(c.least_clearance_synchronised_m, value(7));
