@@ -32,11 +32,7 @@ std::array<AxisDesignSpec, 3> composite_specs(const model::Scenario& scenario) {
     spec.name = kCompositeAxisNames[i];
     spec.authority = weakest;  // [N m]: Phi'' = T
     spec.delay_s = loop_delay_s(scenario);
-    spec.bandwidth_radps = w.bandwidth_radps;
-    spec.peak_sensitivity = w.peak_sensitivity;
-    spec.low_frequency_gain = w.low_frequency_gain;
-    spec.error_scale = w.error_scale;
-    spec.input_disturbance = w.input_disturbance;
+    set_weights(spec, w);
   }
   return specs;
 }

@@ -15,6 +15,14 @@ double loop_delay_s(const model::Scenario& scenario) {
   return 0.5 * scenario.control_period_s + 0.5 * scenario.thrusters.delay_max_s + 0.5 * scenario.thrusters.rise_time_s;
 }
 
+void set_weights(AxisDesignSpec& spec, const model::HinfLoopWeights& w) {
+  spec.bandwidth_radps = w.bandwidth_radps;
+  spec.peak_sensitivity = w.peak_sensitivity;
+  spec.low_frequency_gain = w.low_frequency_gain;
+  spec.error_scale = w.error_scale;
+  spec.input_disturbance = w.input_disturbance;
+}
+
 std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario) {
   if (!scenario.control.hinf)
     throw std::invalid_argument("the scenario has no control.hinf section: nothing to design (docs/scenario.md)");
@@ -36,11 +44,7 @@ std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario) {
     spec.name = kAxisNames[static_cast<std::size_t>(k)];
     spec.authority = translation ? pure / scenario.chaser.mass_kg : pure / scenario.chaser.inertia_kgm2(k - 3, k - 3);
     spec.delay_s = delay_s;
-    spec.bandwidth_radps = w.bandwidth_radps;
-    spec.peak_sensitivity = w.peak_sensitivity;
-    spec.low_frequency_gain = w.low_frequency_gain;
-    spec.error_scale = w.error_scale;
-    spec.input_disturbance = w.input_disturbance;
+    set_weights(spec, w);
   }
   return specs;
 }

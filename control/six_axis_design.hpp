@@ -30,6 +30,9 @@ inline constexpr std::array<const char*, 6> kAxisNames = {"x", "y", "z", "rx", "
 // The loop delay of the header: T / 2 + delay_max / 2 + rise_time / 2.
 double loop_delay_s(const model::Scenario& scenario);
 
+// A loop family's weights into a spec: omega_B, M, A, the error scale, the input disturbance.
+void set_weights(AxisDesignSpec& spec, const model::HinfLoopWeights& weights);
+
 // The six specs (x, y, z, rx, ry, rz). Throws std::invalid_argument if the scenario has no
 // control.hinf section or an axis has no authority (the set cannot push along it).
 std::array<AxisDesignSpec, 6> six_axis_specs(const model::Scenario& scenario);
