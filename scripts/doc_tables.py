@@ -1235,6 +1235,23 @@ def envisat_law_rows(*outs):
     return rows
 
 
+# The translation filter's process noise in COMRADE's synchronisation (S1): the header's values.
+PROCESS_NOISE = ("1e-5", "1e-4", "3e-4", "1e-3", "2e-3", "4e-3", "1e-2")
+
+
+def process_noise_command(noise):
+    return Command(f"sync-process-noise-{noise}", ("campaign", "scenarios/comrade_sync.yaml", "--cases", "none", "--runs",
+                                                   "none=20", "--set", f"navigation.position_process_noise_mps2={noise}",
+                                                   "--out", "OUT"), quick=False)  # 20 runs: make docs
+
+
+def process_noise_rows(*outs):
+    """Per process noise (a column): runs captured; the final position error's mean [m]."""
+    runs = [campaign_runs(out) for out in outs]
+    return [[str(sum(int(r["capture"]) for r in c)) for c in runs],
+            [fixed(statistics.fmean(number(r["final_position_error_m"]) for r in c), 3) for c in runs]]
+
+
 # --------------------------------------------------------------------------------------------------
 # The registry
 
@@ -1299,7 +1316,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     # python/fdi_matrix.py (docs/fdi.md): each a matrix of 32 runs, about 3 s on two cores
     matrix_command("fdi-matrix"),
 ) + tuple(matrix_command(key, overrides) for _, key, overrides in ISOLATION_ROWS + TUNING_ROWS[1:4])
-  + input_disturbance_commands() + tuple(envisat_law_command(law, norm) for _, law, norm in ENVISAT_LAW_ROWS)}
+  + input_disturbance_commands() + tuple(envisat_law_command(law, norm) for _, law, norm in ENVISAT_LAW_ROWS)
+  + tuple(process_noise_command(noise) for noise in PROCESS_NOISE)}
 
 FAULT_HEADER = ("", "stuck open", "stuck closed", "leak 10-30 %", "loss 40-90 %")
 CONTROL_LOOPS = ("x", "y", "z", "rx", "ry", "rz")
@@ -1510,6 +1528,12 @@ TABLES = [
           shown_as="five campaigns `chaser campaign scenarios/comrade_envisat.yaml --runs 200 --cases none "
                    "--set fdi.active_check.enabled=false` with each row's `--set control.law=...` and "
                    "`--set control.allocation_norm=...` (scripts/doc_tables.py, ENVISAT_LAW_ROWS)"),
+    Table("gnc-sync-process-noise", "docs/gnc.md", tuple(process_noise_command(n).key for n in PROCESS_NOISE),
+          ("process noise [m/s^2]",) + PROCESS_NOISE, ("captured (of 20)", "position error, mean [m]"),
+          process_noise_rows,
+          shown_as="seven campaigns `chaser campaign scenarios/comrade_sync.yaml --cases none --runs none=20` with "
+                   "each column's `--set navigation.position_process_noise_mps2=...` (scripts/doc_tables.py, "
+                   "PROCESS_NOISE)"),
 ]
 TABLES_BY_ID = {t.id: t for t in TABLES}
 
@@ -1579,7 +1603,7 @@ def find_blocks(lines, page):
         begin, end = BEGIN.fullmatch(line), END.fullmatch(line)
         if begin:
             if open_block:
-                problems.append(f"{where}: a begin marker inside block {open_block.id} (no end marker before it)")
+                problems.append(f"{where}: block {open_block.id} has no end marker (a begin marker follows it here)")
             open_block = Block(begin["id"], begin["command"], i, -1)
         elif end:
             if not open_block:
