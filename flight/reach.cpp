@@ -130,7 +130,18 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.approach_duration_s = c.approach_duration_s;
   p.grasp = make_grasp(c);
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
-  if (c.rigidise) p.rigidise = RigidiseLawParams{.rigidise = *c.rigidise, .torque_limit_Nm = p.torque_limit_Nm};
+  if (c.rigidise) {
+    // The H-infinity law's chain: the servicer holding the catalogue target where the grasp holds it;
+    // its loops' delay half the joints' period and the drives' torque loop.
+    const double joint_period_s = 1.0 / c.joint_rate_hz;
+    p.rigidise = RigidiseLawParams{
+        .rigidise = *c.rigidise,
+        .torque_limit_Nm = p.torque_limit_Nm,
+        .held = arm::with_payload(p.servicer, arm::grasped_payload(p.servicer, s.target.body->mass_kg, s.target.body->inertia_kgm2,
+                                                                   p.grasp_point_target_m, p.q_target_from_tool)),
+        .joint_period_s = joint_period_s,
+        .delay_s = 0.5 * joint_period_s + 1.0 / s.chaser.arm->torque_loop_bandwidth_radps};
+  }
   if (c.rigidise && c.stabilise)  // the target as the catalogue has it, where the grasp holds it
     p.stabilise = StabiliseLawParams{.stabilise = *c.stabilise,
                                      .target = {.mass_kg = s.target.body->mass_kg,

@@ -45,6 +45,12 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
       c.rigidise.emplace();
       read_section(m, "rigidise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
         model::RigidiseParams& r = *c.rigidise;
+        std::string law;
+        if (g.has("law") && g.text("law", law)) {
+          if (law == "compliance") r.law = model::RigidiseLaw::kCompliance;
+          else if (law == "hinf") r.law = model::RigidiseLaw::kHinf;
+          else g.diagnostics().add(g.path_of("law"), fmt::format("must be one of compliance, hinf (got '{}')", law));
+        }
         if (g.has("stiffness_Nm_per_rad")) g.number("stiffness_Nm_per_rad", Range::closed(0.0, 1e6), r.stiffness_Nm_per_rad);
         if (g.has("damping_Nms_per_rad")) g.number("damping_Nms_per_rad", Range::left_open(0.0, 1e7), r.damping_Nms_per_rad);
         std::string saturation;
@@ -56,6 +62,7 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
         if (g.has("linear_limit_Nm")) g.number("linear_limit_Nm", Range::left_open(0.0, 1e5), r.linear_limit_Nm);
         if (g.has("brake_rate_degps")) g.number("brake_rate_degps", Range::left_open(0.0, 10.0), r.brake_rate_degps);
         if (g.has("brake_dwell_s")) g.number("brake_dwell_s", Range::closed(0.0, 1e3), r.brake_dwell_s);
+        if (g.has("hinf")) read_section(g, "hinf", [&](MapReader& h) { read_hinf_loop(h, "error_scale_rad", r.hinf); });
       });
     }
     if (m.has("stabilise")) {
@@ -116,6 +123,14 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
     d.add("capture.rigidise.linear_limit_Nm",
           fmt::format("must be below chaser.arm.torque_repeated_peak_Nm {} (got {})",
                       format_number(s.chaser.arm->torque_repeated_peak_Nm), format_number(c.rigidise->linear_limit_Nm)));
+  // The rigidisation's H-infinity loops: omega_B a decade below the drives' torque loop, whose lag
+  // the design takes as a delay (control/joint_design.hpp).
+  if (c.rigidise && c.rigidise->law == model::RigidiseLaw::kHinf && s.chaser.arm && d.clean("capture.rigidise.hinf") &&
+      !(c.rigidise->hinf.bandwidth_radps <= 0.1 * s.chaser.arm->torque_loop_bandwidth_radps))
+    d.add("capture.rigidise.hinf.bandwidth_radps",
+          fmt::format("must be at most a tenth of chaser.arm.torque_loop_bandwidth_radps, {} rad/s (got {})",
+                      format_number(0.1 * s.chaser.arm->torque_loop_bandwidth_radps),
+                      format_number(c.rigidise->hinf.bandwidth_radps)));
   // The stabilisation's H-infinity loops: omega_B below the Nyquist frequency of the control period.
   if (c.stabilise && c.stabilise->law == model::StabiliseLaw::kHinf && d.clean("capture.stabilise.hinf") &&
       d.clean("control_period_s") && !(c.stabilise->hinf.bandwidth_radps < 0.5 * std::numbers::pi / s.control_period_s))

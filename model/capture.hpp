@@ -17,6 +17,11 @@ enum class CaptureLaw { kCompliance, kHinf };
 // plain clip at M.
 enum class RigidiseSaturation { kLinear, kClip };
 
+// The rigidisation's joint law (COMRADE 2018 Table 7's two columns): the paper's saturated PD
+// (its "nonlinear compliant" rigidisation, sec. 6.2.2), or H-infinity loops on the joints' angles
+// behind the free-floating composite's joint inertia (flight/rigidise.hpp).
+enum class RigidiseLaw { kCompliance, kHinf };
+
 // The rigidisation (COMRADE 2018, sec. 4 and 6.2.2; the optional section capture.rigidise): once
 // the capture is confirmed the thrusters are inhibited and the arm alone damps the relative motion,
 // u = -s(K_d q' + K_p (q - q_d)) on every joint, q_d the joints' angles at the capture's
@@ -30,12 +35,16 @@ enum class RigidiseSaturation { kLinear, kClip };
 // At K_d = 10,000 N m s/rad that mode outran the 1 kHz joint loop and the torque loop's lag (the
 // roll joints limit-cycled at the drive's 176 N m after an H-infinity capture); 2,000 damps it.
 struct RigidiseParams {
+  RigidiseLaw law = RigidiseLaw::kCompliance;
   double stiffness_Nm_per_rad = 1000.0;     // [N m/rad] K_p, every joint
   double damping_Nms_per_rad = 2000.0;     // [N m s/rad] K_d, every joint (bounded: the comment above)
   RigidiseSaturation saturation = RigidiseSaturation::kLinear;
   double linear_limit_Nm = 88.0;            // [N m] L: the law's torque passes unchanged up to it (< M)
   double brake_rate_degps = 0.01;           // [deg/s] every joint's rate below this ...
   double brake_dwell_s = 1.0;               // [s] ... for this long: the brakes engage
+  // kHinf: each joint's loop weights (error_scale in rad: an angle error this large may ask for the
+  // joint's whole authority, the drive's repeated peak over its free-floating inertia).
+  HinfLoopWeights hinf{0.3, 2.0, 1e-3, 0.01, 0.01};
 };
 
 // The stabilisation (COMRADE 2018, sec. 4 and 6.1.4; the optional section capture.stabilise, after
@@ -111,6 +120,7 @@ inline constexpr double kStabilisedRateDegps = 0.5;  // [deg/s]
 
 inline const char* to_string(CaptureLaw law) { return law == CaptureLaw::kHinf ? "hinf" : "compliance"; }
 inline const char* to_string(StabiliseLaw law) { return law == StabiliseLaw::kHinf ? "hinf" : "momentum"; }
+inline const char* to_string(RigidiseLaw law) { return law == RigidiseLaw::kHinf ? "hinf" : "compliance"; }
 inline const char* to_string(RigidiseSaturation s) { return s == RigidiseSaturation::kClip ? "clip" : "linear"; }
 
 }  // namespace chaser::model

@@ -178,7 +178,7 @@ nlohmann::json grasp_json(const GraspResult& g) {
 }
 
 // The rigidisation (sim/reach_result.hpp): null where it was not flown.
-nlohmann::json rigidise_json(const RigidiseResult& r) {
+nlohmann::json rigidise_json(const model::Scenario& scenario, const RigidiseResult& r) {
   if (!r.flown) return nullptr;
   std::array<double, model::kArmJoints> angle_deg{}, rate_deg_s{};
   for (std::size_t j = 0; j < angle_deg.size(); ++j) {
@@ -186,6 +186,7 @@ nlohmann::json rigidise_json(const RigidiseResult& r) {
     rate_deg_s[j] = kRadToDeg * r.final_rate_radps[j];
   }
   return nlohmann::json{
+      {"law", model::to_string(scenario.capture->rigidise->law)},
       {"start_s", r.start_s},
       {"brakes_s", finite_or_null(true, r.brakes_s)},
       {"peak_joint_torque_Nm", r.peak_torque_Nm},
@@ -247,7 +248,7 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"min_tool_clearance_at_s", finite_or_null(true, reach.min_tool_clearance_at_s)},
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
       {"grasp", grasp_json(reach.grasp)},
-      {"rigidisation", rigidise_json(reach.rigidise)},
+      {"rigidisation", rigidise_json(scenario, reach.rigidise)},
       {"stabilisation", stabilise_json(scenario, reach)},
   };
 }
@@ -300,9 +301,9 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
       rate = std::max(rate, std::abs(rg.final_rate_radps[j]));
     }
     rigidisation = fmt::format(
-        "  rigidisation: from {:.1f} s, thrusters inhibited; {}; peak joint torque {:.1f} N m; at the end the joints "
-        "within {:.3f} deg of where it held them, rates within {:.4f} deg/s\n",
-        rg.start_s, std::isnan(rg.brakes_s) ? std::string("brakes not engaged") : fmt::format("brakes engaged at {:.1f} s", rg.brakes_s),
+        "  rigidisation ({} law): from {:.1f} s, thrusters inhibited; {}; peak joint torque {:.1f} N m; at the end the "
+        "joints within {:.3f} deg of where it held them, rates within {:.4f} deg/s\n",
+        model::to_string(scenario.capture->rigidise->law), rg.start_s, std::isnan(rg.brakes_s) ? std::string("brakes not engaged") : fmt::format("brakes engaged at {:.1f} s", rg.brakes_s),
         peak_rg, kRadToDeg * angle, kRadToDeg * rate);
   }
   std::string stabilisation;

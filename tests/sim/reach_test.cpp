@@ -154,10 +154,12 @@ TEST(Reach, WithoutTheArmCameraTheTargetsEstimateLeavesTheGripperOutside) {
 // 7.1, 6.7 mm), the joints below their limit (21.9 N m); its loops' near-integral action hunts
 // against the joints' friction (a roll rate of 2.9 deg/s, docs/servicing.md).
 TEST(Reach, TheHinfLawFliesTheSameReach) {
-  // The stabilisation's reference cut to 100 s (300 in the scenario) and the run to 3,100 s: the
-  // H-infinity loops detumble along a reference three times as steep, in a third of the time.
-  const RunResult r = run_scenario(capture_scenario(
-      {"capture.law=hinf", "capture.stabilise.law=hinf", "capture.stabilise.duration_s=100", "duration_s=3100"}));
+  // H-infinity throughout: the reach, the rigidisation and the stabilisation, whose reference is cut
+  // to 100 s (300 in the scenario) and the run to 3,100 s: its loops detumble along a reference
+  // three times as steep, in a third of the time.
+  const RunResult r = run_scenario(capture_scenario({"capture.law=hinf", "capture.rigidise.law=hinf",
+                                                     "capture.stabilise.law=hinf", "capture.stabilise.duration_s=100",
+                                                     "duration_s=3100"}));
   ASSERT_TRUE(r.reach.flown);
   for (int k = 0; k < 3; ++k) EXPECT_LT(r.reach.max_gripper_error_m(k), kTable2GripperErrorM[k]) << k;
   EXPECT_LT(largest(r.reach.peak_joint_torque_Nm), 30.0);
@@ -165,10 +167,11 @@ TEST(Reach, TheHinfLawFliesTheSameReach) {
   // Table 2 is not met there (measured).
   EXPECT_STREQ(r.reach.grasp.outcome, "captured");
   EXPECT_FALSE(grasp_meets_table2(r.reach.grasp));
-  // Its wrist's roll at the capture is the rigidisation's hardest start: the brakes engage all the
-  // same (measured 10.5 s after the capture, the torques at most 27.8 N m).
-  EXPECT_LT(r.reach.rigidise.brakes_s, r.reach.rigidise.start_s + 20.0);
-  EXPECT_LT(largest(r.reach.rigidise.peak_torque_Nm), 60.0);
+  // Its wrist's roll at the capture is the rigidisation's hardest start: the H-infinity
+  // rigidisation's loops (flight/rigidise.hpp) brake all the same (measured 63 s after the capture,
+  // the torques at most 12.8 N m; the saturated PD brakes in 10.5 s at 27.8 N m from there).
+  EXPECT_LT(r.reach.rigidise.brakes_s, r.reach.rigidise.start_s + 90.0);
+  EXPECT_LT(largest(r.reach.rigidise.peak_torque_Nm), 30.0);
   // And COMRADE's H-infinity stabilisation (capture.stabilise.law hinf) from there detumbles the
   // composite as the momentum law does (measured below).
   EXPECT_FALSE(std::isnan(r.reach.stabilise.below_goal_s));
