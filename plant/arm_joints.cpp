@@ -1,6 +1,7 @@
 #include "plant/arm_joints.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 
 #include <mujoco/mujoco.h>
@@ -56,6 +57,12 @@ std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant) {
   const MultibodyMotionParams* p = multibody_params(plant);
   if (p == nullptr) return {};
   return brake_loads_Nm(*p, std::get<MultibodyMotionState>(plant.state.motion));
+}
+
+void set_closed_chain_joint_rates(Plant& plant, const std::array<double, model::kArmJoints>& rates_radps) {
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) throw std::logic_error("set_closed_chain_joint_rates: the arm is not awake");
+  set_closed_chain_joint_rates(*p, std::get<MultibodyMotionState>(plant.state.motion), rates_radps);
 }
 
 void command_arm(Plant& plant, const model::ArmCommand& command) {

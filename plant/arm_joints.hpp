@@ -31,6 +31,11 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
 // for judging the loads against the drives' limits, never a sensor.
 std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant);
 
+// With the grasp engaged on the multibody plant: the joints' rates set, the hub and the target
+// moving so that the weld holds and the scene's momentum is kept (plant/multibody_motion.hpp's
+// set_closed_chain_joint_rates). Throws std::logic_error otherwise.
+void set_closed_chain_joint_rates(Plant& plant, const std::array<double, model::kArmJoints>& rates_radps);
+
 // The joint torques held from now to the next command, each clamped at the drive's hard limit
 // (chaser.arm.torque_momentary_Nm): the inner torque loop cannot give more.
 void command_arm(Plant& plant, const model::ArmCommand& command);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "core/rotation.hpp"
 #include "plant/earth/gravity.hpp"
 #include "plant/gravity_gradient.hpp"
 #include "model/hub_mass_properties.hpp"
@@ -385,6 +387,55 @@ void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& sta
   state.jaws_locked = true;
   state.world.mutable_model().opt.disableflags |= mjDSBL_CONTACT;
   command_jaws(params, state, true);
+}
+
+void set_closed_chain_joint_rates(const MultibodyMotionParams& params, MultibodyMotionState& state,
+                                  const std::array<double, model::kArmJoints>& rates_radps) {
+  if (!grasp_engaged(params, state)) throw std::logic_error("set_closed_chain_joint_rates: the grasp is not engaged");
+  state.world.forward();  // the bodies' poses and inertias at the state now
+  const mjModel& m = state.world.model();
+  mjData& d = state.world.data();
+  const int nv = m.nv;
+  using Rows = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>;
+  Rows jacp(3, nv), jacr(3, nv), jacp_t(3, nv), jacr_t(3, nv);
+  // The momentum's map, p = A v: each body's m v_com and, about the world's origin, I w + r x m v_com.
+  Eigen::MatrixXd momentum = Eigen::MatrixXd::Zero(6, nv);
+  for (int b = 1; b < m.nbody; ++b) {
+    const Vec3 com(d.xipos + 3 * b);
+    mj_jac(&m, &d, jacp.data(), jacr.data(), com.data(), b);
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> world_from_principal(d.ximat + 9 * b);
+    const Mat3 inertia = world_from_principal * Vec3(m.body_inertia + 3 * b).asDiagonal() * world_from_principal.transpose();
+    momentum.topRows(3) += m.body_mass[b] * jacp;
+    momentum.bottomRows(3) += inertia * jacr + m.body_mass[b] * skew(com) * jacp;
+  }
+  // The weld: link 7's (the gripper's) motion at the target's CoM less the target's.
+  const int gripper = params.index.first_link + model::kArmJoints, target = params.index.target;
+  const Vec3 target_com(d.xipos + 3 * target);
+  mj_jac(&m, &d, jacp.data(), jacr.data(), target_com.data(), gripper);
+  mj_jac(&m, &d, jacp_t.data(), jacr_t.data(), target_com.data(), target);
+  Eigen::MatrixXd weld(6, nv);
+  weld << jacp - jacp_t, jacr - jacr_t;
+
+  Eigen::Map<Eigen::VectorXd> qvel(d.qvel, nv);
+  const Eigen::VectorXd momentum_before = momentum * qvel;
+  for (int j = 0; j < model::kArmJoints; ++j) qvel(params.index.joint1_dof + j) = rates_radps[static_cast<std::size_t>(j)];
+  // Unknowns: the hub's 6 and the target's 6 velocities; the rest as set.
+  std::array<int, 12> unknown{};
+  for (int k = 0; k < 6; ++k) unknown[static_cast<std::size_t>(k)] = params.index.hub_dof + k;
+  for (int k = 0; k < 6; ++k) unknown[static_cast<std::size_t>(6 + k)] = params.index.target_dof + k;
+  Eigen::VectorXd known = qvel;
+  for (const int i : unknown) known(i) = 0.0;
+  Eigen::Matrix<double, 12, 12> lhs;
+  Eigen::Matrix<double, 12, 1> rhs;
+  for (std::size_t c = 0; c < unknown.size(); ++c) {
+    lhs.block<6, 1>(0, static_cast<int>(c)) = weld.col(unknown[c]);
+    lhs.block<6, 1>(6, static_cast<int>(c)) = momentum.col(unknown[c]);
+  }
+  rhs.head<6>() = -weld * known;
+  rhs.tail<6>() = momentum_before - momentum * known;
+  const Eigen::Matrix<double, 12, 1> x = lhs.fullPivLu().solve(rhs);
+  for (std::size_t c = 0; c < unknown.size(); ++c) qvel(unknown[c]) = x(static_cast<int>(c));
+  state.world.forward();
 }
 
 bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state) {

@@ -149,6 +149,15 @@ std::array<double, model::kArmJoints> brake_loads_Nm(const MultibodyMotionParams
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);
 bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state);
 
+// The grasp engaged, the joints' rates set to rates_radps, and the hub's and the target's velocities
+// chosen so that the weld holds (link 7 and the target move as one body) and the scene's linear and
+// angular momentum is what it was: a closed chain's velocities consistent with a start of given joint
+// rates (COMRADE Table 7's rigidisation starts). Seven joints on a chain of six degrees of freedom
+// between hub and target: any rates can be met. The fingers keep theirs. Throws std::logic_error
+// without the grasp engaged.
+void set_closed_chain_joint_rates(const MultibodyMotionParams& params, MultibodyMotionState& state,
+                                  const std::array<double, model::kArmJoints>& rates_radps);
+
 // The environment of the period at t_k: the Earth-orbit plant's (plant/earth_orbit_motion.hpp).
 void begin_period(const MultibodyMotionParams& params, MultibodyMotionState& state, const RigidState& chaser,
                   TimeNs t_k, TimeNs period_ns);

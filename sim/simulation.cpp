@@ -133,6 +133,49 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   step_phases(phase_params_, phase_state_, 0, 0, 0);
 }
 
+Simulation::Simulation(const Simulation& from, std::int64_t periods)
+    : wall_start_(std::chrono::steady_clock::now()),
+      scenario_(from.scenario_),
+      flight_params_(from.flight_params_),
+      options_([&from] {  // no telemetry
+        RunOptions options;
+        options.record_glr_per_second = from.options_.record_glr_per_second;
+        return options;
+      }()),
+      orbit_(from.orbit_),
+      period_ns_(from.period_ns_),
+      periods_(periods),
+      shape_(from.shape_),
+      phase_params_(from.phase_params_),
+      phase_state_(from.phase_state_),
+      schedule_(from.schedule_),
+      schedule_state_(from.schedule_state_),
+      block_names_(from.block_names_),
+      blocks_(from.blocks_),
+      plant_(from.plant_),
+      flight_state_(from.flight_state_),
+      last_reference_(from.last_reference_),
+      keep_out_(from.keep_out_),
+      reach_goal_target_m_(from.reach_goal_target_m_),
+      q_target_from_reach_goal_(from.q_target_from_reach_goal_),
+      joint_period_ns_(from.joint_period_ns_),
+      arm_awake_(from.arm_awake_),
+      phase_requirements_(from.phase_requirements_),
+      phase_configuration_(from.phase_configuration_),
+      result_(from.result_),
+      loop_start_(std::chrono::steady_clock::now()),
+      k_(from.k_),
+      done_(from.done_ || from.k_ >= periods) {
+  if (from.begun_) throw std::invalid_argument("Simulation fork: in the middle of a period");
+  if (periods > from.periods_)
+    throw std::invalid_argument(fmt::format("Simulation fork: {} periods, past the run's {}", periods, from.periods_));
+}
+
+void Simulation::set_closed_chain_joint_rates(const std::array<double, model::kArmJoints>& rates_radps) {
+  if (begun_) throw std::logic_error("set_closed_chain_joint_rates: in the middle of a period");
+  plant::set_closed_chain_joint_rates(plant_, rates_radps);
+}
+
 Simulation::~Simulation() = default;
 
 const model::SensorMeasurements& Simulation::begin_period() {

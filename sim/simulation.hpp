@@ -33,6 +33,13 @@ class Simulation {
   // run_scenario (a telemetry file and/or rows in memory, GLR maxima per second). Both references
   // must outlive the simulation.
   Simulation(const model::Scenario& truth, const flight::FlightParams& flight_params, const RunOptions& options);
+  // A fork: `from` as it stands between two periods (plant, flight software, phases, the results so
+  // far), to be flown on by itself to period `periods` (at most from's), recording no telemetry. A
+  // study flies many from one state this way (campaign/rigidise_study.hpp), from several threads at
+  // once: the fork only reads `from`. The blocks added by add_block are copied as they are (what
+  // they capture, they share). Throws std::invalid_argument in the middle of a period or past
+  // from's periods.
+  Simulation(const Simulation& from, std::int64_t periods);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -59,6 +66,10 @@ class Simulation {
   // for a rate sim::validate refuses or more than kMaxScheduledBlocks - 1 blocks.
   using Block = std::function<void(TimeNs t, const plant::Plant& plant)>;
   void add_block(const std::string& name, const Rate& rate, Block block);
+
+  // The capture's closed chain started anew: the joints' rates set, hub and target moving with them
+  // as the weld and the momentum demand (plant/arm_joints.hpp). Between periods, the grasp engaged.
+  void set_closed_chain_joint_rates(const std::array<double, model::kArmJoints>& rates_radps);
 
   // A fault added to the plant's from now on (its onset is not before t_s(), checked by the caller).
   void add_fault(const model::FaultParams& fault) { plant::inject_fault(plant_, fault); }
