@@ -13,6 +13,8 @@
 #include "campaign/mpi_runner.hpp"
 #include "campaign/progress.hpp"
 #include "campaign/reach_tables.hpp"
+#include "campaign/csv.hpp"
+#include "campaign/rigidise_study.hpp"
 #include "campaign/stabilise_tables.hpp"
 #include "campaign/run_one.hpp"
 #include "campaign/run_row.hpp"
@@ -31,6 +33,10 @@ constexpr const char* kPresetTable2 = "fonod2015-table2";
 constexpr const char* kPresetTable5 = "comrade-table5";
 constexpr const char* kPresetReach = "comrade-reach";
 constexpr const char* kPresetStabilise = "comrade-stabilise";
+constexpr const char* kPresetRigidise = "comrade-rigidise";
+// COMRADE Table 7's columns: 100 runs each from one capture (~3 s each: two columns in ~5 minutes
+// on 2 cores).
+constexpr int kRigidiseRuns = 100;
 // COMRADE 2018, sec. 7: the paper's Tables 5 and 6 are means of 100 runs; we fly 100 per spin case
 // (synchronisation) and per combined controller (reach).
 constexpr const char* kTable5Runs = "none=100";
@@ -98,8 +104,8 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
-      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {})\n", args.preset,
-                               kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise);
+      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {}, {})\n", args.preset,
+                               kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise, kPresetRigidise);
       return std::nullopt;
     }
     overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
@@ -398,6 +404,57 @@ int rerun_one(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// --preset comrade-rigidise (docs/servicing.md, "The rigidisation from COMRADE Table 7's starts"):
+// per rigidisation law, the capture flown once and --runs runs (100) from it, each from a drawn
+// start of the joints' rates for 120 s, brakes off (campaign/rigidise_study.hpp); each column's runs
+// in <law>/runs.csv, Table 7 in rigidise.md and rigidise.csv. Not resumable: it reruns in minutes.
+int comrade_rigidise(const CampaignArgs& args) {
+  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty() || args.resume ||
+      args.keep_telemetry > 0) {
+    std::cerr << "chaser campaign: --preset comrade-rigidise flies its runs from one capture in one process: "
+                 "leave out --mpi, --shard, --cases, --also, --resume and --keep-telemetry\n";
+    return kExitBadInput;
+  }
+  int runs = kRigidiseRuns;
+  if (!args.runs.empty()) {
+    const auto parsed = campaign::parse_integer(args.runs);
+    if (!parsed || *parsed < 1 || *parsed > 100000) {
+      std::cerr << fmt::format("chaser campaign: --runs: --preset comrade-rigidise takes a count of runs per law in "
+                               "[1, 100000] (got '{}')\n",
+                               args.runs);
+      return kExitBadInput;
+    }
+    runs = static_cast<int>(*parsed);
+  }
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  const model::Scenario& s = *loaded->scenario;
+  if (!s.capture || !s.capture->rigidise || !s.target.body) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-rigidise: {} has no capture.rigidise section: use "
+                             "scenarios/comrade_capture.yaml\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
+  const std::filesystem::path out(args.out_dir);
+  std::vector<campaign::RigidiseColumn> columns;
+  for (const campaign::RigidiseColumnSpec& spec : campaign::comrade_table7_columns(runs)) {
+    std::cerr << fmt::format("comrade-rigidise: capture.rigidise.law {}: the capture, then {} runs of {:g} s\n", spec.name,
+                             spec.runs, spec.duration_s);
+    try {
+      columns.push_back(campaign::run_rigidise_column(s, spec, args.threads.value_or(default_worker_threads())));
+    } catch (const std::exception& e) {
+      std::cerr << fmt::format("chaser campaign: --preset comrade-rigidise: {}\n", e.what());
+      return kExitFailure;
+    }
+    std::filesystem::create_directories(out / spec.name);
+    std::ofstream(out / spec.name / "runs.csv") << campaign::rigidise_runs_csv(columns.back());
+  }
+  std::ofstream(out / "rigidise.md") << campaign::rigidise_markdown(columns);
+  std::ofstream(out / "rigidise.csv") << campaign::rigidise_csv(columns);
+  std::cout << fmt::format("comrade-rigidise: wrote {}/rigidise.md and rigidise.csv\n", args.out_dir);
+  return kExitOk;
+}
+
 }  // namespace
 
 int campaign_command(const CampaignArgs& args) {
@@ -407,7 +464,7 @@ int campaign_command(const CampaignArgs& args) {
   }
   if (args.rerun) {
     if (args.preset == kPresetTable5 || args.preset == kPresetReach || args.preset == kPresetStabilise ||
-        !args.also.empty()) {
+        args.preset == kPresetRigidise || !args.also.empty()) {
       std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise or --also (rerun one "
                    "case's folder: its scenario with --set target.body.spin_case=S1|S2|S3 or capture.law=hinf|"
                    "compliance, and --cases none)\n";
@@ -418,6 +475,7 @@ int campaign_command(const CampaignArgs& args) {
   if (args.preset == kPresetTable5) return comrade_table5(args);
   if (args.preset == kPresetReach) return comrade_reach(args);
   if (args.preset == kPresetStabilise) return comrade_stabilise(args);
+  if (args.preset == kPresetRigidise) return comrade_rigidise(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";
     return kExitBadInput;

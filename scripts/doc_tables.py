@@ -463,6 +463,46 @@ STABILISE_LABELS = ("rate X at the end [deg/s], mean +- 1 sigma", "rate Y", "rat
                     "braked joints' peak load [N m]: mean (95th percentile; Table 3: < 176)",
                     "propellant [kg], mean +- 1 sigma", "runs meeting Table 3")
 
+RIGIDISE_LAWS = ("hinf", "compliance")
+RIGIDISE_PAPER = {  # COMRADE 2018 Table 7
+    "hinf": ("1.618 +- 0.809", "0.016 +- 0.013", "0.14 +- 0.20 (largest 3.02)",
+             "3.87, 12.23, 3.42, 29.80, 12.28, 8.11, 28.10", "120"),
+    "compliance": ("2.710 +- 1.169", "0.078 +- 0.030", "1 on every joint",
+                   "10.94, 12.89, 19.83, 50.10, 17.16, 23.32, 41.45", "120"),
+}
+RIGIDISE_LABELS = ("joints from q_d at the end, magnitude, mean +- 1 sigma over joints and runs [deg]",
+                   "joint rates at the end, magnitude [deg/s]", "initial joint rates [deg/s]",
+                   "peak torque, joints 1-7, largest over the runs [N m]", "simulated time [s]", "runs flown")
+
+
+def rigidise_csv(out):
+    """rigidise.csv of the comrade-rigidise preset as {(column, figure): value}."""
+    with open(Path(out) / "rigidise.csv", newline="") as f:
+        return {(r["column"], r["figure"]): number(r["value"]) for r in csv.DictReader(f)}
+
+
+def comrade_rigidise_rows(out):
+    """COMRADE Table 7 beside the paper's, per rigidisation law (campaign/rigidise_study.hpp)."""
+    t = rigidise_csv(out)
+
+    def ours(law):
+        # Every joint at one magnitude, its sign drawn: the largest magnitude is that one.
+        start = (f"+-{t[(law, 'start_largest_deg_s')]:g} on every joint" if t[(law, "start_every_joint")]
+                 else f"{t[(law, 'start_mean_deg_s')]:.2f} +- {t[(law, 'start_sd_deg_s')]:.2f} "
+                      f"(largest {t[(law, 'start_largest_deg_s')]:.2f})")
+        return (f"{t[(law, 'angle_mean_deg')]:.3f} +- {t[(law, 'angle_sd_deg')]:.3f}",
+                f"{t[(law, 'rate_mean_deg_s')]:.4f} +- {t[(law, 'rate_sd_deg_s')]:.4f}", start,
+                ", ".join(f"{t[(law, f'peak_torque_{j}_Nm')]:.2f}" for j in range(1, 8)),
+                f"{t[(law, 'duration_s')]:g}", f"{int(t[(law, 'runs_flown')])} of {int(t[(law, 'runs')])}")
+
+    columns = [ours(law) for law in RIGIDISE_LAWS]
+    rows = []
+    for i in range(len(RIGIDISE_LABELS)):
+        paper = [RIGIDISE_PAPER[law][i] if i < len(RIGIDISE_PAPER[law]) else "" for law in RIGIDISE_LAWS]
+        rows.append([paper[0], columns[0][i], paper[1], columns[1][i]])
+    return rows
+
+
 REACH_HEADER = ("", "Table 2", "COMRADE H-inf", "H-infinity", "COMRADE compliant", "compliance")
 REACH_LABELS = (("chaser position [m]", "chaser velocity [m/s]", "chaser pointing [deg]", "chaser rate [deg/s]")
                 + tuple(f"gripper {name} {axis} [{unit}]"
@@ -1291,6 +1331,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("capture", ("run", "scenarios/comrade_capture.yaml", "--telemetry", "none", "--out", "OUT"), quick=True),
     Command("stabilise", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-stabilise", "--out", "OUT"),
             quick=False),
+    Command("rigidise", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-rigidise", "--out", "OUT"),
+            quick=False),
     Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--set",
                              "capture.rigidise.law=hinf", "--set", "capture.stabilise.law=hinf", "--telemetry",
                              "none", "--out", "OUT"), quick=True),
@@ -1372,6 +1414,12 @@ TABLES = [
           STABILISE_LABELS, comrade_stabilise_rows, words=("+-", "of"),
           caption="COMRADE H-inf: the paper's Table 8 (one run of its H-infinity stabilisation). Ours: 20 "
                   "dispersed runs per spin case, each the whole capture scenario."),
+    Table("servicing-comrade-rigidise", "docs/servicing.md", ("rigidise",),
+          ("", "COMRADE H-inf", "H-infinity", "COMRADE compliant", "compliance"), RIGIDISE_LABELS,
+          comrade_rigidise_rows, words=("+-", "of", "on", "every", "joint", "largest"),
+          caption="Ours: 100 runs per law from one capture, each 120 s unbraked from its drawn start: each "
+                  "joint's rate from N(0.14, 0.20^2) deg/s (H-infinity) or 1 deg/s on every joint with its "
+                  "sign drawn (compliance)."),
     Table("servicing-comrade-reach", "docs/servicing.md", ("reach",), REACH_HEADER, REACH_LABELS, comrade_reach_rows,
           words=("of", "**"),
           caption="Ours: mean +- 1 sigma at the end of the runs (as the paper's), and in brackets the 95th "

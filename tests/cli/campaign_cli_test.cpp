@@ -57,7 +57,8 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--shard x", "--shard");
   expect_bad(out + "--threads 0", "--threads");
   expect_bad(out + "--preset nope",
-             "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach, comrade-stabilise)");
+             "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach, comrade-stabilise, "
+             "comrade-rigidise)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
@@ -128,6 +129,37 @@ TEST(CampaignCli, ComradeReachWritesALawFolderPerControllerAndTheTables) {
       chaser("campaign scenarios/comrade_capture.yaml --preset comrade-reach --shard 0/2 --out " + dir.string());
   EXPECT_EQ(shard.exit_code, 2);
   EXPECT_NE(shard.output.find("leave out --mpi, --shard, --cases and --also"), std::string::npos) << shard.output;
+  fs::remove_all(dir);
+}
+
+// --preset comrade-rigidise: per rigidisation law the capture flown once, then the runs from it
+// (here two of 120 s each); rigidise.md with COMRADE Table 7 beside ours, rigidise.csv, each law's
+// runs.csv; refused with a bad count and on a scenario without capture.rigidise.
+TEST(CampaignCli, ComradeRigidiseFliesTable7sStartsFromOneCapturePerLaw) {
+  const fs::path dir = chaser::testing::scratch_path("chaser_rigidise_cli");
+  fs::remove_all(dir);
+  const CommandResult r = chaser("campaign scenarios/comrade_capture.yaml --preset comrade-rigidise --runs 2 --threads 2 "
+                                 "--out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string table = read_file(dir / "rigidise.md");
+  EXPECT_NE(table.find("| figure | COMRADE H-inf | COMRADE compliant | hinf | compliance |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| runs flown of runs | | | 2 of 2 | 2 of 2 |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| +-1 on every joint |"), std::string::npos) << table;
+  for (const char* law : {"hinf", "compliance"}) {
+    const std::string runs = read_file(dir / law / "runs.csv");
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 3) << runs;
+    EXPECT_NE(runs.find("run,start_rate_deg_s_1,"), std::string::npos) << runs;
+  }
+  EXPECT_NE(read_file(dir / "rigidise.csv").find("\ncompliance,runs_flown,2\n"), std::string::npos);
+  const CommandResult zero = chaser("campaign scenarios/comrade_capture.yaml --preset comrade-rigidise --runs 0 --out " +
+                                    dir.string());
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("--runs: --preset comrade-rigidise takes a count of runs per law in [1, 100000] (got '0')"),
+            std::string::npos) << zero.output;
+  const CommandResult sync = chaser("campaign scenarios/comrade_sync.yaml --preset comrade-rigidise --out " + dir.string());
+  EXPECT_EQ(sync.exit_code, 2);
+  EXPECT_NE(sync.output.find("--preset comrade-rigidise: scenarios/comrade_sync.yaml has no capture.rigidise section"),
+            std::string::npos) << sync.output;
   fs::remove_all(dir);
 }
 
