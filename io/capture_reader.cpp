@@ -16,12 +16,8 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
   read_section(r, "capture", [&](MapReader& m) {
     model::CaptureParams& c = *out;
     m.number("start_s", Range::closed(0.0, kMaxDurationS), c.start_s);
-    std::string law;
-    if (m.has("law") && m.text("law", law)) {
-      if (law == "compliance") c.law = model::CaptureLaw::kCompliance;
-      else if (law == "hinf") c.law = model::CaptureLaw::kHinf;
-      else m.diagnostics().add(m.path_of("law"), fmt::format("must be one of compliance, hinf (got '{}')", law));
-    }
+    if (m.has("law"))
+      m.choice("law", {{"compliance", model::CaptureLaw::kCompliance}, {"hinf", model::CaptureLaw::kHinf}}, c.law);
     m.number("path_duration_s", Range::left_open(0.0, 1e4), c.path_duration_s);
     m.number("standoff_m", Range::closed(0.0, 2.0), c.standoff_m);
     m.number("joint_rate_hz", Range::closed(1.0, 1e4), c.joint_rate_hz);
@@ -45,20 +41,13 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
       c.rigidise.emplace();
       read_section(m, "rigidise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
         model::RigidiseParams& r = *c.rigidise;
-        std::string law;
-        if (g.has("law") && g.text("law", law)) {
-          if (law == "compliance") r.law = model::RigidiseLaw::kCompliance;
-          else if (law == "hinf") r.law = model::RigidiseLaw::kHinf;
-          else g.diagnostics().add(g.path_of("law"), fmt::format("must be one of compliance, hinf (got '{}')", law));
-        }
+        if (g.has("law"))
+          g.choice("law", {{"compliance", model::RigidiseLaw::kCompliance}, {"hinf", model::RigidiseLaw::kHinf}}, r.law);
         if (g.has("stiffness_Nm_per_rad")) g.number("stiffness_Nm_per_rad", Range::closed(0.0, 1e6), r.stiffness_Nm_per_rad);
         if (g.has("damping_Nms_per_rad")) g.number("damping_Nms_per_rad", Range::left_open(0.0, 1e7), r.damping_Nms_per_rad);
-        std::string saturation;
-        if (g.has("saturation") && g.text("saturation", saturation)) {
-          if (saturation == "linear") r.saturation = model::RigidiseSaturation::kLinear;
-          else if (saturation == "clip") r.saturation = model::RigidiseSaturation::kClip;
-          else g.diagnostics().add(g.path_of("saturation"), fmt::format("must be one of linear, clip (got '{}')", saturation));
-        }
+        if (g.has("saturation"))
+          g.choice("saturation",
+                   {{"linear", model::RigidiseSaturation::kLinear}, {"clip", model::RigidiseSaturation::kClip}}, r.saturation);
         if (g.has("linear_limit_Nm")) g.number("linear_limit_Nm", Range::left_open(0.0, 1e5), r.linear_limit_Nm);
         if (g.has("brake_rate_degps")) g.number("brake_rate_degps", Range::left_open(0.0, 10.0), r.brake_rate_degps);
         if (g.has("brake_dwell_s")) g.number("brake_dwell_s", Range::closed(0.0, 1e3), r.brake_dwell_s);
@@ -70,12 +59,8 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
       read_section(m, "stabilise", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
         model::StabiliseParams& st = *c.stabilise;
         if (g.has("duration_s")) g.number("duration_s", Range::closed(1.0, 1e5), st.duration_s);
-        std::string law;
-        if (g.has("law") && g.text("law", law)) {
-          if (law == "momentum") st.law = model::StabiliseLaw::kMomentum;
-          else if (law == "hinf") st.law = model::StabiliseLaw::kHinf;
-          else g.diagnostics().add(g.path_of("law"), fmt::format("must be one of momentum, hinf (got '{}')", law));
-        }
+        if (g.has("law"))
+          g.choice("law", {{"momentum", model::StabiliseLaw::kMomentum}, {"hinf", model::StabiliseLaw::kHinf}}, st.law);
         if (g.has("bandwidth_radps")) g.number("bandwidth_radps", Range::closed(1e-3, 10.0), st.bandwidth_radps);
         if (g.has("hinf")) read_section(g, "hinf", [&](MapReader& h) { read_hinf_loop(h, "error_scale_Nms2", st.hinf); });
       });

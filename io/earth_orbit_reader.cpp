@@ -66,14 +66,10 @@ void read_earth_orbit(MapReader& r, model::EarthOrbitParams& out) {
 }
 
 void read_spin_case(MapReader& r, model::SpinCase& out) {
-  std::string text;
-  if (!r.text("spin_case", text)) return;
-  if (text == "given") out = model::SpinCase::given;
-  else if (text == "S1") out = model::SpinCase::s1;
-  else if (text == "S2") out = model::SpinCase::s2;
-  else if (text == "S3") out = model::SpinCase::s3;
-  else
-    r.diagnostics().add(r.path_of("spin_case"), fmt::format("must be one of given, S1, S2, S3 (got '{}')", text));
+  r.choice("spin_case",
+           {{"given", model::SpinCase::given}, {"S1", model::SpinCase::s1}, {"S2", model::SpinCase::s2},
+            {"S3", model::SpinCase::s3}},
+           out);
 }
 
 // target.body.keep_out (optional): 1 to 4 boxes {centre_target_m, half_extents_m}.

@@ -46,23 +46,15 @@ void read_eigenvalues(MapReader& r, std::array<double, 6>& out) {
 }
 
 void read_isolation_method(MapReader& r, model::IsolationMethod& out) {
-  std::string text;
-  if (!r.text("isolation_method", text)) return;
-  if (text == "paper") out = model::IsolationMethod::kPaper;
-  else if (text == "signature") out = model::IsolationMethod::kSignature;
-  else if (text == "deficit") out = model::IsolationMethod::kDeficit;
-  else
-    r.diagnostics().add(r.path_of("isolation_method"),
-                        fmt::format("must be one of paper, signature, deficit (got '{}')", text));
+  r.choice("isolation_method",
+           {{"paper", model::IsolationMethod::kPaper},
+            {"signature", model::IsolationMethod::kSignature},
+            {"deficit", model::IsolationMethod::kDeficit}},
+           out);
 }
 
 void read_recovery(MapReader& r, model::RecoveryPolicy& out) {
-  std::string text;
-  if (!r.text("recovery", text)) return;
-  if (text == "none") out = model::RecoveryPolicy::kNone;
-  else if (text == "switch_group") out = model::RecoveryPolicy::kSwitchGroup;
-  else
-    r.diagnostics().add(r.path_of("recovery"), fmt::format("must be one of none, switch_group (got '{}')", text));
+  r.choice("recovery", {{"none", model::RecoveryPolicy::kNone}, {"switch_group", model::RecoveryPolicy::kSwitchGroup}}, out);
 }
 
 // Window lengths are checked against each other and the control period in validate_scenario.

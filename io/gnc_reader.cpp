@@ -124,23 +124,16 @@ void read_optional_hinf(MapReader& r, std::optional<model::HinfDesignParams>& ou
 
 // control.allocation_norm (optional): 1, 2 or inf (flight/norm_allocation.hpp).
 void read_allocation_norm(MapReader& r, model::AllocationNorm& out) {
-  std::string text;
-  if (!r.has("allocation_norm") || !r.text("allocation_norm", text)) return;
-  if (text == "1") out = model::AllocationNorm::kOne;
-  else if (text == "2") out = model::AllocationNorm::kTwo;
-  else if (text == "inf") out = model::AllocationNorm::kInfinity;
-  else
-    r.diagnostics().add(r.path_of("allocation_norm"), fmt::format("must be one of 1, 2, inf (got '{}')", text));
+  if (!r.has("allocation_norm")) return;
+  r.choice("allocation_norm",
+           {{"1", model::AllocationNorm::kOne}, {"2", model::AllocationNorm::kTwo}, {"inf", model::AllocationNorm::kInfinity}},
+           out);
 }
 
 // control.law (optional): lqr or hinf; hinf flies control.hinf's design, which must be there.
 void read_control_law(MapReader& r, model::ControlParams& out) {
-  std::string text;
-  if (!r.has("law") || !r.text("law", text)) return;
-  if (text == "lqr") out.law = model::ControlLaw::kLqr;
-  else if (text == "hinf") out.law = model::ControlLaw::kHinf;
-  else
-    r.diagnostics().add(r.path_of("law"), fmt::format("must be one of lqr, hinf (got '{}')", text));
+  if (!r.has("law") || !r.choice("law", {{"lqr", model::ControlLaw::kLqr}, {"hinf", model::ControlLaw::kHinf}}, out.law))
+    return;
   if (out.law == model::ControlLaw::kHinf && !out.hinf)
     r.diagnostics().add(r.path_of("law"), "hinf needs a control.hinf section (the loops' weights)");
 }

@@ -6,7 +6,9 @@
 // A MapReader remembers which keys were asked for, so that finish() can report every key in the
 // file that the schema does not know (typos included) and every duplicated key.
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -87,6 +89,10 @@ class MapReader {
   bool count(std::string_view key, std::uint64_t& out);  // non-negative integer
   bool boolean(std::string_view key, bool& out);
   bool text(std::string_view key, std::string& out);     // non-empty scalar
+  // One of named values (an enum's spellings, in the order the error lists them): reports "must be
+  // one of a, b (got 'x')" for any other text and leaves out unchanged.
+  template <class E>
+  bool choice(std::string_view key, std::initializer_list<std::pair<std::string_view, E>> options, E& out);
   bool vec3(std::string_view key, Vec3& out);            // [x, y, z]
   bool vec3(std::string_view key, const Range& element_range, Vec3& out);  // each of x, y, z in range
   // [x, y, z], norm in [kMinDirectionNorm, kMaxDirectionNorm], normalised on load.
@@ -112,6 +118,22 @@ class MapReader {
   bool valid_ = false;
   std::vector<std::string> known_;
 };
+
+template <class E>
+bool MapReader::choice(std::string_view key, std::initializer_list<std::pair<std::string_view, E>> options, E& out) {
+  std::string text_value;
+  if (!text(key, text_value)) return false;
+  std::string names;
+  for (const auto& [name, value] : options) {
+    if (name == text_value) {
+      out = value;
+      return true;
+    }
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  diag_.add(path_of(key), "must be one of " + names + " (got '" + text_value + "')");
+  return false;
+}
 
 // Reads the mapping at parent.key with fn(MapReader&), then reports its unknown keys.
 template <class Fn>
