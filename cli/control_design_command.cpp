@@ -17,6 +17,9 @@
 #include "cli/output_file.hpp"
 #include "cli/scenario_input.hpp"
 #include "control/frequency_response.hpp"
+#include "control/composite_design.hpp"
+#include "control/loop_mu.hpp"
+#include "control/robustness.hpp"
 #include "control/six_axis_design.hpp"
 
 namespace chaser::cli {
@@ -69,18 +72,25 @@ nlohmann::json response_json(const control::AxisDesign& d) {
   return r;
 }
 
-nlohmann::json axis_json(std::size_t axis, const control::AxisDesign& d) {
+// A loop's units: its authority's and its error scale's.
+struct LoopUnits {
+  std::string authority, error;
+};
+LoopUnits six_axis_units(std::size_t axis) { return {unit_of(axis, "m/s^2", "rad/s^2"), unit_of(axis, "m", "rad")}; }
+const LoopUnits kCompositeUnits{"N m", "N m s^2"};  // the angular impulse's loops: Phi'' = T
+
+nlohmann::json axis_json(const LoopUnits& units, const control::AxisDesign& d) {
   const control::LoopMargins& m = d.margins;
   nlohmann::json j{
       {"axis", d.spec.name},
       {"authority", d.spec.authority},
-      {"authority_unit", unit_of(axis, "m/s^2", "rad/s^2")},
+      {"authority_unit", units.authority},
       {"weights",
        {{"bandwidth_radps", d.spec.bandwidth_radps},
         {"peak_sensitivity", d.spec.peak_sensitivity},
         {"low_frequency_gain", d.spec.low_frequency_gain},
         {"error_scale", d.spec.error_scale},
-        {"error_scale_unit", unit_of(axis, "m", "rad")},
+        {"error_scale_unit", units.error},
         {"w_ks", d.weights.w_ks->d(0, 0)},
         {"design_pole_shift_radps", d.spec.pole_shift_fraction * d.spec.bandwidth_radps}}},
       {"status", control::to_string(d.synthesis.status)},
@@ -190,11 +200,11 @@ void print_mu_table(const control::SixAxisDesign& design) {
 
 std::string margin_text(double gain) { return std::isfinite(gain) ? fmt::format("{:.1f} dB", db(gain)) : "inf"; }
 
-std::string axis_row(std::size_t axis, const control::AxisDesign& d) {
+std::string axis_row(const LoopUnits& units, const control::AxisDesign& d) {
   const std::string head = fmt::format("{:<4} {:>9.4g} {:<7} {:>7.3g} {:>4.2g} {:>7.1e} {:>6.3g} {:<3}", d.spec.name,
-                                       d.spec.authority, unit_of(axis, "m/s^2", "rad/s^2"), d.spec.bandwidth_radps,
+                                       d.spec.authority, units.authority, d.spec.bandwidth_radps,
                                        d.spec.peak_sensitivity, d.spec.low_frequency_gain, d.spec.error_scale,
-                                       unit_of(axis, "m", "rad"));
+                                       units.error);
   if (!d.synthesis.ok()) return head + "  " + control::to_string(d.synthesis.status) + ": " + d.synthesis.message;
   const control::LoopMargins& m = d.margins;
   return head + fmt::format(" {:>8.5f} {:>8.5f} {:>8.3g} {:>6.3f} {:>6.3f} {:>9} {:>9} {:>7.1f} {:>8.3g} {:>10.2e}",
@@ -230,8 +240,8 @@ int control_design_command(const ControlDesignArgs& args) {
                            "|T|pk", "GM up", "GM down", "PM deg", "DM s", "max Re(p)");
   nlohmann::json report{{"scenario", s.name}, {"delay_s", design.delay_s}, {"axes", nlohmann::json::array()}};
   for (std::size_t k = 0; k < design.axes.size(); ++k) {
-    std::cout << axis_row(k, design.axes[k]) << "\n";
-    report["axes"].push_back(axis_json(k, design.axes[k]));
+    std::cout << axis_row(six_axis_units(k), design.axes[k]) << "\n";
+    report["axes"].push_back(axis_json(six_axis_units(k), design.axes[k]));
   }
   report["ok"] = design.ok();
   if (design.checked_robustness) {
@@ -256,6 +266,47 @@ int control_design_command(const ControlDesignArgs& args) {
     print_mu_table(design);
     report["robust"] = design.robust();
   }
+  // The stabilisation's loops (capture.stabilise; COMRADE 2018 sec. 6.1.4), whichever law the scenario
+  // flies: designed as the flight software designs them for law hinf, and checked as the six are,
+  // over the composite inertia's uncertainty and the valves' delays.
+  bool stabilisation_robust = true;
+  if (s.capture && s.capture->stabilise) {
+    std::array<control::AxisDesignSpec, 3> specs;
+    try {
+      specs = control::composite_specs(s);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << fmt::format("chaser control design: {}: capture.stabilise: {}\n", args.scenario_path, e.what());
+      return kExitBadInput;
+    }
+    const double inertia = s.capture->stabilise->inertia_uncertainty;
+    const control::AxisUncertainty box = control::composite_uncertainty(s, inertia);
+    std::cout << fmt::format(
+        "\nThe stabilisation's loops (capture.stabilise.hinf; control/composite_design.hpp): the composite's angular "
+        "impulse per inertial axis,\nPhi'' = T in N m. Checked over a measurement gain {:.3f} - {:.3f} (the inertia "
+        "{:g} % off, capture.stabilise.inertia_uncertainty,\ntimes the thrust's) and the delay {:.4f} - {:.4f} s: the "
+        "grid's unstable points and least PM, and the mixed mu bound's margin.\n",
+        box.gain_lo, box.gain_hi, 100.0 * inertia, box.delay_lo_s, box.delay_hi_s);
+    report["stabilisation"] = nlohmann::json::array();
+    for (const control::AxisDesignSpec& spec : specs) {
+      const control::AxisDesign d = control::design_axis(spec);
+      std::string row = axis_row(kCompositeUnits, d);
+      nlohmann::json j = axis_json(kCompositeUnits, d);
+      if (d.ok()) {
+        const control::RobustnessResult grid = control::robust_stability_grid(d, box);
+        const control::LoopMu mu = control::loop_mu(d, box);
+        row += fmt::format("  grid {} of {} unstable, least PM {:.1f} deg; mu margin {}", grid.unstable, grid.points,
+                           grid.min_phase_margin_deg, factor_text(mu.margin_mixed()));
+        j["robustness"] = robustness_json(box, grid);
+        j["mu"] = mu_json(mu);
+        stabilisation_robust = stabilisation_robust && grid.robustly_stable() && mu.ok() && mu.margin_mixed() > 1.0;
+      } else {
+        stabilisation_robust = false;
+      }
+      std::cout << row << "\n";
+      report["stabilisation"].push_back(j);
+    }
+    report["stabilisation_robust"] = stabilisation_robust;
+  }
   if (!args.json_path.empty()) {
     if (!write_output_file(args.json_path, report.dump(1) + "\n")) return kExitFailure;
     std::cout << fmt::format("\nwrote {} (plots: /usr/bin/python3 python/plot_control.py {})\n", args.json_path,
@@ -269,6 +320,11 @@ int control_design_command(const ControlDesignArgs& args) {
   if (!design.robust()) {
     std::cerr << "chaser control design: a loop loses stability inside control.hinf.robustness (see its row): "
                  "lower its bandwidth or raise its peak_sensitivity\n";
+    return kExitFailure;
+  }
+  if (!stabilisation_robust) {
+    std::cerr << "chaser control design: a stabilisation loop has no design, or loses stability inside the inertia's "
+                 "uncertainty (see its row): change capture.stabilise.hinf\n";
     return kExitFailure;
   }
   return kExitOk;

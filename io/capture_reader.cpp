@@ -63,6 +63,7 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
           g.choice("law", {{"momentum", model::StabiliseLaw::kMomentum}, {"hinf", model::StabiliseLaw::kHinf}}, st.law);
         if (g.has("bandwidth_radps")) g.number("bandwidth_radps", Range::closed(1e-3, 10.0), st.bandwidth_radps);
         if (g.has("hinf")) read_section(g, "hinf", [&](MapReader& h) { read_hinf_loop(h, "error_scale_Nms2", st.hinf); });
+        if (g.has("inertia_uncertainty")) g.number("inertia_uncertainty", Range::closed(0.0, 0.9), st.inertia_uncertainty);
       });
     }
   });

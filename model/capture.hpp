@@ -65,8 +65,12 @@ struct StabiliseParams {
   StabiliseLaw law = StabiliseLaw::kMomentum;
   double bandwidth_radps = 0.02;   // [rad/s] kMomentum: the momentum error's decay rate (low: flight/stabilise.hpp)
   // kHinf: the loops' weights (error_scale in N m s^2: an angular-impulse error this large may ask
-  // for the couple's whole authority), and the inertia's relative error the robustness grid spans.
+  // for the couple's whole authority).
   HinfLoopWeights hinf{0.02, 2.0, 1e-3, 2000.0, 0.0};
+  // [-] The composite inertia's relative error the loops' robustness is checked over (`chaser
+  // control design`: the grid and the mu bound; control/composite_design.hpp): ENVISAT's inertia is
+  // known from a catalogue, not measured.
+  double inertia_uncertainty = 0.2;
 };
 
 struct CaptureParams {

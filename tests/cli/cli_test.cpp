@@ -273,8 +273,34 @@ TEST(Cli, ControlDesignChecksSixLoops) {
   const auto& attainable = t["sets"][0]["attainable"];
   const double fx = std::min(attainable[0].get<double>(), attainable[1].get<double>());
   EXPECT_NEAR(j["axes"][0]["authority"].get<double>(), fx / 1600.0, 1e-9 * fx);
+  EXPECT_FALSE(j.contains("stabilisation"));  // no capture.stabilise: no stabilisation loops
   std::filesystem::remove(json);
   std::filesystem::remove(thrusters);
+}
+
+// With capture.stabilise, the stabilisation's three loops too (COMRADE 2018 sec. 6.1.4), checked over
+// the composite inertia's uncertainty as the six are over theirs: the grid and the mu bound (measured
+// margin 4.77 at 20 %). The uncertainty is a scenario key, range-checked.
+TEST(Cli, ControlDesignChecksTheStabilisationsLoops) {
+  const auto json = chaser::testing::scratch_path("chaser_control_design_capture.json");
+  const CommandResult r = run_chaser("control design scenarios/comrade_capture.yaml --out " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("The stabilisation's loops"), std::string::npos) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["stabilisation"].size(), 3u);
+  EXPECT_TRUE(j["stabilisation_robust"].get<bool>());
+  for (const auto& loop : j["stabilisation"]) {
+    EXPECT_EQ(loop["authority_unit"], "N m") << loop["axis"];
+    EXPECT_EQ(loop["robustness"]["unstable"], 0) << loop["axis"];
+    EXPECT_NEAR(loop["robustness"]["box"]["gain"][0].get<double>(), 0.99 * 0.8, 1e-12) << loop["axis"];
+    EXPECT_GT(loop["mu"]["margin_mixed"].get<double>(), 1.0) << loop["axis"];
+  }
+  const CommandResult bad = run_chaser("control design scenarios/comrade_capture.yaml --set "
+                                       "capture.stabilise.inertia_uncertainty=0.95");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("capture.stabilise.inertia_uncertainty"), std::string::npos) << bad.output;
+  std::filesystem::remove(json);
 }
 
 // A scenario without control.hinf has nothing to design (exit 2, the section named); a bandwidth
