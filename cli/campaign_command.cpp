@@ -243,16 +243,45 @@ int comrade_table5(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// The presets that fly whole fault-free campaigns in one process: true (after saying so) where the
+// arguments would split them.
+bool refuses_split(const CampaignArgs& args, const char* preset) {
+  if (!args.mpi && args.shard.empty() && args.cases.empty() && args.also.empty()) return false;
+  std::cerr << fmt::format("chaser campaign: --preset {} runs whole fault-free campaigns in one process: "
+                           "leave out --mpi, --shard, --cases and --also\n",
+                           preset);
+  return true;
+}
+
+// One fault-free campaign per case (its name, the folder under --out, and its overrides), each
+// resumable as any campaign, read back into the preset's column by read(name, runs.csv path, error).
+// The columns in the cases' order, or nothing with `code` set.
+template <class Column, class Read>
+std::optional<std::vector<Column>> case_columns(const CampaignArgs& args, const char* preset,
+                                                const std::vector<std::pair<std::string, std::vector<std::string>>>& cases,
+                                                Read read, int& code) {
+  std::vector<Column> columns;
+  for (const auto& [name, overrides] : cases) {
+    std::cerr << fmt::format("{}: {}\n", preset, overrides.front());
+    if (!run_case_campaign(args, args.scenario_path, name, overrides, code)) return std::nullopt;
+    std::string error;
+    const std::optional<Column> column = read(name, (std::filesystem::path(args.out_dir) / name / "runs.csv").string(), error);
+    if (!column) {
+      std::cerr << ("chaser campaign: " + error + '\n');
+      code = kExitFailure;
+      return std::nullopt;
+    }
+    columns.push_back(*column);
+  }
+  return columns;
+}
+
 // --preset comrade-reach (docs/servicing.md, "The reach over 100 dispersed runs"): one fault-free
 // campaign per combined controller (capture.law hinf, then compliance, the paper's order) of a
 // scenario with a capture section, each in its folder under --out and resumable as any campaign;
 // then reach.md and reach.csv beside them: COMRADE Tables 5 (reach) and 6.
 int comrade_reach(const CampaignArgs& args) {
-  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
-    std::cerr << "chaser campaign: --preset comrade-reach runs whole fault-free campaigns in one process: "
-                 "leave out --mpi, --shard, --cases and --also\n";
-    return kExitBadInput;
-  }
+  if (refuses_split(args, kPresetReach)) return kExitBadInput;
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   if (!loaded->scenario->capture) {
@@ -266,24 +295,14 @@ int comrade_reach(const CampaignArgs& args) {
   const model::Scenario& s = *loaded->scenario;
   const double reach_end_s = std::min(s.duration_s, s.capture->approach_start_s());
   const std::string horizon = fmt::format("campaign.horizon_after_onset_s={}", reach_end_s - s.campaign.onset_s);
-  std::vector<campaign::ReachColumn> columns;
-  for (const char* law : {"hinf", "compliance"}) {
-    std::cerr << fmt::format("comrade-reach: capture.law {}\n", law);
-    int code = kExitOk;
-    if (!run_case_campaign(args, args.scenario_path, law, {fmt::format("capture.law={}", law), horizon}, code))
-      return code;
-    std::string error;
-    const auto column = campaign::read_reach_column(
-        law, (std::filesystem::path(args.out_dir) / law / "runs.csv").string(), error);
-    if (!column) {
-      std::cerr << ("chaser campaign: " + error + '\n');
-      return kExitFailure;
-    }
-    columns.push_back(*column);
-  }
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const char* law : {"hinf", "compliance"}) cases.push_back({law, {fmt::format("capture.law={}", law), horizon}});
+  int code = kExitOk;
+  const auto columns = case_columns<campaign::ReachColumn>(args, kPresetReach, cases, campaign::read_reach_column, code);
+  if (!columns) return code;
   const std::filesystem::path out(args.out_dir);
-  std::ofstream(out / "reach.md") << campaign::reach_markdown(columns);
-  std::ofstream(out / "reach.csv") << campaign::reach_csv(columns);
+  std::ofstream(out / "reach.md") << campaign::reach_markdown(*columns);
+  std::ofstream(out / "reach.csv") << campaign::reach_csv(*columns);
   std::cout << fmt::format("comrade-reach: wrote {}/reach.md and reach.csv\n", args.out_dir);
   return kExitOk;
 }
@@ -293,11 +312,7 @@ int comrade_reach(const CampaignArgs& args) {
 // run (synchronisation, reach, capture, rigidisation, stabilisation), in its folder under --out and
 // resumable as any campaign; then stabilise.md and stabilise.csv beside them: COMRADE Table 8.
 int comrade_stabilise(const CampaignArgs& args) {
-  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
-    std::cerr << "chaser campaign: --preset comrade-stabilise runs whole fault-free campaigns in one process: "
-                 "leave out --mpi, --shard, --cases and --also\n";
-    return kExitBadInput;
-  }
+  if (refuses_split(args, kPresetStabilise)) return kExitBadInput;
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& s = *loaded->scenario;
@@ -311,25 +326,16 @@ int comrade_stabilise(const CampaignArgs& args) {
   if (with_runs.runs.empty()) with_runs.runs = kStabiliseRuns;
   // Each run flies the scenario's whole duration_s (a campaign's run ends at onset_s + the horizon).
   const std::string horizon = fmt::format("campaign.horizon_after_onset_s={}", s.duration_s - s.campaign.onset_s);
-  std::vector<campaign::StabiliseColumn> columns;
-  for (const char* spin_case : {"S1", "S2", "S3"}) {
-    std::cerr << fmt::format("comrade-stabilise: spin case {}\n", spin_case);
-    int code = kExitOk;
-    if (!run_case_campaign(with_runs, args.scenario_path, spin_case,
-                           {fmt::format("target.body.spin_case={}", spin_case), horizon}, code))
-      return code;
-    std::string error;
-    const auto column = campaign::read_stabilise_column(
-        spin_case, (std::filesystem::path(args.out_dir) / spin_case / "runs.csv").string(), error);
-    if (!column) {
-      std::cerr << ("chaser campaign: " + error + '\n');
-      return kExitFailure;
-    }
-    columns.push_back(*column);
-  }
+  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
+  for (const char* spin_case : {"S1", "S2", "S3"})
+    cases.push_back({spin_case, {fmt::format("target.body.spin_case={}", spin_case), horizon}});
+  int code = kExitOk;
+  const auto columns =
+      case_columns<campaign::StabiliseColumn>(with_runs, kPresetStabilise, cases, campaign::read_stabilise_column, code);
+  if (!columns) return code;
   const std::filesystem::path out(args.out_dir);
-  std::ofstream(out / "stabilise.md") << campaign::stabilise_markdown(columns);
-  std::ofstream(out / "stabilise.csv") << campaign::stabilise_csv(columns);
+  std::ofstream(out / "stabilise.md") << campaign::stabilise_markdown(*columns);
+  std::ofstream(out / "stabilise.csv") << campaign::stabilise_csv(*columns);
   std::cout << fmt::format("comrade-stabilise: wrote {}/stabilise.md and stabilise.csv\n", args.out_dir);
   return kExitOk;
 }
