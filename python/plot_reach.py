@@ -14,6 +14,9 @@ Writes into DIR (default RUN_DIR), over the reach (from the arm's waking to the 
   - reach_figures.png: stick figures of the hub, the arm and the target's face at the fixture, true, in
     the target's axes (a side view, x-z, and a top view, x-y), at the key instants: the arm's waking, the
     end of the path to the pre-grasp pose, the start of the approach, the jaws' closure and the end;
+  - reach_rigidisation.png, after a rigidisation (summary.json's reach.rigidisation): from its start to
+    10 s after the brakes (or the end), each joint's angle from where the law held it, its rate (the
+    angles' difference per period) against the brakes' threshold, and its commanded torque;
   - reach_stabilisation.png, after a stabilisation (summary.json's reach.stabilisation): from the brakes
     on, the target's true rate per axis and its magnitude against COMRADE 2018 Table 3's 0.5 deg/s, and
     each braked joint's load against the drives' repeated and momentary peaks.
@@ -213,6 +216,61 @@ def plot_figures(t, mask, summary, scenario, out):
     return True
 
 
+def joint_rates_degps(t, rows):
+    """Each joint's rate [deg/s] at the rows: the angles' central difference over the periods (one-sided
+    at the ends), shape (rows, 7)."""
+    time = t["t_s"][rows]
+    angles = np.column_stack([np.degrees(t[f"q_arm_{j + 1}_rad"][rows]) for j in range(JOINTS)])
+    return np.gradient(angles, time, axis=0)
+
+
+def plot_rigidisation(t, summary, scenario, out):
+    """reach_rigidisation.png; False (nothing written) without a rigidisation."""
+    rigidisation = (summary.get("reach") or {}).get("rigidisation")
+    if not rigidisation:
+        return False
+    start_s = float(rigidisation["start_s"])
+    brakes_s = rigidisation.get("brakes_s")
+    end_s = float(brakes_s) + 10.0 if brakes_s is not None else float(t["t_s"][-1])
+    rows = (t["t_s"] >= start_s - 1e-9) & (t["t_s"] <= end_s + 1e-9)
+    if rows.sum() < 2:
+        return False
+    _, _, repeated, momentary = arm_limits(scenario)
+    time = t["t_s"][rows]
+    held = np.array([np.degrees(t[f"q_arm_{j + 1}_rad"][rows][0]) for j in range(JOINTS)])
+    rates = joint_rates_degps(t, rows)
+    fig, axes = plt.subplots(3, 1, figsize=(11, 9), sharex=True)
+    for j in range(JOINTS):
+        axes[0].plot(time, np.degrees(t[f"q_arm_{j + 1}_rad"][rows]) - held[j], lw=1, label=f"joint {j + 1}")
+        axes[1].plot(time, rates[:, j], lw=1)
+        axes[2].plot(time, t[f"tau_arm_{j + 1}_Nm"][rows], lw=1)
+    axes[0].set_ylabel("angle from q_d [deg]")
+    axes[0].legend(fontsize=8, ncol=7)
+    law = rigidisation.get("law", "")
+    axes[0].set_title(f"The rigidisation{f' ({law} law)' if law else ''}: the thrusters inhibited, the arm alone")
+    axes[1].set_ylabel("rate [deg/s]")
+    axes[1].set_yscale("symlog", linthresh=0.01)
+    axes[1].axhline(0.01, color="r", ls="--", lw=0.8)
+    axes[1].axhline(-0.01, color="r", ls="--", lw=0.8, label="the brakes' threshold (default 0.01 deg/s)")
+    axes[1].legend(fontsize=8)
+    peak = max(float(np.abs(t[f"tau_arm_{j + 1}_Nm"][rows]).max()) for j in range(JOINTS))
+    if peak > 0.5 * repeated:
+        for limit, style in ((repeated, "--"), (momentary, ":")):
+            axes[2].axhline(limit, color="r", ls=style, lw=1)
+            axes[2].axhline(-limit, color="r", ls=style, lw=1)
+    axes[2].set_ylabel(f"torque [N m] (limits {repeated:.0f} / {momentary:.0f}"
+                       f"{' off scale' if peak <= 0.5 * repeated else ''})")
+    axes[2].set_xlabel("t [s]")
+    if brakes_s is not None:
+        for axis in axes:
+            axis.axvline(float(brakes_s), color="k", ls=":", lw=1)
+        axes[2].text(float(brakes_s), axes[2].get_ylim()[1], " brakes", va="top", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "reach_rigidisation.png", dpi=110)
+    plt.close(fig)
+    return True
+
+
 def rate_magnitude_degps(t, rows):
     """The target's true rate [deg/s] at the rows: its magnitude (the composite's, once braked)."""
     w = np.column_stack([t[f"omega_target_body_{c}_radps"][rows] for c in XYZ])
@@ -274,10 +332,12 @@ def main(argv=None):
     hold_from_s, hold_to_s = float(reach["hold_from_s"]), approach_start_s(summary)
     plot_gripper(t, mask, hold_from_s, hold_to_s, out)
     figures = plot_figures(t, mask, summary, scenario, out)
+    rigidisation = plot_rigidisation(t, summary, scenario, out)
     stabilisation = plot_stabilisation(t, summary, scenario, out)
     hold = mask & (t["t_s"] >= hold_from_s) & (t["t_s"] < hold_to_s)
     ratio = envelope_exceedance(np.column_stack([t[f"gripper_err_{c}_m"][hold] for c in XYZ]) * 1e3, ENVELOPE_MM)
     written = (["reach_joints.png", "reach_gripper.png"] + (["reach_figures.png"] if figures else [])
+               + (["reach_rigidisation.png"] if rigidisation else [])
                + (["reach_stabilisation.png"] if stabilisation else []))
     print(f"wrote {', '.join(str(out / w) for w in written)}; over the hold the gripper used "
           f"{', '.join(f'{r:.0%}' for r in ratio)} of Table 2's position envelope (x, y, z)")

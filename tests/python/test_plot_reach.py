@@ -210,3 +210,24 @@ def test_without_a_stabilisation_nothing_of_it_is_drawn(tmp_path, capsys):
     pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(tmp_path / "plots")])
     assert not (tmp_path / "plots" / "reach_stabilisation.png").exists()
     assert "reach_stabilisation.png" not in capsys.readouterr().out
+
+
+def test_the_joint_rates_are_the_angles_difference_per_period(tmp_path):
+    fake_run(tmp_path / "run")
+    t = pr.load_telemetry(tmp_path / "run")
+    t["q_arm_3_rad"][:] = np.radians(0.5) * t["t_s"]  # 0.5 deg/s
+    rates = pr.joint_rates_degps(t, t["t_s"] >= 0.0)
+    np.testing.assert_allclose(rates[:, 2], 0.5, rtol=1e-9)
+    np.testing.assert_allclose(rates[:, 0], 0.0, atol=1e-9)
+
+
+def test_after_a_rigidisation_its_joints_are_drawn(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run", stabilisation=True)
+    out = tmp_path / "plots"
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(out)])
+    assert (out / "reach_rigidisation.png").stat().st_size > 10_000
+    assert "reach_rigidisation.png" in capsys.readouterr().out
+    # Without a rigidisation nothing is drawn.
+    plain = fake_run(tmp_path / "plain")
+    pr.main([str(tmp_path / "plain"), "--scenario", str(plain), "--out", str(tmp_path / "plain-plots")])
+    assert not (tmp_path / "plain-plots" / "reach_rigidisation.png").exists()
