@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "campaign/statistics.hpp"
 #include "core/random.hpp"
 #include "flight/flight_software.hpp"
 #include "sim/simulation.hpp"
@@ -56,25 +57,23 @@ struct Moments {
   int count = 0;
 };
 
-// Mean, sample standard deviation and largest magnitude of `value(run, joint)` over every joint of
-// every run flown.
+// Mean, sample standard deviation (campaign/statistics.hpp's running sums; 0 below two values) and
+// largest magnitude of `value(run, joint)` over every joint of every run flown.
 template <class F>
 Moments moments(const RigidiseColumn& column, F value) {
+  RunningStats stats;
   Moments m;
-  double sum = 0.0, sum_sq = 0.0;
   for (const RigidiseRun& run : column.runs) {
     if (!run.error.empty()) continue;
-    for (int j = 0; j < model::kArmJoints; ++j) {
-      const double v = value(run, static_cast<std::size_t>(j));
-      sum += v;
-      sum_sq += v * v;
+    for (std::size_t j = 0; j < run.angle_error_deg.size(); ++j) {
+      const double v = value(run, j);
+      stats.add(v);
       m.largest = std::max(m.largest, std::abs(v));
-      ++m.count;
     }
   }
-  if (m.count == 0) return m;
-  m.mean = sum / m.count;
-  m.sd = m.count > 1 ? std::sqrt(std::max(0.0, (sum_sq - m.count * m.mean * m.mean) / (m.count - 1))) : 0.0;
+  m.count = static_cast<int>(stats.count());
+  if (m.count > 0) m.mean = stats.mean();
+  if (m.count > 1) m.sd = stats.sample_std();
   return m;
 }
 

@@ -81,16 +81,13 @@ model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& 
                                                             : linear_saturation(tau, r.linear_limit_Nm, params.torque_limit_Nm);
   };
   if (r.law == model::RigidiseLaw::kHinf) {
-    arm::JointVector u, error;  // [rad/s^2], [rad]
+    arm::JointVector u;  // [rad/s^2]
     for (int j = 0; j < model::kArmJoints; ++j) {
       const auto i = static_cast<std::size_t>(j);
-      error(j) = state.q_hold_rad(j) - joints.q_rad[i];
-      u(j) = state.loops[i].c.dot(state.x[i]) + state.loops[i].d * error(j);
+      u(j) = step_loop(state.loops[i], state.x[i], state.q_hold_rad(j) - joints.q_rad[i]);
     }
     const arm::JointVector tau = state.inertia_kgm2 * u;
     for (int j = 0; j < model::kArmJoints; ++j) command.torque_Nm[static_cast<std::size_t>(j)] = saturate(tau(j));
-    for (std::size_t i = 0; i < state.x.size(); ++i)
-      state.x[i] = state.loops[i].a * state.x[i] + state.loops[i].b * error(static_cast<int>(i));
     return command;
   }
   for (int j = 0; j < model::kArmJoints; ++j) {

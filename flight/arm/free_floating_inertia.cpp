@@ -4,15 +4,6 @@
 
 namespace chaser::flight::arm {
 
-namespace {
-
-// The inertia about a point displaced by d from the CoM: I + m (|d|^2 1 - d d') (parallel axes).
-Mat3 shifted_inertia(double mass_kg, const Mat3& inertia_com_kgm2, const Vec3& d_m) {
-  return inertia_com_kgm2 + mass_kg * (d_m.squaredNorm() * Mat3::Identity() - d_m * d_m.transpose());
-}
-
-}  // namespace
-
 Link7Payload grasped_payload(const ServicerArmParams& servicer, double mass_kg, const Mat3& inertia_kgm2,
                              const Vec3& grasp_point_target_m, const Quat& q_target_from_tool) {
   const Mat3 tool_from_target = q_target_from_tool.normalized().toRotationMatrix().transpose();
@@ -22,14 +13,8 @@ Link7Payload grasped_payload(const ServicerArmParams& servicer, double mass_kg, 
 }
 
 ServicerArmParams with_payload(ServicerArmParams servicer, const Link7Payload& payload) {
-  ServicerLinkParams& link7 = servicer.links.back();
-  const double mass_kg = link7.mass_kg + payload.mass_kg;
-  const Vec3 com_link_m = (link7.mass_kg * link7.com_link_m + payload.mass_kg * payload.com_link7_m) / mass_kg;
-  link7.inertia_com_link_kgm2 =
-      shifted_inertia(link7.mass_kg, link7.inertia_com_link_kgm2, link7.com_link_m - com_link_m) +
-      shifted_inertia(payload.mass_kg, payload.inertia_link7_kgm2, payload.com_link7_m - com_link_m);
-  link7.mass_kg = mass_kg;
-  link7.com_link_m = com_link_m;
+  servicer.links.back() =
+      with_rigid_body(servicer.links.back(), payload.mass_kg, payload.com_link7_m, payload.inertia_link7_kgm2);
   return servicer;
 }
 

@@ -35,7 +35,7 @@ struct Link7Payload {
 Link7Payload grasped_payload(const ServicerArmParams& servicer, double mass_kg, const Mat3& inertia_kgm2,
                              const Vec3& grasp_point_target_m, const Quat& q_target_from_tool);
 
-// The servicer with the payload added to link 7 (its mass, CoM and inertia combined by parallel axes).
+// The servicer with the payload added to link 7 (with_rigid_body).
 ServicerArmParams with_payload(ServicerArmParams servicer, const Link7Payload& payload);
 
 // H* from a floating-base mass matrix (hub block first, as floating_base_mass_matrix orders it).

@@ -14,19 +14,6 @@ Mat3 shifted_inertia(double mass_kg, const Mat3& inertia_com_kgm2, const Vec3& d
   return inertia_com_kgm2 + mass_kg * (d_m.squaredNorm() * Mat3::Identity() - d_m * d_m.transpose());
 }
 
-// Link 7 and the gripper (rigid on it, same frame) as one body.
-ServicerLinkParams with_gripper(ServicerLinkParams link7, const model::GripperParams& gripper) {
-  const double mass_kg = link7.mass_kg + gripper.mass_kg;
-  const Vec3 com_link_m = (link7.mass_kg * link7.com_link_m + gripper.mass_kg * gripper.com_link7_m) / mass_kg;
-  const Mat3 gripper_inertia = gripper.inertia_kgm2.asDiagonal();
-  link7.inertia_com_link_kgm2 =
-      shifted_inertia(link7.mass_kg, link7.inertia_com_link_kgm2, link7.com_link_m - com_link_m) +
-      shifted_inertia(gripper.mass_kg, gripper_inertia, gripper.com_link7_m - com_link_m);
-  link7.mass_kg = mass_kg;
-  link7.com_link_m = com_link_m;
-  return link7;
-}
-
 bool symmetric_psd(const Mat3& inertia_kgm2, bool definite) {
   if (!inertia_kgm2.allFinite()) return false;
   const double scale = inertia_kgm2.cwiseAbs().maxCoeff();
@@ -36,6 +23,17 @@ bool symmetric_psd(const Mat3& inertia_kgm2, bool definite) {
 }
 
 }  // namespace
+
+ServicerLinkParams with_rigid_body(ServicerLinkParams link, double mass_kg, const Vec3& com_link_m,
+                                   const Mat3& inertia_com_link_kgm2) {
+  const double total_kg = link.mass_kg + mass_kg;
+  const Vec3 com_m = (link.mass_kg * link.com_link_m + mass_kg * com_link_m) / total_kg;
+  link.inertia_com_link_kgm2 = shifted_inertia(link.mass_kg, link.inertia_com_link_kgm2, link.com_link_m - com_m) +
+                               shifted_inertia(mass_kg, inertia_com_link_kgm2, com_link_m - com_m);
+  link.mass_kg = total_kg;
+  link.com_link_m = com_m;
+  return link;
+}
 
 ServicerArmParams servicer_arm_of(const model::MultibodySceneParams& scene) {
   ServicerArmParams params;
@@ -55,7 +53,9 @@ ServicerArmParams servicer_arm_of(const model::MultibodySceneParams& scene) {
     link.inertia_com_link_kgm2 = from.inertia_kgm2.asDiagonal();
     link.armature_kgm2 = from.armature_kgm2;
   }
-  params.links.back() = with_gripper(params.links.back(), scene.arm.gripper);
+  const model::GripperParams& gripper = scene.arm.gripper;  // rigid on link 7, in its frame
+  params.links.back() =
+      with_rigid_body(params.links.back(), gripper.mass_kg, gripper.com_link7_m, gripper.inertia_kgm2.asDiagonal());
   params.tool_link7_m = scene.arm.gripper.position_link7_m;
   return params;
 }

@@ -48,6 +48,12 @@ struct ServicerArmParams {
   Vec3 tool_link7_m = Vec3::Zero();                         // [m] the gripper's tool point, link 7's frame
 };
 
+// A link with a rigid body added to it (the gripper, a grasped target): the body's mass, its CoM in
+// the link's frame and its inertia about that CoM in the link's axes, combined with the link's by
+// parallel axes.
+ServicerLinkParams with_rigid_body(ServicerLinkParams link, double mass_kg, const Vec3& com_link_m,
+                                   const Mat3& inertia_com_link_kgm2);
+
 // The flight model of a scene's hub and arm (the target is not part of it): the mount from the
 // hub's CoM folded into link 1, the gripper lumped into link 7, each link's principal inertia as a tensor.
 ServicerArmParams servicer_arm_of(const model::MultibodySceneParams& scene);

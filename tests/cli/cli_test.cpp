@@ -293,6 +293,8 @@ TEST(Cli, ControlDesignChecksTheStabilisationsLoops) {
   for (const auto& loop : j["stabilisation"]) {
     EXPECT_EQ(loop["authority_unit"], "N m") << loop["axis"];
     EXPECT_EQ(loop["robustness"]["unstable"], 0) << loop["axis"];
+    // The gain's low end: the thrust 1 % low (control.hinf.robustness.thrust_uncertainty) times the
+    // inertia 20 % off.
     EXPECT_NEAR(loop["robustness"]["box"]["gain"][0].get<double>(), 0.99 * 0.8, 1e-12) << loop["axis"];
     EXPECT_GT(loop["mu"]["margin_mixed"].get<double>(), 1.0) << loop["axis"];
   }

@@ -62,6 +62,14 @@ TEST(ClosedChainStart, AForkFliesOnAsTheOriginalDoes) {
   const std::int64_t periods = c.base->period() + 100;  // 10 s of the rigidisation
   Simulation a(*c.base, periods), b(*c.base, periods);
   const RunResult ra = fly(a), rb = fly(b);
+  // A run never forked, flown from the start to the same period, ends in the same bits.
+  Simulation whole(c.scenario, c.flight, RunOptions{});
+  while (whole.period() < periods) whole.step();
+  const RunResult rw = whole.finish();
+  EXPECT_EQ(rw.propellant_used_kg, ra.propellant_used_kg);
+  EXPECT_EQ(rw.reach.rigidise.final_angle_error_rad, ra.reach.rigidise.final_angle_error_rad);
+  EXPECT_EQ(rw.reach.rigidise.final_rate_radps, ra.reach.rigidise.final_rate_radps);
+  EXPECT_EQ(rw.reach.rigidise.peak_torque_Nm, ra.reach.rigidise.peak_torque_Nm);
   EXPECT_EQ(ra.periods, periods);
   EXPECT_EQ(ra.propellant_used_kg, rb.propellant_used_kg);
   EXPECT_EQ(ra.reach.rigidise.final_angle_error_rad, rb.reach.rigidise.final_angle_error_rad);
