@@ -96,8 +96,16 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   const bool reaching = params.reach && t_s >= params.reach->start_s;
   if (reaching) {
     hold_estimates(state.reach, out.estimate, out.target, t_s, lvlh);
+    // The escape withdraws to where the synchronised transfer started, as the approach fixed it.
+    if (!state.reach.escape.started() && state.sync_latch.start_target_m)
+      state.reach.escape.withdraw_point_target_m = state.sync_latch.start_target_m;
     if (meas.arm && meas.arm->fixture.valid) update_from_camera(*params.reach, state.reach, meas.arm->fixture);
   }
+  // Escaping, the chaser's reference is the escape's plan (flight/escape.hpp), which the combined
+  // law's platform share below flies.
+  if (reaching && state.reach.escape.started() && state.reach.target)
+    out.reference = escape_guidance(*params.reach->escape, state.reach.escape, *state.reach.target,
+                                    state.reach.frame_offset_m, state.reach.frame_rotation_rad, lvlh, t_s);
   // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, nothing released (the
   // TMU's owed impulse included), no test pulse, so the allocation commands nothing.
   const bool inhibited = reaching && thrusters_inhibited(*params.reach, state.reach);

@@ -11,6 +11,8 @@
 #include "control/six_axis_design.hpp"
 #include "core/rotation.hpp"
 #include "flight/arm/computed_torque.hpp"
+#include "flight/carried_target.hpp"
+#include "flight/pose_path.hpp"
 #include "model/hub_mass_properties.hpp"
 
 namespace chaser::flight {
@@ -53,17 +55,6 @@ ArmHinfSpec hinf_spec(const model::Scenario& s, const model::CaptureParams& c) {
   return spec;
 }
 
-// A quintic blend from 0 to 1 over [0, T]: zero rate and acceleration at both ends.
-struct Blend {
-  double s = 1.0, rate = 0.0, acceleration = 0.0;
-};
-Blend quintic(double t_s, double duration_s) {
-  if (t_s >= duration_s) return {};
-  const double x = std::max(0.0, t_s / duration_s);
-  return {x * x * x * (10.0 - 15.0 * x + 6.0 * x * x), 30.0 * x * x * (1.0 - x) * (1.0 - x) / duration_s,
-          60.0 * x * (1.0 - x) * (1.0 - 2.0 * x) / (duration_s * duration_s)};
-}
-
 // The estimates carried from the last period to t_s: the hub (its CoM) in the law's world, its
 // velocity, attitude and rate; the target's frame.
 struct Carried {
@@ -72,20 +63,6 @@ struct Carried {
   Vec3 omega_body_radps = Vec3::Zero();
   arm::FrameMotion target;
 };
-
-// The target estimator's frame at t_s (its attitude carried by its rate and acceleration): origin
-// at the estimated CoM, at rest.
-arm::FrameMotion estimated_target(const ReachState& s, double t_s) {
-  const TargetEstimate& e = *s.target;
-  const double dt = t_s - e.t_s;
-  const Vec3 omega_target = e.omega_target_radps + e.omega_dot_target_radps2 * dt;
-  arm::FrameMotion f;
-  f.q_world_from_frame =
-      (e.q_inertial_from_target * quat_from_rotation_vector(0.5 * (e.omega_target_radps + omega_target) * dt)).normalized();
-  f.omega_radps = f.q_world_from_frame * omega_target;
-  f.alpha_radps2 = f.q_world_from_frame * e.omega_dot_target_radps2;
-  return f;
-}
 
 Carried carry(const ReachParams& p, const ReachState& s, double t_s) {
   const double dt = t_s - s.nav_t_s;
@@ -100,9 +77,7 @@ Carried carry(const ReachParams& p, const ReachState& s, double t_s) {
   const Vec3 offset = c.q_inertial_from_body * p.hub_from_chaser_com_body_m;
   c.r_hub_m = r_point + offset;
   c.v_hub_mps = v_point + (c.q_inertial_from_body * c.omega_body_radps).cross(offset);
-  c.target = estimated_target(s, t_s);
-  c.target.r_m = s.frame_offset_m;
-  c.target.q_world_from_frame = (c.target.q_world_from_frame * quat_from_rotation_vector(s.frame_rotation_rad)).normalized();
+  c.target = corrected_target_frame(*s.target, s.frame_offset_m, s.frame_rotation_rad, t_s);
   return c;
 }
 
@@ -141,6 +116,20 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
                                                                    p.grasp_point_target_m, p.q_target_from_tool)),
         .joint_period_s = joint_period_s,
         .delay_s = 0.5 * joint_period_s + 1.0 / s.chaser.arm->torque_loop_bandwidth_radps};
+  }
+  if (c.escape) {  // the plan's ends: the capture point's hold, the tool stowed in the hub's frame
+    arm::JointVector stowed_q;
+    for (int j = 0; j < model::kArmJoints; ++j) stowed_q(j) = s.chaser.arm->stowed_rad[static_cast<std::size_t>(j)];
+    const arm::ArmKinematics stowed = arm::arm_kinematics(p.servicer, Vec3::Zero(), Quat::Identity(), stowed_q);
+    p.escape = EscapeLawParams{.escape = *c.escape,
+                               .capture_point_target_m = p.capture_point_target_m,
+                               .q_target_from_body = p.q_target_from_body,
+                               .withdraw_point_target_m = s.guidance.synchronised->start_target_m,
+                               .target_inertia_kgm2 = s.target.body->inertia_kgm2,
+                               .hub_from_chaser_com_body_m = p.hub_from_chaser_com_body_m,
+                               .tool_stowed_hub_m = stowed.r_tool_world_m,
+                               .q_hub_from_tool_stowed = arm::tool_attitude(stowed),
+                               .joint3_stowed_rad = stowed_q(arm::kRedundancyJoint)};
   }
   if (c.rigidise && c.stabilise)  // the target as the catalogue has it, where the grasp holds it
     p.stabilise = StabiliseLawParams{.stabilise = *c.stabilise,
@@ -190,18 +179,8 @@ arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, d
     f.q_world_from_frame = params.q_target_from_tool;
     return f;
   }
-  const Blend b = quintic(t_s - params.start_s, params.path_duration_s);
-  const Vec3 travel = params.pre_grasp_target_m - state.tool_start_target_m;
-  const Eigen::AngleAxisd turn(state.q_target_from_tool_start.conjugate() * params.q_target_from_tool);
-  const Vec3 axis_target = state.q_target_from_tool_start * turn.axis();
-  arm::FrameMotion f;
-  f.r_m = state.tool_start_target_m + b.s * travel;
-  f.v_mps = b.rate * travel;
-  f.a_mps2 = b.acceleration * travel;
-  f.q_world_from_frame = state.q_target_from_tool_start * Quat(Eigen::AngleAxisd(b.s * turn.angle(), turn.axis()));
-  f.omega_radps = b.rate * turn.angle() * axis_target;
-  f.alpha_radps2 = b.acceleration * turn.angle() * axis_target;
-  return f;
+  return pose_path(state.tool_start_target_m, state.q_target_from_tool_start, params.pre_grasp_target_m,
+                   params.q_target_from_tool, t_s - params.start_s, params.path_duration_s);
 }
 
 bool platform_command(const ReachParams& params, ReachState& state, double t_s, Vec3& force_inertial_N,
@@ -232,12 +211,13 @@ void update_from_camera(const ReachParams& params, ReachState& state, const mode
   const Vec3 r_fixture_m = nearest->r_m + nearest->q * sample.r_camera_m;
   const Quat q_world_from_target = (q_world_from_fixture * params.q_target_from_tool.conjugate()).normalized();
   const Vec3 offset_m = r_fixture_m - q_world_from_target * params.grasp_point_target_m;
-  const Quat q_estimate = estimated_target(state, sample.taken_s).q_world_from_frame;
+  const Quat q_estimate = estimated_target_frame(*state.target, sample.taken_s).q_world_from_frame;
   const Vec3 rotation_rad = rotation_vector_from_quat(q_estimate.conjugate() * q_world_from_target);
   state.frame_offset_m += kCameraGain * (offset_m - state.frame_offset_m);
   state.frame_rotation_rad += kCameraGain * (rotation_rad - state.frame_rotation_rad);
   ++state.camera_samples;
-  if (params.approach_duration_s > 0.0) grasp_camera_sample(params.grasp, state.grasp, sample, state.nav_t_s);
+  if (params.approach_duration_s > 0.0 && !state.escape.started())
+    grasp_camera_sample(params.grasp, state.grasp, sample, state.nav_t_s);
 }
 
 model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,
@@ -250,7 +230,9 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
     q(j) = joints.q_rad[static_cast<std::size_t>(j)];
     q_dot(j) = joints.q_dot_radps[static_cast<std::size_t>(j)];
   }
-  if (params.approach_duration_s > 0.0) grasp_joint_step(params.grasp, state.grasp, joints, t_s, command);
+  // Escaping, the grasp is over: the jaws stay open (the command's default).
+  if (params.approach_duration_s > 0.0 && !state.escape.started())
+    grasp_joint_step(params.grasp, state.grasp, joints, t_s, command);
   if (params.rigidise && state.grasp.step == GraspStep::kCaptured) {  // COMRADE 2018, sec. 4: the arm alone
     model::ArmCommand rigidise = step_rigidise(*params.rigidise, state.rigidise, joints, t_s);
     rigidise.close_gripper = command.close_gripper;
@@ -270,13 +252,27 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
     state.joint3_start_rad = q(arm::kRedundancyJoint);
     state.started = true;
   }
-  arm::FrameMotion hub_in_target;
-  hub_in_target.r_m = params.capture_point_target_m + params.q_target_from_body * params.hub_from_chaser_com_body_m;
-  hub_in_target.q_world_from_frame = params.q_target_from_body;
+  if (params.escape && !state.escape.started()) {  // the tool's pose in the target's frame, if it starts now
+    const Quat q_target_from_world = c.target.q_world_from_frame.conjugate();
+    escape_trigger(*params.escape, state.escape, state.grasp.step, t_s,
+                   {.target = *state.target,
+                    .target_frame = c.target,
+                    .tool_target_m = q_target_from_world * (kinematics.r_tool_world_m - c.target.r_m),
+                    .q_target_from_tool = (q_target_from_world * arm::tool_attitude(kinematics)).normalized(),
+                    .joint3_rad = q(arm::kRedundancyJoint)});
+  }
   arm::TaskReference reference;
-  reference.hub = arm::compose(c.target, hub_in_target);
-  reference.tool = arm::compose(c.target, tool_path(params, state, t_s));
-  reference.joint_rad = state.joint3_start_rad;
+  if (state.escape.started()) {
+    reference = escape_reference(*params.escape, state.escape, *state.target, state.frame_offset_m,
+                                 state.frame_rotation_rad, t_s);
+  } else {
+    arm::FrameMotion hub_in_target;
+    hub_in_target.r_m = params.capture_point_target_m + params.q_target_from_body * params.hub_from_chaser_com_body_m;
+    hub_in_target.q_world_from_frame = params.q_target_from_body;
+    reference.hub = arm::compose(c.target, hub_in_target);
+    reference.tool = arm::compose(c.target, tool_path(params, state, t_s));
+    reference.joint_rad = state.joint3_start_rad;
+  }
 
   arm::ServicerVector velocity;
   velocity << c.v_hub_mps, c.omega_body_radps, q_dot;

@@ -21,6 +21,7 @@
 #include "flight/arm/servicer_arm.hpp"
 #include "flight/arm/task_space.hpp"
 #include "flight/arm_hinf_control.hpp"
+#include "flight/escape.hpp"
 #include "flight/grasp.hpp"
 #include "flight/navigation.hpp"
 #include "flight/rigidise.hpp"
@@ -61,6 +62,9 @@ struct ReachParams {
   // Once the rigidisation's brakes hold: the stabilisation (flight/stabilise.hpp), the thrusters
   // detumbling the composite; without it they stay inhibited.
   std::optional<StabiliseLawParams> stabilise;
+  // The escape (flight/escape.hpp): on command or a failed grasp, its plan in place of the reach's
+  // path; without it a failed grasp leaves the tool at the fixture.
+  std::optional<EscapeLawParams> escape;
 };
 
 // With capture (and chaser.arm): the reach's parameters; the H-infinity loops designed here.
@@ -114,6 +118,7 @@ struct ReachState {
   GraspState grasp;
   RigidiseState rigidise;
   StabiliseState stabilise;
+  EscapeState escape;
 };
 
 // The rigidisation flies (it began at the capture's confirmation): the thrusters are inhibited,
@@ -143,7 +148,8 @@ void update_from_camera(const ReachParams& params, ReachState& state, const mode
 
 // One step of the joint loop at t_s: the law on the joints measured now and the estimates carried
 // to t_s; the joint torques to hold until the next step. Once captured, with a rigidisation, its
-// law instead, and the thrusters inhibited from then on. Until the target's estimate exists, the
+// law instead, and the thrusters inhibited from then on. Once an escape is triggered (here, on
+// command or a failed grasp), the law tracks its plan, the jaws open. Until the target's estimate exists, the
 // joints hold still (zero torque is not holding: they are commanded to their angles by the law's
 // own joint-space damping only once the reach has started).
 model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const model::ArmMeasurements& joints,

@@ -66,8 +66,48 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
         if (g.has("inertia_uncertainty")) g.number("inertia_uncertainty", Range::closed(0.0, 0.9), st.inertia_uncertainty);
       });
     }
+    if (m.has("escape")) {
+      c.escape.emplace();
+      read_section(m, "escape", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
+        model::EscapeParams& e = *c.escape;
+        if (double command_s = 0.0; g.has("command_s") && g.number("command_s", Range::closed(0.0, kMaxDurationS), command_s))
+          e.command_s = command_s;
+        if (g.has("on_failed_grasp")) g.boolean("on_failed_grasp", e.on_failed_grasp);
+        if (g.has("retract_duration_s")) g.number("retract_duration_s", Range::closed(1.0, 1e4), e.retract_duration_s);
+        if (g.has("withdraw_duration_s")) g.number("withdraw_duration_s", Range::closed(1.0, 1e4), e.withdraw_duration_s);
+        if (g.has("withdraw_backoff_m")) g.number("withdraw_backoff_m", Range::closed(0.0, 100.0), e.withdraw_backoff_m);
+        if (g.has("desynchronise_duration_s"))
+          g.number("desynchronise_duration_s", Range::closed(1.0, 1e4), e.desynchronise_duration_s);
+        if (g.has("retreat_duration_s")) g.number("retreat_duration_s", Range::closed(1.0, 1e4), e.retreat_duration_s);
+        if (g.has("safe_distance_m")) g.number("safe_distance_m", Range::closed(1.0, 1e3), e.safe_distance_m);
+      });
+    }
   });
 }
+
+namespace {
+
+// The escape's command while the arm is awake; its retreat outwards, from the point the
+// synchronised transfer started from (on the momentum axis) to beyond it.
+void validate_escape(const model::Scenario& s, Diagnostics& d) {
+  const model::CaptureParams& c = *s.capture;
+  const model::EscapeParams& e = *c.escape;
+  if (e.command_s && d.clean("capture.start_s") && !(*e.command_s >= c.start_s))
+    d.add("capture.escape.command_s", fmt::format("must be at or after capture.start_s {} (the arm awake; got {})",
+                                                  format_number(c.start_s), format_number(*e.command_s)));
+  const auto& sync = s.guidance.synchronised;
+  if (!sync || !d.clean("guidance.synchronised")) return;
+  const double withdraw_m = sync->approach ? sync->approach->axis_distance_m : sync->start_target_m.norm();
+  if (!(e.safe_distance_m > withdraw_m))
+    d.add("capture.escape.safe_distance_m",
+          fmt::format("must be beyond the point the escape withdraws to, {} m from the target's centre ({}; got {})",
+                      format_number(withdraw_m),
+                      sync->approach ? "guidance.synchronised.approach.axis_distance_m"
+                                     : "guidance.synchronised.start_target_m",
+                      format_number(e.safe_distance_m)));
+}
+
+}  // namespace
 
 void validate_capture(const model::Scenario& s, Diagnostics& d) {
   if (!s.capture || !d.clean("capture")) return;
@@ -126,6 +166,7 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
                       format_number(c.stabilise->hinf.bandwidth_radps)));
   if (c.stabilise && !c.rigidise)
     d.add("capture.stabilise", "needs capture.rigidise (the stabilisation begins once its brakes hold)");
+  if (c.escape && d.clean("capture.escape")) validate_escape(s, d);
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
     d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
 }

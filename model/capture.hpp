@@ -73,6 +73,40 @@ struct StabiliseParams {
   double inertia_uncertainty = 0.2;
 };
 
+// The escape (COMRADE 2018, sec. 4: "a trajectory planning part as well as a combined controller
+// as the feed-back part"; the optional section capture.escape): commanded at command_s, or on a
+// failed grasp (flight/grasp.hpp's abandoned step), while the jaws are open, the servicer withdraws
+// along a planned trajectory tracked by the capture's combined controller (flight/escape.hpp):
+//   retract       the tool from where it is to its stowed pose, the chaser holding the capture point;
+//   withdraw      the chaser, turning with the target, from the capture point to the point the
+//                 synchronised transfer started from (on the target's angular-momentum axis), backing
+//                 away first (a curve bent withdraw_backoff_m outwards), its boresight kept on the
+//                 target's centre;
+//   desynchronise the chaser's turning brought to rest there;
+//   retreat       along the line of sight to safe_distance_m from the target's centre, and a hold.
+// The paper states no requirements for it; Chaser's (judged in the summary: sim/escape_result.hpp)
+// are the synchronised flight's clearances (0.5 m turning with the target, 3 m once not: COMRADE
+// Table 4), the tool point never inside the keep-out volume, the target's centre inside the arm
+// camera's field of view throughout, and the hold within kEscapeDistanceTolM of safe_distance_m.
+struct EscapeParams {
+  std::optional<double> command_s;     // [s] commanded then (at or after capture.start_s); absent: never
+  bool on_failed_grasp = true;         // the grasp abandoned (no closure within grasp_timeout_s): escape
+  double retract_duration_s = 30.0;    // [s]
+  double withdraw_duration_s = 300.0;  // [s] the synchronised transfer's length
+  double withdraw_backoff_m = 4.0;     // [m] the withdrawal's curve bent outwards (flight/escape.hpp)
+  double desynchronise_duration_s = 200.0;  // [s] the rotation's synchronisation's length, flown back
+  double retreat_duration_s = 400.0;   // [s]
+  double safe_distance_m = 30.0;       // [m] from the target's centre: the fly-around's radius
+  double total_s() const {
+    return retract_duration_s + withdraw_duration_s + desynchronise_duration_s + retreat_duration_s;
+  }
+};
+
+// Chaser's escape requirements (the paper gives none): the clearances are COMRADE Table 4's.
+inline constexpr double kEscapeSynchronisedClearanceM = 0.5;    // [m] while turning with the target
+inline constexpr double kEscapeUnsynchronisedClearanceM = 3.0;  // [m] from the desynchronisation on
+inline constexpr double kEscapeDistanceTolM = 0.5;              // [m] the final hold from safe_distance_m
+
 struct CaptureParams {
   double start_s = 0.0;            // [s] the arm wakes: the reach begins
   CaptureLaw law = CaptureLaw::kCompliance;
@@ -107,6 +141,8 @@ struct CaptureParams {
   // The stabilisation once the rigidisation's brakes hold (needs rigidise); without it the
   // thrusters stay inhibited.
   std::optional<StabiliseParams> stabilise;
+  // The escape, on command or a failed grasp; without it a failed grasp leaves the tool at the fixture.
+  std::optional<EscapeParams> escape;
   // [s] when the tool leaves the pre-grasp pose for the fixture: the reach ends, the capture begins.
   double approach_start_s() const { return start_s + path_duration_s + pre_grasp_hold_s; }
 };

@@ -11,6 +11,7 @@
 #include "model/scenario.hpp"
 #include "sim/mission_monitor.hpp"
 #include "sim/phase_sequence.hpp"
+#include "sim/escape_result.hpp"
 #include "sim/reach_result.hpp"
 #include "sim/telemetry.hpp"
 
@@ -78,6 +79,8 @@ struct RunResult {
   std::vector<FlownPhase> phases;
   // With a capture: the reach against COMRADE Table 2 (sim/reach_result.hpp).
   ReachResult reach;
+  // With capture.escape: the escape against Chaser's requirements (sim/escape_result.hpp).
+  EscapeResult escape;
 };
 
 // A scheme's result by its name (flight/diagnosis_schemes.hpp); the name must be in the table.

@@ -53,12 +53,21 @@ std::vector<PlannedPhase> planned_phases(const model::Scenario& s) {
 }
 
 std::vector<ConditionalPhase> conditional_phases(const model::Scenario& s) {
-  if (!s.capture || !s.capture->rigidise) return {};
-  const ConditionalPhase phase{.requirements = {.synchronised = true}, .configuration = {.arm_awake = true}};
-  ConditionalPhase rigidisation = phase, rigidised = phase;
-  rigidisation.name = "rigidisation";
-  rigidised.name = s.capture->stabilise ? "stabilisation" : "rigidised";
-  return {rigidisation, rigidised};
+  if (!s.capture) return {};
+  std::vector<ConditionalPhase> out;
+  if (s.capture->rigidise) {
+    const ConditionalPhase phase{.requirements = {.synchronised = true}, .configuration = {.arm_awake = true}};
+    ConditionalPhase rigidisation = phase, rigidised = phase;
+    rigidisation.name = "rigidisation";
+    rigidised.name = s.capture->stabilise ? "stabilisation" : "rigidised";
+    out.push_back(rigidisation);
+    out.push_back(rigidised);
+  }
+  if (s.capture->escape) {
+    out.push_back({.name = "escape", .requirements = {.synchronised = true}, .configuration = {.arm_awake = true}});
+    out.push_back({.name = "escape_retreat", .requirements = {.synchronised = false}, .configuration = {.arm_awake = true}});
+  }
+  return out;
 }
 
 PhaseSequenceParams run_phases(const model::Scenario& scenario) {
@@ -72,18 +81,33 @@ PhaseSequenceParams run_phases(const model::Scenario& scenario) {
                              .reason = "time"});
     p.phases.push_back(std::move(phase));
   }
-  const std::vector<ConditionalPhase> conditional = conditional_phases(scenario);
-  if (conditional.empty()) return p;
+  if (conditional_phases(scenario).empty()) return p;
   p.flag_names = {"captured", "braked"};
-  const int capture = phase_index(p, "capture");
-  const int rigidisation = static_cast<int>(p.phases.size());
-  if (capture >= 0)  // the first exit: it wins over a planned one in the same period
-    p.phases[static_cast<std::size_t>(capture)].exits.insert(
-        p.phases[static_cast<std::size_t>(capture)].exits.begin(),
-        {.condition = held_for(kCapturedFlag, 0), .to_phase = rigidisation, .reason = "captured"});
-  p.phases.push_back({.name = conditional[0].name,
-                      .exits = {{.condition = held_for(kBrakedFlag, 0), .to_phase = rigidisation + 1, .reason = "brakes engaged"}}});
-  p.phases.push_back({.name = conditional[1].name, .exits = {}});
+  // A conditional exit goes first: it wins over a planned one in the same period.
+  const auto exit_first = [&p](const char* from, Transition transition) {
+    if (const int i = phase_index(p, from); i >= 0) {
+      auto& exits = p.phases[static_cast<std::size_t>(i)].exits;
+      exits.insert(exits.begin(), std::move(transition));
+    }
+  };
+  if (scenario.capture->rigidise) {
+    const int rigidisation = static_cast<int>(p.phases.size());
+    exit_first("capture", {.condition = held_for(kCapturedFlag, 0), .to_phase = rigidisation, .reason = "captured"});
+    const std::vector<ConditionalPhase> conditional = conditional_phases(scenario);
+    p.phases.push_back({.name = conditional[0].name,
+                        .exits = {{.condition = held_for(kBrakedFlag, 0), .to_phase = rigidisation + 1, .reason = "brakes engaged"}}});
+    p.phases.push_back({.name = conditional[1].name, .exits = {}});
+  }
+  if (scenario.capture->escape) {
+    p.flag_names.insert(p.flag_names.end(), {"escaping", "desynchronised"});
+    const int escape = static_cast<int>(p.phases.size());
+    for (const char* from : {"reach", "capture"})
+      exit_first(from, {.condition = held_for(kEscapingFlag, 0), .to_phase = escape, .reason = "escape"});
+    p.phases.push_back({.name = "escape",
+                        .exits = {{.condition = held_for(kDesynchronisedFlag, 0), .to_phase = escape + 1,
+                                   .reason = "desynchronised"}}});
+    p.phases.push_back({.name = "escape_retreat", .exits = {}});
+  }
   return p;
 }
 

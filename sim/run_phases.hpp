@@ -8,7 +8,7 @@
 //   "transfer", "capture_point_hold"; with a capture section, "reach" from capture.start_s (the
 //   arm wakes on the multibody plant) and "capture" from capture.approach_start_s() (the tool onto
 //   the fixture, the grasp: flight/grasp.hpp), then on conditions "rigidisation" and "rigidised"
-//   or "stabilisation" (conditional_phases below).
+//   or "stabilisation", or "escape" and "escape_retreat" (conditional_phases below).
 // Each starts at its planned time, the first period at or after it on the integer clock; a phase
 // of no length (its successor starts when it does) or past the run's end is left out. The flight
 // software's guidance switches its own steps at the same periods (tests/sim/run_phases_test.cpp).
@@ -53,8 +53,13 @@ std::vector<PlannedPhase> planned_phases(const model::Scenario& scenario);
 // capture.stabilise "stabilisation": the thrusters detumble the composite, flight/stabilise.hpp). They
 // follow the planned phases in the sequence's list; the run raises the flags from the flight
 // software's state (sim/simulation.cpp). Synchronised, with the arm awake.
+// With capture.escape, "escape" from the "reach" or "capture" phase once it is triggered (kEscapingFlag:
+// flight/escape.hpp), synchronised, then "escape_retreat" from its desynchronisation on
+// (kDesynchronisedFlag), not synchronised: Table 4's 3 m clearance applies again.
 inline constexpr int kCapturedFlag = 0;
 inline constexpr int kBrakedFlag = 1;
+inline constexpr int kEscapingFlag = 2;
+inline constexpr int kDesynchronisedFlag = 3;
 struct ConditionalPhase {
   const char* name = "";
   PhaseRequirements requirements{};

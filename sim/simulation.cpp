@@ -205,7 +205,7 @@ void Simulation::end_period(const flight::FlightOutput& out) {
   const double t_s = to_seconds(t_k);
   const PeriodTruth truth = sample_truth(out, t_s);
   begun_ = false;
-  if (flight_params_.approach) last_reference_ = out.reference;
+  if (flight_params_.approach || flight_state_.reach.escape.started()) last_reference_ = out.reference;
   if (!judge(truth.sample)) {
     done_ = true;
     return;
@@ -252,8 +252,32 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
   truth.sample.synchronised = phase_requirements_[static_cast<std::size_t>(phase_state_.phase)].synchronised;
   if (arm_awake_ && flight_params_.reach)
     add_grasp_period(result_.reach.grasp, flight_state_.reach.grasp, *truth.gripper, truth.sample);
+  if (arm_awake_ && flight_params_.reach && flight_params_.reach->escape)
+    add_escape_period(result_.escape, *flight_params_.reach->escape, flight_state_.reach.escape,
+                      escape_sample(truth.sample, *truth.gripper, t_s));
   if (shape_.slosh_tanks > 0 && recording_) std::ranges::copy(plant::slosh_states(plant_), truth.slosh.begin());
   return truth;
+}
+
+// The escape's figures at t_s (sim/escape_result.hpp) from the truth: the chaser's CoM and the tool
+// (the gripper's truth is taken against the reach's goal) in the target's axes.
+EscapeSample Simulation::escape_sample(const MonitorSample& sample, const plant::GripperTruth& gripper, double t_s) const {
+  EscapeSample out{.t_s = t_s, .distance_m = sample.r_lvlh_m.norm()};
+  if (!flight_state_.reach.escape.started()) return out;
+  constexpr double kTimeTolS = 1e-9;
+  const bool approaching = t_s + kTimeTolS >= result_.reach.hold_to_s;
+  const Vec3& goal_m = approaching ? scenario_.target.body->grasp_point_target_m : reach_goal_target_m_;
+  const Vec3 tool_m = goal_m + q_target_from_reach_goal_ * gripper.r_m;
+  const Quat q_target_from_tool = q_target_from_reach_goal_ * quat_from_rotation_vector(gripper.attitude_rad);
+  if (keep_out_) {
+    const auto& keep_out = scenario_.target.body->keep_out;
+    const Vec3 chaser_m = sample.q_inertial_from_target.conjugate() * (sample.q_inertial_from_lvlh * sample.r_lvlh_m);
+    out.chaser_clearance_m = model::keep_out_distance_m(keep_out, chaser_m) - scenario_.chaser.keep_out_radius_m;
+    out.tool_clearance_m = model::keep_out_distance_m(keep_out, tool_m);
+  }
+  if (scenario_.sensors.arm_camera)
+    out.camera_angle_rad = camera_angle_rad(tool_m, q_target_from_tool, scenario_.sensors.arm_camera->setback_m);
+  return out;
 }
 
 // The conditions the run's phases change on (sim/run_phases.hpp's flags), from the flight
@@ -262,6 +286,12 @@ std::uint64_t Simulation::phase_flags() const {
   std::uint64_t flags = 0;
   if (flight_state_.reach.grasp.step == flight::GraspStep::kCaptured) flags |= std::uint64_t{1} << kCapturedFlag;
   if (flight_state_.reach.rigidise.brakes_s >= 0.0) flags |= std::uint64_t{1} << kBrakedFlag;
+  if (const flight::EscapeState& escape = flight_state_.reach.escape; escape.started()) {
+    flags |= std::uint64_t{1} << kEscapingFlag;
+    constexpr double kTimeTolS = 1e-9;  // the plan's times are sums of seconds, the periods' integer
+    if (t_s() + kTimeTolS >= flight::escape_desynchronise_s(*flight_params_.reach->escape, escape))
+      flags |= std::uint64_t{1} << kDesynchronisedFlag;
+  }
   return flags;
 }
 
@@ -375,6 +405,7 @@ void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& trut
 // is synchronised; before that the flight software's own last reference: the run ended early).
 flight::GuidanceRef Simulation::final_reference(double t_end_s) const {
   if (!scenario_.guidance.synchronised) return flight::guidance_reference(scenario_.guidance, orbit_, t_end_s);
+  if (flight_state_.reach.escape.started()) return last_reference_;  // the escape's plan
   const plant::TargetRotation target = plant::target_rotation(plant_, t_end_s);
   if (!flight_params_.approach) return true_sync_reference(scenario_, orbit_, target, t_end_s);
   const auto& start = flight_state_.sync_latch.start_target_m;
@@ -389,7 +420,7 @@ RunResult Simulation::finish() {
                 monitor_sample(t_end_s, plant::q_inertial_from_lvlh(plant_, orbit_, t_end_s), plant::chaser_state(plant_),
                                final_reference(t_end_s)),
                 result_.figures);
-
+  if (result_.escape.flown) result_.figures.capture_achieved = false;  // the final errors are the escape's
   RunResult result = std::move(result_);
   result.fdir = fdir_result(flight_params_, flight_state_);
   finish_phases(phase_params_, phase_state_, k_ * period_ns_);

@@ -136,6 +136,7 @@ class Simulation {
   bool done_ = false;
 
   // The stages of end_period, in order.
+  EscapeSample escape_sample(const MonitorSample& sample, const plant::GripperTruth& gripper, double t_s) const;
   struct PeriodTruth {
     MonitorSample sample;
     plant::TargetRotation target;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -215,13 +216,62 @@ nlohmann::json stabilise_json(const model::Scenario& scenario, const ReachResult
   };
 }
 
+// The arm camera's field of view [rad]; NaN without one (the escape's camera is then not judged).
+double camera_fov_rad(const model::Scenario& scenario) {
+  return scenario.sensors.arm_camera ? scenario.sensors.arm_camera->fov_half_angle_rad
+                                     : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The escape against Chaser's requirements (sim/escape_result.hpp); with capture.escape only.
+nlohmann::json escape_json(const model::Scenario& scenario, const EscapeResult& e) {
+  const model::EscapeParams& params = *scenario.capture->escape;
+  return nlohmann::json{
+      {"flown", e.flown},
+      {"trigger", e.trigger},
+      {"start_s", finite_or_null(true, e.start_s)},
+      {"refused_s", finite_or_null(true, e.refused_s)},
+      {"desynchronise_s", finite_or_null(true, e.desynchronise_s)},
+      {"hold_s", finite_or_null(true, e.hold_s)},
+      {"min_clearance_synchronised_m", finite_or_null(true, e.min_clearance_synchronised_m)},
+      {"min_clearance_synchronised_at_s", finite_or_null(true, e.min_clearance_synchronised_at_s)},
+      {"min_clearance_unsynchronised_m", finite_or_null(true, e.min_clearance_unsynchronised_m)},
+      {"min_clearance_unsynchronised_at_s", finite_or_null(true, e.min_clearance_unsynchronised_at_s)},
+      {"min_tool_clearance_m", finite_or_null(true, e.min_tool_clearance_m)},
+      {"min_tool_clearance_at_s", finite_or_null(true, e.min_tool_clearance_at_s)},
+      {"max_camera_angle_deg", finite_or_null(true, kRadToDeg * e.max_camera_angle_rad)},
+      {"max_camera_angle_at_s", finite_or_null(true, e.max_camera_angle_at_s)},
+      {"camera_fov_half_angle_deg", finite_or_null(true, kRadToDeg * camera_fov_rad(scenario))},
+      {"final_distance_m", finite_or_null(true, e.final_distance_m)},
+      {"safe_distance_m", params.safe_distance_m},
+      {"requirements_met", escape_meets_requirements(e, params.safe_distance_m, camera_fov_rad(scenario))},
+  };
+}
+
+// The escape's line of the text report (with capture.escape).
+std::string escape_text(const model::Scenario& scenario, const EscapeResult& e) {
+  const model::EscapeParams& params = *scenario.capture->escape;
+  const std::string refused =
+      std::isnan(e.refused_s) ? std::string() : fmt::format(" (commanded at {:.1f} s with the jaws closed: refused)", e.refused_s);
+  if (!e.flown) return fmt::format("  escape: not triggered{}\n", refused);
+  return fmt::format(
+      "  escape ({}): from {:.1f} s{}, desynchronised at {:.1f} s, holding from {:.1f} s; least clearance {:.3f} m "
+      "synchronised (>= {:g}), {:.3f} m after (>= {:g}); tool point {:.3f} m from the keep-out (> 0); camera axis "
+      "within {:.1f} deg of the target's centre (field of view {:.0f}); {:.2f} m from the target at {:.1f} s (safe "
+      "distance {:g} +- {:g}): requirements {}\n",
+      e.trigger, e.start_s, refused, e.desynchronise_s, e.hold_s, e.min_clearance_synchronised_m,
+      model::kEscapeSynchronisedClearanceM, e.min_clearance_unsynchronised_m, model::kEscapeUnsynchronisedClearanceM,
+      e.min_tool_clearance_m, kRadToDeg * e.max_camera_angle_rad, kRadToDeg * camera_fov_rad(scenario),
+      e.final_distance_m, e.final_t_s, params.safe_distance_m, model::kEscapeDistanceTolM,
+      escape_meets_requirements(e, params.safe_distance_m, camera_fov_rad(scenario)) ? "met" : "NOT met");
+}
+
 // The reach against COMRADE Table 2 (sim/reach_result.hpp): null without a capture.
 nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
   if (!scenario.capture) return nullptr;
   const ReachResult& reach = r.reach;
   const MissionFigures& f = r.figures;
   const plant::GripperTruth& g = reach.final_gripper;
-  return nlohmann::json{
+  nlohmann::json out{
       {"law", model::to_string(scenario.capture->law)},
       {"flown", reach.flown},
       {"hold_from_s", reach.hold_from_s},
@@ -251,6 +301,8 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"rigidisation", rigidise_json(scenario, reach.rigidise)},
       {"stabilisation", stabilise_json(scenario, reach)},
   };
+  if (scenario.capture->escape) out["escape"] = escape_json(scenario, r.escape);
+  return out;
 }
 
 // The reach's two lines of the text report.
@@ -317,7 +369,8 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
         st.final_rate_target_degps.x(), st.final_rate_target_degps.y(), st.final_rate_target_degps.z(),
         peak_brake_load_Nm(reach), st.load_limit_Nm, st.propellant_kg, stabilise_meets_table3(reach) ? "met" : "NOT met");
   }
-  return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation + stabilisation;
+  const std::string escape = scenario.capture->escape ? escape_text(scenario, r.escape) : std::string();
+  return reach_lines(scenario, reach, mm, deg, peak) + grasp + rigidisation + stabilisation + escape;
 }
 
 }  // namespace

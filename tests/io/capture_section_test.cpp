@@ -36,6 +36,15 @@ TEST(CaptureSection, TheShippedScenarioReadsBack) {
   ASSERT_TRUE(s.capture->stabilise);
   EXPECT_EQ(s.capture->stabilise->duration_s, 300.0);
   EXPECT_EQ(s.capture->stabilise->bandwidth_radps, 0.02);
+  EXPECT_FALSE(s.capture->escape);  // optional
+  const LoadResult escaping = load_scenario_file(kCapture, {"capture.escape={command_s: 2870, safe_distance_m: 40}"});
+  ASSERT_TRUE(escaping.scenario) << format_errors(escaping.errors);
+  const model::EscapeParams& e = *escaping.scenario->capture->escape;
+  EXPECT_EQ(e.command_s, 2870.0);
+  EXPECT_EQ(e.safe_distance_m, 40.0);
+  EXPECT_TRUE(e.on_failed_grasp);  // the defaults
+  EXPECT_EQ(e.withdraw_backoff_m, 4.0);
+  EXPECT_EQ(e.total_s(), 930.0);
 }
 
 struct BadCapture {
@@ -90,6 +99,16 @@ std::vector<BadCapture> bad_captures() {
         "platform_rate_hz: 10, hub_bandwidth_radps: 1, tool_bandwidth_radps: 4, joint_bandwidth_radps: 1, "
         "damping_ratio: 1, stabilise: {duration_s: 300}}"},
        "capture.stabilise", "needs capture.rigidise"},
+      {"escape_before_the_arm_wakes", {"capture.escape={command_s: 2700}"}, "capture.escape.command_s",
+       "must be at or after capture.start_s 2760 (the arm awake; got 2700)"},
+      {"escape_safe_distance_inside_the_axis_point", {"capture.escape={safe_distance_m: 10}"},
+       "capture.escape.safe_distance_m",
+       "must be beyond the point the escape withdraws to, 12 m from the target's centre "
+       "(guidance.synchronised.approach.axis_distance_m; got 10)"},
+      {"escape_duration", {"capture.escape={retreat_duration_s: 0}"}, "capture.escape.retreat_duration_s",
+       "must be in [1, 10000]"},
+      {"escape_trigger", {"capture.escape={on_failed_grasp: maybe}"}, "capture.escape.on_failed_grasp", "must be"},
+      {"escape_unknown_key", {"capture.escape={safe_distance: 30}"}, "capture.escape.safe_distance", ""},
       {"brake_holding_torque", {"chaser.arm.brake_holding_torque_Nm=0"}, "chaser.arm.brake_holding_torque_Nm",
        "must be in (0, 100000]"},
   };

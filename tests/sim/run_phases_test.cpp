@@ -89,6 +89,38 @@ TEST(RunPhases, ARunStoppedEarlyEndsItsLastPhaseThere) {
   EXPECT_EQ(r.phases[0].end_reason, kRunEndReason);
 }
 
+// With an escape: "escape" (synchronised) from the reach or the capture once triggered, its exit
+// first so that it wins over the planned one in the same period, then "escape_retreat" (not
+// synchronised: Table 4's 3 m) once desynchronised; both with the arm awake.
+TEST(RunPhases, AnEscapeLeavesTheReachOrTheCaptureForItsTwoPhases) {
+  const io::LoadResult loaded =
+      io::load_scenario_file("scenarios/comrade_capture.yaml", {"capture.escape={command_s: 2870}"});
+  ASSERT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
+  const PhaseSequenceParams p = run_phases(*loaded.scenario);
+  EXPECT_TRUE(validate(p).empty());
+  const int escape = phase_index(p, "escape"), retreat = phase_index(p, "escape_retreat");
+  ASSERT_GE(escape, 0);
+  EXPECT_EQ(retreat, escape + 1);
+  ASSERT_EQ(p.flag_names.size(), 4u);
+  EXPECT_EQ(p.flag_names[kEscapingFlag], "escaping");
+  EXPECT_EQ(p.flag_names[kDesynchronisedFlag], "desynchronised");
+  for (const char* from : {"reach", "capture"}) {
+    const PhaseSpec& phase = p.phases[static_cast<std::size_t>(phase_index(p, from))];
+    ASSERT_FALSE(phase.exits.empty()) << from;
+    EXPECT_EQ(phase.exits.front().to_phase, escape) << from;
+    EXPECT_EQ(phase.exits.front().condition.index, kEscapingFlag) << from;
+  }
+  const PhaseSpec& escaping = p.phases[static_cast<std::size_t>(escape)];
+  ASSERT_EQ(escaping.exits.size(), 1u);
+  EXPECT_EQ(escaping.exits.front().condition.index, kDesynchronisedFlag);
+  EXPECT_TRUE(p.phases[static_cast<std::size_t>(retreat)].exits.empty());
+  const std::vector<ConditionalPhase> conditional = conditional_phases(*loaded.scenario);
+  ASSERT_EQ(conditional.size(), 4u);
+  EXPECT_TRUE(conditional[2].requirements.synchronised);
+  EXPECT_FALSE(conditional[3].requirements.synchronised);
+  EXPECT_TRUE(conditional[3].configuration.arm_awake);
+}
+
 }  // namespace
 }  // namespace chaser::sim
 
