@@ -19,7 +19,10 @@ Writes into DIR (default RUN_DIR), over the reach (from the arm's waking to the 
     angles' difference per period) against the brakes' threshold, and its commanded torque;
   - reach_stabilisation.png, after a stabilisation (summary.json's reach.stabilisation): from the brakes
     on, the target's true rate per axis and its magnitude against COMRADE 2018 Table 3's 0.5 deg/s, and
-    each braked joint's load against the drives' repeated and momentary peaks.
+    each braked joint's load against the drives' repeated and momentary peaks;
+  - reach_escape.png, after an escape (summary.json's reach.escape): the chaser's and the tool point's
+    paths in the target's axes while they turn with it (side and top views, the keep-out volume
+    shaded), and the chaser's distance from the target's centre from the trigger to the end.
 """
 import argparse
 import json
@@ -310,6 +313,58 @@ def plot_stabilisation(t, summary, scenario, out):
     return True
 
 
+def keep_out_rectangles(scenario, axes_pair):
+    """The target's keep-out boxes (target.body.keep_out) projected on two target axes: (corner, w, h)."""
+    boxes = (scenario.get("target", {}).get("body") or {}).get("keep_out") or []
+    out = []
+    for box in boxes:
+        centre, half = np.array(box["centre_target_m"], float), np.array(box["half_extents_m"], float)
+        a, b = axes_pair
+        out.append(((centre[a] - half[a], centre[b] - half[b]), 2 * half[a], 2 * half[b]))
+    return out
+
+
+def plot_escape(t, summary, scenario, out):
+    """reach_escape.png; False (nothing written) without an escape flown (summary.json's reach.escape)."""
+    from matplotlib.patches import Rectangle
+
+    escape = (summary.get("reach") or {}).get("escape")
+    if not escape or not escape.get("flown"):
+        return False
+    start_s, desync_s, hold_s = (float(escape[k]) for k in ("start_s", "desynchronise_s", "hold_s"))
+    time = t["t_s"]
+    synchronised = (time >= start_s - 1e-9) & (time < desync_s)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    for ax, (a, b) in zip(axes[:2], ((0, 2), (0, 1))):
+        for corner, width, height in keep_out_rectangles(scenario, (a, b)):
+            ax.add_patch(Rectangle(corner, width, height, color="0.8", label="keep-out"))
+        for name, style in (("hub_target", "b-"), ("tool_target", "g-")):
+            ax.plot(t[f"{name}_{XYZ[a]}_m"][synchronised], t[f"{name}_{XYZ[b]}_m"][synchronised], style, lw=1.2,
+                    label="chaser" if name == "hub_target" else "tool point")
+        ax.set_xlabel(f"{XYZ[a]} [m] (target axes)")
+        ax.set_ylabel(f"{XYZ[b]} [m]")
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_title("Turning with the target: retract and withdraw")
+    handles, labels = axes[0].get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    axes[0].legend(unique.values(), unique.keys(), fontsize=8)
+    rows = time >= start_s - 1e-9
+    distance = np.linalg.norm(np.column_stack([t[f"r_lvlh_{c}_m"][rows] for c in XYZ]), axis=1)
+    axes[2].plot(time[rows], distance, "b", lw=1.2, label="chaser from the target's centre")
+    axes[2].axhline(float(escape["safe_distance_m"]), color="r", ls="--", lw=1, label="safe distance")
+    for instant, name in ((desync_s, "desynchronise"), (hold_s, "hold")):
+        axes[2].axvline(instant, color="k", ls=":", lw=1)
+        axes[2].text(instant, 1.0, f" {name}", rotation=90, va="bottom", fontsize=8)
+    axes[2].set_xlabel("t [s]")
+    axes[2].set_ylabel("distance [m]")
+    axes[2].legend(fontsize=8)
+    axes[2].set_title(f"The escape ({escape['trigger']}) from {start_s:.1f} s")
+    fig.tight_layout()
+    fig.savefig(out / "reach_escape.png", dpi=110)
+    plt.close(fig)
+    return True
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run_dir")
@@ -334,11 +389,13 @@ def main(argv=None):
     figures = plot_figures(t, mask, summary, scenario, out)
     rigidisation = plot_rigidisation(t, summary, scenario, out)
     stabilisation = plot_stabilisation(t, summary, scenario, out)
+    escape = plot_escape(t, summary, scenario, out)
     hold = mask & (t["t_s"] >= hold_from_s) & (t["t_s"] < hold_to_s)
     ratio = envelope_exceedance(np.column_stack([t[f"gripper_err_{c}_m"][hold] for c in XYZ]) * 1e3, ENVELOPE_MM)
     written = (["reach_joints.png", "reach_gripper.png"] + (["reach_figures.png"] if figures else [])
                + (["reach_rigidisation.png"] if rigidisation else [])
-               + (["reach_stabilisation.png"] if stabilisation else []))
+               + (["reach_stabilisation.png"] if stabilisation else [])
+               + (["reach_escape.png"] if escape else []))
     print(f"wrote {', '.join(str(out / w) for w in written)}; over the hold the gripper used "
           f"{', '.join(f'{r:.0%}' for r in ratio)} of Table 2's position envelope (x, y, z)")
     if args.show:

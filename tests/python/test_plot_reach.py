@@ -35,7 +35,7 @@ target:
 """
 
 
-def fake_run(run_dir, figure=False, stabilisation=False):
+def fake_run(run_dir, figure=False, stabilisation=False, escape=False):
     """100 periods: the arm wakes at row 20 (the gripper's channels NaN before), the gripper closing in on
     the pose as 8 mm, 4 mm, 2 mm times exp(-t/10). With figure, the arm's figure too: the hub at
     (7.4, 0, 0.6) m turned 90 deg about z, the joints on a line to the tool, which moves from 6 m to 4.05 m
@@ -70,6 +70,9 @@ def fake_run(run_dir, figure=False, stabilisation=False):
             columns[f"omega_target_body_{c}_radps"] = v * share
         for j in range(1, 8):
             columns[f"load_arm_{j}_Nm"] = np.where(t >= 9.0, 10.0 * j * share, 0.0)
+    if escape:  # the chaser from 7.4 m out to 30 m from the target's centre along LVLH y
+        columns["r_lvlh_x_m"], columns["r_lvlh_z_m"] = 0.0 * t, 0.0 * t
+        columns["r_lvlh_y_m"] = 7.4 + (30.0 - 7.4) * np.clip((t - 3.0) / 6.0, 0.0, 1.0)
     header = ",".join(columns)
     np.savetxt(run_dir / "telemetry.csv", np.column_stack(list(columns.values())), delimiter=",", header=header,
                comments="")
@@ -78,7 +81,9 @@ def fake_run(run_dir, figure=False, stabilisation=False):
         "reach": {"flown": True, "hold_from_s": 5.0, "grasp": {"closure_s": 8.55},
                   **({"rigidisation": {"start_s": 8.6, "brakes_s": 9.0},
                       "stabilisation": {"start_s": 9.0, "goal_rate_deg_s": 0.5, "peak_joint_load_Nm": 70.0}}
-                     if stabilisation else {})}}))
+                     if stabilisation else {}),
+                  **({"escape": {"flown": True, "trigger": "command", "start_s": 3.0, "desynchronise_s": 6.0,
+                                 "hold_s": 9.0, "safe_distance_m": 30.0}} if escape else {})}}))
     scenario = run_dir.parent / "fake_reach.yaml"
     scenario.write_text(SCENARIO + FIGURE_SCENARIO if figure else SCENARIO)
     return scenario
@@ -231,3 +236,27 @@ def test_after_a_rigidisation_its_joints_are_drawn(tmp_path, capsys):
     plain = fake_run(tmp_path / "plain")
     pr.main([str(tmp_path / "plain"), "--scenario", str(plain), "--out", str(tmp_path / "plain-plots")])
     assert not (tmp_path / "plain-plots" / "reach_rigidisation.png").exists()
+
+
+def test_the_keep_out_boxes_are_projected_on_the_axes_asked_for():
+    scenario = yaml_load_text(FIGURE_SCENARIO)
+    (corner, width, height), = pr.keep_out_rectangles(scenario, (0, 2))
+    assert corner == pytest.approx((-6.1, -2.0)) and width == pytest.approx(10.0) and height == pytest.approx(4.0)
+    assert pr.keep_out_rectangles({"target": {}}, (0, 1)) == []
+
+
+def test_after_an_escape_its_paths_and_distance_are_drawn(tmp_path, capsys):
+    scenario = fake_run(tmp_path / "run", figure=True, escape=True)
+    out = tmp_path / "plots"
+    pr.main([str(tmp_path / "run"), "--scenario", str(scenario), "--out", str(out)])
+    assert (out / "reach_escape.png").stat().st_size > 10_000
+    assert "reach_escape.png" in capsys.readouterr().out
+    # Without an escape nothing is drawn.
+    plain = fake_run(tmp_path / "plain", figure=True)
+    pr.main([str(tmp_path / "plain"), "--scenario", str(plain), "--out", str(tmp_path / "plain-plots")])
+    assert not (tmp_path / "plain-plots" / "reach_escape.png").exists()
+
+
+def yaml_load_text(text):
+    import yaml
+    return yaml.safe_load(text)
