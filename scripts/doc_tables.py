@@ -570,6 +570,54 @@ def reach_run_rows(compliance, hinf):
     return rows
 
 
+ESCAPE_LABELS = ("command at 2,870 s, S1", "command, S2", "command, S3", "command, S1, H-infinity law",
+                 "failed grasp, S1")
+
+
+def escape_rows(*runs):
+    """One escape per row: the trigger's time, the clearances, the tool's, the camera, the end, the verdict."""
+    rows = []
+    for run in runs:
+        e = load_json(Path(run) / "summary.json")["reach"]["escape"]
+        rows.append([fixed(e["start_s"], 1),
+                     f"{fixed(e['min_clearance_synchronised_m'], 2)} / {fixed(e['min_clearance_unsynchronised_m'], 2)}",
+                     fixed(e["min_tool_clearance_m"], 2), fixed(e["max_camera_angle_deg"], 1),
+                     fixed(e["final_distance_m"], 2), "met" if e["requirements_met"] else "**not met**"])
+    return rows
+
+
+MISSION_PHASES = ("line", "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "transfer",
+                  "capture_point_hold", "reach", "capture", "rigidisation", "stabilisation")
+REQUIREMENT_WORDS = {"position_error_m": "position", "speed_error_mps": "speed", "attitude_error_deg": "attitude",
+                     "rate_error_deg_s": "rate", "gripper_table2": "gripper Table 2",
+                     "peak_joint_torque_Nm": "torque", "captured": "captured", "grasp_table2": "grasp Table 2",
+                     "brakes_engaged": "brakes", "final_rate_deg_s": "rate", "peak_brake_load_Nm": "load",
+                     "escape_requirements": "escape"}
+
+
+def mission_rows(run):
+    """Per phase of comrade_capture: its span, the least clearance against its limit, the other
+    requirements (value <= limit, or the condition) with those not met in bold, and the phase's verdict."""
+    verdicts = {v["phase"]: v for v in load_json(Path(run) / "summary.json")["phase_verdicts"]}
+    rows = []
+    for name in MISSION_PHASES:
+        v = verdicts.get(name)
+        if v is None:
+            rows.append(["-", "-", "-", "not flown"])
+            continue
+        clearance, others = "-", []
+        for q in v["requirements"]:
+            if q["name"] == "clearance_m":
+                clearance = f"{fixed(q['value'], 2)} (>= {q['limit']:g})"
+                continue
+            word = REQUIREMENT_WORDS[q["name"]]
+            text = word if q["value"] is None else f"{word} {sig(q['value'], 2)} (<= {q['limit']:g})"
+            others.append(text if q["met"] else f"**{text}**")
+        rows.append([f"{fixed(v['start_s'], 0)} - {fixed(v['end_s'], 0)}", clearance, "; ".join(others) or "-",
+                     "met" if v["met"] else "**not met**"])
+    return rows
+
+
 # --------------------------------------------------------------------------------------------------
 # One run, the thruster set, the FDI design, the H-infinity loops
 
@@ -1309,6 +1357,15 @@ ENVISAT_FINAL_APPROACH_ROWS = (("lqr", "0.04", "1.0"), ("hinf", "0.04", "1.0"), 
                                ("lqr", "0.04", "0.3"), ("hinf", "0.04", "0.3"))
 
 
+# docs/servicing.md's escape: commanded 20 s into the approach onto the fixture, or on a failed grasp
+# (no closure: 100 samples in a row asked for, 5 s allowed), each flown to its hold.
+ESCAPE_COMMAND = ("run", "scenarios/comrade_capture.yaml", "--set", "capture.escape={command_s: 2870}",
+                  "--set", "duration_s=3900", "--telemetry", "none")
+ESCAPE_FAILED_GRASP = ("run", "scenarios/comrade_capture.yaml", "--set", "capture.escape={on_failed_grasp: true}",
+                       "--set", "capture.closure_samples=100", "--set", "capture.grasp_timeout_s=5",
+                       "--set", "duration_s=3950", "--telemetry", "none")
+
+
 def envisat_final_approach_command(law, bandwidth, noise):
     return Command(f"envisat-{law}-{bandwidth}-{noise}", ENVISAT_FINAL_APPROACH + (
         "--set", f"sensors.target_pose={{period_s: 0.3333333333333333, attitude_noise_deg: {noise}, latency_s: 0.1}}",
@@ -1336,6 +1393,11 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--set",
                              "capture.rigidise.law=hinf", "--set", "capture.stabilise.law=hinf", "--telemetry",
                              "none", "--out", "OUT"), quick=True),
+    Command("escape-S1", ESCAPE_COMMAND + ("--out", "OUT"), quick=False),
+    Command("escape-S2", ESCAPE_COMMAND + ("--set", "target.body.spin_case=S2", "--out", "OUT"), quick=False),
+    Command("escape-S3", ESCAPE_COMMAND + ("--set", "target.body.spin_case=S3", "--out", "OUT"), quick=False),
+    Command("escape-hinf", ESCAPE_COMMAND + ("--set", "capture.law=hinf", "--out", "OUT"), quick=False),
+    Command("escape-failed-grasp", ESCAPE_FAILED_GRASP + ("--out", "OUT"), quick=False),
     Command("msr-thrusters.json", ("thrusters", "scenarios/msr_terminal.yaml", "--json", "OUT"), quick=True),
     Command("fdi-position.json", ("fdi", "design", "scenarios/msr_terminal.yaml", "--model", "position", "--out",
                                   "OUT"), quick=True),
@@ -1410,6 +1472,24 @@ TABLES = [
           caption="The gripper's figures per axis, x the approach; over the hold against the pre-grasp pose, "
                   "at the closure against the fixture. The COMRADE 2018 column: Table 2's figures, and from the "
                   "run's end on the table each row names."),
+    Table("servicing-escape-runs", "docs/servicing.md",
+          ("escape-S1", "escape-S2", "escape-S3", "escape-hinf", "escape-failed-grasp"),
+          ("trigger, spin case", "triggered at [s]", "least clearance synchronised / after [m]",
+           "tool point's least clearance [m]", "camera axis from the target's centre, largest [deg]",
+           "distance at the end [m]", "requirements"),
+          ESCAPE_LABELS, escape_rows, words=("met", "**not", "met**"),
+          caption="Limits: clearance >= 0.5 m synchronised and >= 3 m after (COMRADE Table 4's), the tool point "
+                  "outside the keep-out volume once retracted, the camera's field of view 40 deg, the safe distance "
+                  "30 +- 0.5 m.",
+          shown_as="chaser run scenarios/comrade_capture.yaml --set 'capture.escape={command_s: 2870}' --set "
+                   "duration_s=3900 (--set target.body.spin_case=S2 or S3, --set capture.law=hinf); the failed "
+                   "grasp: --set 'capture.escape={on_failed_grasp: true}' --set capture.closure_samples=100 --set "
+                   "capture.grasp_timeout_s=5 --set duration_s=3950"),
+    Table("servicing-mission-phases", "docs/servicing.md", ("capture",),
+          ("phase", "flown [s]", "least clearance [m]", "its other requirements", "verdict"),
+          MISSION_PHASES, mission_rows,
+          words=("met", "**not", "met**", "not", "flown", "**") + tuple(
+              w for text in REQUIREMENT_WORDS.values() for w in text.split())),
     Table("servicing-comrade-stabilise", "docs/servicing.md", ("stabilise",), ("", "COMRADE H-inf") + SPIN_CASES,
           STABILISE_LABELS, comrade_stabilise_rows, words=("+-", "of"),
           caption="COMRADE H-inf: the paper's Table 8 (one run of its H-infinity stabilisation). Ours: 20 "

@@ -37,6 +37,12 @@ double synchronised_from_s(const model::Scenario& scenario) {
   return std::numeric_limits<double>::infinity();
 }
 
+double keep_out_clearance_m(const model::Scenario& scenario, const MonitorSample& s) {
+  // The chaser's CoM in the target's axes, from its CoM.
+  const Vec3 p_target_m = s.q_inertial_from_target.conjugate() * (s.q_inertial_from_lvlh * s.r_lvlh_m);
+  return model::keep_out_distance_m(scenario.target.body->keep_out, p_target_m) - scenario.chaser.keep_out_radius_m;
+}
+
 bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, MissionFigures& f) {
   if (!finite(s) || s.r_lvlh_m.norm() > kDivergedDistance_m) {
     f.diverged = true;
@@ -63,10 +69,8 @@ bool monitor_period(const model::Scenario& scenario, const MonitorSample& s, Mis
   const double attitude_error = attitude_error_body(s.q_ref_inertial_from_body, s.q_inertial_from_body).norm();
   f.max_attitude_error_rad = std::max(f.max_attitude_error_rad, attitude_error);
   f.max_position_error_m = std::max(f.max_position_error_m, (s.r_lvlh_m - s.r_ref_lvlh_m).norm());
-  if (checks_keep_out(scenario)) {  // the chaser's CoM in the target's axes, from its CoM
-    const Vec3 p_target_m = s.q_inertial_from_target.conjugate() * (s.q_inertial_from_lvlh * s.r_lvlh_m);
-    const double clearance_m =
-        model::keep_out_distance_m(scenario.target.body->keep_out, p_target_m) - scenario.chaser.keep_out_radius_m;
+  if (checks_keep_out(scenario)) {
+    const double clearance_m = keep_out_clearance_m(scenario, s);
     if (clearance_m < f.min_target_clearance_m) {
       f.min_target_clearance_m = clearance_m;
       f.min_target_clearance_at_s = s.t_s;

@@ -60,6 +60,10 @@ double synchronised_from_s(const model::Scenario& scenario);
 // MonitorSample::q_inertial_from_target every period).
 bool checks_keep_out(const model::Scenario& scenario);
 
+// The chaser's clearance from the target's keep-out volume at a sample [m] (negative inside): the
+// distance of its CoM from the volume less chaser.keep_out_radius_m. Needs checks_keep_out.
+double keep_out_clearance_m(const model::Scenario& scenario, const MonitorSample& sample);
+
 // Divergence bound: far outside anything a 20 m approach can reach under control.
 inline constexpr double kDivergedDistance_m = 1e4;
 

@@ -12,6 +12,7 @@
 #include "sim/mission_monitor.hpp"
 #include "sim/phase_sequence.hpp"
 #include "sim/escape_result.hpp"
+#include "sim/phase_verdicts.hpp"
 #include "sim/reach_result.hpp"
 #include "sim/telemetry.hpp"
 
@@ -81,6 +82,8 @@ struct RunResult {
   ReachResult reach;
   // With capture.escape: the escape against Chaser's requirements (sim/escape_result.hpp).
   EscapeResult escape;
+  // Each phase's figures while it was flown, by its index in the run's phases (sim/phase_verdicts.hpp).
+  std::vector<PhaseFigures> phase_figures;
 };
 
 // A scheme's result by its name (flight/diagnosis_schemes.hpp); the name must be in the table.

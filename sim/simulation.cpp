@@ -126,6 +126,7 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
     phase_requirements_.push_back(phase.requirements);
     phase_configuration_.push_back(phase.configuration);
   }
+  result_.phase_figures.assign(phase_params_.phases.size(), PhaseFigures{});  // before the loop: it allocates nothing
   loop_start_ = std::chrono::steady_clock::now();
   if (options_.record_glr_per_second)
     result_.glr_max_per_s.assign(static_cast<std::size_t>(std::ceil(truth.duration_s)), {});
@@ -210,6 +211,8 @@ void Simulation::end_period(const flight::FlightOutput& out) {
     done_ = true;
     return;
   }
+  add_phase_period(result_.phase_figures[static_cast<std::size_t>(phase_state_.phase)], truth.sample,
+                   keep_out_ ? keep_out_clearance_m(scenario_, truth.sample) : std::numeric_limits<double>::quiet_NaN());
   propagate(out.command, t_k);
   tally(out, t_s);
   if (memory_ || (telemetry_ && telemetry_->ok())) record(out, truth, t_s);
@@ -270,10 +273,8 @@ EscapeSample Simulation::escape_sample(const MonitorSample& sample, const plant:
   const Vec3 tool_m = goal_m + q_target_from_reach_goal_ * gripper.r_m;
   const Quat q_target_from_tool = q_target_from_reach_goal_ * quat_from_rotation_vector(gripper.attitude_rad);
   if (keep_out_) {
-    const auto& keep_out = scenario_.target.body->keep_out;
-    const Vec3 chaser_m = sample.q_inertial_from_target.conjugate() * (sample.q_inertial_from_lvlh * sample.r_lvlh_m);
-    out.chaser_clearance_m = model::keep_out_distance_m(keep_out, chaser_m) - scenario_.chaser.keep_out_radius_m;
-    out.tool_clearance_m = model::keep_out_distance_m(keep_out, tool_m);
+    out.chaser_clearance_m = keep_out_clearance_m(scenario_, sample);
+    out.tool_clearance_m = model::keep_out_distance_m(scenario_.target.body->keep_out, tool_m);
   }
   if (scenario_.sensors.arm_camera)
     out.camera_angle_rad = camera_angle_rad(tool_m, q_target_from_tool, scenario_.sensors.arm_camera->setback_m);

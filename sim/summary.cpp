@@ -265,6 +265,36 @@ std::string escape_text(const model::Scenario& scenario, const EscapeResult& e) 
       escape_meets_requirements(e, params.safe_distance_m, camera_fov_rad(scenario)) ? "met" : "NOT met");
 }
 
+// Each phase flown against its requirements (sim/phase_verdicts.hpp).
+nlohmann::json verdicts_json(const std::vector<PhaseVerdict>& verdicts) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PhaseVerdict& v : verdicts) {
+    nlohmann::json requirements = nlohmann::json::array();
+    for (const Requirement& q : v.requirements)
+      requirements.push_back({{"name", q.name},
+                              {"value", finite_or_null(true, q.value)},
+                              {"limit", finite_or_null(true, q.limit)},
+                              {"met", q.met}});
+    out.push_back({{"phase", v.phase}, {"start_s", v.start_s}, {"end_s", v.end_s}, {"met", v.met()},
+                   {"requirements", requirements}});
+  }
+  return out;
+}
+
+// The phases' line of the text report: every phase met, or those that are not and why.
+std::string verdicts_text(const std::vector<PhaseVerdict>& verdicts) {
+  std::string failed;
+  for (const PhaseVerdict& v : verdicts) {
+    if (v.met()) continue;
+    std::string names;
+    for (const Requirement& q : v.requirements)
+      if (!q.met) names += (names.empty() ? "" : ", ") + q.name;
+    failed += fmt::format("{}{} ({})", failed.empty() ? "" : "; ", v.phase, names);
+  }
+  return failed.empty() ? fmt::format("  phases: every requirement met in the {} phases flown\n", verdicts.size())
+                        : fmt::format("  phases: NOT met: {}\n", failed);
+}
+
 // The reach against COMRADE Table 2 (sim/reach_result.hpp): null without a capture.
 nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
   if (!scenario.capture) return nullptr;
@@ -377,7 +407,7 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
 
 nlohmann::json run_summary(const model::Scenario& scenario, const std::string& scenario_hash, const RunResult& r) {
   const MissionFigures& f = r.figures;
-  return nlohmann::json{
+  nlohmann::json out{
       {"chaser_version", kChaserVersion},
       {"scenario", scenario.name},
       {"scenario_hash", scenario_hash},
@@ -426,6 +456,12 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"fdir", fdir_json(scenario, r.fdir)},
       {"reach", reach_json(scenario, r)},
   };
+  if (scenario.guidance.synchronised) {  // COMRADE's mission, phase by phase
+    const std::vector<PhaseVerdict> verdicts = phase_verdicts(scenario, run_phases(scenario), r);
+    out["phase_verdicts"] = verdicts_json(verdicts);
+    out["mission_met"] = mission_met(verdicts);
+  }
+  return out;
 }
 
 std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
@@ -475,6 +511,7 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                          model::thruster_name(e.recovered_thruster), e.recovery_s);
   }
   out += reach_text(scenario, r);
+  if (scenario.guidance.synchronised) out += verdicts_text(phase_verdicts(scenario, run_phases(scenario), r));
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
   return out;
 }

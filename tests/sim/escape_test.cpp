@@ -7,6 +7,7 @@
 
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
+#include "sim/run_phases.hpp"
 
 namespace chaser::sim {
 namespace {
@@ -53,6 +54,13 @@ TEST(Escape, AFailedGraspEscapesToTheSafeDistanceMeetingItsRequirements) {
   EXPECT_LT(e.max_camera_angle_rad, 0.5 * s.sensors.arm_camera->fov_half_angle_rad);
   EXPECT_NEAR(e.final_distance_m, 20.0, 0.1);
   EXPECT_FALSE(r.figures.capture_achieved);
+  // Phase by phase: the escape's requirements met in its retreat, the capture not made.
+  const std::vector<PhaseVerdict> verdicts = phase_verdicts(s, run_phases(s), r);
+  ASSERT_GE(verdicts.size(), 3u);
+  EXPECT_EQ(verdicts.back().phase, "escape_retreat");
+  EXPECT_TRUE(verdicts.back().met());
+  EXPECT_EQ(verdicts[verdicts.size() - 3].phase, "capture");
+  EXPECT_FALSE(verdicts[verdicts.size() - 3].met());
   // The chaser follows the plan: the monitor's largest error against the escape's reference.
   EXPECT_LT(r.figures.max_position_error_m, 0.25);  // measured 0.148 m
 }
