@@ -48,7 +48,9 @@ fmea: build
 # COMRADE 2018's synchronisation (docs/servicing.md): one flight and its plots, then Table 5 by
 # Monte Carlo, 100 runs per spin case and ASSIST's approach (~35 s on 2 cores), and its scatter;
 # the capture: one flight (reach, grasp, rigidisation, stabilisation) and its plots, then Tables 5
-# (reach) and 6, 100 runs per law (~6 min), and Table 8, 20 runs per spin case (~10 min).
+# (reach) and 6, 100 runs per law (~6 min), Table 8, 20 runs per spin case (~10 min), the same
+# runs' phase verdicts (comrade-mission, resumed: no run flown again), Table 7 from one capture
+# (~7 min), and an escape commanded during the grasp with its plots (~40 s).
 servicing: build
 	@./$(BUILD)/cli/chaser run scenarios/comrade_sync.yaml --out $(SERVICING_OUT)/flight
 	@$(PYTHON) python/plot_servicing.py $(SERVICING_OUT)/flight
@@ -61,6 +63,13 @@ servicing: build
 	  --out $(SERVICING_OUT)/reach-campaign
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-stabilise \
 	  --out $(SERVICING_OUT)/stabilise-campaign
+	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-mission --resume \
+	  --out $(SERVICING_OUT)/stabilise-campaign
+	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-rigidise \
+	  --out $(SERVICING_OUT)/rigidise-campaign
+	@./$(BUILD)/cli/chaser run scenarios/comrade_capture.yaml --set 'capture.escape={command_s: 2870}' \
+	  --set duration_s=3900 --out $(SERVICING_OUT)/escape
+	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/escape
 
 # Every generated results table in README.md and docs/ rewritten from its command's output
 # (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take ~25 minutes on 2 cores).

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "sim/phase_verdicts.hpp"
+#include "sim/run_phases.hpp"
 
 namespace chaser::campaign {
 
@@ -160,6 +162,8 @@ void reach_columns(std::vector<RunColumn>& columns) {
       {"stabilise_peak_load_Nm", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.stabilise_peak_load_Nm); }},
       {"stabilise_propellant_kg", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.reach.stabilise_propellant_kg); }},
       {"stabilise_table3_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.reach.stabilise_table3_met); }},
+      {"mission_met", ColumnKind::kFlag, [](const RunRecord& r, int, std::string& o) { flag(o, r.mission_met); }},
+      {"phases_not_met", ColumnKind::kInteger, [](const RunRecord& r, int, std::string& o) { integer(o, r.phases_not_met); }},
   });
 }
 
@@ -204,6 +208,11 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
   r.min_clearance_unsynchronised_m = std::isfinite(f.min_clearance_unsynchronised_m) ? f.min_clearance_unsynchronised_m : kNaN;
   r.min_clearance_synchronised_m = std::isfinite(f.min_clearance_synchronised_m) ? f.min_clearance_synchronised_m : kNaN;
   r.reach = reach_figures(result.reach);
+  if (setup.truth.capture && setup.truth.guidance.synchronised) {
+    const std::vector<sim::PhaseVerdict> verdicts = sim::phase_verdicts(setup.truth, sim::run_phases(setup.truth), result);
+    r.mission_met = sim::mission_met(verdicts);
+    r.phases_not_met = sim::phases_not_met_bits(verdicts);
+  }
   return r;
 }
 

@@ -76,6 +76,10 @@ struct RunRecord {
   double final_position_error_m = 0, final_speed_mps = 0, final_attitude_error_deg = 0, final_rate_error_deg_s = 0;
   double min_clearance_unsynchronised_m = 0, min_clearance_synchronised_m = 0;
   ReachFigures reach{};
+  // With a capture, the whole mission judged phase by phase (sim/phase_verdicts.hpp): every phase
+  // met, and the phases not met as bits (sim::phases_not_met_bits: bit i sim::kMissionPhases[i]).
+  bool mission_met = false;
+  std::int64_t phases_not_met = 0;
 };
 
 // The record of a flown run; status kDiverged when the monitor stopped it or it left the planned

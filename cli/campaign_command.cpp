@@ -15,6 +15,7 @@
 #include "campaign/reach_tables.hpp"
 #include "campaign/csv.hpp"
 #include "campaign/rigidise_study.hpp"
+#include "campaign/mission_tables.hpp"
 #include "campaign/stabilise_tables.hpp"
 #include "campaign/run_one.hpp"
 #include "campaign/run_row.hpp"
@@ -33,6 +34,7 @@ constexpr const char* kPresetTable2 = "fonod2015-table2";
 constexpr const char* kPresetTable5 = "comrade-table5";
 constexpr const char* kPresetReach = "comrade-reach";
 constexpr const char* kPresetStabilise = "comrade-stabilise";
+constexpr const char* kPresetMission = "comrade-mission";
 constexpr const char* kPresetRigidise = "comrade-rigidise";
 // COMRADE Table 7's columns: 100 runs each from one capture (~3 s each: two columns in ~5 minutes
 // on 2 cores).
@@ -104,8 +106,9 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
-      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {}, {})\n", args.preset,
-                               kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise, kPresetRigidise);
+      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {}, {}, {})\n",
+                               args.preset, kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise, kPresetMission,
+                               kPresetRigidise);
       return std::nullopt;
     }
     overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
@@ -307,36 +310,67 @@ int comrade_reach(const CampaignArgs& args) {
   return kExitOk;
 }
 
-// --preset comrade-stabilise (docs/servicing.md, "The stabilisation over dispersed runs"): one
-// fault-free campaign per spin case S1, S2, S3 of a scenario with capture.stabilise, each the whole
-// run (synchronisation, reach, capture, rigidisation, stabilisation), in its folder under --out and
-// resumable as any campaign; then stabilise.md and stabilise.csv beside them: COMRADE Table 8.
-int comrade_stabilise(const CampaignArgs& args) {
-  if (refuses_split(args, kPresetStabilise)) return kExitBadInput;
+// The whole runs of a capture scenario per spin case S1, S2, S3 (comrade-stabilise, comrade-mission):
+// refused split, or where the scenario lacks what `has` asks (the section `lacks` names); else one
+// fault-free campaign per case, 20 runs unless --runs, each run flying the scenario's whole
+// duration_s (a campaign's run ends at onset_s + the horizon), in its folder under --out and
+// resumable as any campaign, read back by read(name, runs.csv path, error).
+template <class Column, class Read, class Has>
+std::optional<std::vector<Column>> spin_case_columns(const CampaignArgs& args, const char* preset, Has has,
+                                                     const char* lacks, Read read, int& code) {
+  code = kExitBadInput;
+  if (refuses_split(args, preset)) return std::nullopt;
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
-  if (!loaded) return kExitBadInput;
+  if (!loaded) return std::nullopt;
   const model::Scenario& s = *loaded->scenario;
-  if (!s.capture || !s.capture->stabilise || !s.target.body) {
-    std::cerr << fmt::format("chaser campaign: --preset comrade-stabilise: {} has no capture.stabilise section: use "
-                             "scenarios/comrade_capture.yaml\n",
-                             args.scenario_path);
-    return kExitBadInput;
+  if (!has(s)) {
+    std::cerr << fmt::format("chaser campaign: --preset {}: {} has no {} section: use scenarios/comrade_capture.yaml\n",
+                             preset, args.scenario_path, lacks);
+    return std::nullopt;
   }
   CampaignArgs with_runs = args;
   if (with_runs.runs.empty()) with_runs.runs = kStabiliseRuns;
-  // Each run flies the scenario's whole duration_s (a campaign's run ends at onset_s + the horizon).
   const std::string horizon = fmt::format("campaign.horizon_after_onset_s={}", s.duration_s - s.campaign.onset_s);
   std::vector<std::pair<std::string, std::vector<std::string>>> cases;
   for (const char* spin_case : {"S1", "S2", "S3"})
     cases.push_back({spin_case, {fmt::format("target.body.spin_case={}", spin_case), horizon}});
+  code = kExitOk;
+  return case_columns<Column>(with_runs, preset, cases, read, code);
+}
+
+// --preset comrade-stabilise (docs/servicing.md, "The stabilisation over dispersed runs"): the
+// spin cases' campaigns of a scenario with capture.stabilise, each run the whole mission
+// (synchronisation, reach, capture, rigidisation, stabilisation); then stabilise.md and
+// stabilise.csv beside them: COMRADE Table 8.
+int comrade_stabilise(const CampaignArgs& args) {
   int code = kExitOk;
-  const auto columns =
-      case_columns<campaign::StabiliseColumn>(with_runs, kPresetStabilise, cases, campaign::read_stabilise_column, code);
+  const auto columns = spin_case_columns<campaign::StabiliseColumn>(
+      args, kPresetStabilise,
+      [](const model::Scenario& s) { return s.capture && s.capture->stabilise && s.target.body; }, "capture.stabilise",
+      campaign::read_stabilise_column, code);
   if (!columns) return code;
   const std::filesystem::path out(args.out_dir);
   std::ofstream(out / "stabilise.md") << campaign::stabilise_markdown(*columns);
   std::ofstream(out / "stabilise.csv") << campaign::stabilise_csv(*columns);
   std::cout << fmt::format("comrade-stabilise: wrote {}/stabilise.md and stabilise.csv\n", args.out_dir);
+  return kExitOk;
+}
+
+// --preset comrade-mission (docs/servicing.md, "The whole mission over dispersed runs"): the same
+// campaigns as comrade-stabilise's (with --resume into its --out they fly nothing again), then
+// mission.md and mission.csv beside them: per case the runs meeting every phase's requirements,
+// and where the others fail.
+int comrade_mission(const CampaignArgs& args) {
+  int code = kExitOk;
+  const auto columns = spin_case_columns<campaign::MissionColumn>(
+      args, kPresetMission,
+      [](const model::Scenario& s) { return s.capture && s.guidance.synchronised && s.target.body; }, "capture",
+      campaign::read_mission_column, code);
+  if (!columns) return code;
+  const std::filesystem::path out(args.out_dir);
+  std::ofstream(out / "mission.md") << campaign::mission_markdown(*columns);
+  std::ofstream(out / "mission.csv") << campaign::mission_csv(*columns);
+  std::cout << fmt::format("comrade-mission: wrote {}/mission.md and mission.csv\n", args.out_dir);
   return kExitOk;
 }
 
@@ -470,8 +504,8 @@ int campaign_command(const CampaignArgs& args) {
   }
   if (args.rerun) {
     if (args.preset == kPresetTable5 || args.preset == kPresetReach || args.preset == kPresetStabilise ||
-        args.preset == kPresetRigidise || !args.also.empty()) {
-      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise or --also (rerun one "
+        args.preset == kPresetMission || args.preset == kPresetRigidise || !args.also.empty()) {
+      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise, comrade-mission or --also (rerun one "
                    "case's folder: its scenario with --set target.body.spin_case=S1|S2|S3 or capture.law=hinf|"
                    "compliance, and --cases none)\n";
       return kExitBadInput;
@@ -481,6 +515,7 @@ int campaign_command(const CampaignArgs& args) {
   if (args.preset == kPresetTable5) return comrade_table5(args);
   if (args.preset == kPresetReach) return comrade_reach(args);
   if (args.preset == kPresetStabilise) return comrade_stabilise(args);
+  if (args.preset == kPresetMission) return comrade_mission(args);
   if (args.preset == kPresetRigidise) return comrade_rigidise(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";

@@ -618,6 +618,34 @@ def mission_rows(run):
     return rows
 
 
+MISSION_CAMPAIGN_PHASES = MISSION_PHASES
+MISSION_CAMPAIGN_LABELS = (("runs flown to the end, of runs", "every phase's requirements met")
+                           + tuple(f"{phase}: runs not met (first)" for phase in MISSION_CAMPAIGN_PHASES))
+
+
+def comrade_mission_rows(out):
+    """mission.csv of the comrade-mission preset: per spin case the runs flown, those meeting every
+    phase, and per phase the runs that broke it (and broke it first)."""
+    rows = {}
+    with open(Path(out) / "mission.csv", newline="") as f:
+        for r in csv.DictReader(f):
+            rows[(r["case"], r["phase"])] = r
+    runs = {}
+    for case in SPIN_CASES:  # the runs in each case's runs.csv, flown or not
+        with open(Path(out) / case / "runs.csv", newline="") as f:
+            runs[case] = sum(1 for _ in csv.DictReader(f))
+
+    def flown(case):
+        return int(rows[(case, "every")]["runs_flown"])
+
+    table = [[f"{flown(c)} of {runs[c]}" for c in SPIN_CASES],
+             [f"{flown(c) - int(rows[(c, 'every')]['runs_not_met'])} of {flown(c)}" for c in SPIN_CASES]]
+    for phase in MISSION_CAMPAIGN_PHASES:
+        table.append([f"{rows[(c, phase)]['runs_not_met']} ({rows[(c, phase)]['runs_first_not_met']})"
+                      if (c, phase) in rows else "0 (0)" for c in SPIN_CASES])
+    return table
+
+
 # --------------------------------------------------------------------------------------------------
 # One run, the thruster set, the FDI design, the H-infinity loops
 
@@ -1390,6 +1418,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
             quick=False),
     Command("rigidise", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-rigidise", "--out", "OUT"),
             quick=False),
+    Command("mission", ("campaign", "scenarios/comrade_capture.yaml", "--preset", "comrade-mission", "--out", "OUT"),
+            quick=False),
     Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--set",
                              "capture.rigidise.law=hinf", "--set", "capture.stabilise.law=hinf", "--telemetry",
                              "none", "--out", "OUT"), quick=True),
@@ -1490,6 +1520,10 @@ TABLES = [
           MISSION_PHASES, mission_rows,
           words=("met", "**not", "met**", "not", "flown", "**") + tuple(
               w for text in REQUIREMENT_WORDS.values() for w in text.split())),
+    Table("servicing-comrade-mission", "docs/servicing.md", ("mission",), ("",) + SPIN_CASES,
+          MISSION_CAMPAIGN_LABELS, comrade_mission_rows, words=("of",),
+          caption="20 dispersed runs per spin case, each the whole of comrade_capture (the comrade-stabilise "
+                  "preset's runs)."),
     Table("servicing-comrade-stabilise", "docs/servicing.md", ("stabilise",), ("", "COMRADE H-inf") + SPIN_CASES,
           STABILISE_LABELS, comrade_stabilise_rows, words=("+-", "of"),
           caption="COMRADE H-inf: the paper's Table 8 (one run of its H-infinity stabilisation). Ours: 20 "

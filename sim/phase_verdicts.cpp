@@ -28,6 +28,16 @@ bool mission_met(const std::vector<PhaseVerdict>& verdicts) {
   return std::ranges::all_of(verdicts, [](const PhaseVerdict& v) { return v.met(); });
 }
 
+std::int64_t phases_not_met_bits(const std::vector<PhaseVerdict>& verdicts) {
+  std::int64_t bits = 0;
+  for (const PhaseVerdict& v : verdicts) {
+    if (v.met()) continue;
+    const auto at = std::ranges::find_if(kMissionPhases, [&](const char* name) { return v.phase == name; });
+    bits |= std::int64_t{1} << std::distance(kMissionPhases.begin(), at);
+  }
+  return bits;
+}
+
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;

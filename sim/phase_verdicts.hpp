@@ -13,6 +13,8 @@
 //   stabilisation: Table 3 (the rate below 0.5 deg/s at the end, the braked loads within the peak);
 //   escape_retreat: the escape's requirements (sim/escape_result.hpp).
 // A phase cut short by the run's end is judged on what was flown of it.
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -59,5 +61,13 @@ std::vector<PhaseVerdict> phase_verdicts(const model::Scenario& scenario, const 
 
 // Every phase's requirements met.
 bool mission_met(const std::vector<PhaseVerdict>& verdicts);
+
+// The mission's phases in flight order (sim/run_phases.hpp's names), for a run's phases not met as
+// the bits of one integer (runs.csv's phases_not_met): bit i phase i, bit kMissionPhases.size() any
+// other phase.
+inline constexpr std::array<const char*, 14> kMissionPhases = {
+    "line", "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "transfer",
+    "capture_point_hold", "reach", "capture", "rigidisation", "rigidised", "stabilisation", "escape", "escape_retreat"};
+std::int64_t phases_not_met_bits(const std::vector<PhaseVerdict>& verdicts);
 
 }  // namespace chaser::sim

@@ -282,14 +282,15 @@ EscapeSample Simulation::escape_sample(const MonitorSample& sample, const plant:
 }
 
 // The conditions the run's phases change on (sim/run_phases.hpp's flags), from the flight
-// software's state after the period: the capture confirmed, the brakes engaged.
+// software's state after the period: the capture confirmed, the brakes engaged, the escape
+// triggered and its desynchronisation begun.
 std::uint64_t Simulation::phase_flags() const {
   std::uint64_t flags = 0;
   if (flight_state_.reach.grasp.step == flight::GraspStep::kCaptured) flags |= std::uint64_t{1} << kCapturedFlag;
   if (flight_state_.reach.rigidise.brakes_s >= 0.0) flags |= std::uint64_t{1} << kBrakedFlag;
   if (const flight::EscapeState& escape = flight_state_.reach.escape; escape.started()) {
     flags |= std::uint64_t{1} << kEscapingFlag;
-    constexpr double kTimeTolS = 1e-9;  // the plan's times are sums of seconds, the periods' integer
+    constexpr double kTimeTolS = 1e-9;  // the plan's times in seconds against the periods' integer clock
     if (t_s() + kTimeTolS >= flight::escape_desynchronise_s(*flight_params_.reach->escape, escape))
       flags |= std::uint64_t{1} << kDesynchronisedFlag;
   }

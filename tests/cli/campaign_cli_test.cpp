@@ -58,7 +58,7 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--threads 0", "--threads");
   expect_bad(out + "--preset nope",
              "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach, comrade-stabilise, "
-             "comrade-rigidise)");
+             "comrade-mission, comrade-rigidise)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
@@ -166,7 +166,8 @@ TEST(CampaignCli, ComradeRigidiseFliesTable7sStartsFromOneCapturePerLaw) {
 // --preset comrade-stabilise: one campaign per spin case of a scenario with capture.stabilise (here
 // one run each, the stabilisation cut to 25 s of a 20 s reference), stabilise.md and stabilise.csv
 // beside them, each row with the stabilisation's columns; refused on a scenario without the section.
-TEST(CampaignCli, ComradeStabiliseWritesASpinCaseFolderPerCaseAndTable8) {
+// Then --preset comrade-mission on the same folders.
+TEST(CampaignCli, ComradeStabiliseAndMissionWriteASpinCaseFolderPerCaseAndTheirTables) {
   const fs::path dir = chaser::testing::scratch_path("chaser_stabilise_cli");
   fs::remove_all(dir);
   const std::string preset = "campaign scenarios/comrade_capture.yaml --preset comrade-stabilise --runs 1 --threads 2 "
@@ -188,6 +189,29 @@ TEST(CampaignCli, ComradeStabiliseWritesASpinCaseFolderPerCaseAndTable8) {
   EXPECT_EQ(sync.exit_code, 2);
   EXPECT_NE(sync.output.find("--preset comrade-stabilise: scenarios/comrade_sync.yaml has no capture.stabilise section"),
             std::string::npos) << sync.output;
+
+  // --preset comrade-mission --resume into the same folder: the same campaigns, resumed with nothing
+  // left to fly, and mission.md from their runs' phase verdicts. The reach misses Table 2 in every run here
+  // (its rate about z), the stabilisation cut short misses Table 3.
+  std::string mission_preset = preset;
+  mission_preset.replace(mission_preset.find("comrade-stabilise"), std::string("comrade-stabilise").size(), "comrade-mission");
+  const CommandResult mission = chaser(mission_preset + " --resume");
+  ASSERT_EQ(mission.exit_code, 0) << mission.output;
+  for (const char* spin_case : {"S1", "S2", "S3"}) {
+    const std::string runs = read_file(dir / spin_case / "runs.csv");
+    EXPECT_NE(runs.find(",mission_met,phases_not_met\n"), std::string::npos) << spin_case;
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2) << runs;  // no run flown again
+  }
+  const std::string phases = read_file(dir / "mission.md");
+  EXPECT_NE(phases.find("| runs (flown to the end) | 1 (1) | 1 (1) | 1 (1) |"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("| every phase's requirements met | 0 of 1 | 0 of 1 | 0 of 1 |"), std::string::npos) << phases;
+  EXPECT_NE(phases.find("| reach not met (first) | 1 (1) | 1 (1) | 1 (1) |"), std::string::npos) << phases;
+  EXPECT_NE(read_file(dir / "mission.csv").find("\nS1,every,1,1,1\n"), std::string::npos);
+  const CommandResult no_capture =
+      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-mission --out " + dir.string());
+  EXPECT_EQ(no_capture.exit_code, 2);
+  EXPECT_NE(no_capture.output.find("--preset comrade-mission: scenarios/comrade_sync.yaml has no capture section"),
+            std::string::npos) << no_capture.output;
   fs::remove_all(dir);
 }
 
