@@ -1,6 +1,7 @@
 #include "sim/escape_result.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "model/capture.hpp"
 
@@ -57,6 +58,15 @@ bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, do
          r.min_clearance_synchronised_m >= model::kEscapeSynchronisedClearanceM &&
          r.min_clearance_unsynchronised_m >= model::kEscapeUnsynchronisedClearanceM && r.min_tool_clearance_m > 0.0 &&
          camera_met && std::abs(r.final_distance_m - safe_distance_m) <= model::kEscapeDistanceTolM;
+}
+
+double arm_camera_fov_rad(const model::Scenario& scenario) {
+  return scenario.sensors.arm_camera ? scenario.sensors.arm_camera->fov_half_angle_rad
+                                     : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool escape_meets_requirements(const EscapeResult& r, const model::Scenario& scenario) {
+  return escape_meets_requirements(r, scenario.capture->escape->safe_distance_m, arm_camera_fov_rad(scenario));
 }
 
 }  // namespace chaser::sim

@@ -9,6 +9,7 @@
 
 #include "core/types.hpp"
 #include "flight/escape.hpp"
+#include "model/scenario.hpp"
 
 namespace chaser::sim {
 
@@ -49,5 +50,10 @@ double camera_angle_rad(const Vec3& tool_target_m, const Quat& q_target_from_too
 // where the scenario has no arm camera (camera_fov_rad NaN): flown to the hold, the clearances, the
 // camera and the distance.
 bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, double camera_fov_rad);
+
+// The scenario's arm camera's field of view [rad] (NaN without one), and the requirements with the
+// scenario's safe distance and field of view (a scenario with capture.escape).
+double arm_camera_fov_rad(const model::Scenario& scenario);
+bool escape_meets_requirements(const EscapeResult& r, const model::Scenario& scenario);
 
 }  // namespace chaser::sim

@@ -71,8 +71,7 @@ void add_phase_requirements(const model::Scenario& s, const std::string& name, c
     out.push_back(at_most("final_rate_deg_s", r.reach.stabilise.final_rate_target_degps.norm(), model::kStabilisedRateDegps));
     out.push_back(at_most("peak_brake_load_Nm", peak_brake_load_Nm(r.reach), repeated_peak_Nm));
   } else if (name == "escape_retreat" && s.capture && s.capture->escape) {
-    const double fov = s.sensors.arm_camera ? s.sensors.arm_camera->fov_half_angle_rad : std::nan("");
-    out.push_back(holds("escape_requirements", escape_meets_requirements(r.escape, s.capture->escape->safe_distance_m, fov)));
+    out.push_back(holds("escape_requirements", escape_meets_requirements(r.escape, s)));
   }
 }
 

@@ -216,12 +216,6 @@ nlohmann::json stabilise_json(const model::Scenario& scenario, const ReachResult
   };
 }
 
-// The arm camera's field of view [rad]; NaN without one (the escape's camera is then not judged).
-double camera_fov_rad(const model::Scenario& scenario) {
-  return scenario.sensors.arm_camera ? scenario.sensors.arm_camera->fov_half_angle_rad
-                                     : std::numeric_limits<double>::quiet_NaN();
-}
-
 // The escape against Chaser's requirements (sim/escape_result.hpp); with capture.escape only.
 nlohmann::json escape_json(const model::Scenario& scenario, const EscapeResult& e) {
   const model::EscapeParams& params = *scenario.capture->escape;
@@ -240,10 +234,10 @@ nlohmann::json escape_json(const model::Scenario& scenario, const EscapeResult& 
       {"min_tool_clearance_at_s", finite_or_null(true, e.min_tool_clearance_at_s)},
       {"max_camera_angle_deg", finite_or_null(true, kRadToDeg * e.max_camera_angle_rad)},
       {"max_camera_angle_at_s", finite_or_null(true, e.max_camera_angle_at_s)},
-      {"camera_fov_half_angle_deg", finite_or_null(true, kRadToDeg * camera_fov_rad(scenario))},
+      {"camera_fov_half_angle_deg", finite_or_null(true, kRadToDeg * arm_camera_fov_rad(scenario))},
       {"final_distance_m", finite_or_null(true, e.final_distance_m)},
       {"safe_distance_m", params.safe_distance_m},
-      {"requirements_met", escape_meets_requirements(e, params.safe_distance_m, camera_fov_rad(scenario))},
+      {"requirements_met", escape_meets_requirements(e, scenario)},
   };
 }
 
@@ -260,9 +254,9 @@ std::string escape_text(const model::Scenario& scenario, const EscapeResult& e) 
       "distance {:g} +- {:g}): requirements {}\n",
       e.trigger, e.start_s, refused, e.desynchronise_s, e.hold_s, e.min_clearance_synchronised_m,
       model::kEscapeSynchronisedClearanceM, e.min_clearance_unsynchronised_m, model::kEscapeUnsynchronisedClearanceM,
-      e.min_tool_clearance_m, kRadToDeg * e.max_camera_angle_rad, kRadToDeg * camera_fov_rad(scenario),
+      e.min_tool_clearance_m, kRadToDeg * e.max_camera_angle_rad, kRadToDeg * arm_camera_fov_rad(scenario),
       e.final_distance_m, e.final_t_s, params.safe_distance_m, model::kEscapeDistanceTolM,
-      escape_meets_requirements(e, params.safe_distance_m, camera_fov_rad(scenario)) ? "met" : "NOT met");
+      escape_meets_requirements(e, scenario) ? "met" : "NOT met");
 }
 
 // Each phase flown against its requirements (sim/phase_verdicts.hpp).
