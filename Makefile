@@ -50,7 +50,8 @@ fmea: build
 # the capture: one flight (reach, grasp, rigidisation, stabilisation) and its plots, then Tables 5
 # (reach) and 6, 100 runs per law (~6 min), Table 8, 20 runs per spin case (~10 min), the same
 # runs' phase verdicts (comrade-mission, resumed: no run flown again), Table 7 from one capture
-# (~7 min), and an escape commanded during the grasp with its plots (~40 s).
+# (~7 min), an escape commanded during the grasp with its plots (~40 s), and ASSIST berthed by the
+# arm with its plots (~10 s).
 servicing: build
 	@./$(BUILD)/cli/chaser run scenarios/comrade_sync.yaml --out $(SERVICING_OUT)/flight
 	@$(PYTHON) python/plot_servicing.py $(SERVICING_OUT)/flight
@@ -70,6 +71,8 @@ servicing: build
 	@./$(BUILD)/cli/chaser run scenarios/comrade_capture.yaml --set 'capture.escape={command_s: 2870}' \
 	  --set duration_s=3900 --out $(SERVICING_OUT)/escape
 	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/escape
+	@./$(BUILD)/cli/chaser run scenarios/comrade_berth.yaml --out $(SERVICING_OUT)/berth
+	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/berth
 
 # Every generated results table in README.md and docs/ rewritten from its command's output
 # (scripts/doc_tables.py; the Fonod 2015 and COMRADE campaigns take ~25 minutes on 2 cores).

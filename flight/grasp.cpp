@@ -14,6 +14,11 @@ GraspParams make_grasp(const model::CaptureParams& c) {
   p.timeout_s = c.grasp_timeout_s;
   p.closure_samples = c.closure_samples;
   p.lock_dwell_s = c.lock_dwell_s;
+  if (c.berthing) {
+    p.berthing = true;
+    p.retraction_m = c.berthing->retraction_m;
+    p.retraction_duration_s = c.berthing->retraction_duration_s;
+  }
   return p;
 }
 
@@ -34,7 +39,7 @@ bool inside_grappling_envelope(const model::RelativePoseMeasurement& sample) {
 
 void grasp_camera_sample(const GraspParams& params, GraspState& state, const model::RelativePoseMeasurement& sample,
                          double t_s) {
-  if (state.step != GraspStep::kApproach || t_s < params.approach_end_s) return;
+  if (params.berthing || state.step != GraspStep::kApproach || t_s < params.approach_end_s) return;
   state.inside_samples = inside_grappling_envelope(sample) ? state.inside_samples + 1 : 0;
   if (state.inside_samples >= params.closure_samples) {
     state.step = GraspStep::kClosing;
@@ -42,8 +47,46 @@ void grasp_camera_sample(const GraspParams& params, GraspState& state, const mod
   }
 }
 
+namespace {
+
+// The berthing's steps: the latches close by themselves on a tip at the socket; the flight
+// software then commands the retraction and waits for the pins.
+void berth_joint_step(const GraspParams& params, GraspState& state, const model::ArmMeasurements& arm, double t_s,
+                      model::ArmCommand& command) {
+  switch (state.step) {
+    case GraspStep::kReach:
+      if (t_s >= params.approach_start_s) state.step = GraspStep::kApproach;
+      break;
+    case GraspStep::kApproach:
+      if (arm.probe_latched) {
+        state.step = GraspStep::kLocking;
+        state.closure_s = state.lock_s = t_s;
+      } else if (t_s >= params.approach_end_s + params.timeout_s) {
+        state.step = GraspStep::kAbandoned;
+      }
+      break;
+    case GraspStep::kLocking:
+      if (arm.probe_hard_docked) {
+        state.step = GraspStep::kCaptured;
+        state.captured_s = t_s;
+      }
+      break;
+    case GraspStep::kClosing:
+    case GraspStep::kCaptured:
+    case GraspStep::kAbandoned:
+      break;
+  }
+  command.retract_probe = state.step == GraspStep::kLocking || state.step == GraspStep::kCaptured;
+}
+
+}  // namespace
+
 void grasp_joint_step(const GraspParams& params, GraspState& state, const model::ArmMeasurements& arm, double t_s,
                       model::ArmCommand& command) {
+  if (params.berthing) {
+    berth_joint_step(params, state, arm, t_s, command);
+    return;
+  }
   switch (state.step) {
     case GraspStep::kReach:
       if (t_s >= params.approach_start_s) state.step = GraspStep::kApproach;

@@ -10,6 +10,12 @@
 //             closes rigidly;
 //   captured  the gripper reports itself locked: the capture is confirmed.
 // No closure within grasp_timeout_s of the path's end: abandoned, the jaws stay open.
+// ASSIST's berthing (capture.berthing) takes the same steps with a probe for the jaws:
+//   approach  the probe's tip onto the socket, into the drogue;
+//   locking   the drogue's latches hold the tip (their switch: the soft dock): the probe's
+//             retraction is commanded (the tool's path follows it: flight/reach.hpp);
+//   captured  the pins report the hard dock.
+// No latch within grasp_timeout_s of the path's end: abandoned.
 #include "model/capture.hpp"
 #include "model/messages.hpp"
 
@@ -23,6 +29,9 @@ struct GraspParams {
   double timeout_s = 30.0;        // [s] after approach_end_s
   int closure_samples = 3;
   double lock_dwell_s = 0.2;      // [s]
+  bool berthing = false;          // the probe and the drogue (capture.berthing)
+  double retraction_m = 0.0;      // [m] berthing: the probe's retraction
+  double retraction_duration_s = 0.0;  // [s]
 };
 
 GraspParams make_grasp(const model::CaptureParams& capture);
@@ -32,7 +41,7 @@ struct GraspState {
   int inside_samples = 0;        // consecutive camera samples inside the envelope
   double closure_s = -1.0;       // [s] the jaws were commanded closed (-1: not yet)
   double holding_since_s = -1.0; // [s] both fingers hold the lip since
-  double lock_s = -1.0;          // [s] the rigid closure was commanded
+  double lock_s = -1.0;          // [s] the rigid closure (berthing: the retraction) was commanded
   double captured_s = -1.0;      // [s] the gripper reported itself locked
 };
 

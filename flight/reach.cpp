@@ -102,6 +102,8 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.q_target_from_tool = p.q_target_from_body;
   p.grasp_point_target_m = s.target.body->grasp_point_target_m;
   p.pre_grasp_target_m = p.grasp_point_target_m - c.standoff_m * (p.q_target_from_tool * Vec3::UnitX());
+  p.approach_end_target_m = p.grasp_point_target_m;
+  if (c.berthing) p.approach_end_target_m += c.berthing->insertion_overtravel_m * (p.q_target_from_tool * Vec3::UnitX());
   p.approach_duration_s = c.approach_duration_s;
   p.grasp = make_grasp(c);
   p.torque_limit_Nm = s.chaser.arm->torque_repeated_peak_Nm;
@@ -171,12 +173,19 @@ void hold_estimates(ReachState& state, const NavEstimate& nav, const std::option
 arm::FrameMotion tool_path(const ReachParams& params, const ReachState& state, double t_s) {
   if (params.approach_duration_s > 0.0 && t_s >= params.grasp.approach_start_s) {  // onto the fixture
     const Blend b = quintic(t_s - params.grasp.approach_start_s, params.approach_duration_s);
-    const Vec3 travel = params.grasp_point_target_m - params.pre_grasp_target_m;
+    const Vec3 travel = params.approach_end_target_m - params.pre_grasp_target_m;
     arm::FrameMotion f;
     f.r_m = params.pre_grasp_target_m + b.s * travel;
     f.v_mps = b.rate * travel;
     f.a_mps2 = b.acceleration * travel;
     f.q_world_from_frame = params.q_target_from_tool;
+    if (params.grasp.berthing && state.grasp.lock_s >= 0.0) {  // latched: on, as the probe retracts
+      const Blend r = quintic(t_s - state.grasp.lock_s, params.grasp.retraction_duration_s);
+      const Vec3 retraction = params.grasp.retraction_m * (params.q_target_from_tool * Vec3::UnitX());
+      f.r_m += r.s * retraction;
+      f.v_mps += r.rate * retraction;
+      f.a_mps2 += r.acceleration * retraction;
+    }
     return f;
   }
   return pose_path(state.tool_start_target_m, state.q_target_from_tool_start, params.pre_grasp_target_m,
@@ -233,10 +242,15 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
   // Escaping, the grasp is over: the jaws stay open (the command's default).
   if (params.approach_duration_s > 0.0 && !state.escape.started())
     grasp_joint_step(params.grasp, state.grasp, joints, t_s, command);
-  if (params.rigidise && state.grasp.step == GraspStep::kCaptured) {  // COMRADE 2018, sec. 4: the arm alone
-    model::ArmCommand rigidise = step_rigidise(*params.rigidise, state.rigidise, joints, t_s);
+  // A berthing soft docked is rigidised at once: the probe's mechanism draws the target in while the
+  // arm holds its shape (the thrusters inhibited), the combined law no longer pressing the tip onto
+  // a socket its camera may misplace (an H-infinity law's integral winds up against the latches).
+  const bool soft_docked = params.grasp.berthing && state.grasp.step == GraspStep::kLocking;
+  if (params.rigidise && (state.grasp.step == GraspStep::kCaptured || soft_docked)) {  // COMRADE 2018, sec. 4: the arm alone
+    model::ArmCommand rigidise = step_rigidise(*params.rigidise, state.rigidise, joints, t_s, !soft_docked);
     rigidise.close_gripper = command.close_gripper;
     rigidise.lock_gripper = command.lock_gripper;
+    rigidise.retract_probe = command.retract_probe;
     for (int j = 0; j < model::kArmJoints; ++j) state.joint_torque_Nm(j) = rigidise.torque_Nm[static_cast<std::size_t>(j)];
     return rigidise;
   }

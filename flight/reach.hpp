@@ -48,6 +48,9 @@ struct ReachParams {
   Quat q_target_from_body = Quat::Identity();
   Vec3 grasp_point_target_m = Vec3::Zero();  // the fixture (its frame: q_target_from_tool, as the camera sees it)
   Vec3 pre_grasp_target_m = Vec3::Zero();
+  // Where the approach's path ends: the fixture, or with a berthing the drogue's socket and
+  // capture.berthing.insertion_overtravel_m beyond (the tool's stiffness presses the tip home).
+  Vec3 approach_end_target_m = Vec3::Zero();
   Quat q_target_from_tool = Quat::Identity();
   // The approach from the pre-grasp pose onto the fixture and the grasp (flight/grasp.hpp); without
   // a grasp (approach_duration_s 0) the tool stays at the pre-grasp pose.

@@ -49,7 +49,7 @@ std::array<DiscreteLoop, model::kArmJoints> rigidise_loops(const RigidiseLawPara
 }
 
 model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& state,
-                                const model::ArmMeasurements& joints, double t_s) {
+                                const model::ArmMeasurements& joints, double t_s, bool may_brake) {
   const model::RigidiseParams& r = params.rigidise;
   model::ArmCommand command;
   command.joints = model::kArmJoints;
@@ -66,11 +66,11 @@ model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& 
     bool quiet = true;
     for (int j = 0; j < model::kArmJoints; ++j)
       quiet = quiet && std::abs(joints.q_dot_radps[static_cast<std::size_t>(j)]) < threshold_radps;
-    if (!quiet)
+    if (!quiet || !may_brake)
       state.quiet_since_s = -1.0;
     else if (state.quiet_since_s < 0.0)
       state.quiet_since_s = t_s;
-    if (quiet && t_s - state.quiet_since_s >= r.brake_dwell_s) state.brakes_s = t_s;
+    if (quiet && may_brake && t_s - state.quiet_since_s >= r.brake_dwell_s) state.brakes_s = t_s;
   }
   if (state.brakes_s >= 0.0) {  // braked: the drives are off
     command.engage_brakes = true;

@@ -73,8 +73,9 @@ std::array<DiscreteLoop, model::kArmJoints> rigidise_loops(const RigidiseLawPara
                                                            const arm::JointMatrix& inertia_kgm2);
 
 // One joint step at t_s: the law's torques, or the brakes once engaged. The first call holds the
-// joints' angles as q_d (and, law kHinf, designs the loops there).
+// joints' angles as q_d (and, law kHinf, designs the loops there). may_brake false: the brakes'
+// dwell does not run (a berthing soft docked: the brakes wait for the pins).
 model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& state,
-                                const model::ArmMeasurements& joints, double t_s);
+                                const model::ArmMeasurements& joints, double t_s, bool may_brake = true);
 
 }  // namespace chaser::flight

@@ -84,11 +84,21 @@ void check_capture_geometry(const model::Scenario& s, Diagnostics& d) {
     return;
   if (!body.keep_out.empty() && d.clean("target.body.keep_out")) {
     const double distance_m = model::keep_out_distance_m(body.keep_out, body.grasp_point_target_m);
-    if (std::abs(distance_m) > kFixtureSurfaceToleranceM)
-      d.add(fixture_key, fmt::format("must lie on the target's surface (target.body.keep_out) to within {} m for the "
-                                     "arm to grasp it: it is {:.3g} m {} it",
-                                     format_number(kFixtureSurfaceToleranceM), std::abs(distance_m),
-                                     distance_m > 0 ? "outside" : "inside"));
+    // A berthing drogue's socket lies its depth inside the surface, at the bottom of the drogue.
+    const double recess_m = s.capture && s.capture->berthing ? s.capture->berthing->drogue_depth_m : 0.0;
+    if (std::abs(distance_m + recess_m) > kFixtureSurfaceToleranceM) {
+      if (recess_m > 0.0)
+        d.add(fixture_key, fmt::format("with capture.berthing must lie capture.berthing.drogue_depth_m = {} m inside "
+                                       "the target's surface (target.body.keep_out) to within {} m, at the drogue's "
+                                       "socket: it is {:.3g} m {} it",
+                                       format_number(recess_m), format_number(kFixtureSurfaceToleranceM),
+                                       std::abs(distance_m), distance_m > 0 ? "outside" : "inside"));
+      else
+        d.add(fixture_key, fmt::format("must lie on the target's surface (target.body.keep_out) to within {} m for the "
+                                       "arm to grasp it: it is {:.3g} m {} it",
+                                       format_number(kFixtureSurfaceToleranceM), std::abs(distance_m),
+                                       distance_m > 0 ? "outside" : "inside"));
+    }
     if (!d.clean(fixture_key)) return;  // the reach to a misplaced fixture would be a second error for one problem
   }
   const model::ArmParams& arm = *s.chaser.arm;

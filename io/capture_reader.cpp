@@ -82,6 +82,28 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
         if (g.has("safe_distance_m")) g.number("safe_distance_m", Range::closed(1.0, 1e3), e.safe_distance_m);
       });
     }
+    if (m.has("berthing")) {
+      c.berthing.emplace();
+      read_section(m, "berthing", [&](MapReader& g) {  // every key optional: model/capture.hpp's defaults
+        model::BerthingParams& b = *c.berthing;
+        const auto optional = [&g](const char* key, Range range, double& value) {
+          if (g.has(key)) g.number(key, range, value);
+        };
+        optional("probe_tip_radius_m", Range::left_open(0.0, 0.2), b.probe_tip_radius_m);
+        optional("drogue_mouth_radius_m", Range::left_open(0.0, 1.0), b.drogue_mouth_radius_m);
+        optional("drogue_depth_m", Range::left_open(0.0, 1.0), b.drogue_depth_m);
+        optional("socket_clearance_m", Range::closed(0.0, 0.05), b.socket_clearance_m);
+        optional("friction", Range::closed(0.0, 2.0), b.friction);
+        optional("latch_radius_m", Range::left_open(0.0, 0.05), b.latch_radius_m);
+        optional("soft_dock_timeconst_s", Range::closed(0.01, 10.0), b.soft_dock_timeconst_s);
+        optional("insertion_overtravel_m", Range::closed(0.0, 0.5), b.insertion_overtravel_m);
+        optional("retraction_m", Range::closed(0.0, 1.0), b.retraction_m);
+        optional("retraction_duration_s", Range::closed(1.0, 1e4), b.retraction_duration_s);
+        optional("pin_position_tol_m", Range::left_open(0.0, 0.1), b.pin_position_tol_m);
+        optional("pin_attitude_tol_deg", Range::left_open(0.0, 10.0), b.pin_attitude_tol_deg);
+        optional("contact_force_limit_N", Range::left_open(0.0, 1e4), b.contact_force_limit_N);
+      });
+    }
   });
 }
 
@@ -105,6 +127,24 @@ void validate_escape(const model::Scenario& s, Diagnostics& d) {
                       sync->approach ? "guidance.synchronised.approach.axis_distance_m"
                                      : "guidance.synchronised.start_target_m",
                       format_number(e.safe_distance_m)));
+}
+
+// The berthing's drogue: a cone that narrows to its throat, the probe's pre-contact pose outside its
+// mouth; no escape (built for the gripper's jaws).
+void validate_berthing(const model::CaptureParams& c, Diagnostics& d) {
+  const model::BerthingParams& b = *c.berthing;
+  const double throat_m = b.probe_tip_radius_m + b.socket_clearance_m;
+  if (!(b.drogue_mouth_radius_m > throat_m))
+    d.add("capture.berthing.drogue_mouth_radius_m",
+          fmt::format("must be wider than the throat, probe_tip_radius_m + socket_clearance_m = {:.4g} m (got {})",
+                      throat_m, format_number(b.drogue_mouth_radius_m)));
+  const double outside_m = b.drogue_depth_m + b.probe_tip_radius_m;
+  if (d.clean("capture.standoff_m") && !(c.standoff_m > outside_m))
+    d.add("capture.standoff_m",
+          fmt::format("with capture.berthing must put the probe's tip outside the drogue's mouth: beyond "
+                      "capture.berthing.drogue_depth_m + probe_tip_radius_m = {:.4g} m (got {})",
+                      outside_m, format_number(c.standoff_m)));
+  if (c.escape) d.add("capture.escape", "is built for the gripper's grasp, not for capture.berthing: remove one of them");
 }
 
 }  // namespace
@@ -167,6 +207,7 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
   if (c.stabilise && !c.rigidise)
     d.add("capture.stabilise", "needs capture.rigidise (the stabilisation begins once its brakes hold)");
   if (c.escape && d.clean("capture.escape")) validate_escape(s, d);
+  if (c.berthing && d.clean("capture.berthing")) validate_berthing(c, d);
   if (c.law == model::CaptureLaw::kHinf && !s.control.hinf)
     d.add("capture.law", "hinf needs a control.hinf section (the platform's authority and loop delay come from its design)");
 }

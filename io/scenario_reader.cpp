@@ -111,6 +111,7 @@ void read_sensors(MapReader& r, model::SensorParams& out) {
       m.angle_deg("fov_half_angle_deg", Range::left_open(0.0, 90.0), c.fov_half_angle_rad);
       m.number("range_max_m", Range::left_open(0.0, 100.0), c.range_max_m);
       m.number("setback_m", Range::closed(0.0, 2.0), c.setback_m);
+      if (m.has("position_bias_m")) m.vec3("position_bias_m", Range::closed(-0.5, 0.5), c.position_bias_m);
     });
   }
 }

@@ -64,6 +64,20 @@ struct FixtureParams {
   Vec3 half_extents_m = Vec3(0.03, 0.10, 0.005);  // [m] grasp pose axes
 };
 
+// ASSIST's berthing fixture and the arm's capture probe as the multibody scene has them
+// (model/capture.hpp's BerthingParams): the probe's tip, a sphere at the tool point; the drogue, a
+// cone in the fixture's axes (x the approach, into the target) from its mouth at x = -depth_m to its
+// throat at the socket (x = 0), drawn as `plates` flat plates round its axis, and a floor behind the
+// socket that the tip rests on with its centre at the socket.
+struct DrogueParams {
+  double tip_radius_m = 0.02;
+  double mouth_radius_m = 0.12;
+  double throat_radius_m = 0.023;
+  double depth_m = 0.15;
+  double friction = 0.3;
+  int plates = 12;
+};
+
 struct ArmParams {
   Vec3 mount_body_m = Vec3(1.05, 0.0, 0.0);  // [m] the arm's base in the chaser's body frame, from its reference point
   std::array<ArmLinkParams, kArmJoints> links{};
@@ -132,6 +146,12 @@ struct MultibodySceneParams {
   Vec3 fixture_target_m = Vec3::Zero();            // [m] the grasp point, target axes from its CoM
   Quat q_target_from_fixture = Quat::Identity();   // the grasp pose's axes (x the approach)
   FixtureParams fixture;
+  // The berthing's contact (exclusive with grasp_contact): the probe's tip (a sphere "probe_tip" on
+  // the gripper's body at the tool point) and the drogue on the target at fixture_target_m with the
+  // axes q_target_from_fixture (boxes "drogue0".. and "drogue_floor"), contact between tip and drogue
+  // only; a weld "berth" of the gripper to the target, inactive until the latches close. false: none.
+  bool berth_contact = false;
+  DrogueParams drogue;
 };
 
 }  // namespace chaser::model

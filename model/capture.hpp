@@ -107,6 +107,42 @@ inline constexpr double kEscapeSynchronisedClearanceM = 0.5;    // [m] while tur
 inline constexpr double kEscapeUnsynchronisedClearanceM = 3.0;  // [m] from the desynchronisation on
 inline constexpr double kEscapeDistanceTolM = 0.5;              // [m] the final hold from safe_distance_m
 
+// ASSIST's berthing (COMRADE 2018, sec. 2.2; the optional section capture.berthing): a capture
+// probe replaces the gripper on the arm's end and the target carries a berthing fixture, a drogue.
+// The tool point is the probe's tip, a sphere; the drogue a cone open towards the chaser, its mouth
+// drogue_depth_m before the socket at target.body.grasp_point_target_m along the tool's approach, its
+// throat (at the socket) socket_clearance_m wider than the tip. The capture's path and approach fly
+// the tip to the socket (the cone's walls guide a tip that arrives off the axis: MuJoCo's contact,
+// with `friction`); once the tip's centre is within latch_radius_m of the socket the latches close
+// on it (passive, in the plant): the soft dock, a compliant hold of the pose of that moment (a weld
+// of time constant soft_dock_timeconst_s). The flight software then commands the probe's central
+// mechanism to retract by retraction_m over retraction_duration_s (a quintic, rest to rest): the
+// hold's pose is drawn from the latched one to the mated one (the probe's interface on the
+// fixture's, their axes aligned), the aligning pins engaging on the way; at its end the hard dock, a
+// rigid hold. The pins align only what lies inside their chamfers: a latch farther than
+// pin_position_tol_m off the drogue's axis or pin_attitude_tol_deg off its attitude jams them, and
+// the hard dock never comes (plant/multibody_motion.hpp).
+struct BerthingParams {
+  double probe_tip_radius_m = 0.02;       // [m]
+  double drogue_mouth_radius_m = 0.12;    // [m]
+  double drogue_depth_m = 0.15;           // [m] from the mouth to the socket, along the approach
+  double socket_clearance_m = 0.003;      // [m] the throat's radius less the tip's
+  double friction = 0.3;                  // [-] the tip on the drogue's walls (Coulomb)
+  double latch_radius_m = 0.005;          // [m]
+  double soft_dock_timeconst_s = 0.2;     // [s] the soft dock's compliance
+  // [m] the insertion's path ends this far beyond the socket: the tool's stiffness presses the tip
+  // home against the cone's walls when the camera's error puts it off the axis (flight/reach.hpp).
+  double insertion_overtravel_m = 0.03;
+  double retraction_m = 0.10;             // [m] the probe drawn in
+  double retraction_duration_s = 20.0;    // [s]
+  double pin_position_tol_m = 0.005;      // [m] the latch's offset from the drogue's axis the pins align
+  double pin_attitude_tol_deg = 1.0;      // [deg] the latch's attitude error they align
+  // [N] Chaser's bound on the contact force between tip and drogue (the paper gives none): the
+  // force the drives' repeated peak holds at the tool at the arm's full reach (176 N m over ~3 m),
+  // beyond which the contact back-drives the arm.
+  double contact_force_limit_N = 50.0;
+};
+
 struct CaptureParams {
   double start_s = 0.0;            // [s] the arm wakes: the reach begins
   CaptureLaw law = CaptureLaw::kCompliance;
@@ -143,6 +179,8 @@ struct CaptureParams {
   std::optional<StabiliseParams> stabilise;
   // The escape, on command or a failed grasp; without it a failed grasp leaves the tool at the fixture.
   std::optional<EscapeParams> escape;
+  // ASSIST's berthing in place of the grasp: the probe into the drogue, soft and hard dock.
+  std::optional<BerthingParams> berthing;
   // [s] when the tool leaves the pre-grasp pose for the fixture: the reach ends, the capture begins.
   double approach_start_s() const { return start_s + path_duration_s + pre_grasp_hold_s; }
 };

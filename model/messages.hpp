@@ -40,6 +40,8 @@ struct ArmMeasurements {
   double gripper_opening_m = 0;     // [m] the fingers' inner faces apart
   bool gripper_locked = false;      // the gripper is closed rigidly on the fixture
   bool brakes_engaged = false;      // the joints' brakes hold
+  bool probe_latched = false;       // berthing: the drogue's latches hold the probe's tip (soft dock)
+  bool probe_hard_docked = false;   // berthing: the retraction ended and the pins hold (hard dock)
   RelativePoseMeasurement fixture;  // the grasp fixture seen by the arm camera
 };
 
@@ -50,6 +52,7 @@ struct ArmCommand {
   bool close_gripper = false;   // the jaws close (form closure); false: they open
   bool lock_gripper = false;    // the gripper closes rigidly: done only while the jaws hold the fixture
   bool engage_brakes = false;   // the joints' brakes (rigidisation)
+  bool retract_probe = false;   // berthing: the probe's central mechanism retracts (done only once latched)
 };
 
 // Plant -> flight: what the sensors deliver at the start of a control period.

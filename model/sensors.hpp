@@ -64,6 +64,9 @@ struct ArmCameraParams {
   // [m] the camera's eye behind the tool point along the tool's x (it looks past the jaws): the
   // cone and the range are the eye's; the pose it reports is the fixture's from the tool point.
   double setback_m = 0.2;
+  // [m] a constant error of the reported position (the camera's calibration, camera axes): what the
+  // capture's closure or the berthing drogue's cone must absorb. Optional, zero by default.
+  Vec3 position_bias_m = Vec3::Zero();
 };
 
 struct SensorParams {

@@ -50,6 +50,8 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
   m.gripper_opening_m = jaws.opening_m;
   m.gripper_locked = grasp_engaged(*p, s);
   m.brakes_engaged = s.brakes_engaged;
+  m.probe_latched = probe_latched(s);
+  m.probe_hard_docked = probe_hard_docked(s);
   return m;
 }
 
@@ -57,6 +59,11 @@ std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant) {
   const MultibodyMotionParams* p = multibody_params(plant);
   if (p == nullptr) return {};
   return brake_loads_Nm(*p, std::get<MultibodyMotionState>(plant.state.motion));
+}
+
+const BerthState* berth_truth(const Plant& plant) {
+  if (multibody_params(plant) == nullptr) return nullptr;
+  return &std::get<MultibodyMotionState>(plant.state.motion).berth;
 }
 
 void set_closed_chain_joint_rates(Plant& plant, const std::array<double, model::kArmJoints>& rates_radps) {
@@ -77,6 +84,7 @@ void command_arm(Plant& plant, const model::ArmCommand& command) {
   command_jaws(*p, s, command.close_gripper);
   // The rigid closure: the gripper welded to the fixture where the jaws hold it, never on nothing.
   if (command.lock_gripper && !grasp_engaged(*p, s) && read_jaws(*p, s).holding) engage_grasp(*p, s);
+  if (command.retract_probe) command_probe_retraction(*p, s);
 }
 
 GripperTruth gripper_truth(const PlantParams& params, PlantState& state, const Vec3& point_target_m,
@@ -161,7 +169,7 @@ std::optional<model::ArmMeasurements> sense_arm_with_camera(const PlantParams& p
         sample.valid = range_m <= camera.range_max_m && range_m > 0.0 &&
                        r_eye_m.x() >= range_m * std::cos(camera.fov_half_angle_rad);
         sample.taken_s = taken_s;
-        sample.r_camera_m = r_camera_m + camera.position_noise_m * position_error;
+        sample.r_camera_m = r_camera_m + camera.position_bias_m + camera.position_noise_m * position_error;
         sample.q_camera_from_fixture =
             (q_camera_from_fixture * quat_from_rotation_vector(camera.attitude_noise_rad * attitude_error)).normalized();
         return sample;

@@ -31,6 +31,10 @@ model::ArmMeasurements sense_arm(const PlantParams& params, const PlantState& st
 // for judging the loads against the drives' limits, never a sensor.
 std::array<double, model::kArmJoints> brake_loads_Nm(const Plant& plant);
 
+// ASSIST's berthing as the plant has it (plant/multibody_motion.hpp's BerthState): truth, for
+// judging the docking and its loads, never a sensor. Null without the arm awake.
+const BerthState* berth_truth(const Plant& plant);
+
 // With the grasp engaged on the multibody plant: the joints' rates set, the hub and the target
 // moving so that the weld holds and the scene's momentum is kept (plant/multibody_motion.hpp's
 // set_closed_chain_joint_rates). Throws std::logic_error otherwise.

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
 #include "core/rotation.hpp"
 #include "plant/earth/gravity.hpp"
 #include "plant/gravity_gradient.hpp"
@@ -201,6 +203,26 @@ void read_brake_loads(const MultibodyMotionParams& p, const mjData& d, std::arra
   }
 }
 
+// The berthing's loads at the step's start (as the brakes'): the tip's contact with the drogue, the
+// sum of its contacts' normal forces, and the berth weld's force (its three translational rows),
+// each kept at its largest.
+void read_berth_loads(const MultibodyMotionParams& p, const mjModel& m, const mjData& d, BerthState& b) {
+  double contact_N = 0.0;
+  for (int c = 0; c < d.ncon; ++c) {
+    if (d.contact[c].geom1 != p.index.probe_geom && d.contact[c].geom2 != p.index.probe_geom) continue;
+    mjtNum force[6];
+    mj_contactForce(&m, &d, c, force);
+    contact_N += force[0];
+  }
+  b.peak_contact_N = std::max(b.peak_contact_N, contact_N);
+  if (!b.latched) return;
+  Vec3 hold = Vec3::Zero();
+  int rows = 0;
+  for (int i = 0; i < d.nefc && rows < 3; ++i)
+    if (d.efc_type[i] == mjCNSTR_EQUALITY && d.efc_id[i] == p.index.berth) hold(rows++) = d.efc_force[i];
+  b.peak_hold_N = std::max(b.peak_hold_N, hold.norm());
+}
+
 void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, RigidState& chaser, TimeNs dt_ns,
                      const PieceInput& u) {
   const double dt_s = to_seconds(dt_ns);
@@ -213,9 +235,89 @@ void integrate_piece(const MultibodyMotionParams& p, MultibodyMotionState& s, Ri
     s.world.step_applying([&] { apply_loads(p, s, loads, chaser.mass_kg - 0.5 * h * loads.mass_flow_kgps, h); },
                           [&](const mjData& d) {
                             if (s.brakes_engaged) read_brake_loads(p, d, s.brake_load_Nm);
+                            if (p.index.probe_geom >= 0) read_berth_loads(p, s.world.model(), d, s.berth);
                           });
     step_reference(p, s.earth.env, s.r_ref_eci_m, s.v_ref_eci_mps, h);
     chaser.mass_kg -= h * loads.mass_flow_kgps;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// The tip against the socket now (positions of the current qpos): its centre from the socket and
+// the tool's attitude from the fixture's (the angle), in the fixture's axes.
+struct SocketView {
+  Vec3 tip_from_socket_m = Vec3::Zero();
+  double attitude_rad = 0.0;
+};
+SocketView socket_view(const MultibodyMotionParams& p, MultibodyMotionState& s) {
+  const mjModel& m = s.world.model();
+  mjData& d = s.world.data();
+  multibody::guarded("the probe against the socket", [&m, &d] { mj_kinematics(&m, &d); });
+  const Quat q_world_from_target = multibody::body_attitude(d, p.index.target).normalized();
+  const Quat q_world_from_fixture = (q_world_from_target * p.scene.q_target_from_fixture).normalized();
+  const Vec3 socket = multibody::body_position(d, p.index.target) + q_world_from_target * p.scene.fixture_target_m;
+  Mat3 world_from_tool;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) world_from_tool(i, j) = d.site_xmat[9 * p.index.tool_site + 3 * i + j];
+  SocketView v;
+  v.tip_from_socket_m = q_world_from_fixture.conjugate() * (Vec3(d.site_xpos + 3 * p.index.tool_site) - socket);
+  v.attitude_rad = Eigen::AngleAxisd(q_world_from_fixture.conjugate() * Quat(world_from_tool)).angle();
+  return v;
+}
+
+// The berthing's mechanisms after each advance (t_s its end): the latches close on a tip within
+// latch_radius_m of the socket (the soft dock: the weld engaged at that pose, with the soft dock's
+// time constant); once the retraction is commanded the weld's pose is drawn from the latched one to
+// the mated one along a quintic (the probe's tip drawn retraction_m into the end effector, the pins
+// aligning the axes: the fixture's axes on the tool's), and at its end the weld stiffens to the
+// locks' time constant: the hard dock. A latch outside the pins' envelope jams them: no retraction.
+void update_berthing(const MultibodyMotionParams& p, MultibodyMotionState& s, double t_s) {
+  BerthState& b = s.berth;
+  if (!p.berthing || b.hard_docked) return;
+  const model::BerthingParams& c = *p.berthing;
+  if (!b.latched) {
+    const SocketView v = socket_view(p, s);
+    if (v.tip_from_socket_m.norm() > c.latch_radius_m) return;
+    multibody::engage_weld_here(s.world, p.index.berth);
+    multibody::set_weld_timeconst(s.world, p.index.berth, c.soft_dock_timeconst_s);
+    // The latches carry the tip from now on and the probe's shaft slides into the end effector as
+    // it retracts: the tip's contact with the drogue, internal to the mechanism, is switched off.
+    s.world.mutable_model().opt.disableflags |= mjDSBL_CONTACT;
+    b.latched = true;
+    b.latch_s = t_s;
+    b.latch_offset_m = v.tip_from_socket_m;
+    b.latch_attitude_rad = v.attitude_rad;
+    b.pins_jammed = v.tip_from_socket_m.tail<2>().norm() > c.pin_position_tol_m ||
+                    v.attitude_rad > c.pin_attitude_tol_deg * kDegToRad;
+    b.latched_pose = multibody::weld_pose(s.world, p.index.berth);
+    // Mated: the tool's axes the fixture's, the socket retraction_m behind the tool point along x.
+    const Quat q_fixture_from_target = p.scene.q_target_from_fixture.normalized().conjugate();
+    b.mated_pose.p_m = p.scene.arm.gripper.position_link7_m - c.retraction_m * Vec3::UnitX() -
+                       q_fixture_from_target * p.scene.fixture_target_m;
+    b.mated_pose.q_rel = q_fixture_from_target;
+    return;
+  }
+  if (b.pins_jammed || !b.retract_requested) return;
+  if (b.retract_from_s < 0.0) b.retract_from_s = t_s;
+  const double tau = std::clamp((t_s - b.retract_from_s) / c.retraction_duration_s, 0.0, 1.0);
+  const double blend = tau * tau * tau * (10.0 - 15.0 * tau + 6.0 * tau * tau);  // rest to rest
+  multibody::set_weld_pose(s.world, p.index.berth,
+                           {(1.0 - blend) * b.latched_pose.p_m + blend * b.mated_pose.p_m,
+                            b.latched_pose.q_rel.slerp(blend, b.mated_pose.q_rel)});
+  if (tau >= 1.0) {
+    // The pins lock the interfaces where the soft hold has drawn them (within its lag of the mated
+    // pose): the weld engaged at the pose of this moment, stiff. Stiffened at the mated pose itself,
+    // it would snap the lag shut in two steps (233 N on the latches for 1 ms in comrade_berth).
+    multibody::engage_weld_here(s.world, p.index.berth);
+    const multibody::WeldPose now = multibody::weld_pose(s.world, p.index.berth);
+    b.mate_offset_m = (now.p_m - b.mated_pose.p_m).norm();
+    b.mate_attitude_rad = Eigen::AngleAxisd(b.mated_pose.q_rel.conjugate() * now.q_rel).angle();
+    multibody::set_weld_timeconst(s.world, p.index.berth, p.scene.lock_timeconst_s);
+    b.hard_docked = true;
+    b.hard_dock_s = t_s;
   }
 }
 
@@ -238,6 +340,10 @@ MultibodyIndices indices_of(const multibody::MujocoModel& world) {
   i.grasp = mj_name2id(&m, mjOBJ_EQUALITY, "grasp");
   i.motor1 = mj_name2id(&m, mjOBJ_ACTUATOR, "motor1");
   i.fixture_geom = mj_name2id(&m, mjOBJ_GEOM, "fixture");
+  i.probe_geom = mj_name2id(&m, mjOBJ_GEOM, "probe_tip");
+  i.drogue_first_geom = mj_name2id(&m, mjOBJ_GEOM, "drogue0");
+  i.berth = mj_name2id(&m, mjOBJ_EQUALITY, "berth");
+  i.tool_site = mj_name2id(&m, mjOBJ_SITE, "tool");
   const char* fingers[2] = {"finger_a", "finger_b"};
   for (std::size_t f = 0; f < 2; ++f) {
     const int joint = mj_name2id(&m, mjOBJ_JOINT, fingers[f]);
@@ -282,11 +388,21 @@ MultibodyStart start_multibody(const model::Scenario& scenario, const EarthOrbit
   scene.timestep_s = scene_timestep_s;
   scene.arm_locks = true;
   scene.grasp_weld = true;
-  if (scenario.capture && scenario.guidance.synchronised) {  // the jaws and the fixture's lip, in contact: the capture's grasp
-    scene.grasp_contact = true;
+  if (scenario.capture && scenario.guidance.synchronised) {
     scene.fixture_target_m = scenario.target.body->grasp_point_target_m;
     scene.q_target_from_fixture = scenario.guidance.synchronised->q_target_from_body.normalized();
-    scene.fixture = scenario.target.body->fixture;
+    if (const auto& berthing = scenario.capture->berthing) {  // ASSIST: the probe and the drogue, in contact
+      scene.berth_contact = true;
+      scene.drogue = {.tip_radius_m = berthing->probe_tip_radius_m,
+                      .mouth_radius_m = berthing->drogue_mouth_radius_m,
+                      .throat_radius_m = berthing->probe_tip_radius_m + berthing->socket_clearance_m,
+                      .depth_m = berthing->drogue_depth_m,
+                      .friction = berthing->friction};
+      p.berthing = *berthing;
+    } else {  // the jaws and the fixture's lip, in contact: the capture's grasp
+      scene.grasp_contact = true;
+      scene.fixture = scenario.target.body->fixture;
+    }
   }
   // The locks as stiff as MuJoCo's step allows (time constant 2 h, MuJoCo's stated limit) and 99 %
   // enforced: the stowed arm then gives under the chaser's spin by (1 - d) a0 / (d k), 1.7e-7 rad at
@@ -389,6 +505,13 @@ void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& sta
   command_jaws(params, state, true);
 }
 
+void command_probe_retraction(const MultibodyMotionParams& params, MultibodyMotionState& state) {
+  if (params.berthing && state.berth.latched) state.berth.retract_requested = true;
+}
+
+bool probe_latched(const MultibodyMotionState& state) { return state.berth.latched; }
+bool probe_hard_docked(const MultibodyMotionState& state) { return state.berth.hard_docked; }
+
 void set_closed_chain_joint_rates(const MultibodyMotionParams& params, MultibodyMotionState& state,
                                   const std::array<double, model::kArmJoints>& rates_radps) {
   if (!grasp_engaged(params, state)) throw std::logic_error("set_closed_chain_joint_rates: the grasp is not engaged");
@@ -485,6 +608,7 @@ void advance(const MultibodyMotionParams& params, MultibodyMotionState& state, R
     read_back(params, state, chaser);  // the next piece's LVLH (disturbance) at its start
   }
   read_back(params, state, chaser);
+  update_berthing(params, state, to_seconds(to_ns));
 }
 
 TargetRotation target_rotation(const MultibodyMotionParams&, const MultibodyMotionState& state, double) {

@@ -43,6 +43,7 @@
 #include "model/target_orbit.hpp"
 #include "plant/earth_orbit_motion.hpp"
 #include "plant/multibody/mujoco_model.hpp"
+#include "plant/multibody/weld.hpp"
 #include "plant/period_input.hpp"
 #include "plant/slosh.hpp"
 #include "plant/target.hpp"
@@ -60,10 +61,34 @@ struct MultibodyIndices {
   // servos (actuator ids), their geoms and the fixture's.
   std::array<int, 2> finger_qpos{-1, -1}, finger_actuator{-1, -1}, finger_geom{-1, -1};
   int fixture_geom = -1;
+  // The berthing (scene.berth_contact; -1 without): the probe's tip, the drogue's first plate (the
+  // plates and the floor in a row after it), the weld "berth".
+  int probe_geom = -1, drogue_first_geom = -1, berth = -1;
+  int tool_site = -1;
 };
 
 // The indices of a scene compiled from plant/multibody/mjcf.hpp's text.
 MultibodyIndices indices_of(const multibody::MujocoModel& world);
+
+// ASSIST's berthing as the plant has it (model/capture.hpp's BerthingParams): the latches, the
+// probe's retraction, the pins, and the loads they carry. Truth: the flight software reads only
+// the latches' and the pins' switches (plant/arm_joints.hpp).
+struct BerthState {
+  bool latched = false;             // the latches hold the tip: the soft dock
+  double latch_s = -1.0;            // [s] when
+  Vec3 latch_offset_m = Vec3::Zero();  // [m] the tip's centre from the socket at the latch, the fixture's axes
+  double latch_attitude_rad = 0.0;  // [rad] the tool's axes from the fixture's at the latch (the angle)
+  bool pins_jammed = false;         // the latch outside the pins' envelope: no hard dock
+  bool retract_requested = false;   // the flight software commanded the retraction
+  double retract_from_s = -1.0;     // [s] the retraction began
+  bool hard_docked = false;         // the retraction ended and the pins hold: the hard dock
+  double hard_dock_s = -1.0;        // [s]
+  double mate_offset_m = 0.0;       // [m] at the hard dock, the interfaces from their mated pose (the soft hold's lag)
+  double mate_attitude_rad = 0.0;   // [rad]
+  multibody::WeldPose latched_pose, mated_pose;  // the weld's relative pose at the latch, and mated
+  double peak_contact_N = 0.0;      // [N] the tip's contact force on the drogue (the sum of its normal forces), largest
+  double peak_hold_N = 0.0;         // [N] the latches' and pins' force (the weld's), largest
+};
 
 struct MultibodyMotionState {
   multibody::MujocoModel world;  // the scene and its state; a copy is a deep one
@@ -82,6 +107,7 @@ struct MultibodyMotionState {
   // jaws' contact off (the weld carries the grasp).
   bool jaws_locked = false;
   std::array<double, 2> locked_finger_m{};
+  BerthState berth{};
 };
 
 struct MultibodyMotionParams {
@@ -90,6 +116,7 @@ struct MultibodyMotionParams {
   model::MultibodySceneParams scene;
   Vec3 chaser_com_body_m = Vec3::Zero();  // [m] the whole chaser's CoM, arm stowed (thrust torques are about it)
   double arm_mass_kg = 0.0;               // [kg] links and gripper
+  std::optional<model::BerthingParams> berthing;  // capture.berthing: the probe, the drogue and their mechanisms
   MultibodyIndices index;
 };
 
@@ -148,6 +175,12 @@ std::array<double, model::kArmJoints> brake_loads_Nm(const MultibodyMotionParams
 // and read as holding from then on.
 void engage_grasp(const MultibodyMotionParams& params, MultibodyMotionState& state);
 bool grasp_engaged(const MultibodyMotionParams& params, const MultibodyMotionState& state);
+
+// The berthing: the probe's retraction commanded (it begins with the next advance, once the
+// latches hold), and what the latches' and the pins' switches read.
+void command_probe_retraction(const MultibodyMotionParams& params, MultibodyMotionState& state);
+bool probe_latched(const MultibodyMotionState& state);
+bool probe_hard_docked(const MultibodyMotionState& state);
 
 // The grasp engaged, the joints' rates set to rates_radps, and the hub's and the target's velocities
 // chosen so that the weld holds (link 7 and the target move as one body) and the scene's linear and

@@ -158,7 +158,7 @@ def hub_outline(t, row, edges):
 
 def key_instants(t, mask, summary):
     """(label, row) of the instants drawn: the waking, the path's end, the approach, the closure, the
-    brakes (after a rigidisation), the end."""
+    brakes (after a rigidisation), the end; a berthing's soft and hard docks for the closure."""
     time = t["t_s"]
     rows = np.flatnonzero(mask)
     if rows.size == 0:
@@ -168,8 +168,14 @@ def key_instants(t, mask, summary):
     for phase in summary.get("phases_flown", []):
         if phase.get("name") == "capture":
             wanted.append(("the approach begins", float(phase["start_s"])))
+    berthing = reach.get("berthing")
     closure = (reach.get("grasp") or {}).get("closure_s")
-    if closure is not None:
+    if berthing:  # ASSIST's probe: the latches, then the pins
+        if berthing.get("soft_dock_s") is not None:
+            wanted.append(("the latches close (soft dock)", float(berthing["soft_dock_s"])))
+        if berthing.get("hard_dock_s") is not None:
+            wanted.append(("the pins engage (hard dock)", float(berthing["hard_dock_s"])))
+    elif closure is not None:
         wanted.append(("the jaws close", float(closure)))
     brakes = (reach.get("rigidisation") or {}).get("brakes_s")
     if brakes is not None:
@@ -196,7 +202,8 @@ def plot_figures(t, mask, summary, scenario, out):
         for box in body.get("keep_out", []):
             c, h = np.array(box["centre_target_m"], float), np.array(box["half_extents_m"], float)
             ax.add_patch(plt.Rectangle((c[a] - h[a], c[b] - h[b]), 2 * h[a], 2 * h[b], color="0.85", zorder=0))
-        ax.plot(grasp[a], grasp[b], "k*", ms=12, label="the fixture (grasp point)")
+        ax.plot(grasp[a], grasp[b], "k*", ms=12,
+                label="the drogue's socket" if summary["reach"].get("berthing") else "the fixture (grasp point)")
         colours = plt.cm.viridis(np.linspace(0.0, 0.9, max(len(instants), 1)))
         for (label, row), colour in zip(instants, colours):
             points = chain_points(t, row)

@@ -586,13 +586,44 @@ def escape_rows(*runs):
     return rows
 
 
+BERTH_COMMAND = ("run", "scenarios/comrade_berth.yaml", "--telemetry", "none")
+BERTH_BIAS = ("--set", "sensors.arm_camera.position_bias_m=[0, 0.02, 0]")
+BERTH_LABELS = ("soft dock (the latches close) [s]", "the tip from the socket then [mm]",
+                "the tool's axes from the fixture's then [deg]", "hard dock (the pins engage) [s]",
+                "the interfaces from their mated pose then [mm, deg]",
+                "peak contact force, tip on drogue [N]", "peak latch and pin force [N]", "brakes engaged [s]",
+                "berthing's requirements")
+
+
+def berth_rows(*runs):
+    """One column per run of comrade_berth: the soft dock, the latch's offset and attitude, the hard
+    dock, the loads, the brakes, the verdict."""
+    columns = []
+    for run in runs:
+        reach = load_json(Path(run) / "summary.json")["reach"]
+        b, rigid = reach["berthing"], reach.get("rigidisation") or {}
+        latched = b["soft_dock_s"] is not None
+        columns.append([fixed(b["soft_dock_s"], 1) if latched else "-",
+                        ", ".join(fixed(v, 1) for v in b["latch_offset_mm"]) if latched else "-",
+                        fixed(b["latch_attitude_error_deg"], 2) if latched else "-",
+                        fixed(b["hard_dock_s"], 1) if b["hard_dock_s"] is not None
+                        else ("jammed" if b["pins_jammed"] else "-"),
+                        f"{sig(b['mate_offset_mm'], 2)}, {sig(b['mate_attitude_error_deg'], 2)}"
+                        if b["hard_dock_s"] is not None else "-",
+                        fixed(b["peak_contact_force_N"], 1), fixed(b["peak_hold_force_N"], 1),
+                        fixed(rigid["brakes_s"], 1) if rigid.get("brakes_s") is not None else "-",
+                        "met" if b["met"] else "**not met**"])
+    return [list(row) for row in zip(*columns)]
+
+
 MISSION_PHASES = ("line", "line_end_hold", "fly_around", "axis_approach", "rotation_synchronisation", "transfer",
                   "capture_point_hold", "reach", "capture", "rigidisation", "stabilisation")
 REQUIREMENT_WORDS = {"position_error_m": "position", "speed_error_mps": "speed", "attitude_error_deg": "attitude",
                      "rate_error_deg_s": "rate", "gripper_table2": "gripper Table 2",
                      "peak_joint_torque_Nm": "torque", "captured": "captured", "grasp_table2": "grasp Table 2",
                      "brakes_engaged": "brakes", "final_rate_deg_s": "rate", "peak_brake_load_Nm": "load",
-                     "escape_requirements": "escape"}
+                     "escape_requirements": "escape", "hard_docked": "hard docked",
+                     "peak_contact_force_N": "contact"}
 
 
 def mission_rows(run):
@@ -1423,6 +1454,10 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("capture-hinf", ("run", "scenarios/comrade_capture.yaml", "--set", "capture.law=hinf", "--set",
                              "capture.rigidise.law=hinf", "--set", "capture.stabilise.law=hinf", "--telemetry",
                              "none", "--out", "OUT"), quick=True),
+    Command("berth", BERTH_COMMAND + ("--out", "OUT"), quick=True),
+    Command("berth-hinf", BERTH_COMMAND + ("--set", "capture.law=hinf", "--out", "OUT"), quick=False),
+    Command("berth-bias", BERTH_COMMAND + BERTH_BIAS + ("--out", "OUT"), quick=False),
+    Command("berth-bias-hinf", BERTH_COMMAND + BERTH_BIAS + ("--set", "capture.law=hinf", "--out", "OUT"), quick=False),
     Command("escape-S1", ESCAPE_COMMAND + ("--out", "OUT"), quick=False),
     Command("escape-S2", ESCAPE_COMMAND + ("--set", "target.body.spin_case=S2", "--out", "OUT"), quick=False),
     Command("escape-S3", ESCAPE_COMMAND + ("--set", "target.body.spin_case=S3", "--out", "OUT"), quick=False),
@@ -1515,6 +1550,13 @@ TABLES = [
                    "duration_s=3900 (--set target.body.spin_case=S2 or S3, --set capture.law=hinf); the failed "
                    "grasp: --set 'capture.escape={on_failed_grasp: true}' --set capture.closure_samples=100 --set "
                    "capture.grasp_timeout_s=5 --set duration_s=3950"),
+    Table("servicing-berthing", "docs/servicing.md", ("berth", "berth-hinf", "berth-bias", "berth-bias-hinf"),
+          ("", "compliance law", "H-infinity law", "compliance, camera 20 mm off", "H-infinity, camera 20 mm off"),
+          BERTH_LABELS, berth_rows, words=("met", "**not", "met**", "jammed"),
+          caption="Limits (Chaser's: the paper states none): the latches within 5 mm of the socket, the pins' "
+                  "envelope 5 mm off the axis and 1 deg, the contact force 50 N.",
+          shown_as="chaser run scenarios/comrade_berth.yaml --telemetry none (--set capture.law=hinf, --set "
+                   "'sensors.arm_camera.position_bias_m=[0, 0.02, 0]')"),
     Table("servicing-mission-phases", "docs/servicing.md", ("capture",),
           ("phase", "flown [s]", "least clearance [m]", "its other requirements", "verdict"),
           MISSION_PHASES, mission_rows,

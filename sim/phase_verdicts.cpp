@@ -63,7 +63,12 @@ void add_phase_requirements(const model::Scenario& s, const std::string& name, c
     out.push_back(at_most("peak_joint_torque_Nm", largest(r.reach.peak_joint_torque_Nm), repeated_peak_Nm));
   } else if (name == "capture") {
     out.push_back(holds("captured", std::string(r.reach.grasp.outcome) == "captured"));
-    out.push_back(holds("grasp_table2", grasp_meets_table2(r.reach.grasp)));
+    if (s.capture && s.capture->berthing) {  // the probe's: docked, the contact within its bound
+      out.push_back(holds("hard_docked", std::isfinite(r.reach.berthing.hard_dock_s)));
+      out.push_back(at_most("peak_contact_force_N", r.reach.berthing.peak_contact_N, r.reach.berthing.contact_force_limit_N));
+    } else {
+      out.push_back(holds("grasp_table2", grasp_meets_table2(r.reach.grasp)));
+    }
   } else if (name == "rigidisation") {
     out.push_back(holds("brakes_engaged", std::isfinite(r.reach.rigidise.brakes_s)));
     out.push_back(at_most("peak_joint_torque_Nm", largest(r.reach.rigidise.peak_torque_Nm), repeated_peak_Nm));

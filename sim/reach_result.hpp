@@ -14,6 +14,7 @@
 #include "model/arm.hpp"
 #include "model/capture.hpp"
 #include "plant/arm_joints.hpp"
+#include "sim/berth_result.hpp"
 #include "sim/mission_monitor.hpp"
 
 namespace chaser::sim {
@@ -108,6 +109,7 @@ struct ReachResult {
   double min_tool_clearance_at_s = std::numeric_limits<double>::quiet_NaN();
   int camera_samples = 0;             // arm camera samples the flight software used
   GraspResult grasp;
+  BerthResult berthing;  // capture.berthing: the grasp's steps are the probe's
   RigidiseResult rigidise;
   StabiliseResult stabilise;
 };

@@ -240,6 +240,8 @@ Simulation::PeriodTruth Simulation::sample_truth(const flight::FlightOutput& out
     if (recording_) truth.figure = plant::arm_figure(plant_);
     result_.reach.camera_samples = flight_state_.reach.camera_samples;
     add_rigidise_period(result_.reach.rigidise, flight_state_.reach.rigidise, truth.arm);
+    if (scenario_.capture->berthing)
+      add_berth_period(result_.reach.berthing, *plant::berth_truth(plant_), *scenario_.capture->berthing);
   } else if (shape_.arm && recording_) {  // stowed
     truth.arm.joints = model::kArmJoints;
     for (int j = 0; j < model::kArmJoints; ++j)

@@ -178,6 +178,26 @@ nlohmann::json grasp_json(const GraspResult& g) {
   };
 }
 
+// ASSIST's berthing (sim/berth_result.hpp): null where the scenario does not berth.
+nlohmann::json berth_json(const BerthResult& b) {
+  if (!b.flown) return nullptr;
+  const bool latched = std::isfinite(b.soft_dock_s);
+  return nlohmann::json{
+      {"soft_dock_s", finite_or_null(true, b.soft_dock_s)},
+      {"latch_offset_mm", latched ? vec_json(b.latch_offset_m, 1e3) : nlohmann::json(nullptr)},
+      {"latch_offset_axes", "the fixture's: x the approach"},
+      {"latch_attitude_error_deg", finite_or_null(true, b.latch_attitude_deg)},
+      {"pins_jammed", b.pins_jammed},
+      {"hard_dock_s", finite_or_null(true, b.hard_dock_s)},
+      {"mate_offset_mm", finite_or_null(true, 1e3 * b.mate_offset_m)},
+      {"mate_attitude_error_deg", finite_or_null(true, b.mate_attitude_deg)},
+      {"peak_contact_force_N", b.peak_contact_N},
+      {"contact_force_limit_N", b.contact_force_limit_N},
+      {"peak_hold_force_N", b.peak_hold_N},
+      {"met", berth_meets_requirements(b)},
+  };
+}
+
 // The rigidisation (sim/reach_result.hpp): null where it was not flown.
 nlohmann::json rigidise_json(const model::Scenario& scenario, const RigidiseResult& r) {
   if (!r.flown) return nullptr;
@@ -322,11 +342,27 @@ nlohmann::json reach_json(const model::Scenario& scenario, const RunResult& r) {
       {"min_tool_clearance_at_s", finite_or_null(true, reach.min_tool_clearance_at_s)},
       {"torque_repeated_peak_Nm", scenario.chaser.arm ? scenario.chaser.arm->torque_repeated_peak_Nm : 0.0},
       {"grasp", grasp_json(reach.grasp)},
+      {"berthing", berth_json(reach.berthing)},
       {"rigidisation", rigidise_json(scenario, reach.rigidise)},
       {"stabilisation", stabilise_json(scenario, reach)},
   };
   if (scenario.capture->escape) out["escape"] = escape_json(scenario, r.escape);
   return out;
+}
+
+// The berthing's line of the text report.
+std::string berth_text(const BerthResult& b) {
+  std::string docks = "no soft dock (the latches never closed)";
+  if (std::isfinite(b.soft_dock_s))
+    docks = fmt::format("soft dock at {:.1f} s (the tip {:.1f}, {:.1f}, {:.1f} mm from the socket, {:.2f} deg off its axes), {}",
+                        b.soft_dock_s, 1e3 * b.latch_offset_m.x(), 1e3 * b.latch_offset_m.y(), 1e3 * b.latch_offset_m.z(),
+                        b.latch_attitude_deg,
+                        std::isfinite(b.hard_dock_s) ? fmt::format("hard dock at {:.1f} s", b.hard_dock_s)
+                        : b.pins_jammed              ? std::string("the pins jammed: no hard dock")
+                                                     : std::string("no hard dock by the end"));
+  return fmt::format("  berthing: {}; peak contact force {:.1f} N (limit {:.0f}), peak latch and pin force {:.1f} N: {}\n",
+                     docks, b.peak_contact_N, b.contact_force_limit_N, b.peak_hold_N,
+                     berth_meets_requirements(b) ? "met" : "NOT met");
 }
 
 // The reach's two lines of the text report.
@@ -358,7 +394,9 @@ std::string reach_text(const model::Scenario& scenario, const RunResult& r) {
   for (const double t : reach.peak_joint_torque_Nm) peak = std::max(peak, t);
   const GraspResult& g = reach.grasp;
   std::string grasp;
-  if (g.judged)
+  if (const BerthResult& b = reach.berthing; b.flown)
+    grasp = berth_text(b);
+  else if (g.judged)
     grasp = fmt::format(
         "  grasp: {} (jaws closed at {:.1f} s{}); at the closure the gripper {} mm, {} mm/s, {} deg, {} deg/s from the "
         "fixture, the chaser {:.3f} m, {:.1f} mm/s, {:.2f} deg, {:.3f} deg/s: COMRADE Table 2 {}\n",

@@ -1,5 +1,6 @@
 #include "plant/multibody/mjcf.hpp"
 
+#include <cmath>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -46,9 +47,13 @@ void append_gripper(std::string& out, const model::MultibodySceneParams& scene, 
   if (!scene.grasp_contact) {
     fmt::format_to(std::back_inserter(out),
                    "{0}  <inertial pos=\"{1}\" mass=\"{2}\" diaginertia=\"{3}\"/>\n"
-                   "{0}  <site name=\"tool\" pos=\"{4}\"/>\n"
-                   "{0}</body>\n",
+                   "{0}  <site name=\"tool\" pos=\"{4}\"/>\n",
                    indent, vec(g.com_link7_m), g.mass_kg, vec(g.inertia_kgm2), vec(g.position_link7_m));
+    if (scene.berth_contact)  // the capture probe's tip, centred on the tool point
+      fmt::format_to(std::back_inserter(out),
+                     "{0}  <geom name=\"probe_tip\" type=\"sphere\" pos=\"{1}\" size=\"{2}\" friction=\"{3} 0.005 0.0001\" {4}/>\n",
+                     indent, vec(g.position_link7_m), scene.drogue.tip_radius_m, scene.drogue.friction, kNoDynamicContact);
+    fmt::format_to(std::back_inserter(out), "{}</body>\n", indent);
     return;
   }
   const model::JawParams& jaws = g.jaws;
@@ -83,6 +88,45 @@ void append_gripper(std::string& out, const model::MultibodySceneParams& scene, 
   fmt::format_to(std::back_inserter(out), "{}</body>\n", indent);
 }
 
+// The drogue (scene.berth_contact) on the target's body: each plate's inner face on the cone's
+// generator from the throat (x = 0, the socket, radius throat_radius_m) to the mouth (x = -depth_m,
+// mouth_radius_m), at its azimuth about the fixture's x; the plates a little wider than the mouth's
+// polygon's sides so that no tip passes between them; the floor's face at x = tip_radius_m, where
+// the tip's centre is at the socket.
+void append_drogue(std::string& out, const model::MultibodySceneParams& scene) {
+  const model::DrogueParams& d = scene.drogue;
+  constexpr double kHalfThicknessM = 0.005;
+  const double pi = 3.14159265358979323846;
+  const double dr = d.mouth_radius_m - d.throat_radius_m;
+  const double length = std::hypot(d.depth_m, dr);
+  const Vec3 along_xr(-d.depth_m / length, dr / length, 0.0);   // the generator, throat to mouth: (x, r)
+  const Vec3 outward_xr(dr / length, d.depth_m / length, 0.0);  // its normal away from the cavity
+  const double half_width = 1.1 * d.mouth_radius_m * std::tan(pi / d.plates);
+  const Quat q_target_from_fixture = scene.q_target_from_fixture.normalized();
+  for (int k = 0; k < d.plates; ++k) {
+    const double phi = 2.0 * pi * k / d.plates;
+    const Vec3 radial(0.0, std::cos(phi), std::sin(phi));
+    const Vec3 g = along_xr.x() * Vec3::UnitX() + along_xr.y() * radial;
+    const Vec3 n = outward_xr.x() * Vec3::UnitX() + outward_xr.y() * radial;
+    const Vec3 t(0.0, -std::sin(phi), std::cos(phi));  // g x t = n
+    Mat3 fixture_from_plate;
+    fixture_from_plate << g, t, n;
+    const Vec3 mid = 0.5 * (-d.depth_m) * Vec3::UnitX() + 0.5 * (d.mouth_radius_m + d.throat_radius_m) * radial;
+    const Vec3 centre = mid + kHalfThicknessM * n;
+    fmt::format_to(std::back_inserter(out),
+                   "      <geom name=\"drogue{}\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{} {} {}\" friction=\"{} 0.005 0.0001\" {}/>\n",
+                   k, vec(scene.fixture_target_m + q_target_from_fixture * centre),
+                   quat((q_target_from_fixture * Quat(fixture_from_plate)).normalized()), 0.5 * length, half_width,
+                   kHalfThicknessM, d.friction, kNoDynamicContact);
+  }
+  const Vec3 floor = (d.tip_radius_m + kHalfThicknessM) * Vec3::UnitX();
+  const double floor_half = d.throat_radius_m + 0.02;
+  fmt::format_to(std::back_inserter(out),
+                 "      <geom name=\"drogue_floor\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{} {} {}\" friction=\"{} 0.005 0.0001\" {}/>\n",
+                 vec(scene.fixture_target_m + q_target_from_fixture * floor), quat(q_target_from_fixture), kHalfThicknessM,
+                 floor_half, floor_half, d.friction, kNoDynamicContact);
+}
+
 }  // namespace
 
 std::string mjcf_of(const model::MultibodySceneParams& scene) {
@@ -99,8 +143,8 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                  "      <freejoint name=\"hub_free\"/>\n"
                  "      <inertial pos=\"0 0 0\" mass=\"{}\" fullinertia=\"{}\"/>\n",
                  scene.timestep_s, scene.integrator,
-                 scene.grasp_contact ? " collision=\"predefined\"" : "",
-                 scene.grasp_contact ? "" : "    <flag contact=\"disable\"/>\n",
+                 scene.grasp_contact || scene.berth_contact ? " collision=\"predefined\"" : "",
+                 scene.grasp_contact || scene.berth_contact ? "" : "    <flag contact=\"disable\"/>\n",
                  scene.hub_mass_kg, full_inertia(scene.hub_inertia_kgm2));
   for (int i = 0; i < model::kArmJoints; ++i) {
     const model::ArmLinkParams& link = arm.links[static_cast<std::size_t>(i)];
@@ -128,6 +172,7 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                    "      <geom name=\"fixture\" type=\"box\" pos=\"{}\" quat=\"{}\" size=\"{}\" {}/>\n",
                    vec(scene.fixture_target_m), quat(scene.q_target_from_fixture.normalized()),
                    vec(scene.fixture.half_extents_m), kNoDynamicContact);
+  if (scene.berth_contact) append_drogue(out, scene);
   out +=
       "    </body>\n"
       "  </worldbody>\n"
@@ -158,7 +203,14 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
         "    <pair geom1=\"finger_a\" geom2=\"fixture\"/>\n"
         "    <pair geom1=\"finger_b\" geom2=\"fixture\"/>\n"
         "  </contact>\n";
-  if (scene.arm_locks || scene.grasp_weld) out += "  <equality>\n";
+  if (scene.berth_contact) {
+    out += "  <contact>\n";
+    for (int k = 0; k < scene.drogue.plates; ++k)
+      fmt::format_to(std::back_inserter(out), "    <pair geom1=\"probe_tip\" geom2=\"drogue{}\"/>\n", k);
+    out += "    <pair geom1=\"probe_tip\" geom2=\"drogue_floor\"/>\n  </contact>\n";
+  }
+  const bool equality = scene.arm_locks || scene.grasp_weld || scene.berth_contact;
+  if (equality) out += "  <equality>\n";
   if (scene.arm_locks) {
     // q_i = stowed_i: polycoef's constant term with joint2 absent (MuJoCo's <equality><joint>).
     for (int i = 0; i < model::kArmJoints; ++i)
@@ -172,7 +224,12 @@ std::string mjcf_of(const model::MultibodySceneParams& scene) {
                    "    <weld name=\"grasp\" body1=\"gripper\" body2=\"target\" active=\"false\" solref=\"{0} 1\""
                    " solimp=\"{1} {1} 0.001\"/>\n",
                    scene.lock_timeconst_s, scene.lock_impedance);
-  if (scene.arm_locks || scene.grasp_weld) out += "  </equality>\n";
+  if (scene.berth_contact)  // inactive: engaged by the latches at the pose of that moment, then drawn to the mated one
+    fmt::format_to(std::back_inserter(out),
+                   "    <weld name=\"berth\" body1=\"gripper\" body2=\"target\" active=\"false\" solref=\"{0} 1\""
+                   " solimp=\"{1} {1} 0.001\"/>\n",
+                   scene.lock_timeconst_s, scene.lock_impedance);
+  if (equality) out += "  </equality>\n";
   out += "</mujoco>\n";
   return out;
 }

@@ -12,6 +12,9 @@
 // the gripper's model. With scene.arm_locks, each joint also has a lock "lock1".."lock7" holding it
 // at arm.stowed_rad (<equality><joint>, its q0 = 0 so the constant is the angle itself). With
 // scene.grasp_weld, a weld "grasp" of the gripper to the target, inactive (plant/multibody/weld.hpp).
+// With scene.berth_contact (ASSIST's berthing), the gripper is a capture probe: a sphere "probe_tip"
+// at the tool point, the drogue's plates "drogue0".. and "drogue_floor" on the target, contact
+// between them only (predefined pairs), and an inactive weld "berth" of the gripper to the target.
 #include <string>
 
 #include "model/arm.hpp"

@@ -18,4 +18,16 @@ void engage_weld_here(MujocoModel& world, int equality);
 void release_weld(MujocoModel& world, int equality);
 bool weld_engaged(const MujocoModel& world, int equality);
 
+// The relative pose a weld holds (anchor at body2's origin): body2's origin in body1's frame and
+// body2's attitude relative to body1; written, it is what the weld pulls the bodies to from the
+// next step on (a weld drawn from one pose to another: the berthing's retraction).
+struct WeldPose {
+  Vec3 p_m = Vec3::Zero();
+  Quat q_rel = Quat::Identity();
+};
+WeldPose weld_pose(const MujocoModel& world, int equality);
+void set_weld_pose(MujocoModel& world, int equality, const WeldPose& pose);
+// The weld's stiffness: MuJoCo's solref (time constant [s], damping ratio 1).
+void set_weld_timeconst(MujocoModel& world, int equality, double timeconst_s);
+
 }  // namespace chaser::plant::multibody

@@ -127,6 +127,53 @@ TEST_P(BadCaptureCase, ReportsOneErrorAtItsKeyPath) {
 INSTANTIATE_TEST_SUITE_P(Rules, BadCaptureCase, ::testing::ValuesIn(bad_captures()),
                          [](const ::testing::TestParamInfo<BadCapture>& info) { return std::string(info.param.label); });
 
+// ASSIST's berthing (scenarios/comrade_berth.yaml): each rule of capture.berthing names its key.
+std::vector<BadCapture> bad_berthings() {
+  return {
+      {"latch_radius", {"capture.berthing.latch_radius_m=0.2"}, "capture.berthing.latch_radius_m", "must be in (0, 0.05]"},
+      {"mouth_inside_the_throat", {"capture.berthing.drogue_mouth_radius_m=0.02"},
+       "capture.berthing.drogue_mouth_radius_m",
+       "must be wider than the throat, probe_tip_radius_m + socket_clearance_m = 0.023 m (got 0.02)"},
+      {"standoff_inside_the_drogue", {"capture.standoff_m=0.1"}, "capture.standoff_m",
+       "must put the probe's tip outside the drogue's mouth: beyond capture.berthing.drogue_depth_m + "
+       "probe_tip_radius_m = 0.17 m (got 0.1)"},
+      {"with_escape", {"capture.escape={retract_duration_s: 30}"}, "capture.escape", "not for capture.berthing"},
+      {"socket_on_the_surface", {"target.body.grasp_point_target_m=[0, -1.0, 0]"}, "target.body.grasp_point_target_m",
+       "with capture.berthing must lie capture.berthing.drogue_depth_m = 0.15 m inside the target's surface"},
+      {"camera_bias", {"sensors.arm_camera.position_bias_m=[0, 0.6, 0]"}, "sensors.arm_camera.position_bias_m.1",
+       "must be in [-0.5, 0.5] (got 0.6)"},
+      {"retraction_duration", {"capture.berthing.retraction_duration_s=0"}, "capture.berthing.retraction_duration_s",
+       "must be in [1, 10000]"},
+      {"friction", {"capture.berthing.friction=-0.1"}, "capture.berthing.friction", "must be in [0, 2]"},
+      {"unknown_key", {"capture.berthing.latch_m=0.01"}, "capture.berthing.latch_m", ""},
+  };
+}
+
+class BadBerthingCase : public ::testing::TestWithParam<BadCapture> {};
+
+TEST_P(BadBerthingCase, ReportsOneErrorAtItsKeyPath) {
+  const BadCapture& c = GetParam();
+  const LoadResult r = load_scenario_file("scenarios/comrade_berth.yaml", c.overrides);
+  EXPECT_FALSE(r.scenario.has_value());
+  EXPECT_TRUE(has_error(r, c.key_path, c.fragment)) << format_errors(r.errors);
+  EXPECT_EQ(r.errors.size(), 1u) << format_errors(r.errors);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rules, BadBerthingCase, ::testing::ValuesIn(bad_berthings()),
+                         [](const ::testing::TestParamInfo<BadCapture>& info) { return std::string(info.param.label); });
+
+TEST(CaptureSection, TheShippedBerthingReadsBack) {
+  const LoadResult r = load_scenario_file("scenarios/comrade_berth.yaml");
+  ASSERT_TRUE(r.scenario) << format_errors(r.errors);
+  ASSERT_TRUE(r.scenario->capture && r.scenario->capture->berthing);
+  const model::BerthingParams& b = *r.scenario->capture->berthing;
+  EXPECT_EQ(b.drogue_depth_m, 0.15);
+  EXPECT_EQ(b.retraction_m, 0.1);
+  EXPECT_EQ(b.pin_attitude_tol_deg, 1.0);
+  EXPECT_EQ(b.contact_force_limit_N, 50.0);
+  EXPECT_EQ(r.scenario->sensors.arm_camera->position_bias_m, Vec3::Zero());
+}
+
 TEST(CaptureSection, NeedsAnArm) {
   const LoadResult r = load_scenario_file(
       "scenarios/comrade_sync.yaml",
