@@ -460,6 +460,7 @@ void engage_brakes(const MultibodyMotionParams& params, MultibodyMotionState& st
     m.dof_solimp[mjNIMP * dof + 1] = kBrakeImpedance;
   }
   state.brakes_engaged = true;
+  m.opt.integrator = params.braked_integrator;
 }
 
 void lock_arm(const MultibodyMotionParams& params, MultibodyMotionState& state, bool locked) {

@@ -117,6 +117,12 @@ struct MultibodyMotionParams {
   Vec3 chaser_com_body_m = Vec3::Zero();  // [m] the whole chaser's CoM, arm stowed (thrust torques are about it)
   double arm_mass_kg = 0.0;               // [kg] links and gripper
   std::optional<model::BerthingParams> berthing;  // capture.berthing: the probe, the drogue and their mechanisms
+  // MuJoCo's integrator once the brakes hold. Braked, no joint law runs and the scene moves as one
+  // body but for the brakes' and the welds' stiff constraint rows; MuJoCo's semi-implicit Euler at
+  // the same step then gives the motion RK4 gives (tests/plant/arm_joints_test.cpp: the braked arm
+  // under thrust, to 1e-5 of its rate and loads) at a fraction of the cost: COMRADE's stabilisation, 360 s
+  // of a braked composite, takes half the wall time (docs/performance.md).
+  int braked_integrator = mjINT_EULER;
   MultibodyIndices index;
 };
 
