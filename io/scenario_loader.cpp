@@ -53,7 +53,11 @@ std::string file_key(const std::filesystem::path& path) {
 
 void lay_over(YAML::Node& into, const YAML::Node& from) {
   for (const auto& entry : from) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar()) {  // not a key of the schema: kept, for the reader to name
+      into[entry.first] = YAML::Clone(entry.second);
+      continue;
+    }
+    const std::string& key = entry.first.Scalar();
     const YAML::Node& existing = static_cast<const YAML::Node&>(into)[key];
     if (existing && existing.IsMap() && entry.second.IsMap()) {
       YAML::Node child = into[key];
@@ -97,7 +101,7 @@ std::optional<YAML::Node> with_base(const YAML::Node& root, const std::string& s
   YAML::Node merged = YAML::Clone(*base);
   YAML::Node own(YAML::NodeType::Map);
   for (const auto& entry : root)
-    if (entry.first.as<std::string>() != "base") own[entry.first] = entry.second;
+    if (!entry.first.IsScalar() || entry.first.Scalar() != "base") own[entry.first] = entry.second;
   lay_over(merged, own);
   return merged;
 }

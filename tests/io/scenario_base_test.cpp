@@ -91,6 +91,11 @@ TEST(ScenarioBase, EveryProblemNamesTheKeyBase) {
   const LoadResult broken = load_scenario_file(folder.write("on_broken.yaml", "base: broken.yaml\n"));
   ASSERT_FALSE(broken.errors.empty());
   EXPECT_NE(broken.errors.front().key_path.find("broken.yaml"), std::string::npos) << format_errors(broken.errors);
+  // A key that is not a name (a list as a key) merges without a throw and is refused by the reader.
+  const LoadResult list_key =
+      load_scenario_file(folder.write("list_key.yaml", "base: " + msr_absolute() + "\n? [a, b]\n: 1\n"));
+  EXPECT_FALSE(list_key.scenario);
+  EXPECT_FALSE(list_key.errors.empty());
   const LoadResult bad_key = load_scenario_file(folder.write("bad.yaml", "base: " + msr_absolute() + "\nduration_s: -1\n"));
   EXPECT_TRUE(has_error(bad_key, "duration_s", "must be"));
 }
