@@ -1,9 +1,14 @@
-// chaser control design: the scenario's H-infinity design (control.hinf), six loops after the
-// computed-torque precompensation (control/six_axis_design.hpp), each checked independently of
-// SLICOT: the closed loop's norm by sweep, its poles on the true plant, the classical margins with
-// the exact delay. Prints a table; --out writes every figure, the controllers and the frequency
-// responses as JSON for python/plot_control.py.
+// chaser control design: the scenario's loops. Where it flies the LQR loops (control.law lqr), their
+// gains and closed-loop poles (control/discrete_poles.hpp). Where it has an H-infinity design
+// (control.hinf), the six loops after the computed-torque precompensation
+// (control/six_axis_design.hpp), each checked independently of SLICOT: the closed loop's norm by
+// sweep, its poles on the true plant, the classical margins with the exact delay. Prints tables;
+// --out writes every figure, the controllers and the frequency responses as JSON for
+// python/plot_control.py.
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <numbers>
 #include <stdexcept>
@@ -21,6 +26,10 @@
 #include "control/loop_mu.hpp"
 #include "control/robustness.hpp"
 #include "control/six_axis_design.hpp"
+#include "control/discrete_poles.hpp"
+#include "core/linear_models.hpp"
+#include "flight/attitude_control.hpp"
+#include "flight/position_control.hpp"
 
 namespace chaser::cli {
 
@@ -214,12 +223,126 @@ std::string axis_row(const LoopUnits& units, const control::AxisDesign& d) {
                             m.delay_margin_s, d.max_real_pole);
 }
 
+struct LqrLoopText {
+  const char* name;
+  const char* weights_format;  // fmt pattern of the three weights
+  const char* error_unit;
+  const char* rate_unit;
+};
+
+std::string range_text(double lo, double hi, const char* format) {
+  const std::string a = fmt::format(fmt::runtime(format), lo), b = fmt::format(fmt::runtime(format), hi);
+  return a == b ? a : a + "-" + b;
+}
+
+// One flown LQR loop: its gain, and the poles of the discrete model it was designed on closed by it.
+struct LqrLoop {
+  Mat36 K;
+  control::DiscreteLoopPoles closed;
+  bool converged = false;
+};
+
+LqrLoop position_loop(const model::Scenario& s) {
+  const flight::PositionControlParams p = flight::make_position_control(s);
+  const DiscreteLinear6 m = discrete_hcw(p.mean_motion_radps, p.period_s);
+  // The design's input is force: the model's acceleration input over the nominal mass.
+  return {p.K, control::discrete_loop_poles(m.Ad, m.Bd / p.mass_kg, p.K, p.period_s), p.design_converged};
+}
+
+LqrLoop attitude_loop(const model::Scenario& s) {
+  const flight::AttitudeControlParams p = flight::make_attitude_control(s);
+  const DiscreteLinear6 m = discrete_attitude(p.inertia_kgm2, s.control_period_s);
+  return {p.K, control::discrete_loop_poles(m.Ad, m.Bd, p.K, s.control_period_s), p.design_converged};
+}
+
+bool lqr_ok(const LqrLoop& loop) { return loop.converged && loop.closed.stable; }
+
+// One loop's row: its weights, the gain's diagonal on the error and on its rate, and the range of
+// its poles' w_n, zeta and 1/(zeta w_n).
+std::string lqr_row(const LqrLoopText& text, const std::array<double, 3>& weights, const LqrLoop& loop) {
+  const Eigen::Vector3d k_error = loop.K.leftCols<3>().diagonal(), k_rate = loop.K.rightCols<3>().diagonal();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double wn_lo = kInf, wn_hi = 0, zeta_lo = kInf, zeta_hi = 0, tau_lo = kInf, tau_hi = 0;
+  for (const control::LoopPole& p : loop.closed.poles) {
+    wn_lo = std::min(wn_lo, p.natural_radps), wn_hi = std::max(wn_hi, p.natural_radps);
+    zeta_lo = std::min(zeta_lo, p.damping), zeta_hi = std::max(zeta_hi, p.damping);
+    tau_lo = std::min(tau_lo, p.time_constant_s), tau_hi = std::max(tau_hi, p.time_constant_s);
+  }
+  return fmt::format("{:<9} {:<40} {:>15} {:<8} {:>15} {:<10} {:>13} {:>11} {:>15}  {}", text.name,
+                     fmt::format(fmt::runtime(text.weights_format), weights[0], weights[1], weights[2]),
+                     range_text(k_error.minCoeff(), k_error.maxCoeff(), "{:.4g}"), text.error_unit,
+                     range_text(k_rate.minCoeff(), k_rate.maxCoeff(), "{:.4g}"), text.rate_unit,
+                     range_text(wn_lo, wn_hi, "{:.4f}"), range_text(zeta_lo, zeta_hi, "{:.3f}"),
+                     range_text(tau_lo, tau_hi, "{:.1f}"),
+                     !loop.converged ? "RICCATI NOT CONVERGED" : (loop.closed.stable ? "stable" : "UNSTABLE"));
+}
+
+nlohmann::json lqr_json(const std::array<double, 3>& weights, const LqrLoop& loop, double period_s) {
+  nlohmann::json poles = nlohmann::json::array();
+  for (const control::LoopPole& p : loop.closed.poles)
+    poles.push_back({{"re", p.s.real()},
+                     {"im", p.s.imag()},
+                     {"natural_radps", p.natural_radps},
+                     {"damping", p.damping},
+                     {"time_constant_s", finite_or_null(p.time_constant_s)}});
+  return {{"weights", weights},
+          {"K", matrix_json(loop.K)},
+          {"period_s", period_s},
+          {"converged", loop.converged},
+          {"stable", loop.closed.stable},
+          {"poles", poles}};
+}
+
+// The LQR loops the scenario flies: printed, and added to the report as "lqr". False where a
+// design did not converge or a loop is unstable.
+bool report_lqr_loops(const model::Scenario& s, nlohmann::json& report) {
+  const model::ControlParams& c = s.control;
+  const LqrLoop position = position_loop(s);
+  const LqrLoop attitude = attitude_loop(s);
+  const std::array<double, 3> w_position{c.position_q_pos, c.position_q_vel, c.position_r_force};
+  const std::array<double, 3> w_attitude{c.attitude_q_angle, c.attitude_q_rate, c.attitude_r_torque};
+  std::cout << fmt::format(
+      "{}: the LQR loops flown (control.law lqr; docs/gnc.md): discrete LQR on the ZOH model, mass {:g} kg, inertia\n"
+      "diag({:g}, {:g}, {:g}) kg m^2, T = {:g} s; closed-loop poles z read as s = ln z / T, w_n = |s|, zeta = -Re s / "
+      "|s|.\n\n",
+      s.name, s.chaser.mass_kg, s.chaser.inertia_kgm2(0, 0), s.chaser.inertia_kgm2(1, 1), s.chaser.inertia_kgm2(2, 2),
+      s.control_period_s);
+  std::cout << fmt::format("{:<9} {:<40} {:>15} {:<8} {:>15} {:<10} {:>13} {:>11} {:>15}\n", "loop", "weights",
+                           "gain on error", "", "on rate", "", "w_n rad/s", "zeta", "1/(zeta w_n) s");
+  std::cout << lqr_row({"position", "q_pos {:g}, q_vel {:g}, r_force {:g}", "N/m", "N s/m"}, w_position, position)
+            << "\n";
+  std::cout << lqr_row({"attitude", "q_angle {:g}, q_rate {:g}, r_torque {:g}", "N m/rad", "N m s/rad"}, w_attitude,
+                       attitude)
+            << "\n";
+  report["lqr"] = {{"mass_kg", s.chaser.mass_kg},
+                   {"inertia_kgm2", matrix_json(s.chaser.inertia_kgm2)},
+                   {"position", lqr_json(w_position, position, s.control_period_s)},
+                   {"attitude", lqr_json(w_attitude, attitude, s.control_period_s)}};
+  return lqr_ok(position) && lqr_ok(attitude);
+}
+
 }  // namespace
 
 int control_design_command(const ControlDesignArgs& args) {
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& s = *loaded->scenario;
+  nlohmann::json report{{"scenario", s.name}};
+  if (s.control.law == model::ControlLaw::kLqr) {
+    if (!report_lqr_loops(s, report)) {
+      std::cerr << "chaser control design: an LQR loop did not converge or is unstable (see its row): change its "
+                   "weights in control\n";
+      return kExitFailure;
+    }
+    if (!s.control.hinf) {
+      if (!args.json_path.empty()) {
+        if (!write_output_file(args.json_path, report.dump(1) + "\n")) return kExitFailure;
+        std::cout << fmt::format("\nwrote {}\n", args.json_path);
+      }
+      return kExitOk;
+    }
+    std::cout << "\n";
+  }
   control::SixAxisDesign design;
   try {
     design = control::design_six_axes(s);
@@ -238,7 +361,8 @@ int control_design_command(const ControlDesignArgs& args) {
                            "{:>7} {:>8} {:>10}\n",
                            "loop", "authority", "", "w_B", "M", "A", "scale", "", "gamma", "norm", "bw rad/s", "|S|pk",
                            "|T|pk", "GM up", "GM down", "PM deg", "DM s", "max Re(p)");
-  nlohmann::json report{{"scenario", s.name}, {"delay_s", design.delay_s}, {"axes", nlohmann::json::array()}};
+  report["delay_s"] = design.delay_s;
+  report["axes"] = nlohmann::json::array();
   for (std::size_t k = 0; k < design.axes.size(); ++k) {
     std::cout << axis_row(six_axis_units(k), design.axes[k]) << "\n";
     report["axes"].push_back(axis_json(six_axis_units(k), design.axes[k]));

@@ -305,12 +305,24 @@ TEST(Cli, ControlDesignChecksTheStabilisationsLoops) {
   std::filesystem::remove(json);
 }
 
-// A scenario without control.hinf has nothing to design (exit 2, the section named); a bandwidth
-// past the period's Nyquist frequency is refused by the loader with its key path.
-TEST(Cli, ControlDesignRefusesWhatItCannotDesign) {
-  const CommandResult msr = run_chaser("control design scenarios/msr_terminal.yaml");
-  EXPECT_EQ(msr.exit_code, 2) << msr.output;
-  EXPECT_NE(msr.output.find("control.hinf"), std::string::npos) << msr.output;
+// A scenario that flies the LQR loops and has no control.hinf (MSR): their gains and poles, nothing
+// else (exit 0); the JSON's poles are the table's. A bandwidth past the period's Nyquist frequency is
+// refused by the loader with its key path.
+TEST(Cli, ControlDesignShowsTheLqrLoopsAndRefusesWhatItCannotDesign) {
+  const auto json = chaser::testing::scratch_path("chaser_lqr_design.json");
+  const CommandResult msr = run_chaser("control design scenarios/msr_terminal.yaml --out " + json.string());
+  ASSERT_EQ(msr.exit_code, 0) << msr.output;
+  EXPECT_NE(msr.output.find("the LQR loops flown"), std::string::npos) << msr.output;
+  EXPECT_NE(msr.output.find("position  q_pos 16, q_vel 12000, r_force 1"), std::string::npos) << msr.output;
+  EXPECT_EQ(msr.output.find("H-infinity"), std::string::npos) << msr.output;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(json));
+  ASSERT_EQ(report["lqr"]["position"]["poles"].size(), 3u);
+  for (const auto& pole : report["lqr"]["position"]["poles"]) {
+    EXPECT_NEAR(pole["natural_radps"].get<double>(), 0.04, 0.002);  // docs/gnc.md's design, w_n = 0.04 rad/s
+    EXPECT_LT(pole["re"].get<double>(), 0.0);
+  }
+  EXPECT_TRUE(report["lqr"]["attitude"]["stable"].get<bool>());
+  std::filesystem::remove(json);
   const CommandResult fast =
       run_chaser("control design scenarios/comrade_envisat.yaml --set control.hinf.rotation.bandwidth_radps=40");
   EXPECT_EQ(fast.exit_code, 2) << fast.output;
