@@ -77,8 +77,8 @@ BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(ben
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // What `chaser run` waits for, less process start and scenario loading: the whole 1200 s run with
-// its telemetry file written (csv or npy, every channel, finished and renamed), against none. Issue
-// 16's target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop. As `chaser run`
+// its telemetry file written (csv or npy, every channel, finished and renamed), against none. The
+// target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop. As `chaser run`
 // does, each run first removes the last one's file (renaming over it costs an ext4 flush).
 void BM_RunWithTelemetry(benchmark::State& state, const char* extension) {
   const model::Scenario scenario = msr_scenario();

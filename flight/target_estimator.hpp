@@ -14,7 +14,7 @@
 // Latency: each measurement carries the time it was taken; the filter holds its state at the last
 // measurement's time and predict() carries it to any later time (the flight software's now), so a
 // measurement's delay costs no more than its propagation. Out-of-order measurements are refused.
-// Not estimated here: the inertia ratios (the "optionally"), which the Euler model then
+// Not estimated here: the inertia ratios, which the Euler model then
 // takes from the scenario; an error in them shows as torque noise.
 #include "core/types.hpp"
 

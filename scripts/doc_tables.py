@@ -118,6 +118,7 @@ class Command:
     args: tuple       # after `chaser` (or the script), with "OUT" for the output path
     quick: bool       # runs in seconds
     script: str = ""  # relative to the repository root, e.g. python/fdi_matrix.py; "" for chaser
+    runs_chaser: bool = True  # a script that flies nothing is given neither --binary nor --jobs
 
     def shown(self):
         program = f"/usr/bin/python3 {self.script}" if self.script else "chaser"
@@ -126,6 +127,8 @@ class Command:
     def argv(self, cli, out, threads):
         args = [str(out) if a == "OUT" else a for a in self.args]
         if self.script:
+            if not self.runs_chaser:
+                return [sys.executable, str(ROOT / self.script)] + args
             return ([sys.executable, str(ROOT / self.script)] + args + ["--binary", str(cli)]
                     + (["--jobs", str(threads)] if threads else []))
         argv = [cli] + args
@@ -766,6 +769,39 @@ def control_design_rows(json_path):
     return [control_loop_row(a) for a in control_loops(json_path)]
 
 
+# The LQR loops of `chaser control design` (docs/gnc.md): per loop its weights, the range of its
+# closed-loop poles' w_n, zeta and 1/(zeta w_n), and its gain's diagonal on the error and its rate.
+LQR_LOOPS = ("position", "attitude")
+LQR_WEIGHTS = {"position": ("q_pos", "q_vel", "r_force"), "attitude": ("q_angle", "q_rate", "r_torque")}
+LQR_UNITS = {"position": ("N/m", "N s/m"), "attitude": ("N m/rad", "N m s/rad")}
+LQR_WORDS = (sum(LQR_WEIGHTS.values(), ()) + ("N", "m", "s", "rad"))
+
+
+def lqr_rows(json_path):
+    lqr = load_json(json_path)["lqr"]
+    rows = []
+    for name in LQR_LOOPS:
+        loop = lqr[name]
+        weights = ", ".join(f"{w} {v:g}" for w, v in zip(LQR_WEIGHTS[name], loop["weights"]))
+        poles = loop["poles"]
+        gains = [[row[i] for i, row in enumerate(loop["K"])], [row[3 + i] for i, row in enumerate(loop["K"])]]
+        error_unit, rate_unit = LQR_UNITS[name]
+        rows.append([weights, range_text([p["natural_radps"] for p in poles], 3),
+                     range_text([p["damping"] for p in poles], 2),
+                     range_text([p["time_constant_s"] for p in poles], 1) + " s",
+                     f"{range_text(gains[0], 1)} {error_unit}, {range_text(gains[1], 0)} {rate_unit}"])
+    return rows
+
+
+def lqr_fill(json_path):
+    report = load_json(json_path)
+    lqr = report["lqr"]
+    inertia = lqr["inertia_kgm2"]
+    return {"mass": f"{lqr['mass_kg']:g}", "ixx": f"{inertia[0][0]:g}", "iyy": f"{inertia[1][1]:g}",
+            "izz": f"{inertia[2][2]:g}",
+            "period": f"{lqr['position']['period_s']:g}"}
+
+
 def range_text(values, decimals):
     low, high = fixed(min(values), decimals), fixed(max(values), decimals)
     return low if low == high else f"{low}-{high}"
@@ -1087,7 +1123,7 @@ def invsim_paper_table6_fill(out):
 
 
 # --------------------------------------------------------------------------------------------------
-# Active checks all along (docs/fdi.md): the Table 2 preset without checks and with them all along
+# Active checks (docs/fdi.md): the Table 2 preset without checks, with them all along, and as shipped
 
 def fdir_case_stats(out):
     """Per case of a Table 2 campaign, the FDIR as a whole: runs, counts of P_nd, P_f and P_i, mean and
@@ -1111,9 +1147,10 @@ def fdir_case_stats(out):
     return stats
 
 
-def checks_all_along_rows(passive, all_along):
-    """Without checks / with checks all along: the FDIR per case (docs/fdi.md)."""
-    cols = [fdir_case_stats(passive), fdir_case_stats(all_along)]
+def checks_all_along_rows(passive, *checked):
+    """Without checks, then with checks as each campaign flies them (all along; armed for the last
+    approach, as shipped): the FDIR per case (docs/fdi.md)."""
+    cols = [fdir_case_stats(passive)] + [fdir_case_stats(out) for out in checked]
     base = cols[0]["none"]["propellant_g"]
 
     def td(c):
@@ -1129,6 +1166,75 @@ def checks_all_along_rows(passive, all_along):
         rows.append([f"{counts(c[case], 'P_nd', 'P_f', 'P_i')}; {td(c[case])}" for c in cols])
     rows.append([" / ".join(f"{c[k]['captures']:,}" for k in ("none",) + FAULT_CASES) for c in cols])
     rows.append([" / ".join(f"{c[k]['corridor']:,}" for k in ("none",) + FAULT_CASES) for c in cols])
+    return rows
+
+
+# An earlier onset (docs/fdi.md, "What the window's numbers say"): stuck closed and loss at 500 s,
+# armed for the last approach (shipped) and all along.
+ONSET_500 = ("--runs", "stuck_closed=200,loss=200", "--set", "campaign.onset_s=500",
+             "--set", "campaign.horizon_after_onset_s=700")
+ONSET_500_ONSET_S = 500.0
+
+
+def onset_rows(*outs):
+    """Per fault case and campaign: missed, false alarms and wrong names of the runs; mean and largest
+    t_d; how many over 30 s; the time by which every fault was detected."""
+    cols = [campaign_runs(out) for out in outs]
+    rows = []
+    for case in ("stuck_closed", "loss"):
+        for quantity in ("missed, false alarms, wrong", "mean / max t_d; over 30 s", "every detection by"):
+            row = []
+            for runs in cols:
+                mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
+                td = [number(r["fdir_detection_s"]) for r in mine]
+                found = [t for t in td if not missing(t)]
+                if quantity.startswith("missed"):
+                    flags = [sum(int(r[f"fdir_{flag}"]) for r in mine)
+                             for flag in ("missed", "false_alarm", "wrong_isolation")]
+                    row.append(f"{flags[0]}, {flags[1]}, {flags[2]} of {len(mine)}")
+                elif quantity.startswith("mean"):
+                    row.append(f"{fixed(statistics.mean(found), 1)} / {fixed(max(found), 1)} s; "
+                               f"{sum(1 for t in found if t > 30.0)}")
+                else:
+                    row.append(f"{fixed(ONSET_500_ONSET_S + max(found), 1)} s")
+            rows.append(row)
+    return rows
+
+
+# The deficit scheme on COMRADE's 24 thrusters (docs/fdi.md, "Any thruster set"): the V-bar leg with
+# faults at 600 s and 600 s after them, passive and as shipped (checks armed in the 30 m hold).
+COMRADE_DEFICIT = ("campaign", "scenarios/comrade_envisat.yaml",
+                   "--runs", "none=100,stuck_open=50,stuck_closed=50,leak=50,loss=50",
+                   "--set", "campaign.onset_s=600", "--set", "campaign.horizon_after_onset_s=600")
+COMRADE_DEFICIT_ONSET_S = 600.0
+
+
+def comrade_deficit_rows(*outs):
+    """Per campaign (passive, shipped): fault-free false alarms and propellant; per fault case the
+    missed, wrong and right names, mean and largest t_d, and the time by which every fault was found."""
+    cols = [campaign_runs(out) for out in outs]
+    rows = [[], []]
+    base = None
+    for runs in cols:
+        fault_free = [r for r in runs if r["case"] == "none" and r["status"] == "ok"]
+        grams = 1e3 * statistics.mean(number(r["propellant_kg"]) for r in fault_free)
+        base = grams if base is None else base
+        more = "" if grams == base else f" ({'+' if grams >= base else ''}{fixed(100.0 * (grams / base - 1.0), 1)} %)"
+        rows[0].append(f"{sum(int(r['fdir_false_alarm']) for r in fault_free)} of {len(fault_free)}")
+        rows[1].append(f"{fixed(grams, 1)} g{more}")
+    for case in FAULT_CASES:
+        named, timing = [], []
+        for runs in cols:
+            mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
+            missed = sum(int(r["fdir_missed"]) for r in mine)
+            wrong = sum(int(r["fdir_wrong_isolation"]) for r in mine)
+            right = sum(1 for r in mine if int(r["fdir_isolated"]) == int(r["fault_thruster"]))
+            td = [number(r["fdir_detection_s"]) for r in mine]
+            found = [t for t in td if not missing(t)]
+            named.append(f"{missed}, {wrong}, {right} of {len(mine)}")
+            timing.append(f"{fixed(statistics.mean(found), 1)} / {fixed(max(found), 1)} s; "
+                          f"{fixed(COMRADE_DEFICIT_ONSET_S + max(found), 0)} s")
+        rows += [named, timing]
     return rows
 
 
@@ -1266,6 +1372,129 @@ def right_of_detected(runs, scheme):
     right = sum(r[f"{scheme}_correct"] == "1" for r in runs)
     cell = f"{right}/{detected}"
     return f"**{cell}**" if detected and right == detected else cell
+
+
+# Each choice of the `paper` reading is needed (docs/invsim.md): Zhou 2018's targets (1)-(6), as
+# python/invsim_study/calibrate_invsim.py --targets scores them, with one choice changed at a time.
+READING_CHOICES = (  # (column, Command keys: one or two runs)
+    ("**`paper`**", ("fmea-paper",)),
+    ("seeds 21-40, 41-60", ("fmea-paper-seed-21", "fmea-paper-seed-41")),
+    ("1 draw", ("fmea-paper-one-draw",)),
+    ("capped openings", ("fmea-paper-capped",)),
+    ("nominal inverse model", ("fmea-paper-nominal-inverse",)),
+    ("no noise", ("fmea-noise-off",)),
+    ("`smooth`", ("fmea",)),
+)
+READING_LABELS = ("(1) nominal within 15 %, of 6", "(2) k_p within 15 %, of 17", "(3) rise within 10 points, of 16 (>= 12)",
+                  "(4) z doubles the worst", "(5) Table 5 at 1.3-1.6x, of 12", "(6) the same four lost",
+                  "Spearman of k_p, 16 fault rows")
+
+
+def zhou_targets(out):
+    sys.path.insert(0, str(ROOT / "python" / "invsim_study"))
+    import calibrate_invsim
+    return calibrate_invsim.targets(calibrate_invsim.read_layout(Path(out) / "fmea.csv"))
+
+
+def reading_choice_rows(*outs):
+    columns, k = [], 0
+    for _, keys in READING_CHOICES:
+        scored = [zhou_targets(out) for out in outs[k:k + len(keys)]]
+        k += len(keys)
+
+        def cell(f):
+            return ", ".join(f(t) for t in scored)
+        columns.append([
+            cell(lambda t: str(t["nominal_within"])), cell(lambda t: str(t["k_p_within"])),
+            cell(lambda t: str(t["rise_within"])), cell(lambda t: "yes" if t["z_doubles_worst"] else "no"),
+            cell(lambda t: f"{t['table5_in_band']} ({fixed(min(t['table5_ratios']), 2)}-{fixed(max(t['table5_ratios']), 2)}x)"),
+            cell(lambda t: "yes" if t["same_four_lost"] else f"no ({len(t['lost'])} lost)"),
+            cell(lambda t: fixed(t["spearman"], 2))])
+    return [list(row) for row in zip(*columns)]
+
+
+# Zhou 2018's nominal x counts against a pulse count's spread (docs/invsim.md, "Why Zhou's nominal x
+# counts are unreachable"): python/invsim_study/zhou_pulse_bounds.py's closed forms.
+PULSE_BOUND_WIDTHS = ((0.02, 0.06, 0.1, 0.15), (0.2, 0.3, 0.5))
+PULSE_BOUND_LABELS = ("proportional to opening time (any w, k, Q, horizon, inverse model)",
+                      "ceil(dtau / w), w = 0.02 / 0.06 / 0.1 / 0.15 s",
+                      "ceil(dtau / w), every w up to the largest excluded",
+                      "ceil(dtau / w), w = 0.2 / 0.3 / 0.5 s", "one per opening or per step (`smooth`)")
+
+
+def pulse_bound_rows(out):
+    b = load_json(Path(out) / "pulse_bounds.json")
+    need = b["rho_needed"]
+    spread = {round(c["width_s"], 6): c["rho"] for c in b["ceil"]}
+
+    def verdict(rhos):
+        return "no" if all(r < need for r in rhos) else "not excluded by the bound"
+
+    rows = [[fixed(b["proportional"], 2), verdict([b["proportional"]])]]
+    for k, widths in enumerate(PULSE_BOUND_WIDTHS):
+        rhos = [spread[w] for w in widths]
+        rows.append([" / ".join(fixed(r, 2) for r in rhos), verdict(rhos)])
+        if k == 0:
+            rows.append([f"< {fixed(need, 2)} (w <= {fixed(b['largest_excluded_width_s'], 3)} s)", "no"])
+    rows.append([fixed(b["smooth"], 2), verdict([b["smooth"]])])
+    return rows
+
+
+def pulse_bound_fill(out):
+    b = load_json(Path(out) / "pulse_bounds.json")
+    return {"need": fixed(b["rho_needed"], 2), "k": short(b["k"]), "tol": short(100 * b["tolerance"])}
+
+
+# The FDI in one table (docs/fdi.md's top): the 32-run matrix and 20 fault-free runs, three ways: the
+# published method (its two schemes, the paper's isolation), Chaser passive, Chaser as shipped.
+OVERVIEW = (("fdi-overview-published", ("fdi.isolation_method=paper", "fdi.active_check.enabled=false"),
+             ("position", "attitude")),
+            ("fdi-overview-passive", ("fdi.active_check.enabled=false",), ("position", "attitude", "deficit")),
+            ("fdi-overview-shipped", (), ("position", "attitude", "deficit")))
+OVERVIEW_LABELS = ("faults detected by some scheme", "faults isolated right by some scheme",
+                   "isolations by any scheme: right of all",
+                   "mean time to the first right isolation: stuck open / closed / leak / loss",
+                   "largest time to the first right isolation", "false alarms, 20 fault-free runs",
+                   "largest fault-free statistic: position / attitude (J_th 20); deficit (threshold 100)")
+
+
+def overview_command(key, overrides):
+    return Command(key, ("scenarios/msr_terminal.yaml", "--seeds", "20")
+                   + sum((("--set", o) for o in overrides), ()) + ("--out", "OUT"), quick=True,
+                   script="python/fdi_matrix.py")
+
+
+def fdi_overview_rows(*outs):
+    columns = []
+    for out, (_, _, schemes) in zip(outs, OVERVIEW):
+        with open(Path(out) / "matrix.csv", newline="") as f:
+            rows = list(csv.DictReader(f))
+        faulty = [r for r in rows if r["thruster"]]
+        free = [r for r in rows if not r["thruster"]]
+
+        def first_right(r):
+            times = [number(r[f"{s}_isolation_s"]) for s in schemes if r[f"{s}_correct"] == "1"]
+            return min(times) if times else math.nan
+
+        detected = sum(any(r[f"{s}_detected"] == "1" for s in schemes) for r in faulty)
+        right = sum(any(r[f"{s}_correct"] == "1" for s in schemes) for r in faulty)
+        named = sum(bool(r[f"{s}_isolated"]) and r[f"{s}_false_alarm"] != "1" for r in faulty for s in schemes)
+        named_right = sum(r[f"{s}_correct"] == "1" for r in faulty for s in schemes)
+        per_case = []
+        for case in FAULT_CASES:
+            times = [first_right(r) for r in faulty if r["case"] == case]
+            times = [t for t in times if not missing(t)]
+            per_case.append(times)
+        mean_text = " / ".join(f"{fixed(statistics.mean(t), 1)} s" if t else "-" for t in per_case)
+        max_text = " / ".join(f"{fixed(max(t), 1)} s" if t else "-" for t in per_case)
+        alarms = sum(any(r[f"{s}_false_alarm"] == "1" for s in schemes) for r in free)
+        peaks = {s: max(number(r[f"{s}_glr_max"]) for r in free) for s in ("position", "attitude", "deficit")}
+        statistic = f"{fixed(peaks['position'], 1)} / {fixed(peaks['attitude'], 1)}"
+        if "deficit" in schemes:
+            statistic += f"; {fixed(peaks['deficit'], 1)}"
+        columns.append([f"{detected}/{len(faulty)}", f"{right}/{len(faulty)}", f"{named_right}/{named}", mean_text,
+                        max_text, f"{alarms}/{len(free)}", statistic])
+    return [list(row) for row in zip(*columns)]
 
 
 def isolation_methods_rows(*outs):
@@ -1438,6 +1667,12 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
                                          "fdi.active_check.enabled=false", "--out", "OUT"), quick=False),
     Command("T2-passive", T2_PRESET + ("--set", "fdi.active_check.enabled=false", "--out", "OUT"), quick=False),
     Command("T2-all-along", T2_PRESET + ("--set", "fdi.active_check.arm_range_m=1e9", "--out", "OUT"), quick=False),
+    Command("comrade-deficit-passive", COMRADE_DEFICIT + ("--set", "fdi.active_check.enabled=false", "--out", "OUT"),
+            quick=False),
+    Command("comrade-deficit", COMRADE_DEFICIT + ("--out", "OUT"), quick=False),
+    Command("T2-onset-500", T2_PRESET + ONSET_500 + ("--out", "OUT"), quick=False),
+    Command("T2-onset-500-all-along", T2_PRESET + ONSET_500 + ("--set", "fdi.active_check.arm_range_m=1e9", "--out", "OUT"),
+            quick=False),
 ) + tuple(check_trade_command(k) for k in range(len(CHECK_TRADE_ROWS))) + (
     Command("T5", ("campaign", "scenarios/comrade_sync.yaml", "--preset", "comrade-table5", "--also",
                    "scenarios/comrade_assist.yaml", "--out", "OUT"), quick=False),
@@ -1468,6 +1703,7 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
                                   "OUT"), quick=True),
     Command("fdi-attitude.json", ("fdi", "design", "scenarios/msr_terminal.yaml", "--model", "attitude", "--out",
                                   "OUT"), quick=True),
+    Command("msr-control.json", ("control", "design", "scenarios/msr_terminal.yaml", "--out", "OUT"), quick=True),
     Command("envisat-control.json", ("control", "design", "scenarios/comrade_envisat.yaml", "--out", "OUT"),
             quick=True),
     # chaser fmea (docs/invsim.md); on two cores: 0.3 s, 0.05 s, 6 s, 0.7 s, 2.2 s, 0.5 s each noise-off run
@@ -1477,15 +1713,24 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("fmea-three-axis", FMEA + ("--three-axis",), quick=True),
     Command("fmea-optimize", FMEA + ("--optimize",), quick=True),
     Command("fmea-noise-off", FMEA + PAPER + NOISE_OFF, quick=True),
+    Command("fmea-paper-seed-21", FMEA + PAPER + ("--set", "pulses.paper.measurement_noise.seed=21"), quick=False),
+    Command("fmea-paper-seed-41", FMEA + PAPER + ("--set", "pulses.paper.measurement_noise.seed=41"), quick=False),
+    Command("fmea-paper-one-draw", FMEA + PAPER + ("--set", "pulses.paper.measurement_noise.draws=1"), quick=False),
+    Command("fmea-paper-capped", FMEA + PAPER + ("--set", "pulses.paper.opening=capped"), quick=False),
+    Command("fmea-paper-nominal-inverse", FMEA + PAPER + ("--set", "pulses.paper.inverse_model=nominal"), quick=False),
     Command("fmea-noise-off-mirrored", FMEA + PAPER + NOISE_OFF + (
         "--set", "initial.position_hill_m=[100.038,0.0167,-0.023]",
         "--set", "initial.velocity_hill_mps=[-0.0076,-0.131,-0.0087]"), quick=True),
     Command("fmea-noise-off-no-drift", FMEA + PAPER + NOISE_OFF + (
         "--set", "initial.position_hill_m=[100.038,0,-0.023]",
         "--set", "initial.velocity_hill_mps=[-0.0076,0,-0.0087]"), quick=True),
+    # python/invsim_study/zhou_pulse_bounds.py (docs/invsim.md): closed forms, no flight
+    Command("pulse-bounds", ("--out", "OUT"), quick=True, script="python/invsim_study/zhou_pulse_bounds.py",
+            runs_chaser=False),
     # python/fdi_matrix.py (docs/fdi.md): each a matrix of 32 runs, about 3 s on two cores
     matrix_command("fdi-matrix"),
 ) + tuple(matrix_command(key, overrides) for _, key, overrides in ISOLATION_ROWS + TUNING_ROWS[1:4])
+  + tuple(overview_command(key, overrides) for key, overrides, _ in OVERVIEW)
   + input_disturbance_commands() + tuple(envisat_law_command(law, norm) for _, law, norm in ENVISAT_LAW_ROWS)
   + tuple(process_noise_command(noise) for noise in PROCESS_NOISE)}
 
@@ -1593,13 +1838,24 @@ TABLES = [
                   "Largest P_f of any row: {pf} ({n0} fault-free runs included). Wrong isolations without "
                   "checks: {wrong} of the three schemes' {named}.",
           fill=campaigns_table2_fill),
-    Table("fdi-checks-all-along", "docs/fdi.md", ("T2-passive", "T2-all-along"),
-          ("FDIR (every scheme)", "without checks", "with checks all along"),
+    Table("fdi-checks-all-along", "docs/fdi.md", ("T2-passive", "T2-all-along", "T2"),
+          ("FDIR (every scheme)", "without checks", "with checks all along", "**armed for the last approach (shipped)**"),
           ("fault-free: P_f, mean propellant", "stuck open: P_nd, P_f, P_i; mean / max t_d",
            "stuck closed: P_nd, P_f, P_i; mean / max t_d", "leak: P_nd, P_f, P_i; mean / max t_d",
            "loss: P_nd, P_f, P_i; mean / max t_d", "captured (fault-free / stuck open / closed / leak / loss)",
            "corridor kept (the same)"),
           checks_all_along_rows, words=("of", "g", "s", "%")),
+    Table("fdi-checks-onset-500", "docs/fdi.md", ("T2-onset-500", "T2-onset-500-all-along"),
+          ("FDIR, 200 runs each, onset 500 s", "**armed for the last approach (shipped)**", "checks all along"),
+          tuple(f"{case}: {q}" for case in ("stuck closed", "loss")
+                for q in ("missed, false alarms, wrong", "mean / max t_d; over 30 s", "every detection by")),
+          onset_rows, words=("of", "s")),
+    Table("fdi-comrade-vbar", "docs/fdi.md", ("comrade-deficit-passive", "comrade-deficit"),
+          ("FDIR (the deficit scheme)", "passive", "**checks armed in the hold (shipped)**"),
+          ("fault-free: false alarms", "fault-free: mean propellant")
+          + sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / max t_d; every one found by")
+                 for case in FAULT_CASES), ()),
+          comrade_deficit_rows, words=("of", "g", "s", "%")),
     Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
           ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
            "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,
@@ -1609,6 +1865,22 @@ TABLES = [
           shown_as="nine campaigns `chaser campaign scenarios/msr_terminal.yaml --preset fonod2015-table2 --runs "
                    "none=50,stuck_closed=200,loss=200 --set fdi.active_check.arm_range_m=1e9` with each row's "
                    "`--set fdi.active_check...` (scripts/doc_tables.py, CHECK_TRADE_ROWS)"),
+    Table("invsim-reading-choices", "docs/invsim.md", sum((keys for _, keys in READING_CHOICES), ()),
+          ("target",) + tuple(c for c, _ in READING_CHOICES), READING_LABELS, reading_choice_rows,
+          words=("yes", "no", "lost", "x"),
+          shown_as="`chaser fmea scenarios/manual_rvd.yaml --set pulses.reading=paper` with one `--set` per column "
+                   "(`pulses.paper.measurement_noise.seed=21` or `=41`; `...draws=1`; `pulses.paper.opening=capped`; "
+                   "`pulses.paper.inverse_model=nominal`; the noise's sigmas 0), and without `pulses.reading=paper`, "
+                   "each fmea.csv scored as `python/invsim_study/calibrate_invsim.py --targets` scores it "
+                   "(scripts/doc_tables.py, READING_CHOICES)"),
+    Table("invsim-pulse-bounds", "docs/invsim.md", ("pulse-bounds",),
+          ("count per opening (k = 0.35)", "spread rho", "can give x+ and x- within 15 %"), PULSE_BOUND_LABELS,
+          pulse_bound_rows, words=("no", "not excluded by the bound", "w", "s"),
+          caption="x+ and x- both within {tol} % of the paper's need rho >= {need} (k = {k}).", fill=pulse_bound_fill),
+    Table("fdi-overview", "docs/fdi.md", tuple(key for key, _, _ in OVERVIEW),
+          ("", "published method (its two schemes, `isolation_method: paper`)",
+           "Chaser, passive (`active_check.enabled=false`)", "**Chaser, shipped** (checks armed at 3 m)"),
+          OVERVIEW_LABELS, fdi_overview_rows, words=("s",)),
     Table("fdi-matrix-paper-attitude", "docs/fdi.md", ("fdi-matrix-paper",), ("attitude",) + MATRIX_HEADER,
           FAULT_CASES, lambda out: matrix_rows(out, "attitude"), words=MATRIX_WORDS),
     Table("fdi-matrix-paper-position", "docs/fdi.md", ("fdi-matrix-paper",), ("position",) + MATRIX_HEADER,
@@ -1654,9 +1926,13 @@ TABLES = [
     Table("fdi-design-msr", "docs/fdi_design.md", ("fdi-position.json", "fdi-attitude.json"),
           ("figure", "position", "attitude"),
           ("achieved eigenvalues", "relative miss of l_1 (lambda = 0.85)", "cond(P)", "Q",
-           "sigma_max(R E_d), max over f", "command-through-delay gain, max over f")
+           "sigma_max(R E_d), max over f", "delay gain per N (position) or N m (attitude) commanded, max over f")
           + tuple(f"DC fault gain, T{i} [per unit on-time]" for i in range(1, 9)),
           fdi_design_rows),
+    Table("gnc-lqr-loops", "docs/gnc.md", ("msr-control.json",),
+          ("loop", "weights", "w_n [rad/s]", "zeta", "time constant 1/(zeta w_n)", "gains"), LQR_LOOPS, lqr_rows,
+          words=LQR_WORDS, caption="MSR's nominal mass {mass} kg and inertia diag({ixx}, {iyy}, {izz}) kg m^2, period {period} s.",
+          fill=lqr_fill),
     Table("control-envisat-loops", "docs/control.md", ("envisat-control.json",),
           ("loop", "authority", "omega_B", "gamma", "sweep norm", "bandwidth", r"\|S\| peak", r"\|T\| peak", "GM up",
            "PM", "delay margin"), CONTROL_LOOPS, control_design_rows,

@@ -29,6 +29,7 @@ rounding). n is bounded by the rate of an orbit at the Earth's surface (the pape
 altitude). Eq. 1's terms that eq. 2 drops are below 1e-9 m/s over the run.
 """
 import argparse
+import json
 import math
 import pathlib
 import sys
@@ -250,13 +251,31 @@ def report(dock_x_m, z_excursion_m, attitude_deg):
     report_shares()
 
 
+def bounds(dock_x_m, z_excursion_m, attitude_deg):
+    """What report() prints of the count's spread, as data: the spread a reading needs for x+ and x-
+    within the tolerance, and each count's spread at Table 3's k."""
+    a, b = x_balance_terms(dock_x_m, z_excursion_m)
+    rho_box = rho_star(*paper_x(PAPER_NOMINAL, TOLERANCE), a, b, math.radians(attitude_deg))
+    return {"k": K_TABLE3, "tolerance": TOLERANCE, "rho_needed": rho_box,
+            "proportional": 1.0, "smooth": 1.0 / K_TABLE3,
+            "ceil": [{"width_s": w, "rho": ceil_count_spread(w)}
+                     for w in (0.02, 0.04, 0.06, 0.1, 0.12, 0.15, 0.2, 0.3, 0.5, 1.0)],
+            "largest_excluded_width_s": largest_excluded_width(rho_box, K_TABLE3)}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--dock-x", type=float, default=DOCK_X_MAX_M, help="largest final x [m]")
     ap.add_argument("--z-excursion", type=float, default=Z_EXCURSION_M, help="bound on |z - z0| [m]")
     ap.add_argument("--attitude", type=float, default=0.0, help="bound on |pitch|, |yaw| [deg]")
+    ap.add_argument("--out", type=pathlib.Path, help="also write DIR/pulse_bounds.json: the spreads and the bound "
+                                              "(docs/invsim.md's table is made from it)")
     args = ap.parse_args()
     report(args.dock_x, args.z_excursion, args.attitude)
+    if args.out:
+        args.out.mkdir(parents=True, exist_ok=True)
+        (args.out / "pulse_bounds.json").write_text(json.dumps(bounds(args.dock_x, args.z_excursion, args.attitude),
+                                                               indent=1) + "\n")
     return 0
 
 
