@@ -102,6 +102,20 @@ std::vector<model::ThrusterMask> watchable_sets(const model::Scenario& s) {
   return sets;
 }
 
+// The on-time a confirmed thruster keeps giving uncommanded, from the deficit bank's decision for the
+// confirming scheme's slot where it named that lane: a stuck-open valve 1, a leak its size (the
+// realised on-time's floor, model/faults.hpp); 0 otherwise.
+double uncommanded_on_fraction(const FdirState& state, int slot, int lane) {
+  const fdi::DeficitDecision* d = slot == kPositionScheme   ? &state.position_deficit.decision
+                                  : slot == kAttitudeScheme ? &state.attitude_deficit.decision
+                                  : slot == kDeficitScheme  ? &state.detector_deficit.decision
+                                                            : nullptr;
+  if (d == nullptr || !d->decided || d->thruster != lane) return 0.0;
+  if (d->kind == model::FaultKind::kStuckOpen) return 1.0;
+  if (d->kind == model::FaultKind::kLeak) return std::clamp(d->size, 0.0, 1.0);
+  return 0.0;
+}
+
 // A scheme's isolation by the deficit bank: once the scheme has alarmed, the bank's decision (made
 // a few seconds later) becomes the scheme's confirmed thruster.
 void deficit_confirmation(const FdiWatchedParams& w, FdirState& state, fdi::DeficitDecisionState& decision,
@@ -373,12 +387,13 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
 
   // The first confirmation by any scheme, in slot order, is the watch's confirmed thruster.
   if (state.confirmed_thruster == model::kNoThruster) {
-    int lane = -1;
-    for (int i = 0; i < p.schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(i)].confirmed;
+    int lane = -1, slot = -1;
+    for (int i = 0; i < p.schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(slot = i)].confirmed;
     if (lane >= 0) {
       state.confirmed_thruster = w.set.index[static_cast<std::size_t>(lane)];
       state.confirmed_s = in.t_s;
       out.confirmed_now = state.confirmed_thruster;
+      out.confirmed_uncommanded_on_fraction = uncommanded_on_fraction(state, slot, lane);
     }
   }
 }

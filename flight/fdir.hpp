@@ -130,6 +130,10 @@ struct FdirOutput {
   std::array<fdi::FdiSchemeOutput, kMaxDiagnosisSchemes> schemes{};
   bool over_consumption = false;  // event resolution: cases 1/3 (true) or 2/4
   int confirmed_now = model::kNoThruster;  // index of a thruster first confirmed this period
+  // [-] The on-time that thruster keeps giving whatever it is commanded, as the deficit bank read its
+  // fault: 1 stuck open, a leak's size; 0 for stuck closed or a loss, and where no bank decided (the
+  // published isolation names a thruster, not its fault). What fdi.recovery: exclude cancels.
+  double confirmed_uncommanded_on_fraction = 0;
 };
 
 // Quantities of one period the FDI schemes read besides the measurements (flight-side only:

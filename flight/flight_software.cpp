@@ -161,7 +161,15 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                                          out.fdir.confirmed_now)) {
       state.thrusters = *next;
       set_active_thrusters(params.management, state.management, state.thrusters.active);
-      rearm_fdir(params.fdir, state.fdir, state.thrusters.active, t_s, out.fdir.confirmed_now);
+      // An excluded thruster read stuck open or leaking keeps firing: the allocation cancels it. The
+      // FDI's rows do not model such a thrust, so it watches no further set then (docs/fdi.md).
+      double uncommanded = 0.0;
+      if (params.recovery == model::RecoveryPolicy::kExclude) {
+        uncommanded = out.fdir.confirmed_uncommanded_on_fraction;
+        set_uncommanded_thrust(params.management, state.management, out.fdir.confirmed_now, uncommanded);
+      }
+      rearm_fdir(params.fdir, state.fdir, uncommanded > 0.0 ? model::ThrusterMask{0} : state.thrusters.active, t_s,
+                 out.fdir.confirmed_now);
       managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
       out.recovered_now = true;
     }

@@ -26,6 +26,18 @@ void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManage
   state.warm = AllocationWarmStart{};
 }
 
+void set_uncommanded_thrust(const ThrusterManagementParams& params, ThrusterManagementState& state, int thruster,
+                            double on_fraction) {
+  if (thruster == model::kNoThruster || !(on_fraction > 0.0)) {
+    state.uncommanded_thruster = model::kNoThruster;
+    state.uncommanded_wrench.setZero();
+    return;
+  }
+  state.uncommanded_thruster = thruster;
+  state.uncommanded_wrench =
+      on_fraction * model::configuration_matrix(params.thrusters, model::thruster_bit(thruster), params.com_body_m).col(0);
+}
+
 namespace {
 
 // The compact index of a thruster in the active list, -1 if it is not active.
@@ -54,10 +66,17 @@ ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params
                                           const Vec6& demand_wrench, model::ThrusterOnTimes& ton_by_thruster,
                                           const TestPulse& pulse) {
   ThrusterManagementOutput out;
-  std::optional<AllocationResult> pulsed = allocate_with_pulse(state, demand_wrench, pulse);
+  // What the active set must give: the demand, less an excluded thruster's thrust where one fires.
+  const bool uncommanded = state.uncommanded_thruster != model::kNoThruster;
+  const Vec6 wanted = uncommanded ? Vec6(demand_wrench - state.uncommanded_wrench) : demand_wrench;
+  std::optional<AllocationResult> pulsed = allocate_with_pulse(state, wanted, pulse);
   if (pulsed) out.pulsed = pulse.thruster;
-  AllocationResult result =
-      pulsed ? *pulsed : allocate_thrusters(state.allocation, demand_wrench, params.norm, state.warm);
+  // While an excluded thruster fires, the least-propellant allocation would cancel it with whole-
+  // period firings of a few thrusters (its LP's optimal vertex), leaving them no margin for the
+  // loops; the least-peak one spreads the cancellation at about the same propellant (docs/fdi.md).
+  const model::AllocationNorm norm =
+      uncommanded && params.norm == model::AllocationNorm::kOne ? model::AllocationNorm::kInfinity : params.norm;
+  AllocationResult result = pulsed ? *pulsed : allocate_thrusters(state.allocation, wanted, norm, state.warm);
   const int n = state.active_list.count;
   AllocationTon& ton = result.ton;  // compact order: the k-th active thruster
   // An on-time the valve cannot realise is dropped; the TMU keeps the missing impulse for later.
@@ -71,6 +90,7 @@ ThrusterManagementOutput manage_thrusters(const ThrusterManagementParams& params
     for (int k = 0; k < n; ++k)
       if (ton[k] != 0.0) out.commanded_wrench += ton[k] * state.allocation.config.col(k);
   }
+  if (uncommanded) out.commanded_wrench += state.uncommanded_wrench;
   std::fill_n(ton_by_thruster.begin(), params.thrusters.count, 0.0);
   for (int k = 0; k < n; ++k)
     ton_by_thruster[static_cast<std::size_t>(state.active_list.index[static_cast<std::size_t>(k)])] = ton[k];

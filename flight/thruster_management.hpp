@@ -26,11 +26,21 @@ struct ThrusterManagementState {
   model::ThrusterList active_list;  // compact index k -> thruster index
   AllocationParams allocation;      // M of the active set, compact columns
   AllocationWarmStart warm;         // optimal bases of this set's earlier demands
+  // A thruster out of the active set that still fires on its own (excluded stuck open or leaking:
+  // fdi.recovery: exclude), and the wrench it gives: the allocation cancels it.
+  int uncommanded_thruster = model::kNoThruster;
+  Vec6 uncommanded_wrench = Vec6::Zero();  // [N; N m] body axes, about the nominal centre of mass
 };
 
 // Points the TMF at a new active set (outside the per-period path: at start and on recovery).
 void set_active_thrusters(const ThrusterManagementParams& params, ThrusterManagementState& state,
                           model::ThrusterMask active);
+
+// Records that `thruster` (out of the active set) keeps firing with on-time `on_fraction` every period
+// whatever it is commanded: from then on each allocation asks the active set for the demand less
+// that thruster's wrench, so that the two together give the demand (on_fraction 0: nothing to cancel).
+void set_uncommanded_thrust(const ThrusterManagementParams& params, ThrusterManagementState& state, int thruster,
+                            double on_fraction);
 
 // An active check's test pulse (flight/active_check.hpp): a floor on one thruster's on-time.
 struct TestPulse {
@@ -39,7 +49,9 @@ struct TestPulse {
 };
 
 struct ThrusterManagementOutput {
-  Vec6 commanded_wrench = Vec6::Zero();  // [N; N m] M ton: what the command realises if healthy
+  // [N; N m] M ton, plus an excluded thruster's uncommanded wrench: what the vehicle's thrusters
+  // give with this command if the active ones are healthy
+  Vec6 commanded_wrench = Vec6::Zero();
   bool feasible = true;                  // the allocator reached the demand exactly
   int pulsed = model::kNoThruster;       // the thruster whose test pulse the command carries
 };

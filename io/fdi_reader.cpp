@@ -54,7 +54,11 @@ void read_isolation_method(MapReader& r, model::IsolationMethod& out) {
 }
 
 void read_recovery(MapReader& r, model::RecoveryPolicy& out) {
-  r.choice("recovery", {{"none", model::RecoveryPolicy::kNone}, {"switch_group", model::RecoveryPolicy::kSwitchGroup}}, out);
+  r.choice("recovery",
+           {{"none", model::RecoveryPolicy::kNone},
+            {"switch_group", model::RecoveryPolicy::kSwitchGroup},
+            {"exclude", model::RecoveryPolicy::kExclude}},
+           out);
 }
 
 // Window lengths are checked against each other and the control period in validate_scenario.

@@ -71,6 +71,10 @@ struct ActiveCheckParams {
 enum class RecoveryPolicy {
   kNone,         // diagnose only
   kSwitchGroup,  // close the faulty thruster's group latch, fly on with the next standby group
+  // Fly on without the faulty thruster (the allocation gives it no on-time and, where the diagnosis
+  // read it stuck open or leaking, cancels the thrust it keeps giving): any layout whose every N-1
+  // set still pushes and turns everywhere; once per run (model/recovery.hpp).
+  kExclude,
 };
 
 struct FdiParams {

@@ -8,9 +8,22 @@ ThrusterConfiguration initial_configuration(const ThrusterSetParams& set) {
   return ThrusterConfiguration{.active = initial_active_set(set), .closed_groups = 0};
 }
 
+namespace {
+
+std::optional<ThrusterConfiguration> exclude(const ThrusterSetParams& set, const ThrusterConfiguration& now,
+                                             int faulty) {
+  const ThrusterMask start = initial_active_set(set);
+  if (now.active != start || (start & thruster_bit(faulty)) == 0) return std::nullopt;
+  return ThrusterConfiguration{.active = start & ~thruster_bit(faulty), .closed_groups = now.closed_groups};
+}
+
+}  // namespace
+
 std::optional<ThrusterConfiguration> recover(const ThrusterSetParams& set, RecoveryPolicy policy,
                                              const ThrusterConfiguration& now, int faulty) {
-  if (policy != RecoveryPolicy::kSwitchGroup || faulty < 0 || faulty >= set.count) return std::nullopt;
+  if (faulty < 0 || faulty >= set.count) return std::nullopt;
+  if (policy == RecoveryPolicy::kExclude) return exclude(set, now, faulty);
+  if (policy != RecoveryPolicy::kSwitchGroup) return std::nullopt;
   const int group = set.thrusters[static_cast<std::size_t>(faulty)].group;
   if (group == kNoGroup || ((now.closed_groups >> group) & 1U) != 0) return std::nullopt;
   for (int g = 0; g < static_cast<int>(set.groups.size()); ++g) {
@@ -34,13 +47,17 @@ std::vector<ReachableConfiguration> reachable_configurations(const ThrusterSetPa
       if (!next) continue;
       const bool seen = std::any_of(found.begin(), found.end(),
                                     [&](const ReachableConfiguration& r) { return r.configuration.active == next->active; });
-      if (!seen) found.push_back({*next, set.thrusters[static_cast<std::size_t>(list.index[k])].group});
+      if (!seen)
+        found.push_back({*next, policy == RecoveryPolicy::kExclude ? kNoGroup : set.thrusters[static_cast<std::size_t>(list.index[k])].group,
+                         policy == RecoveryPolicy::kExclude ? list.index[k] : kNoThruster});
     }
   }
   return found;
 }
 
 std::string when_it_flies(const ThrusterSetParams& set, const ReachableConfiguration& reachable) {
+  if (reachable.excluded_thruster != kNoThruster)
+    return "the set that flies without " + thruster_name(reachable.excluded_thruster) + " (fdi.recovery: exclude)";
   if (reachable.failed_group == kNoGroup) return "the set that flies at the start";
   return "the set that flies after a fault in group " + set.groups[static_cast<std::size_t>(reachable.failed_group)].name +
          " (fdi.recovery: switch_group)";

@@ -539,8 +539,11 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                              ? fmt::format(", {} isolated at {:.1f} s", model::thruster_name(e.isolated_thruster), e.isolation_s)
                                                  : std::string());
     if (e.recovery_s >= 0)
-      out += fmt::format("  recovery: {}'s group latch closed at {:.1f} s, flying on the standby group\n",
-                         model::thruster_name(e.recovered_thruster), e.recovery_s);
+      out += scenario.fdi.recovery == model::RecoveryPolicy::kExclude
+                 ? fmt::format("  recovery: {} excluded at {:.1f} s, flying on without it\n",
+                               model::thruster_name(e.recovered_thruster), e.recovery_s)
+                 : fmt::format("  recovery: {}'s group latch closed at {:.1f} s, flying on the standby group\n",
+                               model::thruster_name(e.recovered_thruster), e.recovery_s);
   }
   out += reach_text(scenario, r);
   if (scenario.guidance.synchronised) out += verdicts_text(phase_verdicts(scenario, run_phases(scenario), r));

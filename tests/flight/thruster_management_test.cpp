@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/random.hpp"
@@ -114,6 +115,54 @@ TEST(ThrusterManagement, FliesTheChosenNorm) {
       EXPECT_LE((out.commanded_wrench - demand).cwiseAbs().maxCoeff(), 1e-10) << k;
     }
   }
+}
+
+// Two 22 N thrusters on each face of a 2 m bus, pushing inwards (tests/sim/exclude_recovery_test.cpp's
+// layout): every set without one of them still pushes and turns everywhere.
+model::ThrusterSetParams twelve_on_six_faces() {
+  const Vec3 positions_m[12] = {{1, 0.5, 0},  {1, -0.5, 0},  {-1, 0, 0.5},  {-1, 0, -0.5}, {0, 0.8, 0.5},  {0, 0.8, -0.5},
+                                {0.5, -0.8, 0}, {-0.5, -0.8, 0}, {0.5, 0, 0.8}, {-0.5, 0, 0.8}, {0, 0.5, -0.8}, {0, -0.5, -0.8}};
+  const Vec3 directions[6] = {-Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitY(), -Vec3::UnitZ(), Vec3::UnitZ()};
+  model::ThrusterSetParams set;
+  set.count = 12;
+  for (int i = 0; i < 12; ++i) set.thrusters[static_cast<std::size_t>(i)] = {positions_m[i], directions[i / 2], 22.0};
+  return set;
+}
+
+// T3 excluded and stuck open (on-time 1): for 100 random attainable demands the eleven others give the
+// demand less T3's wrench, so that with it the vehicle gets the demand (to 1e-9 of a thruster's
+// column, the LP's tolerance), and T3 is commanded nothing; with the default (least-propellant) norm
+// the cancellation is spread (least peak): no thruster commanded the whole period. A thruster
+// recorded with on-time 0 cancels nothing.
+TEST(ThrusterManagement, AnExcludedStuckOpenThrusterIsCancelled) {
+  ThrusterManagementParams p;
+  p.thrusters = twelve_on_six_faces();
+  ThrusterManagementState s;
+  set_active_thrusters(p, s, 0x0FFFu & ~model::thruster_bit(2));
+  set_uncommanded_thrust(p, s, 2, 1.0);
+  const Vec6 t3 = model::configuration_matrix(p.thrusters, model::thruster_bit(2), p.com_body_m).col(0);
+  EXPECT_LE((s.uncommanded_wrench - t3).norm(), 1e-15);
+  RandomStream rng(21, "test/management/exclude");
+  for (int k = 0; k < 100; ++k) {
+    Vec6 demand = Vec6::Zero();
+    if (k > 0)
+      for (int i = 0; i < 6; ++i) demand[i] = rng.uniform(-5.0, 5.0);  // [N; N m], well inside the authority
+    model::ThrusterOnTimes ton{};
+    const ThrusterManagementOutput out = manage_thrusters(p, s, demand, ton);
+    ASSERT_TRUE(out.feasible) << k;
+    EXPECT_LE((out.commanded_wrench - demand).cwiseAbs().maxCoeff(), 1e-9 * 22.0) << k;
+    Vec6 active_part = Vec6::Zero();
+    for (int i = 0; i < 12; ++i)
+      active_part += ton[static_cast<std::size_t>(i)] *
+                     model::configuration_matrix(p.thrusters, model::thruster_bit(i), p.com_body_m).col(0);
+    EXPECT_LE((active_part + t3 - demand).cwiseAbs().maxCoeff(), 1e-9 * 22.0) << k;
+    EXPECT_EQ(ton[2], 0.0);
+    EXPECT_LT(*std::max_element(ton.begin(), ton.begin() + 12), 1.0) << k;
+  }
+  set_uncommanded_thrust(p, s, 2, 0.0);
+  EXPECT_EQ(s.uncommanded_thruster, model::kNoThruster);
+  model::ThrusterOnTimes ton{};
+  EXPECT_LE(manage_thrusters(p, s, Vec6::Zero(), ton).commanded_wrench.norm(), 1e-12);
 }
 
 }  // namespace

@@ -71,5 +71,33 @@ TEST(Recovery, ReachableConfigurationsFollowFaultAfterFault) {
   EXPECT_EQ(reachable_configurations(set, RecoveryPolicy::kNone).size(), 1u);  // only the start flies
 }
 
+// Exclude: the faulty thruster leaves the active set, its group's latch stays open (a stuck-open valve
+// keeps firing), once per run; a standby group stays on standby; an inactive thruster is not acted on.
+TEST(Recovery, ExcludeTakesTheThrusterOutOnce) {
+  const ThrusterSetParams set = grouped_set(2);
+  const ThrusterConfiguration start = initial_configuration(set);
+  const auto without_t3 = recover(set, RecoveryPolicy::kExclude, start, 2);
+  ASSERT_TRUE(without_t3.has_value());
+  EXPECT_EQ(without_t3->active, 0x00FBu);
+  EXPECT_EQ(without_t3->closed_groups, 0u);
+  EXPECT_FALSE(recover(set, RecoveryPolicy::kExclude, *without_t3, 5).has_value());  // once per run
+  EXPECT_FALSE(recover(set, RecoveryPolicy::kExclude, start, 9).has_value());        // T10: on standby
+  EXPECT_FALSE(recover(set, RecoveryPolicy::kExclude, start, kNoThruster).has_value());
+}
+
+// Exclude reaches the start and each start set less one of its thrusters, named by that thruster.
+TEST(Recovery, ExcludeReachesEverySingleExclusion) {
+  const ThrusterSetParams set = grouped_set(1);
+  const std::vector<ReachableConfiguration> r = reachable_configurations(set, RecoveryPolicy::kExclude);
+  ASSERT_EQ(r.size(), 9u);
+  EXPECT_EQ(r[0].configuration.active, 0xFFu);
+  for (int k = 1; k <= 8; ++k) {
+    EXPECT_EQ(r[static_cast<std::size_t>(k)].configuration.active, 0xFFu & ~thruster_bit(k - 1));
+    EXPECT_EQ(r[static_cast<std::size_t>(k)].excluded_thruster, k - 1);
+    EXPECT_EQ(r[static_cast<std::size_t>(k)].failed_group, kNoGroup);
+  }
+  EXPECT_EQ(when_it_flies(set, r[3]), "the set that flies without T3 (fdi.recovery: exclude)");
+}
+
 }  // namespace
 }  // namespace chaser::model
