@@ -124,7 +124,7 @@ const BadCase kBadCases[] = {
   {"active_check_missing_key", {"fdi.active_check={enabled: true, max_unverified_s: 25, informative_on_time_s: 0.005, pulse_s: 0.005}"}, "fdi.active_check.keep_quiet_range_m", "missing key (expected a number >= 0)"},
   {"active_check_without_fdi", {"fdi.active_check.enabled=true", "fdi.position.enabled=false", "fdi.attitude.enabled=false", "fdi.deficit.detection=false"}, "fdi.active_check.enabled", "no FDI scheme watches the checks"},
   {"active_check_typo", {"fdi.active_check.pulse_ms=5"}, "fdi.active_check.pulse_ms", "did you mean 'pulse_s'?"},
-  {"recovery_unknown", {"fdi.recovery=branch"}, "fdi.recovery", "must be one of none, switch_group (got 'branch')"},
+  {"recovery_unknown", {"fdi.recovery=branch"}, "fdi.recovery", "must be one of none, switch_group, exclude (got 'branch')"},
   {"fdi_on_sixteen_active", {"thrusters.standby_groups=[]", "fdi.recovery=none"}, "fdi", "watch exactly 8 active thrusters; the set that flies at the start, groups A, B (T1..T16), has 16"},
   {"fault_kind_unknown", {"faults=[{thruster: T8, kind: melted, onset_s: 10}]"}, "faults.0.kind", "must be one of stuck_open, stuck_closed, leak, loss (got 'melted')"},
   {"fault_duplicate", {"faults=[{thruster: T8, kind: stuck_open, onset_s: 10}, {thruster: T8, kind: loss, onset_s: 20, loss_size: 0.5}]"}, "faults.1.thruster", "duplicate fault on T8 (also faults.0)"},
@@ -176,6 +176,20 @@ TEST(ScenarioValidation, ReportsEveryProblemAtOnce) {
 // Branch B with every nozzle at the centre of mass produces no torque: M has rank 3. The set that
 // flies at the start is fine; the one a recovery would switch to is not, and the scenario says so
 // before the run.
+// fdi.recovery: exclude flies every start set less one thruster, so each must push and turn
+// everywhere: MSR's branch A does so without T4 or T8 only (`chaser thrusters`' N-1 table); each of
+// the six other sets is named.
+TEST(ScenarioValidation, ExcludeNeedsEverySingleLossToSpan) {
+  const LoadResult r = load_msr({"fdi.recovery=exclude", "fdi.position.enabled=false", "fdi.attitude.enabled=false"});
+  EXPECT_FALSE(r.scenario.has_value());
+  EXPECT_EQ(r.errors.size(), 6u) << format_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "thrusters.list", "the set that flies without T1 (fdi.recovery: exclude), T2..T8, cannot "
+                                             "produce force and torque in every direction"))
+      << format_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "thrusters.list", "the set that flies without T7 (fdi.recovery: exclude)"));
+  EXPECT_FALSE(has_error(r, "thrusters.list", "the set that flies without T8 (fdi.recovery: exclude)"));
+}
+
 TEST(ScenarioValidation, BranchWithoutTorqueIsRejected) {
   std::vector<std::string> overrides;
   for (int i = 8; i < 16; ++i)
