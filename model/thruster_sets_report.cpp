@@ -19,8 +19,14 @@ std::vector<std::string> names_of(ThrusterMask mask) {
 std::vector<ThrusterSetReport> thruster_set_reports(const Scenario& s) {
   std::vector<ThrusterSetReport> reports;
   for (const ReachableConfiguration& r : reachable_configurations(s.thrusters, s.fdi.recovery)) {
+    // The sets exclusion flies are the start set's single losses, which its own analysis already
+    // tabulates row by row ("without Tn"): said once there instead of a full report per thruster.
+    if (r.excluded_thruster != kNoThruster) continue;
     const ThrusterMask mask = r.configuration.active;
-    ThrusterSetReport report{when_it_flies(s.thrusters, r), names_of(mask),
+    std::string label = when_it_flies(s.thrusters, r);
+    if (s.fdi.recovery == RecoveryPolicy::kExclude)
+      label += " (fdi.recovery: exclude flies each of its 'without Tn' sets)";
+    ThrusterSetReport report{std::move(label), names_of(mask),
                              configuration_columns(s.thrusters, mask, s.chaser.com_body_m), {}};
     report.analysis = analyse_thruster_set(report.matrix, report.names);
     reports.push_back(std::move(report));

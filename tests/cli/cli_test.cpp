@@ -229,6 +229,19 @@ TEST(Cli, ThrustersAnalysesTheStartAndRecoverySets) {
   std::filesystem::remove(json);
 }
 
+// With fdi.recovery: exclude (COMRADE's 24, which tolerate any single loss) the sets flown are the
+// start set's single losses: one report, its "without Tn" rows saying so, not one per thruster.
+TEST(Cli, ThrustersUnderExclusionReportTheStartSetOnce) {
+  const CommandResult r = run_chaser("thrusters scenarios/comrade_envisat.yaml --set fdi.recovery=exclude");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("the set that flies at the start (fdi.recovery: exclude flies each of its 'without Tn' sets)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("the set that flies without"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Tolerates any single thruster loss (every N-1 set spans):  yes"), std::string::npos)
+      << r.output;
+}
+
 // chaser control design on ENVISAT: six loops, each stable on the true plant, its achieved norm (the
 // sweep) at or below the gamma its controller was formed at, and its authority the smaller of the
 // +/- pure force of `chaser thrusters` divided by the mass (an independent path to the same LP).
