@@ -321,6 +321,14 @@ fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& stat
   return lanes;
 }
 
+void add_uncommanded_on_time(const FdirParams& params, const FdirState& state, int thruster, double on_fraction,
+                             fdi::WatchedTon& lanes) {
+  if (thruster == model::kNoThruster || params.watched.empty() || state.watched < 0) return;
+  const fdi::WatchedSet& w = watched_set(params, state);
+  for (int lane = 0; lane < w.count; ++lane)
+    if (w.index[static_cast<std::size_t>(lane)] == thruster) lanes[lane] = on_fraction;
+}
+
 void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas, const FdirInput& in,
                FdirOutput& out) {
   if (p.watched.empty() || state.watched < 0) return;  // no FDI, or no parameters for this set

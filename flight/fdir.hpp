@@ -178,4 +178,10 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
 // The watched lanes' on-times out of a command to every thruster (zero without an FDI).
 fdi::WatchedTon watched_on_times(const FdirParams& params, const FdirState& state, const model::ThrusterOnTimes& ton);
 
+// With a watched thruster out of the active set that still fires on its own (excluded stuck open or
+// leaking, fdi.recovery: exclude), its lane read at that known on-time: the FDI's rows then hold its
+// thrust, as the allocation's books do, and it watches on. A thruster outside the watched set: nothing.
+void add_uncommanded_on_time(const FdirParams& params, const FdirState& state, int thruster, double on_fraction,
+                             fdi::WatchedTon& lanes);
+
 }  // namespace chaser::flight

@@ -148,27 +148,32 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
       manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
 
   // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
+  fdi::WatchedTon watched_ton = watched_on_times(params.fdir, state.fdir, out.command.ton);
+  add_uncommanded_on_time(params.fdir, state.fdir, state.management.uncommanded_thruster,
+                          state.management.uncommanded_on_fraction, watched_ton);
   const FdirInput fdir_in{.t_s = t_s,
                           .period = meas.t / params.period_ns,
                           .q_est_inertial_from_body = out.estimate.q_inertial_from_body,
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
-                          .ton = watched_on_times(params.fdir, state.fdir, out.command.ton),
+                          .ton = watched_ton,
                           .commanded_wrench = managed.commanded_wrench};
   step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
+    const model::ThrusterMask watched_before = state.thrusters.active;
     if (const auto next = model::recover(params.management.thrusters, params.recovery, state.thrusters,
                                          out.fdir.confirmed_now)) {
       state.thrusters = *next;
       set_active_thrusters(params.management, state.management, state.thrusters.active);
-      // An excluded thruster read stuck open or leaking keeps firing: the allocation cancels it. The
-      // FDI's rows do not model such a thrust, so it watches no further set then (docs/fdi.md).
+      // An excluded thruster read stuck open or leaking keeps firing: the allocation cancels it, and
+      // the FDI watches on over the set it watched, that thruster's lane read at its known on-time
+      // (add_uncommanded_on_time). One with nothing left to give leaves the watched set.
       double uncommanded = 0.0;
       if (params.recovery == model::RecoveryPolicy::kExclude) {
         uncommanded = out.fdir.confirmed_uncommanded_on_fraction;
         set_uncommanded_thrust(params.management, state.management, out.fdir.confirmed_now, uncommanded);
       }
-      rearm_fdir(params.fdir, state.fdir, uncommanded > 0.0 ? model::ThrusterMask{0} : state.thrusters.active, t_s,
+      rearm_fdir(params.fdir, state.fdir, uncommanded > 0.0 ? watched_before : state.thrusters.active, t_s,
                  out.fdir.confirmed_now);
       managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
       out.recovered_now = true;

@@ -30,10 +30,12 @@ void set_uncommanded_thrust(const ThrusterManagementParams& params, ThrusterMana
                             double on_fraction) {
   if (thruster == model::kNoThruster || !(on_fraction > 0.0)) {
     state.uncommanded_thruster = model::kNoThruster;
+    state.uncommanded_on_fraction = 0.0;
     state.uncommanded_wrench.setZero();
     return;
   }
   state.uncommanded_thruster = thruster;
+  state.uncommanded_on_fraction = on_fraction;
   state.uncommanded_wrench =
       on_fraction * model::configuration_matrix(params.thrusters, model::thruster_bit(thruster), params.com_body_m).col(0);
 }

@@ -29,6 +29,7 @@ struct ThrusterManagementState {
   // A thruster out of the active set that still fires on its own (excluded stuck open or leaking:
   // fdi.recovery: exclude), and the wrench it gives: the allocation cancels it.
   int uncommanded_thruster = model::kNoThruster;
+  double uncommanded_on_fraction = 0;      // [-] its on-time every period
   Vec6 uncommanded_wrench = Vec6::Zero();  // [N; N m] body axes, about the nominal centre of mass
 };
 

@@ -48,8 +48,8 @@ const SchemeResult& deficit_scheme(const RunResult& r) { return scheme_result(r.
 
 // T3 stuck open at 800 s. Diagnosed within seconds as stuck open on T3 either way; without a
 // recovery its 22 N hard-over loses the approach; excluded, the others cancel its force and torque
-// (on-times near 1 on the thrusters that oppose it: the price is propellant) and the chaser is
-// captured inside the corridor, the FDI watching no further set.
+// (the price is propellant) and the chaser is captured inside the corridor. The FDI watches on, T3's
+// lane read at its known on-time: no alarm follows.
 TEST(ExcludeRecovery, AStuckOpenThrusterIsExcludedAndItsThrustCancelled) {
   const std::string fault = "{thruster: T3, kind: stuck_open, onset_s: 800}";
   const RunResult lost = run_scenario(twelve_thrusters("none", fault));
@@ -69,7 +69,21 @@ TEST(ExcludeRecovery, AStuckOpenThrusterIsExcludedAndItsThrustCancelled) {
                                              << " m, attitude " << kept.figures.final_attitude_error_rad << " rad";
   EXPECT_EQ(kept.figures.corridor_violation_periods, 0) << kept.figures.max_corridor_angle_rad;
   EXPECT_FALSE(kept.figures.diverged);
-  EXPECT_EQ(kept.fdir.episodes.size(), 1u);  // no second watch: the rows do not model T3's thrust
+  ASSERT_EQ(kept.fdir.episodes.size(), 2u);  // the watch after the recovery, with no alarm
+  EXPECT_LT(kept.fdir.episodes[1].detection_s, 0.0);
+}
+
+// The FDI watches on after excluding a stuck-open T3: a second fault, T8 stuck closed at 900 s, is
+// diagnosed right within seconds (and reported: exclusion acts once per run).
+TEST(ExcludeRecovery, AfterExcludingAStuckOpenThrusterASecondFaultIsDiagnosed) {
+  const RunResult r = run_scenario(twelve_thrusters(
+      "exclude", "{thruster: T3, kind: stuck_open, onset_s: 800}, {thruster: T8, kind: stuck_closed, onset_s: 900}"));
+  EXPECT_EQ(r.fdir.recovered_thruster, 2);
+  ASSERT_EQ(r.fdir.episodes.size(), 2u);
+  EXPECT_EQ(r.fdir.episodes[1].isolated_thruster, 7);
+  EXPECT_GE(r.fdir.episodes[1].detection_s, 900.0);
+  EXPECT_LT(r.fdir.episodes[1].isolation_s, 910.0);
+  EXPECT_LT(r.fdir.episodes[1].recovery_s, 0.0);
 }
 
 // T3 stuck closed at 800 s: excluded with nothing to cancel, and the FDI watches the eleven others.
