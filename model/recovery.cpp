@@ -47,9 +47,12 @@ std::vector<ReachableConfiguration> reachable_configurations(const ThrusterSetPa
       if (!next) continue;
       const bool seen = std::any_of(found.begin(), found.end(),
                                     [&](const ReachableConfiguration& r) { return r.configuration.active == next->active; });
-      if (!seen)
-        found.push_back({*next, policy == RecoveryPolicy::kExclude ? kNoGroup : set.thrusters[static_cast<std::size_t>(list.index[k])].group,
-                         policy == RecoveryPolicy::kExclude ? list.index[k] : kNoThruster});
+      if (seen) continue;
+      const int faulty = list.index[k];
+      if (policy == RecoveryPolicy::kExclude)
+        found.push_back({*next, kNoGroup, faulty});
+      else
+        found.push_back({*next, set.thrusters[static_cast<std::size_t>(faulty)].group, kNoThruster});
     }
   }
   return found;
