@@ -255,7 +255,7 @@ LqrLoop attitude_loop(const model::Scenario& s) {
   return {p.K, control::discrete_loop_poles(m.Ad, m.Bd, p.K, s.control_period_s), p.design_converged};
 }
 
-bool lqr_ok(const LqrLoop& loop) { return loop.converged && loop.closed.stable; }
+bool lqr_ok(const LqrLoop& loop) { return loop.converged && loop.closed.stable(); }
 
 // One loop's row: its weights, the gain's diagonal on the error and on its rate, and the range of
 // its poles' w_n, zeta and 1/(zeta w_n).
@@ -274,7 +274,7 @@ std::string lqr_row(const LqrLoopText& text, const std::array<double, 3>& weight
                      range_text(k_rate.minCoeff(), k_rate.maxCoeff(), "{:.4g}"), text.rate_unit,
                      range_text(wn_lo, wn_hi, "{:.4f}"), range_text(zeta_lo, zeta_hi, "{:.3f}"),
                      range_text(tau_lo, tau_hi, "{:.1f}"),
-                     !loop.converged ? "RICCATI NOT CONVERGED" : (loop.closed.stable ? "stable" : "UNSTABLE"));
+                     !loop.converged ? "RICCATI NOT CONVERGED" : (loop.closed.stable() ? "stable" : "UNSTABLE"));
 }
 
 nlohmann::json lqr_json(const std::array<double, 3>& weights, const LqrLoop& loop, double period_s) {
@@ -289,7 +289,7 @@ nlohmann::json lqr_json(const std::array<double, 3>& weights, const LqrLoop& loo
           {"K", matrix_json(loop.K)},
           {"period_s", period_s},
           {"converged", loop.converged},
-          {"stable", loop.closed.stable},
+          {"stable", loop.closed.stable()},
           {"poles", poles}};
 }
 

@@ -17,10 +17,8 @@ DiscreteLoopPoles discrete_loop_poles(const Eigen::MatrixXd& Ad, const Eigen::Ma
   const Eigen::MatrixXd closed = Ad - Bd * K;
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(closed, /*computeEigenvectors=*/false);
   DiscreteLoopPoles out;
-  out.stable = true;
   for (Eigen::Index i = 0; i < closed.rows(); ++i) {
     const std::complex<double> z = eig.eigenvalues()(i);
-    out.stable = out.stable && std::abs(z) < 1.0;
     if (z.imag() < 0.0) continue;  // its conjugate is listed
     LoopPole p;
     p.s = std::log(z) / period_s;

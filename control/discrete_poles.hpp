@@ -20,7 +20,12 @@ struct LoopPole {
 
 struct DiscreteLoopPoles {
   std::vector<LoopPole> poles;  // slowest first; of a complex pair only the one with Im s > 0
-  bool stable = false;          // every |z| < 1
+  // Every |z| < 1, i.e. every Re s = ln|z| / T < 0 (a pair's two poles share |z|).
+  bool stable() const {
+    for (const LoopPole& p : poles)
+      if (!(p.s.real() < 0.0)) return false;
+    return true;
+  }
 };
 
 DiscreteLoopPoles discrete_loop_poles(const Eigen::MatrixXd& Ad, const Eigen::MatrixXd& Bd, const Eigen::MatrixXd& K,

@@ -395,9 +395,10 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
 
   // The first confirmation by any scheme, in slot order, is the watch's confirmed thruster.
   if (state.confirmed_thruster == model::kNoThruster) {
-    int lane = -1, slot = -1;
-    for (int i = 0; i < p.schemes && lane < 0; ++i) lane = out.schemes[static_cast<std::size_t>(slot = i)].confirmed;
-    if (lane >= 0) {
+    int slot = 0;
+    while (slot < p.schemes && out.schemes[static_cast<std::size_t>(slot)].confirmed < 0) ++slot;
+    if (slot < p.schemes) {
+      const int lane = out.schemes[static_cast<std::size_t>(slot)].confirmed;
       state.confirmed_thruster = w.set.index[static_cast<std::size_t>(lane)];
       state.confirmed_s = in.t_s;
       out.confirmed_now = state.confirmed_thruster;

@@ -1125,6 +1125,23 @@ def invsim_paper_table6_fill(out):
 # --------------------------------------------------------------------------------------------------
 # Active checks (docs/fdi.md): the Table 2 preset without checks, with them all along, and as shipped
 
+@dataclass
+class CaseRuns:
+    """One case's runs of a campaign flown to the end, and the FDIR's t_d of those it detected."""
+    runs: list
+    td: list  # [s] after the onset
+
+    def count(self, flag):
+        """How many of the runs have runs.csv's FDIR flag (missed, false_alarm, wrong_isolation) set."""
+        return sum(int(r[f"fdir_{flag}"]) for r in self.runs)
+
+
+def fdir_case_runs(runs, case):
+    mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
+    td = [number(r["fdir_detection_s"]) for r in mine]
+    return CaseRuns(mine, [t for t in td if not missing(t)])
+
+
 def fdir_case_stats(out):
     """Per case of a Table 2 campaign, the FDIR as a whole: runs, counts of P_nd, P_f and P_i, mean and
     largest t_d [s] after the onset, mean propellant [g], captures and corridors kept."""
@@ -1137,13 +1154,13 @@ def fdir_case_stats(out):
         row = summary["fdir", case]
         n = int(row["runs"])
         count = {k: 0 if missing(row[k]) else round(row[k] * n) for k in ("P_nd", "P_f", "P_i")}
-        mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
-        td = [number(r["fdir_detection_s"]) for r in mine if not missing(number(r["fdir_detection_s"]))]
+        c = fdir_case_runs(runs, case)
+        td = c.td
         stats[case] = dict(n=n, **count, mean_td=sum(td) / len(td) if td else math.nan,
                            max_td=max(td) if td else math.nan,
                            propellant_g=1e3 * row["mean_propellant_kg"],
-                           captures=sum(int(r["capture"]) for r in mine),
-                           corridor=sum(int(r["corridor_kept"]) for r in mine))
+                           captures=sum(int(r["capture"]) for r in c.runs),
+                           corridor=sum(int(r["corridor_kept"]) for r in c.runs))
     return stats
 
 
@@ -1182,22 +1199,12 @@ def onset_rows(*outs):
     cols = [campaign_runs(out) for out in outs]
     rows = []
     for case in ("stuck_closed", "loss"):
-        for quantity in ("missed, false alarms, wrong", "mean / max t_d; over 30 s", "every detection by"):
-            row = []
-            for runs in cols:
-                mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
-                td = [number(r["fdir_detection_s"]) for r in mine]
-                found = [t for t in td if not missing(t)]
-                if quantity.startswith("missed"):
-                    flags = [sum(int(r[f"fdir_{flag}"]) for r in mine)
-                             for flag in ("missed", "false_alarm", "wrong_isolation")]
-                    row.append(f"{flags[0]}, {flags[1]}, {flags[2]} of {len(mine)}")
-                elif quantity.startswith("mean"):
-                    row.append(f"{fixed(statistics.mean(found), 1)} / {fixed(max(found), 1)} s; "
-                               f"{sum(1 for t in found if t > 30.0)}")
-                else:
-                    row.append(f"{fixed(ONSET_500_ONSET_S + max(found), 1)} s")
-            rows.append(row)
+        cases = [fdir_case_runs(runs, case) for runs in cols]
+        rows.append([f"{c.count('missed')}, {c.count('false_alarm')}, {c.count('wrong_isolation')} of {len(c.runs)}"
+                     for c in cases])
+        rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s; {sum(t > 30.0 for t in c.td)}"
+                     for c in cases])
+        rows.append([f"{fixed(ONSET_500_ONSET_S + max(c.td), 1)} s" for c in cases])
     return rows
 
 
@@ -1216,25 +1223,19 @@ def comrade_deficit_rows(*outs):
     rows = [[], []]
     base = None
     for runs in cols:
-        fault_free = [r for r in runs if r["case"] == "none" and r["status"] == "ok"]
+        fault_free = fdir_case_runs(runs, "none").runs
         grams = 1e3 * statistics.mean(number(r["propellant_kg"]) for r in fault_free)
         base = grams if base is None else base
         more = "" if grams == base else f" ({'+' if grams >= base else ''}{fixed(100.0 * (grams / base - 1.0), 1)} %)"
         rows[0].append(f"{sum(int(r['fdir_false_alarm']) for r in fault_free)} of {len(fault_free)}")
         rows[1].append(f"{fixed(grams, 1)} g{more}")
     for case in FAULT_CASES:
-        named, timing = [], []
-        for runs in cols:
-            mine = [r for r in runs if r["case"] == case and r["status"] == "ok"]
-            missed = sum(int(r["fdir_missed"]) for r in mine)
-            wrong = sum(int(r["fdir_wrong_isolation"]) for r in mine)
-            right = sum(1 for r in mine if int(r["fdir_isolated"]) == int(r["fault_thruster"]))
-            td = [number(r["fdir_detection_s"]) for r in mine]
-            found = [t for t in td if not missing(t)]
-            named.append(f"{missed}, {wrong}, {right} of {len(mine)}")
-            timing.append(f"{fixed(statistics.mean(found), 1)} / {fixed(max(found), 1)} s; "
-                          f"{fixed(COMRADE_DEFICIT_ONSET_S + max(found), 0)} s")
-        rows += [named, timing]
+        cases = [fdir_case_runs(runs, case) for runs in cols]
+        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
+                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
+                     for c in cases])
+        rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s; "
+                     f"{fixed(COMRADE_DEFICIT_ONSET_S + max(c.td), 0)} s" for c in cases])
     return rows
 
 
@@ -1322,9 +1323,14 @@ ISOLATION_ROWS = (
 )
 
 
-def matrix_command(key, overrides=()):
-    return Command(key, MATRIX + sum((("--set", o) for o in overrides), ()) + ("--out", "OUT"), quick=True,
+def fdi_matrix_command(key, head, overrides):
+    """python/fdi_matrix.py with `head` (the scenario and --seeds) and --set per override."""
+    return Command(key, head + sum((("--set", o) for o in overrides), ()) + ("--out", "OUT"), quick=True,
                    script="python/fdi_matrix.py")
+
+
+def matrix_command(key, overrides=()):
+    return fdi_matrix_command(key, MATRIX, overrides)
 
 
 def matrix_runs(out):
@@ -1391,7 +1397,10 @@ READING_LABELS = ("(1) nominal within 15 %, of 6", "(2) k_p within 15 %, of 17",
 
 
 def zhou_targets(out):
-    sys.path.insert(0, str(ROOT / "python" / "invsim_study"))
+    """calibrate_invsim.py's own scoring (the page says the table is scored so), imported on first use."""
+    study = str(ROOT / "python" / "invsim_study")
+    if study not in sys.path:
+        sys.path.insert(0, study)
     import calibrate_invsim
     return calibrate_invsim.targets(calibrate_invsim.read_layout(Path(out) / "fmea.csv"))
 
@@ -1459,9 +1468,7 @@ OVERVIEW_LABELS = ("faults detected by some scheme", "faults isolated right by s
 
 
 def overview_command(key, overrides):
-    return Command(key, ("scenarios/msr_terminal.yaml", "--seeds", "20")
-                   + sum((("--set", o) for o in overrides), ()) + ("--out", "OUT"), quick=True,
-                   script="python/fdi_matrix.py")
+    return fdi_matrix_command(key, ("scenarios/msr_terminal.yaml", "--seeds", "20"), overrides)
 
 
 def fdi_overview_rows(*outs):

@@ -226,14 +226,17 @@ def report(dock_x_m, z_excursion_m, attitude_deg):
         print(f"  dock x <= {x_dock:g} m: rho >= {rho_star(*exact, aa, bb, theta):.3f} exact, "
               f"{rho_star(*box, aa, bb, theta):.3f} within {TOLERANCE:.0%}")
     print()
+    spreads = bounds(dock_x_m, z_excursion_m, attitude_deg)
+
+    def verdict(rho):
+        return "no" if rho < spreads["rho_needed"] else "not excluded"
     print(f"| count per opening | spread rho (k = {K_TABLE3}) | can give x+/x- within {TOLERANCE:.0%} |")
     print("|---|---|---|")
-    print(f"| proportional to opening time (dtau / w, any w) | 1.000 | {'no' if 1.0 < rho_box else 'not excluded'} |")
-    for w in (0.02, 0.04, 0.06, 0.1, 0.12, 0.15, 0.2, 0.3, 0.5, 1.0):
-        rho = ceil_count_spread(w)
-        print(f"| ceil(dtau / {w:g} s) | {rho:.3f} | {'no' if rho < rho_box else 'not excluded'} |")
-    print(f"| one per opening or per step (`smooth`) | {1.0 / K_TABLE3:.3f} | "
-          f"{'no' if 1.0 / K_TABLE3 < rho_box else 'not excluded'} |")
+    print(f"| proportional to opening time (dtau / w, any w) | {spreads['proportional']:.3f} | "
+          f"{verdict(spreads['proportional'])} |")
+    for c in spreads["ceil"]:
+        print(f"| ceil(dtau / {c['width_s']:g} s) | {c['rho']:.3f} | {verdict(c['rho'])} |")
+    print(f"| one per opening or per step (`smooth`) | {spreads['smooth']:.3f} | {verdict(spreads['smooth'])} |")
     for k in (0.35, 0.2, 0.1, 0.05):
         w = largest_excluded_width(rho_box, k)
         print(f"k = {k:g}: every ceil(dtau / w) with w <= {w:.3f} s has rho < {rho_box:.3f}" if w else

@@ -36,7 +36,7 @@ TEST(DiscreteLoopPoles, ARealPoleReadsAsItsLogarithm) {
   const Eigen::MatrixXd a = Eigen::MatrixXd::Constant(1, 1, 1.0), b = Eigen::MatrixXd::Constant(1, 1, 0.5),
                         k = Eigen::MatrixXd::Constant(1, 1, 0.2);
   const DiscreteLoopPoles p = discrete_loop_poles(a, b, k, kT);
-  ASSERT_TRUE(p.stable);
+  ASSERT_TRUE(p.stable());
   ASSERT_EQ(p.poles.size(), 1u);
   EXPECT_NEAR(p.poles[0].s.real(), std::log(0.9) / kT, 1e-14);
   EXPECT_EQ(p.poles[0].s.imag(), 0.0);
@@ -52,7 +52,7 @@ TEST(DiscreteLoopPoles, TheAttitudeLqrClosesAtTheDoubleIntegratorsClosedForm) {
   const Vec3 moments(2000.0, 2500.0, 3000.0);
   const DiscreteLinear6 m = discrete_attitude(moments.asDiagonal(), kT);
   const DiscreteLoopPoles p = discrete_loop_poles(m.Ad, m.Bd, lqr_gain(m, m.Bd, 3000.0, 1.7e5, 1.0), kT);
-  ASSERT_TRUE(p.stable);
+  ASSERT_TRUE(p.stable());
   ASSERT_EQ(p.poles.size(), 3u);  // three complex pairs, each listed once
   for (int k = 0; k < 3; ++k) {
     const double moment = moments(2 - k);  // slowest first: the largest moment's axis
@@ -73,7 +73,7 @@ TEST(DiscreteLoopPoles, ThePositionLqrIsTheDoubleIntegratorsShiftedByTheOrbitRat
     const DiscreteLinear6 m = discrete_hcw(n, kT);
     const Eigen::MatrixXd b = m.Bd / kMass;  // the design's input is force
     const DiscreteLoopPoles p = discrete_loop_poles(m.Ad, b, lqr_gain(m, b, 16.0, 12000.0, 1.0), kT);
-    ASSERT_TRUE(p.stable);
+    ASSERT_TRUE(p.stable());
     ASSERT_EQ(p.poles.size(), 3u);
     for (const LoopPole& pole : p.poles) {
       if (n == 0.0) {
@@ -91,7 +91,7 @@ TEST(DiscreteLoopPoles, ThePositionLqrIsTheDoubleIntegratorsShiftedByTheOrbitRat
 TEST(DiscreteLoopPoles, AnUnstableLoopIsReportedAndBadSizesRefused) {
   const DiscreteLinear6 m = discrete_attitude(Vec3(2000.0, 2500.0, 3000.0).asDiagonal(), kT);
   const Eigen::MatrixXd k = lqr_gain(m, m.Bd, 3000.0, 1.7e5, 1.0);
-  EXPECT_FALSE(discrete_loop_poles(m.Ad, m.Bd, -k, kT).stable);
+  EXPECT_FALSE(discrete_loop_poles(m.Ad, m.Bd, -k, kT).stable());
   EXPECT_THROW(discrete_loop_poles(m.Ad, m.Bd, k.transpose(), kT), std::invalid_argument);
   EXPECT_THROW(discrete_loop_poles(m.Ad, m.Bd, k, 0.0), std::invalid_argument);
 }

@@ -86,7 +86,9 @@ TEST(ExcludeRecovery, AfterExcludingAStuckOpenThrusterASecondFaultIsDiagnosed) {
   EXPECT_LT(r.fdir.episodes[1].recovery_s, 0.0);
 }
 
-// T3 stuck closed at 800 s: excluded with nothing to cancel, and the FDI watches the eleven others.
+// T1 stuck closed at 800 s: the approach first commands T1 at about 1,004 s, so that is when the
+// deficit scheme sees it (isolated at about 1,006 s, read stuck closed); excluded with nothing to
+// cancel, the FDI watches the eleven others, and the chaser is still captured.
 TEST(ExcludeRecovery, AStuckClosedThrusterIsExcludedAndTheOthersWatched) {
   const RunResult r = run_scenario(twelve_thrusters("exclude", "{thruster: T1, kind: stuck_closed, onset_s: 800}"));
   ASSERT_GE(r.fdir.recovered_thruster, 0) << "T1 was not diagnosed";
