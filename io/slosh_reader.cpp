@@ -12,6 +12,7 @@ constexpr int kMaxTanks = 4;                 // plant::kMaxSloshTanks
 constexpr double kMaxTankSizeM = 10.0;       // [m] radius and height
 constexpr double kMaxDensityKgpm3 = 3000.0;  // [kg/m^3] liquids: hydrazine 1004, MON 1440, water 1000
 constexpr double kMaxGEffMps2 = 10.0;        // [m/s^2] a settling acceleration, not a launch load
+constexpr double kMaxSurfaceTensionNpm = 1.0;  // [N/m] liquids: hydrazine 0.066, MON 0.027, water 0.072, mercury 0.49
 
 void read_tank(const YAML::Node& node, const std::string& path, model::SloshTankSpec& out, Diagnostics& diag) {
   MapReader m(node, path, diag);
@@ -22,10 +23,15 @@ void read_tank(const YAML::Node& node, const std::string& path, model::SloshTank
   m.number("liquid_mass_kg", Range::positive(), out.liquid_mass_kg);
   m.number("density_kgpm3", Range::left_open(0.0, kMaxDensityKgpm3), out.density_kgpm3);
   m.number("damping_ratio", Range::right_open(0.0, 1.0), out.damping_ratio);
+  if (m.has("surface_tension_Npm"))
+    m.number("surface_tension_Npm", Range::closed(0.0, kMaxSurfaceTensionNpm), out.surface_tension_Npm);
   m.finish();
 }
 
 void read_slosh(MapReader& r, model::SloshParams& out) {
+  if (r.has("model"))
+    r.choice("model", {{"spring_mass", model::SloshModel::spring_mass}, {"pendulum", model::SloshModel::pendulum}},
+             out.model);
   r.number("g_eff_mps2", Range::left_open(0.0, kMaxGEffMps2), out.g_eff_mps2);
   const auto list = r.child("tanks", fmt::format("a list of 1 to {} tanks", kMaxTanks));
   if (!list) return;

@@ -21,13 +21,20 @@ struct SloshTankSpec {
   double liquid_mass_kg = 100.0;             // [kg]
   double density_kgpm3 = 1004.0;             // [kg/m^3] hydrazine at 25 C
   double damping_ratio = 0.005;              // [-] zeta of the first mode (a bare tank: 0.001-0.01)
+  double surface_tension_Npm = 0.066;        // [N/m] sigma, the pendulum's hold at zero thrust (hydrazine, 25 C)
 };
 // The liquid's height in its tank, h = m / (rho pi R^2) [m].
 inline double fill_height_m(const SloshTankSpec& t) {
   return t.liquid_mass_kg / (t.density_kgpm3 * kPi * t.radius_m * t.radius_m);
 }
 
+// The mechanical analogue of each tank's first mode (plant/slosh.hpp): the spring-mass, whose
+// stiffness is fixed by g_eff_mps2, or the pendulum, driven by the specific force the tank actually
+// feels and bounded by the tank's wall (valid in turning flight).
+enum class SloshModel { spring_mass, pendulum };
+
 struct SloshParams {
+  SloshModel model = SloshModel::spring_mass;
   double g_eff_mps2 = 0.01;  // [m/s^2] the axial acceleration that settles the liquid (sets omega1)
   std::vector<SloshTankSpec> tanks;  // 1 to plant::kMaxSloshTanks (4)
 };

@@ -83,10 +83,14 @@ ChaserSloshParams chaser_slosh(const model::SpacecraftParams& chaser) {
   Vec3 moment_kgm = Vec3::Zero();
   for (int i = 0; i < out.count; ++i) {
     const model::SloshTankSpec& t = slosh.tanks[static_cast<std::size_t>(i)];
-    const SloshTankFill fill = slosh_tank_from_fill(
-        {.bottom_centre_body_m = t.bottom_centre_body_m, .axis_body = t.axis_body, .radius_m = t.radius_m},
-        t.liquid_mass_kg, model::fill_height_m(t), slosh.g_eff_mps2, t.damping_ratio);
-    out.tanks[static_cast<std::size_t>(i)] = fill.slosh;
+    const CylindricalTank tank{.bottom_centre_body_m = t.bottom_centre_body_m, .axis_body = t.axis_body,
+                               .radius_m = t.radius_m};
+    const SloshTankFill fill =
+        slosh_tank_from_fill(tank, t.liquid_mass_kg, model::fill_height_m(t), slosh.g_eff_mps2, t.damping_ratio);
+    out.tanks[static_cast<std::size_t>(i)] =
+        slosh.model == model::SloshModel::pendulum
+            ? pendulum_analogue(fill, tank, slosh.g_eff_mps2, t.surface_tension_Npm / (t.density_kgpm3 * t.radius_m * t.radius_m))
+            : fill.slosh;
     out.mass_kg += fill.slosh.mass_kg;
     moment_kgm += fill.slosh.mass_kg * fill.slosh.anchor_body_m;
   }

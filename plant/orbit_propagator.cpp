@@ -106,8 +106,10 @@ void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Qua
                       double mass_kg, const Vec3& torque_c_Nm, StateVec<Tanks>& dy) {
   const ChaserSloshParams& slosh = c.p.slosh;
   std::array<SloshState, Tanks> states;  // count <= Tanks
-  for (int i = 0; i < slosh.count; ++i)
-    states[static_cast<std::size_t>(i)] = {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))};
+  for (int i = 0; i < slosh.count; ++i) {  // a pendulum read on its sphere; a spring-mass as it is
+    const auto k = static_cast<std::size_t>(i);
+    states[k] = on_constraint(slosh.tanks[k], {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))});
+  }
   const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
                                 .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
                                 .com_body_m = slosh.body_com_body_m};
@@ -281,6 +283,10 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
     integrate_piece<2>(ctx, orbit, chaser, steps, h, third_order);
   } else {
     integrate_piece<4>(ctx, orbit, chaser, steps, h, third_order);
+  }
+  for (int i = 0; i < p.slosh.count; ++i) {  // the pendulums back onto their spheres (RK4 drifts off)
+    const auto k = static_cast<std::size_t>(i);
+    orbit.slosh[k] = on_constraint(p.slosh.tanks[k], orbit.slosh[k]);
   }
 }
 

@@ -6,7 +6,13 @@
 #include <cmath>
 #include <cstddef>
 
+#include "core/constants.hpp"
+#include "plant/propagator.hpp"
+
 namespace chaser::plant {
+
+// [rad/s] The wall spring's frequency at most: 0.5 rad per RK4 substep of the plant's longest.
+constexpr double kMaxWallOmegaRadps = 0.5 / kDefaultMaxSubstepS;
 
 SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_mass_kg, double fill_height_m,
                                    double g_eff_mps2, double damping_ratio) {
@@ -29,6 +35,20 @@ SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_ma
   return fill;
 }
 
+SloshTankParams pendulum_analogue(const SloshTankFill& fill, const CylindricalTank& tank, double g_eff_mps2,
+                                  double capillary_accel_mps2) {
+  SloshTankParams p = fill.slosh;
+  const double omega = fill.omega_radps, length = g_eff_mps2 / (omega * omega);  // (R / xi1) coth(xi1 h / R)
+  p.stiffness_Npm = 0.0;
+  p.pendulum_length_m = length;
+  p.wall_angle_rad = length > tank.radius_m ? std::asin(tank.radius_m / length) : 0.5 * kPi;
+  const double wall_omega = std::min(10.0 * omega, kMaxWallOmegaRadps);
+  p.wall_stiffness_Npm = p.mass_kg * wall_omega * wall_omega;
+  p.wall_damping_Nspm = 2.0 * p.mass_kg * wall_omega;  // critical
+  p.capillary_accel_mps2 = capillary_accel_mps2;
+  return p;
+}
+
 namespace {
 
 using Mat4 = Eigen::Matrix4d;
@@ -42,20 +62,64 @@ std::size_t tank_count(std::span<const SloshTankParams> tanks, std::span<const S
 // calls, a tenth of the kernel's time.
 [[gnu::always_inline]] inline Vec3 lateral(const Vec3& n, const Vec3& v) { return v - n * n.dot(v); }
 
-// One mass's kinematics and spring-damper force, with s and s' on the constraint.
+bool is_pendulum(const SloshTankParams& tank) { return tank.pendulum_length_m > 0.0; }
+
+// The pendulum's rod direction u, from the mass to the hinge (n when the mass sits at the hinge).
+Vec3 rod_direction(const SloshTankParams& tank, const Vec3& s) {
+  const Vec3 from_hinge = s - tank.pendulum_length_m * tank.axis_body;
+  const double norm = from_hinge.norm();
+  return norm > 0.0 ? Vec3(-from_hinge / norm) : tank.axis_body;
+}
+
+// How far the pendulum's mass is pressed into the wall along its arc [m] (0 inside the bound), and
+// the arc's outward unit tangent there, d(mass)/d(theta) / L = sin(theta) n + cos(theta) rho.
+struct WallContact {
+  double depth_m = 0.0;
+  Vec3 outward = Vec3::Zero();
+};
+WallContact wall_contact(const SloshTankParams& tank, const Vec3& u, const Vec3& s) {
+  const double cos_theta = std::clamp(u.dot(tank.axis_body), -1.0, 1.0);
+  const double theta = std::acos(cos_theta);
+  if (!(tank.wall_stiffness_Npm > 0.0) || theta <= tank.wall_angle_rad) return {};
+  const Vec3 radial = lateral(tank.axis_body, s);  // beyond the bound, so theta > 0 and radial != 0
+  const double radial_norm = radial.norm();
+  if (!(radial_norm > 0.0)) return {};
+  return {tank.pendulum_length_m * (theta - tank.wall_angle_rad),
+          std::sin(theta) * tank.axis_body + cos_theta * (radial / radial_norm)};
+}
+
+// One mass's kinematics and forces, with s and s' on the constraint.
 struct MassTerms {
-  Vec3 s, s_dot;  // lateral displacement [m] and rate [m/s], body frame
+  Vec3 s, s_dot;  // displacement [m] and rate [m/s] from the anchor, body frame
   Vec3 r;         // [m] p_i - c: from the body's CoM to the mass
-  Vec3 f;         // [N] spring-damper force on the mass
+  Vec3 f;         // [N] spring-damper (and wall) force on the mass
+  Vec3 u;         // the constraint force's direction: n, or the pendulum's rod (mass to hinge)
+  double rod_centripetal = 0.0;  // [m/s^2] |s'|^2 / L, the pendulum's; 0 for the spring-mass
 };
 
 [[gnu::always_inline]] inline MassTerms mass_terms(const RigidBodyMassProps& body, const SloshTankParams& tank,
                                                   const SloshState& state) {
   MassTerms t;
-  t.s = lateral(tank.axis_body, state.s_body_m);
-  t.s_dot = lateral(tank.axis_body, state.s_dot_body_mps);
+  if (!is_pendulum(tank)) {
+    t.u = tank.axis_body;
+    t.s = lateral(tank.axis_body, state.s_body_m);
+    t.s_dot = lateral(tank.axis_body, state.s_dot_body_mps);
+    t.r = tank.anchor_body_m + t.s - body.com_body_m;
+    t.f = -tank.stiffness_Npm * t.s - tank.damping_Nspm * t.s_dot;
+    return t;
+  }
+  const double length = tank.pendulum_length_m;
+  t.u = rod_direction(tank, state.s_body_m);
+  t.s = length * (tank.axis_body - t.u);
+  t.s_dot = lateral(t.u, state.s_dot_body_mps);
   t.r = tank.anchor_body_m + t.s - body.com_body_m;
-  t.f = -tank.stiffness_Npm * t.s - tank.damping_Nspm * t.s_dot;
+  t.f = -tank.damping_Nspm * t.s_dot - (tank.mass_kg * tank.capillary_accel_mps2) * tank.axis_body;
+  t.rod_centripetal = t.s_dot.squaredNorm() / length;
+  const WallContact wall = wall_contact(tank, t.u, t.s);
+  if (wall.depth_m > 0.0) {
+    const double push = tank.wall_stiffness_Npm * wall.depth_m + tank.wall_damping_Nspm * wall.outward.dot(t.s_dot);
+    if (push > 0.0) t.f -= push * wall.outward;
+  }
   return t;
 }
 
@@ -100,7 +164,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
   for (std::size_t i = 0; i < count; ++i) {
     const MassTerms& t = terms[i] = mass_terms(body, tanks[i], states[i]);
     centripetal_coriolis[i] = omega.cross(omega.cross(t.r) + 2.0 * t.s_dot);  // one cross product fewer
-    turn[i] = inertia_inv * t.r.cross(tanks[i].axis_body);
+    turn[i] = inertia_inv * t.r.cross(t.u);
     net_force -= t.f;
     net_torque -= t.r.cross(t.f);
   }
@@ -114,16 +178,19 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
   Mat4 g = Mat4::Identity();
   Vec4 c = Vec4::Zero();
   std::array<double, kMaxSloshTanks> inv_m{};  // 1 / m_i: one division per tank, not four
+  // The pendulum's row adds its centripetal term and its own force's share along the rod, which the
+  // spring-mass's lateral force does not have (n_i . f_i = 0).
   for (std::size_t i = 0; i < count; ++i) {
     inv_m[i] = 1.0 / tanks[i].mass_kg;
-    const Vec3& n_i = tanks[i].axis_body;
+    const Vec3& n_i = terms[i].u;
     const Vec3 u_i = terms[i].r.cross(n_i);
     const auto ii = static_cast<Eigen::Index>(i);
     c[ii] = n_i.dot(a0 + centripetal_coriolis[i]) + u_i.dot(w0);
+    if (is_pendulum(tanks[i])) c[ii] += terms[i].rod_centripetal - inv_m[i] * n_i.dot(terms[i].f);
     g(ii, ii) = inv_m[i] + inv_mass + u_i.dot(turn[i]);
     for (std::size_t j = 0; j < i; ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
-      g(ii, jj) = g(jj, ii) = inv_mass * n_i.dot(tanks[j].axis_body) + u_i.dot(turn[j]);
+      g(ii, jj) = g(jj, ii) = inv_mass * n_i.dot(terms[j].u) + u_i.dot(turn[j]);
     }
   }
   const Vec4 lambda = solve_axial_forces(g, c, count);
@@ -133,7 +200,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
   out.omega_dot_body_radps2 = w0;
   for (std::size_t i = 0; i < count; ++i) {
     const double l = lambda[static_cast<Eigen::Index>(i)];
-    out.a_com_body_mps2 -= (l * inv_mass) * tanks[i].axis_body;
+    out.a_com_body_mps2 -= (l * inv_mass) * terms[i].u;
     out.omega_dot_body_radps2 -= l * turn[i];
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -141,8 +208,12 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
     // The tank point under the mass, inertial acceleration: a_ref + w' x p + w x (w x p) + 2 w x s'
     // = a_c + w' x r + w x (w x r) + 2 w x s' (a_ref = a_c - w' x c - w x (w x c)).
     const Vec3 frame = out.a_com_body_mps2 + out.omega_dot_body_radps2.cross(terms[i].r) + centripetal_coriolis[i];
-    out.s_ddot_body_mps2[i] = lateral(tank.axis_body, inv_m[i] * terms[i].f - frame);
-    out.axial_force_N[i] = lambda[static_cast<Eigen::Index>(i)];  // = m_i n_i . frame
+    if (!is_pendulum(tank)) {
+      out.s_ddot_body_mps2[i] = lateral(tank.axis_body, inv_m[i] * terms[i].f - frame);
+    } else {
+      out.s_ddot_body_mps2[i] = lateral(terms[i].u, inv_m[i] * terms[i].f - frame) + terms[i].rod_centripetal * terms[i].u;
+    }
+    out.axial_force_N[i] = lambda[static_cast<Eigen::Index>(i)];  // = m_i n_i . frame (spring-mass)
   }
   return out;
 }
@@ -193,9 +264,24 @@ double total_kinetic_energy(const RigidBodyMassProps& body, std::span<const Slos
 
 double slosh_spring_energy(std::span<const SloshTankParams> tanks, std::span<const SloshState> states) {
   double twice = 0.0;
-  for (std::size_t i = 0; i < tank_count(tanks, states); ++i)
-    twice += tanks[i].stiffness_Npm * lateral(tanks[i].axis_body, states[i].s_body_m).squaredNorm();
+  for (std::size_t i = 0; i < tank_count(tanks, states); ++i) {
+    const SloshTankParams& tank = tanks[i];
+    if (!is_pendulum(tank)) {
+      twice += tank.stiffness_Npm * lateral(tank.axis_body, states[i].s_body_m).squaredNorm();
+      continue;
+    }
+    const SloshState on = on_constraint(tank, states[i]);
+    const double depth = wall_contact(tank, rod_direction(tank, on.s_body_m), on.s_body_m).depth_m;
+    twice += tank.wall_stiffness_Npm * depth * depth +
+             2.0 * tank.mass_kg * tank.capillary_accel_mps2 * tank.axis_body.dot(on.s_body_m);
+  }
   return 0.5 * twice;
+}
+
+SloshState on_constraint(const SloshTankParams& tank, const SloshState& state) {
+  if (!is_pendulum(tank)) return state;
+  const Vec3 u = rod_direction(tank, state.s_body_m);
+  return {tank.pendulum_length_m * (tank.axis_body - u), lateral(u, state.s_dot_body_mps)};
 }
 
 }  // namespace chaser::plant

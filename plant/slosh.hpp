@@ -51,7 +51,18 @@
 // a_c: inertial acceleration of the body's centre of mass, body axes; omega (w): inertial angular
 // velocity, body axes; s_i', s_i'': derivatives in the body frame. F, T: external force and torque
 // (about c) on the body alone (thrusters). A uniform gravity field accelerates everything alike and
-// is left out. Like its source, the model is linear: small free-surface slopes.
+// is left out. Like its source, the spring-mass is linear: small free-surface slopes.
+//
+// The pendulum (pendulum_length_m > 0) uses the same equations with n_i replaced by the rod's
+// direction u_i (from the mass to its hinge, at rest n_i) and its constraint |p_i - hinge_i| = L_i
+// differentiated twice, u_i . s_i'' = |s_i'|^2 / L_i (the centripetal term):
+//
+//   lambda_i = m_i [ u_i . (a_c + w' x r_i + w x (w x r_i) + 2 w x s_i') + |s_i'|^2 / L_i ] - u_i . f_i
+//   s_i'' = P_i [ f_i / m_i - (...) ] + u_i |s_i'|^2 / L_i,   P_i = 1 - u_i u_i^T
+//
+// f_i is the damper's (and the wall's, when pressed), k_i = 0. Rod, damper and wall act on the mass
+// and the body at the same point, so momentum is conserved as above, and with the damper off the
+// kinetic energy is too (the rod does no work on the pair).
 #include <array>
 #include <span>
 
@@ -70,13 +81,20 @@ struct CylindricalTank {
   double radius_m = 0.0;                     // [m] R
 };
 
-// One slosh mass: rest position, lateral plane, spring and damper.
+// One slosh mass: rest position, lateral plane, spring and damper; or, with a pendulum length, the
+// pendulum analogue (below), whose restoring force is the actual specific force in the tank.
 struct SloshTankParams {
   Vec3 anchor_body_m = Vec3::Zero();  // [m] the mass's rest position, from the body reference point
   Vec3 axis_body = Vec3::UnitZ();     // unit tank axis n; the mass moves in the plane perpendicular to it
   double mass_kg = 0.0;               // [kg] m1 > 0
-  double stiffness_Npm = 0.0;         // [N/m] k1 = m1 omega1^2
-  double damping_Nspm = 0.0;          // [N s/m] c1 = 2 zeta m1 omega1
+  double stiffness_Npm = 0.0;         // [N/m] k1 = m1 omega1^2 (spring-mass; 0 for the pendulum)
+  double damping_Nspm = 0.0;          // [N s/m] c1 = 2 zeta m1 omega1, on the mass's velocity in the body
+  // Pendulum analogue: > 0, the rod's length L [m], hinged at anchor + L n; 0: the spring-mass.
+  double pendulum_length_m = 0.0;
+  double wall_angle_rad = 0.0;        // [rad] the swing's bound from n (the tank wall), pendulum only
+  double wall_stiffness_Npm = 0.0;    // [N/m] the wall's penalty spring on the arc beyond the bound
+  double wall_damping_Nspm = 0.0;     // [N s/m] and its damper (the wall only pushes, never pulls)
+  double capillary_accel_mps2 = 0.0;  // [m/s^2] g_c: surface tension's hold on the liquid, pendulum only
 };
 
 // The equivalent model of one tank at one fill: the slosh mass and the fixed mass (Dodge 2000, ch. 3).
@@ -95,6 +113,26 @@ struct SloshTankFill {
 SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_mass_kg, double fill_height_m,
                                    double g_eff_mps2, double damping_ratio);
 
+// Pendulum analogue of the same mode, valid in turning flight (Dodge 2000, ch. 3; Abramson 1966,
+// sec. 6.3): the mass m1 on a massless rod of length L = g_eff / omega1^2 = (R / xi1) coth(xi1 h / R),
+// hinged on the tank axis L above m1's rest point (the spring-mass anchor), with the same damper.
+// No spring: the rod's tension carries the specific force that the tank actually feels (thrust,
+// turning, Coriolis), so the mode's frequency follows it, sqrt(a / L) under a steady axial
+// acceleration a, and at zero specific force the mass coasts until the damper or the wall stops it.
+// Small swings under the design acceleration g_eff are the spring-mass's (k1 = m1 g_eff / L).
+// Restoring at zero thrust: below a Bond number of about 1 surface tension, not the acceleration,
+// holds the liquid in place (Dodge 2000, ch. 11), so the tank pulls the mass towards its bottom with
+// a constant capillary_accel_mps2 = sigma / (rho R^2) (the acceleration at Bond number rho a R^2 /
+// sigma = 1: 3.2e-4 m/s^2 for hydrazine in a 0.45 m tank), a force pair between mass and tank at the
+// mass, like the rod's. Without it the mass of a coasting chaser drifts to the wall and stays there.
+// The wall: the liquid's centre cannot pass the tank's side nor climb above the hinge, so the swing
+// is bounded at asin(R / L) from the axis (90 deg when L <= R), by a stiff, critically damped penalty
+// spring at 10 omega1, at most 5 rad/s (0.5 rad per 0.1 s RK4 substep of the plant). A steady
+// specific force a presses the mass in by a / (10 omega1)^2 along its arc: 9 mm, 3 % of L, under the
+// 0.0125 m/s^2 that holds COMRADE's chaser beside its turning target (omega1 0.12 rad/s).
+SloshTankParams pendulum_analogue(const SloshTankFill& fill, const CylindricalTank& tank, double g_eff_mps2,
+                                  double capillary_accel_mps2);
+
 // The body without the slosh masses.
 struct RigidBodyMassProps {
   double mass_kg = 0.0;                         // [kg] M > 0
@@ -106,6 +144,11 @@ struct SloshState {
   Vec3 s_body_m = Vec3::Zero();        // [m] displacement from the anchor, perpendicular to the axis
   Vec3 s_dot_body_mps = Vec3::Zero();  // [m/s] its rate in the body frame
 };
+
+// The pendulum's state moved onto its constraint (|p - hinge| = L, the rate perpendicular to the rod);
+// the spring-mass's returned unchanged. The plant applies it after each integrated piece, since RK4
+// keeps the sphere only to its truncation error.
+SloshState on_constraint(const SloshTankParams& tank, const SloshState& state);
 
 struct SloshAccelerations {
   Vec3 a_com_body_mps2 = Vec3::Zero();        // [m/s^2] the body's CoM, inertial, body axes
@@ -138,6 +181,8 @@ Vec3 total_angular_momentum_inertial(const RigidBodyMassProps& body, std::span<c
 double total_kinetic_energy(const RigidBodyMassProps& body, std::span<const SloshTankParams> tanks,
                             std::span<const SloshState> states, const Quat& q_inertial_from_body,
                             const Vec3& v_com_inertial_mps, const Vec3& omega_body_radps);  // [J]
+// The springs' energy: the spring-mass's k s^2 / 2; the pendulum's wall penalty when pressed in and its
+// capillary hold's m g_c (n . s).
 double slosh_spring_energy(std::span<const SloshTankParams> tanks, std::span<const SloshState> states);  // [J]
 
 }  // namespace chaser::plant
