@@ -163,13 +163,23 @@ TEST(TelemetryTable, ComradeRowsCarryTargetRatesAndSlosh) {
   for (int i = 0; i < 3; ++i)
     EXPECT_EQ(rows.front()[column(fmt::format("omega_target_body_{}_radps", "xyz"[i]))], spin[i]);
   EXPECT_NEAR(spin.norm(), 2.5 * kPi / 180.0, 1e-15);
+  // The tanks' pendulums (axis +z): each mass on its sphere about the hinge L above its rest point,
+  // its rate along the sphere; to the CSV's 17 digits.
+  const plant::ChaserSloshParams slosh = plant::chaser_slosh(s.chaser);
   double swing_m = 0.0;
   for (const std::vector<double>& row : rows)
     for (int tank = 1; tank <= 2; ++tank) {
-      EXPECT_LT(std::abs(row[column(fmt::format("slosh{}_s_body_z_m", tank))]), 1e-12);
-      EXPECT_LT(std::abs(row[column(fmt::format("slosh{}_s_dot_body_z_mps", tank))]), 1e-12);
-      swing_m = std::max({swing_m, std::abs(row[column(fmt::format("slosh{}_s_body_x_m", tank))]),
-                          std::abs(row[column(fmt::format("slosh{}_s_body_y_m", tank))])});
+      const auto channel = [&](const char* name, char axis, const char* unit) {
+        return row[column(fmt::format("slosh{}_{}_{}_{}", tank, name, axis, unit))];
+      };
+      const double length = slosh.tanks[static_cast<std::size_t>(tank - 1)].pendulum_length_m;
+      ASSERT_GT(length, 0.0);
+      const Vec3 from_hinge(channel("s_body", 'x', "m"), channel("s_body", 'y', "m"), channel("s_body", 'z', "m") - length);
+      const Vec3 rate(channel("s_dot_body", 'x', "mps"), channel("s_dot_body", 'y', "mps"),
+                      channel("s_dot_body", 'z', "mps"));
+      EXPECT_NEAR(from_hinge.norm(), length, 1e-12);
+      EXPECT_NEAR(rate.dot(from_hinge), 0.0, 1e-12);
+      swing_m = std::max({swing_m, std::abs(from_hinge.x()), std::abs(from_hinge.y())});
     }
   EXPECT_GT(swing_m, 1e-6);
 }
