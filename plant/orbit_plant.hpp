@@ -16,7 +16,8 @@ struct OrbitPlantParams {
 OrbitPlantParams make_orbit_plant_params(const model::Scenario& s);
 
 // The chaser's slosh (scenario chaser.slosh, validated by io/): each tank's first mode at the fill
-// its liquid mass and density give (slosh_tank_from_fill), and the body the slosh masses leave,
+// its liquid mass and density give (slosh_tank_from_fill; with model: pendulum, its pendulum_analogue,
+// held by sigma / (rho R^2) at zero thrust), and the body the slosh masses leave,
 // taken out of the scenario's mass, CoM and inertia, which are the whole chaser's at rest.
 ChaserSloshParams chaser_slosh(const model::SpacecraftParams& chaser);
 

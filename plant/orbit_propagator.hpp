@@ -10,7 +10,8 @@
 //             q' = 1/2 q (x) (0, omega),  omega' = I^-1 (C - omega x I omega),  m' = -mass_flow
 //             C = thrusters + disturbances + gravity gradient + magnetic
 //             with slosh (ChaserSloshParams): omega' and each tank's s'' from the coupled equations
-//             of slosh.hpp instead, s' = s_dot; dv' unchanged (the whole chaser's CoM)
+//             of slosh.hpp instead, s' = s_dot; dv' unchanged (the whole chaser's CoM); a pendulum
+//             is read on its sphere in each derivative and put back on it after each piece
 //   target attitude: the same rigid-body equations with the target's inertia, gravity gradient and
 //             magnetic torque (torque-free when both are off): it tumbles, it does not turn at a
 //             constant rate.
@@ -46,7 +47,7 @@ inline constexpr double kThirdOrderMaxPieceS = 0.025;
 inline constexpr double kEnvironmentStepS = 1.0;
 
 // The chaser's propellant slosh (plant/slosh.hpp): the tanks' first lateral modes as spring-masses
-// coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
+// or pendulums coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
 // centre of mass (slosh masses included), which internal forces do not move: F / m as without
 // slosh. The thrusters' torque comes about com_body_m, the whole chaser's CoM at rest, and is moved
 // to the body's (the chaser less its slosh masses) for the coupled equations.

@@ -81,9 +81,9 @@ WallContact wall_contact(const SloshTankParams& tank, const Vec3& u, const Vec3&
   const double cos_theta = std::clamp(u.dot(tank.axis_body), -1.0, 1.0);
   const double theta = std::acos(cos_theta);
   if (!(tank.wall_stiffness_Npm > 0.0) || theta <= tank.wall_angle_rad) return {};
-  const Vec3 radial = lateral(tank.axis_body, s);  // beyond the bound, so theta > 0 and radial != 0
+  const Vec3 radial = lateral(tank.axis_body, s);
   const double radial_norm = radial.norm();
-  if (!(radial_norm > 0.0)) return {};
+  if (!(radial_norm > 0.0)) return {};  // straight above the hinge, through the wall: no way to push
   return {tank.pendulum_length_m * (theta - tank.wall_angle_rad),
           std::sin(theta) * tank.axis_body + cos_theta * (radial / radial_norm)};
 }
