@@ -27,6 +27,10 @@ struct SloshTankSpec {
 inline double fill_height_m(const SloshTankSpec& t) {
   return t.liquid_mass_kg / (t.density_kgpm3 * kPi * t.radius_m * t.radius_m);
 }
+// Surface tension's hold on the liquid, sigma / (rho R^2): the acceleration at Bond number 1 [m/s^2].
+inline double capillary_accel_mps2(const SloshTankSpec& t) {
+  return t.surface_tension_Npm / (t.density_kgpm3 * t.radius_m * t.radius_m);
+}
 
 // The mechanical analogue of each tank's first mode (plant/slosh.hpp): the spring-mass, whose
 // stiffness is fixed by g_eff_mps2, or the pendulum, driven by the specific force the tank actually

@@ -89,7 +89,7 @@ ChaserSloshParams chaser_slosh(const model::SpacecraftParams& chaser) {
         slosh_tank_from_fill(tank, t.liquid_mass_kg, model::fill_height_m(t), slosh.g_eff_mps2, t.damping_ratio);
     out.tanks[static_cast<std::size_t>(i)] =
         slosh.model == model::SloshModel::pendulum
-            ? pendulum_analogue(fill, tank, slosh.g_eff_mps2, t.surface_tension_Npm / (t.density_kgpm3 * t.radius_m * t.radius_m))
+            ? pendulum_analogue(fill, tank, slosh.g_eff_mps2, model::capillary_accel_mps2(t))
             : fill.slosh;
     out.mass_kg += fill.slosh.mass_kg;
     moment_kgm += fill.slosh.mass_kg * fill.slosh.anchor_body_m;

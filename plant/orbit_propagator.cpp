@@ -106,10 +106,8 @@ void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Qua
                       double mass_kg, const Vec3& torque_c_Nm, StateVec<Tanks>& dy) {
   const ChaserSloshParams& slosh = c.p.slosh;
   std::array<SloshState, Tanks> states;  // count <= Tanks
-  for (int i = 0; i < slosh.count; ++i) {  // a pendulum read on its sphere; a spring-mass as it is
-    const auto k = static_cast<std::size_t>(i);
-    states[k] = on_constraint(slosh.tanks[k], {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))});
-  }
+  for (int i = 0; i < slosh.count; ++i)
+    states[static_cast<std::size_t>(i)] = {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))};
   const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
                                 .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
                                 .com_body_m = slosh.body_com_body_m};
@@ -121,7 +119,7 @@ void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Qua
                                                      force_body_N, torque_body_Nm);
   dy.template segment<3>(kWc) = a.omega_dot_body_radps2;
   for (int i = 0; i < slosh.count; ++i) {
-    dy.template segment<3>(slosh_s(i)) = states[static_cast<std::size_t>(i)].s_dot_body_mps;
+    dy.template segment<3>(slosh_s(i)) = a.s_dot_body_mps[static_cast<std::size_t>(i)];  // on the constraint
     dy.template segment<3>(slosh_s_dot(i)) = a.s_ddot_body_mps2[static_cast<std::size_t>(i)];
   }
 }

@@ -214,6 +214,7 @@ SloshAccelerations coupled_accelerations(const RigidBodyMassProps& body, const M
       out.s_ddot_body_mps2[i] = lateral(terms[i].u, inv_m[i] * terms[i].f - frame) + terms[i].rod_centripetal * terms[i].u;
     }
     out.axial_force_N[i] = lambda[static_cast<Eigen::Index>(i)];  // = m_i n_i . frame (spring-mass)
+    out.s_dot_body_mps[i] = terms[i].s_dot;
   }
   return out;
 }
@@ -270,10 +271,10 @@ double slosh_spring_energy(std::span<const SloshTankParams> tanks, std::span<con
       twice += tank.stiffness_Npm * lateral(tank.axis_body, states[i].s_body_m).squaredNorm();
       continue;
     }
-    const SloshState on = on_constraint(tank, states[i]);
-    const double depth = wall_contact(tank, rod_direction(tank, on.s_body_m), on.s_body_m).depth_m;
-    twice += tank.wall_stiffness_Npm * depth * depth +
-             2.0 * tank.mass_kg * tank.capillary_accel_mps2 * tank.axis_body.dot(on.s_body_m);
+    const Vec3 u = rod_direction(tank, states[i].s_body_m);
+    const Vec3 s = tank.pendulum_length_m * (tank.axis_body - u);  // on the sphere
+    const double depth = wall_contact(tank, u, s).depth_m;
+    twice += tank.wall_stiffness_Npm * depth * depth + 2.0 * tank.mass_kg * tank.capillary_accel_mps2 * tank.axis_body.dot(s);
   }
   return 0.5 * twice;
 }

@@ -153,11 +153,13 @@ SloshState on_constraint(const SloshTankParams& tank, const SloshState& state);
 struct SloshAccelerations {
   Vec3 a_com_body_mps2 = Vec3::Zero();        // [m/s^2] the body's CoM, inertial, body axes
   Vec3 omega_dot_body_radps2 = Vec3::Zero();  // [rad/s^2] inertial, body axes
+  // [m/s] s_i' read on the constraint (lateral; the pendulum's along its sphere): the state's s'.
+  std::array<Vec3, kMaxSloshTanks> s_dot_body_mps = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   std::array<Vec3, kMaxSloshTanks> s_ddot_body_mps2 = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
                                                        Vec3::Zero()};  // [m/s^2] body frame, lateral
   std::array<double, kMaxSloshTanks> axial_force_N{};  // [N] lambda_i, the tank on the mass along n_i
 };
-static_assert(kMaxSloshTanks == 4, "SloshAccelerations::s_ddot_body_mps2 zeroes 4 entries");
+static_assert(kMaxSloshTanks == 4, "SloshAccelerations::s_dot_body_mps and s_ddot_body_mps2 zero 4 entries");
 
 // The equations above. tanks and states have equal sizes <= kMaxSloshTanks (extra entries are
 // ignored; the scenario's reader validates masses, axes, springs and dampers, as for every key). s and s' are projected onto the lateral plane before use. No allocation.

@@ -42,7 +42,7 @@ inline Derivative derivative(const System& sys, const FullState& x) {
   d.q_dot = quat_derivative(x.q_inertial_from_body, x.omega_body_radps);
   d.omega_dot = acc.omega_dot_body_radps2;
   for (std::size_t i = 0; i < x.slosh.size(); ++i)
-    d.slosh_dot.push_back({on_constraint(sys.tanks[i], x.slosh[i]).s_dot_body_mps, acc.s_ddot_body_mps2[i]});
+    d.slosh_dot.push_back({acc.s_dot_body_mps[i], acc.s_ddot_body_mps2[i]});
   return d;
 }
 
