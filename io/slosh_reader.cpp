@@ -4,11 +4,12 @@
 #include <fmt/format.h>
 
 #include "io/scenario_sections.hpp"
+#include "model/slosh.hpp"
 
 namespace chaser::io {
 namespace {
 
-constexpr int kMaxTanks = 4;                 // plant::kMaxSloshTanks
+constexpr int kMaxTanks = model::kMaxSloshTanks;
 constexpr double kMaxTankSizeM = 10.0;       // [m] radius and height
 constexpr double kMaxDensityKgpm3 = 3000.0;  // [kg/m^3] liquids: hydrazine 1004, MON 1440, water 1000
 constexpr double kMaxGEffMps2 = 10.0;        // [m/s^2] a settling acceleration, not a launch load

@@ -10,7 +10,7 @@
 namespace chaser::model {
 
 // A propellant tank whose first lateral slosh mode the Earth-orbit plant models (
-// plant/slosh.hpp): an upright flat-bottomed cylinder fixed in the chaser, the liquid's fill height
+// model/slosh.hpp): an upright flat-bottomed cylinder fixed in the chaser, the liquid's fill height
 // from its mass and density. Its liquid is part of the chaser's mass_kg, com_body_m and inertia_kgm2
 // (the whole spacecraft at rest); the plant takes the slosh mass back out of them.
 struct SloshTankSpec {
@@ -32,7 +32,7 @@ inline double capillary_accel_mps2(const SloshTankSpec& t) {
   return t.surface_tension_Npm / (t.density_kgpm3 * t.radius_m * t.radius_m);
 }
 
-// The mechanical analogue of each tank's first mode (plant/slosh.hpp): the spring-mass, whose
+// The mechanical analogue of each tank's first mode (model/slosh.hpp): the spring-mass, whose
 // stiffness is fixed by g_eff_mps2, or the pendulum, driven by the specific force the tank actually
 // feels and bounded by the tank's wall (valid in turning flight).
 enum class SloshModel { spring_mass, pendulum };
@@ -40,7 +40,7 @@ enum class SloshModel { spring_mass, pendulum };
 struct SloshParams {
   SloshModel model = SloshModel::spring_mass;
   double g_eff_mps2 = 0.01;  // [m/s^2] the axial acceleration that settles the liquid (sets omega1)
-  std::vector<SloshTankSpec> tanks;  // 1 to plant::kMaxSloshTanks (4)
+  std::vector<SloshTankSpec> tanks;  // 1 to model::kMaxSloshTanks (4)
 };
 
 // Rigid chaser body. Positions in the body frame are measured from the geometric reference point

@@ -28,6 +28,6 @@ Quat q_inertial_from_lvlh(const CircularOrbitParams&, const CircularOrbitState&,
   return circle.q_inertial_from_lvlh(t_s);
 }
 
-std::span<const SloshState> slosh_states(const CircularOrbitParams&, const CircularOrbitState&) { return {}; }
+std::span<const model::SloshState> slosh_states(const CircularOrbitParams&, const CircularOrbitState&) { return {}; }
 
 }  // namespace chaser::plant

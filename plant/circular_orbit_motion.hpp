@@ -11,7 +11,7 @@
 #include "model/target_orbit.hpp"
 #include "plant/period_input.hpp"
 #include "plant/propagator.hpp"
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 #include "plant/target.hpp"
 
 namespace chaser::plant {
@@ -40,6 +40,6 @@ TargetRotation target_rotation(const CircularOrbitParams& params, const Circular
 Quat q_inertial_from_lvlh(const CircularOrbitParams& params, const CircularOrbitState& state,
                           const model::TargetOrbit& circle, double t_s);
 
-std::span<const SloshState> slosh_states(const CircularOrbitParams& params, const CircularOrbitState& state);
+std::span<const model::SloshState> slosh_states(const CircularOrbitParams& params, const CircularOrbitState& state);
 
 }  // namespace chaser::plant

@@ -69,7 +69,7 @@ Quat q_inertial_from_lvlh(const EarthOrbitParams& params, const EarthOrbitState&
   return q_inertial_from_lvlh(params.earth.dynamics, state.orbit);
 }
 
-std::span<const SloshState> slosh_states(const EarthOrbitParams& params, const EarthOrbitState& state) {
+std::span<const model::SloshState> slosh_states(const EarthOrbitParams& params, const EarthOrbitState& state) {
   return {state.orbit.slosh.data(), static_cast<std::size_t>(params.earth.dynamics.slosh.count)};
 }
 

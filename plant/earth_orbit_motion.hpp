@@ -47,6 +47,6 @@ TargetRotation target_rotation(const EarthOrbitParams& params, const EarthOrbitS
 Quat q_inertial_from_lvlh(const EarthOrbitParams& params, const EarthOrbitState& state,
                           const model::TargetOrbit& circle, double t_s);
 
-std::span<const SloshState> slosh_states(const EarthOrbitParams& params, const EarthOrbitState& state);
+std::span<const model::SloshState> slosh_states(const EarthOrbitParams& params, const EarthOrbitState& state);
 
 }  // namespace chaser::plant

@@ -621,6 +621,8 @@ Quat q_inertial_from_lvlh(const MultibodyMotionParams& params, const MultibodyMo
   return q_inertial_from_lvlh(params.earth.earth.dynamics, state.earth.orbit);
 }
 
-std::span<const SloshState> slosh_states(const MultibodyMotionParams&, const MultibodyMotionState&) { return {}; }
+std::span<const model::SloshState> slosh_states(const MultibodyMotionParams&, const MultibodyMotionState&) {
+  return {};
+}
 
 }  // namespace chaser::plant

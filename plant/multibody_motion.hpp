@@ -45,7 +45,7 @@
 #include "plant/multibody/mujoco_model.hpp"
 #include "plant/multibody/weld.hpp"
 #include "plant/period_input.hpp"
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 #include "plant/target.hpp"
 
 namespace chaser::plant {
@@ -212,6 +212,6 @@ Quat q_inertial_from_lvlh(const MultibodyMotionParams& params, const MultibodyMo
                           const model::TargetOrbit& circle, double t_s);
 
 // None: the multibody plant has no slosh (multibody_problem refuses chaser.slosh).
-std::span<const SloshState> slosh_states(const MultibodyMotionParams& params, const MultibodyMotionState& state);
+std::span<const model::SloshState> slosh_states(const MultibodyMotionParams& params, const MultibodyMotionState& state);
 
 }  // namespace chaser::plant

@@ -15,12 +15,6 @@ struct OrbitPlantParams {
 // Requires scenario.orbit.earth and scenario.target.body (validated together, io/).
 OrbitPlantParams make_orbit_plant_params(const model::Scenario& s);
 
-// The chaser's slosh (scenario chaser.slosh, validated by io/): each tank's first mode at the fill
-// its liquid mass and density give (slosh_tank_from_fill; with model: pendulum, its pendulum_analogue,
-// held by sigma / (rho R^2) at zero thrust), and the body the slosh masses leave,
-// taken out of the scenario's mass, CoM and inertia, which are the whole chaser's at rest.
-ChaserSloshParams chaser_slosh(const model::SpacecraftParams& chaser);
-
 // The target's attitude and body rate at t = 0: the scenario's own (spin case `given`: its inertial
 // rate turned into target axes) or one of COMRADE's spin cases. Frames: the run's inertial axes
 // are the target's LVLH at t = 0 (MSR LVLH: x zenith, y along-track, z along the orbital angular

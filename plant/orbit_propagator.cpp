@@ -98,25 +98,26 @@ OrbitAccelerations accelerations(const OrbitDynamicsParams& p, const PeriodEnvir
           .relative_eci_mps2 = g.relative_eci_mps2 + env.slow.relative_eci_mps2};
 }
 
-// The chaser's rotation and its slosh masses, coupled (slosh.hpp): the thrust and the disturbance
+// The chaser's rotation and its slosh masses, coupled (model/slosh.hpp): the thrust and the disturbance
 // force act on the body (the chaser less its slosh masses), the torques, given about the whole
 // chaser's CoM at rest, are moved to the body's own.
 template <int Tanks>
 void slosh_derivative(const PieceContext& c, const StateVec<Tanks>& y, const Quat& q_c, const Vec3& w_c,
                       double mass_kg, const Vec3& torque_c_Nm, StateVec<Tanks>& dy) {
-  const ChaserSloshParams& slosh = c.p.slosh;
-  std::array<SloshState, Tanks> states;  // count <= Tanks
+  const model::ChaserSloshParams& slosh = c.p.slosh;
+  std::array<model::SloshState, Tanks> states;  // count <= Tanks
   for (int i = 0; i < slosh.count; ++i)
     states[static_cast<std::size_t>(i)] = {y.template segment<3>(slosh_s(i)), y.template segment<3>(slosh_s_dot(i))};
-  const RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
+  const model::RigidBodyMassProps body{.mass_kg = mass_kg - slosh.mass_kg,
                                 .inertia_com_body_kgm2 = slosh.body_inertia_kgm2,
                                 .com_body_m = slosh.body_com_body_m};
   const Vec3 force_body_N = c.u.force_body_N + q_c.conjugate() * c.force_dist_run_N;
   const Vec3 torque_body_Nm = torque_c_Nm + (slosh.com_body_m - slosh.body_com_body_m).cross(force_body_N);
   const auto n = static_cast<std::size_t>(slosh.count);
-  const SloshAccelerations a = coupled_accelerations(body, slosh.body_inertia_inv_kgm2, std::span(slosh.tanks.data(), n),
-                                                     std::span<const SloshState>(states.data(), n), w_c,
-                                                     force_body_N, torque_body_Nm);
+  const model::SloshAccelerations a =
+      model::coupled_accelerations(body, slosh.body_inertia_inv_kgm2, std::span(slosh.tanks.data(), n),
+                                   std::span<const model::SloshState>(states.data(), n), w_c, force_body_N,
+                                   torque_body_Nm);
   dy.template segment<3>(kWc) = a.omega_dot_body_radps2;
   for (int i = 0; i < slosh.count; ++i) {
     dy.template segment<3>(slosh_s(i)) = a.s_dot_body_mps[static_cast<std::size_t>(i)];  // on the constraint
@@ -272,8 +273,8 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
     force_dist_eci_N = target_lvlh(p, env, orbit).lvlh_from_eci.transpose() * u.force_lvlh_N;
   }
   const PieceContext ctx{p, env, u, eci_from_run, force_dist_eci_N, p.run_from_eci * force_dist_eci_N};
-  // The state's size: the tanks flown rounded up to 0, 2 or 4 (kMaxSloshTanks).
-  static_assert(kMaxSloshTanks == 4);
+  // The state's size: the tanks flown rounded up to 0, 2 or 4 (model::kMaxSloshTanks).
+  static_assert(model::kMaxSloshTanks == 4);
   const bool third_order = steps == 1 && dt_s <= p.third_order_max_piece_s;
   if (p.slosh.count == 0) {
     integrate_piece<0>(ctx, orbit, chaser, steps, h, third_order);
@@ -284,7 +285,7 @@ void propagate_orbit_piece(const OrbitDynamicsParams& p, const PeriodEnvironment
   }
   for (int i = 0; i < p.slosh.count; ++i) {  // the pendulums back onto their spheres (RK4 drifts off)
     const auto k = static_cast<std::size_t>(i);
-    orbit.slosh[k] = on_constraint(p.slosh.tanks[k], orbit.slosh[k]);
+    orbit.slosh[k] = model::on_constraint(p.slosh.tanks[k], orbit.slosh[k]);
   }
 }
 

@@ -9,8 +9,8 @@
 //   chaser:   dr' = dv,     dv' = a_rel(r_t, v_t, dr, dv) + F_eci / m      ECI, relative to the target
 //             q' = 1/2 q (x) (0, omega),  omega' = I^-1 (C - omega x I omega),  m' = -mass_flow
 //             C = thrusters + disturbances + gravity gradient + magnetic
-//             with slosh (ChaserSloshParams): omega' and each tank's s'' from the coupled equations
-//             of slosh.hpp instead, s' = s_dot; dv' unchanged (the whole chaser's CoM); a pendulum
+//             with slosh (model::ChaserSloshParams): omega' and each tank's s'' from the coupled equations
+//             of model/slosh.hpp instead, s' = s_dot; dv' unchanged (the whole chaser's CoM); a pendulum
 //             is read on its sphere in each derivative and put back on it after each piece
 //   target attitude: the same rigid-body equations with the target's inertia, gravity gradient and
 //             magnetic torque (torque-free when both are off): it tumbles, it does not turn at a
@@ -20,10 +20,10 @@
 // part of Chaser calls "inertial"; run_from_eci below), so the flight software, sensors and telemetry
 // are those of the circular-orbit runs. Translation is in ECI, where the Earth's field is static.
 #include "core/types.hpp"
+#include "model/chaser_slosh.hpp"
 #include "plant/orbit_perturbations.hpp"
 #include "plant/propagator.hpp"
 #include "plant/rigid_body.hpp"
-#include "plant/slosh.hpp"
 
 namespace chaser::plant {
 
@@ -46,27 +46,12 @@ inline constexpr double kThirdOrderMaxPieceS = 0.025;
 // shadow itself is ~4 s early or late (docs/dynamics.md, "Held environment").
 inline constexpr double kEnvironmentStepS = 1.0;
 
-// The chaser's propellant slosh (plant/slosh.hpp): the tanks' first lateral modes as spring-masses
-// or pendulums coupled to the rest of the chaser, whose rotation they change. Translation is the whole chaser's
-// centre of mass (slosh masses included), which internal forces do not move: F / m as without
-// slosh. The thrusters' torque comes about com_body_m, the whole chaser's CoM at rest, and is moved
-// to the body's (the chaser less its slosh masses) for the coupled equations.
-struct ChaserSloshParams {
-  int count = 0;  // tanks, 0..kMaxSloshTanks; 0: a rigid chaser
-  std::array<SloshTankParams, kMaxSloshTanks> tanks{};
-  double mass_kg = 0.0;                        // [kg] the slosh masses together
-  Mat3 body_inertia_kgm2 = Mat3::Identity();   // [kg m^2] the chaser less them, about body_com_body_m
-  Mat3 body_inertia_inv_kgm2 = Mat3::Identity();  // [1/(kg m^2)] its inverse
-  Vec3 body_com_body_m = Vec3::Zero();         // [m] its centre of mass, from the reference point
-  Vec3 com_body_m = Vec3::Zero();              // [m] the whole chaser's at rest
-};
-
 struct OrbitDynamicsParams {
   OrbitPerturbationParams perturbations;
   double epoch_jd_tt = 2451545.0;         // [d] Julian date (TT) of t = 0
   Mat3 run_from_eci = Mat3::Identity();   // the run's inertial axes (target LVLH at t = 0) from ECI
   BodyTorqueParams chaser, target;
-  ChaserSloshParams slosh;
+  model::ChaserSloshParams slosh;
   double max_substep_s = kDefaultMaxSubstepS;  // [s] RK4 substep bound (> 0)
   // Pieces up to this long take one step of Kutta's third-order method (3 stages) instead of RK4:
   // the short pieces of a thrusting period (valve delay and the pulses themselves, 2.5-25 ms),
@@ -91,7 +76,7 @@ struct OrbitState {
   Vec3 dv_eci_mps = Vec3::Zero();   // [m/s]
   Quat q_inertial_from_target = Quat::Identity();  // run inertial axes
   Vec3 omega_target_body_radps = Vec3::Zero();     // [rad/s] target's inertial rate, target axes
-  std::array<SloshState, kMaxSloshTanks> slosh{};  // the chaser's slosh masses, [0, slosh.count) used
+  std::array<model::SloshState, model::kMaxSloshTanks> slosh{};  // the chaser's slosh masses, [0, slosh.count) used
 };
 
 // The environment of one control period. With hold_slow_environment, the slowly varying

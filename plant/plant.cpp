@@ -56,7 +56,7 @@ Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, 
                       [&](const auto& p, const auto& s) { return q_inertial_from_lvlh(p, s, circle, t_s); });
 }
 
-std::span<const SloshState> slosh_states(const Plant& plant) {
+std::span<const model::SloshState> slosh_states(const Plant& plant) {
   return visit_motion(plant.params, plant.state, [](const auto& p, const auto& s) { return slosh_states(p, s); });
 }
 

@@ -96,7 +96,7 @@ TargetRotation target_rotation(const Plant& plant, double t_s);
 Quat q_inertial_from_lvlh(const Plant& plant, const model::TargetOrbit& circle, double t_s);
 
 // The chaser's slosh masses now (none without chaser.slosh).
-std::span<const SloshState> slosh_states(const Plant& plant);
+std::span<const model::SloshState> slosh_states(const Plant& plant);
 
 // A fault from its onset on (not before the plant's time: the caller checks).
 void inject_fault(Plant& plant, const model::FaultParams& fault);

@@ -14,6 +14,7 @@
 // the measured accuracy and cost.
 #include "core/types.hpp"
 #include "model/scenario.hpp"
+#include "model/slosh.hpp"
 #include "model/target_orbit.hpp"
 #include "plant/rigid_body.hpp"
 
@@ -23,6 +24,8 @@ namespace chaser::plant {
 // step; RK4's local error there is ~(|omega| h)^5 / 120, 3e-12 rad at 0.05 rad/s and the
 // translation error ~(n h)^5 ~ 1e-20 relative: far below every sensor noise (docs/dynamics.md).
 inline constexpr double kDefaultMaxSubstepS = 0.1;  // [s]
+// The pendulum slosh's wall spring turns at most 0.5 rad per substep (model/slosh.hpp).
+static_assert(model::kMaxWallOmegaRadps * kDefaultMaxSubstepS <= 0.5);
 
 struct DynamicsParams {  // derived once per run from the scenario (make_dynamics_params)
   // The target's orbit: its radius a, mean motion n and mu for eq. 8 and the gravity gradient, and

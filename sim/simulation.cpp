@@ -393,7 +393,7 @@ void Simulation::record(const flight::FlightOutput& out, const PeriodTruth& trut
       .attitude_error_body_rad = attitude_error_body(out.reference.q_inertial_from_body, truth_.q_inertial_from_body),
       .q_inertial_from_target = truth.target.q_inertial_from_target,
       .omega_target_body_radps = truth.target.omega_body_radps,
-      .slosh = std::span<const plant::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks)),
+      .slosh = std::span<const model::SloshState>(truth.slosh.data(), static_cast<std::size_t>(shape_.slosh_tanks)),
       .phase = phase_state_.phase,
       .arm = shape_.arm ? &truth.arm : nullptr,
       .gripper = truth.gripper ? &*truth.gripper : nullptr,

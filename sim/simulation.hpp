@@ -140,7 +140,7 @@ class Simulation {
   struct PeriodTruth {
     MonitorSample sample;
     plant::TargetRotation target;
-    std::array<plant::SloshState, plant::kMaxSloshTanks> slosh{};
+    std::array<model::SloshState, model::kMaxSloshTanks> slosh{};
     model::ArmMeasurements arm;  // with a capture: the joints (the stowed angles before the arm wakes)
     std::optional<plant::GripperTruth> gripper;  // once the arm is awake
     std::optional<plant::ArmFigure> figure;       // once the arm is awake, when recorded

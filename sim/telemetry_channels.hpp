@@ -29,7 +29,7 @@ struct PeriodRecord {
   Vec3 attitude_error_body_rad = Vec3::Zero();    // [rad] truth against the reference
   Quat q_inertial_from_target = Quat::Identity();   // at the period start
   Vec3 omega_target_body_radps = Vec3::Zero();      // [rad/s] the target's inertial rate, its body axes
-  std::span<const plant::SloshState> slosh;         // each tank's slosh state at the period start
+  std::span<const model::SloshState> slosh;         // each tank's slosh state at the period start
   int phase = 0;                                    // the phase flown in this period (its index)
   // With a capture: the joints at the period start and the gripper against the reach's goal (the
   // pre-grasp pose), true values; null before the arm wakes (the gripper's channels are then NaN).

@@ -105,7 +105,7 @@ TEST(OrbitPlant, SloshMassesAndTheBodyMakeTheWholeChaser) {
   chaser.slosh->tanks[1].bottom_centre_body_m = Vec3(-0.5, 0.0, -0.40);
   chaser.slosh->tanks[1].axis_body = Vec3(0.0, 0.6, 0.8);
   chaser.slosh->tanks[1].liquid_mass_kg = 220.0;
-  const ChaserSloshParams s = chaser_slosh(chaser);
+  const model::ChaserSloshParams s = model::chaser_slosh(chaser);
   ASSERT_EQ(s.count, 2);
   const double body_kg = chaser.mass_kg - s.mass_kg;
   double mass_kg = body_kg;

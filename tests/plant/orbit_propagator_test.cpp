@@ -361,7 +361,7 @@ SloshRun fly_sloshing_chaser(double damping_ratio) {
   OrbitDynamicsParams p = keplerian();
   p.chaser.inertia_kgm2 = chaser.inertia_kgm2;
   p.chaser.inertia_inv = chaser.inertia_kgm2.inverse();
-  p.slosh = chaser_slosh(chaser);
+  p.slosh = model::chaser_slosh(chaser);
   EXPECT_EQ(p.slosh.count, 2);
 
   OrbitState o = envisat_like_orbit();
@@ -372,23 +372,23 @@ SloshRun fly_sloshing_chaser(double damping_ratio) {
   RigidState c = chaser_mass(chaser.mass_kg);
   c.omega_body_radps = Vec3(0.01, -0.02, 0.015);
 
-  const RigidBodyMassProps body{.mass_kg = chaser.mass_kg - p.slosh.mass_kg,
+  const model::RigidBodyMassProps body{.mass_kg = chaser.mass_kg - p.slosh.mass_kg,
                                 .inertia_com_body_kgm2 = p.slosh.body_inertia_kgm2,
                                 .com_body_m = p.slosh.body_com_body_m};
   const auto tanks = std::span(p.slosh.tanks.data(), 2);
   const auto momentum = [&] {
-    return total_angular_momentum_inertial(body, tanks, std::span(o.slosh.data(), 2), c.q_inertial_from_body,
+    return model::total_angular_momentum_inertial(body, tanks, std::span(o.slosh.data(), 2), c.q_inertial_from_body,
                                            Vec3::Zero(), c.omega_body_radps);
   };
   // Kinetic energy in the frame of the system's CoM (which moves by the orbit alone): the body's
   // CoM moves in it as the liquid swings, at the velocity that makes the momentum there zero.
   const auto energy = [&] {
-    const std::span<const SloshState> states(o.slosh.data(), 2);
-    const Vec3 p_rel = total_linear_momentum_inertial(body, tanks, states, c.q_inertial_from_body, Vec3::Zero(),
+    const std::span<const model::SloshState> states(o.slosh.data(), 2);
+    const Vec3 p_rel = model::total_linear_momentum_inertial(body, tanks, states, c.q_inertial_from_body, Vec3::Zero(),
                                                       c.omega_body_radps);
     const Vec3 v_body_com = -p_rel / (body.mass_kg + p.slosh.mass_kg);
-    return total_kinetic_energy(body, tanks, states, c.q_inertial_from_body, v_body_com, c.omega_body_radps) +
-           slosh_spring_energy(tanks, states);
+    return model::total_kinetic_energy(body, tanks, states, c.q_inertial_from_body, v_body_com, c.omega_body_radps) +
+           model::slosh_spring_energy(tanks, states);
   };
   const Vec3 h0 = momentum();
   const double e0 = energy();
@@ -396,7 +396,7 @@ SloshRun fly_sloshing_chaser(double damping_ratio) {
   for (int k = 0; k < 6000; ++k) {
     propagate_orbit_piece(p, PeriodEnvironment{}, o, c, 0.1, PieceInput{});
     for (int i = 0; i < 2; ++i) {
-      const SloshState& st = o.slosh[static_cast<std::size_t>(i)];
+      const model::SloshState& st = o.slosh[static_cast<std::size_t>(i)];
       out.swing_m = std::max(out.swing_m, st.s_body_m.norm());
       out.axial_m = std::max(out.axial_m, std::abs(st.s_body_m.dot(p.slosh.tanks[static_cast<std::size_t>(i)].axis_body)));
     }
@@ -474,7 +474,7 @@ TEST(OrbitPropagator, ThirdOrderShortPiecesAgreeWithRk4) {
   fast.chaser.inertia_inv = chaser.inertia_kgm2.inverse();
   fast.target.inertia_kgm2 << 17023.3, 397.1, -2171.4, 397.1, 124825.7, 344.2, -2171.4, 344.2, 129112.2;
   fast.target.inertia_inv = fast.target.inertia_kgm2.inverse();
-  fast.slosh = chaser_slosh(chaser);
+  fast.slosh = model::chaser_slosh(chaser);
   ASSERT_EQ(fast.third_order_max_piece_s, 0.025);
   OrbitDynamicsParams reference = fast;
   reference.third_order_max_piece_s = 0.0;

@@ -1,4 +1,4 @@
-// The pendulum analogue of plant/slosh.hpp: its length and wall from the fill, its frequency under a
+// The pendulum analogue of model/slosh.hpp: its length and wall from the fill, its frequency under a
 // steady acceleration (closed form), its agreement with the spring-mass for small swings, its
 // conserved quantities, and the wall's hold (a static balance in closed form).
 #include <gtest/gtest.h>
@@ -9,10 +9,10 @@
 #include <cstddef>
 
 #include "core/constants.hpp"
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 #include "tests/plant/slosh_system.hpp"
 
-namespace chaser::plant {
+namespace chaser::model {
 namespace {
 
 using slosh_harness::angular_momentum;
@@ -225,4 +225,4 @@ TEST(SloshPendulum, TheWallHoldsTheMassAgainstASteadyForce) {
 }
 
 }  // namespace
-}  // namespace chaser::plant
+}  // namespace chaser::model

@@ -1,14 +1,14 @@
 #pragma once
-// The coupled body-and-slosh system of plant/slosh.hpp integrated on its own (RK4, the pendulums put
+// The coupled body-and-slosh system of model/slosh.hpp integrated on its own (RK4, the pendulums put
 // back on their spheres after each step, as the plant does), and its invariants: the tests' harness.
 #include <cstddef>
 #include <vector>
 
 #include "core/rotation.hpp"
 #include "plant/rigid_body.hpp"
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 
-namespace chaser::plant::slosh_harness {
+namespace chaser::model::slosh_harness {
 
 // The whole coupled system: the body's CoM in inertial axes, attitude, rate, and each slosh state.
 struct System {
@@ -39,7 +39,7 @@ inline Derivative derivative(const System& sys, const FullState& x) {
   Derivative d;
   d.r_dot = x.v_inertial_mps;
   d.v_dot = x.q_inertial_from_body * acc.a_com_body_mps2;
-  d.q_dot = quat_derivative(x.q_inertial_from_body, x.omega_body_radps);
+  d.q_dot = plant::quat_derivative(x.q_inertial_from_body, x.omega_body_radps);
   d.omega_dot = acc.omega_dot_body_radps2;
   for (std::size_t i = 0; i < x.slosh.size(); ++i)
     d.slosh_dot.push_back({acc.s_dot_body_mps[i], acc.s_ddot_body_mps2[i]});
@@ -117,4 +117,4 @@ inline RigidBodyMassProps chaser_body() {
   return body;
 }
 
-}  // namespace chaser::plant::slosh_harness
+}  // namespace chaser::model::slosh_harness

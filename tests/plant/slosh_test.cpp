@@ -1,4 +1,4 @@
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "plant/rigid_body.hpp"
 #include "tests/plant/slosh_system.hpp"
 
-namespace chaser::plant {
+namespace chaser::model {
 namespace {
 
 using slosh_harness::FullState;
@@ -345,4 +345,4 @@ TEST(Slosh, AxialForceSolutionMatchesTheSixBySixForm) {
 }
 
 }  // namespace
-}  // namespace chaser::plant
+}  // namespace chaser::model

@@ -165,7 +165,7 @@ TEST(TelemetryTable, ComradeRowsCarryTargetRatesAndSlosh) {
   EXPECT_NEAR(spin.norm(), 2.5 * kPi / 180.0, 1e-15);
   // The tanks' pendulums (axis +z): each mass on its sphere about the hinge L above its rest point,
   // its rate along the sphere; to the CSV's 17 digits.
-  const plant::ChaserSloshParams slosh = plant::chaser_slosh(s.chaser);
+  const model::ChaserSloshParams slosh = model::chaser_slosh(s.chaser);
   double swing_m = 0.0;
   for (const std::vector<double>& row : rows)
     for (int tank = 1; tank <= 2; ++tank) {

@@ -1,5 +1,7 @@
 #pragma once
 // Propellant slosh: the first lateral mode of each tank as a spring-mass, coupled to the rigid body.
+// Model knowledge, not the truth alone: the plant flies it (plant/orbit_propagator), and a model the
+// flight software keeps of its own liquid is built on the same equations and nominal parameters.
 //
 // COMRADE 2018 models the chaser's two tanks with "3D spring-mass" sloshing. Only the first lateral
 // mode matters: its mass m1 is 83 % of the liquid at h = 0.1 R and 43 % at h = R (below), while the
@@ -68,11 +70,14 @@
 
 #include "core/types.hpp"
 
-namespace chaser::plant {
+namespace chaser::model {
 
 // Fixed capacity, so that the hot loop allocates nothing (SloshAccelerations spells out 4 zeros).
 inline constexpr int kMaxSloshTanks = 4;
 inline constexpr double kSloshXi1 = 1.8411837813406593;  // first root of J1'(x) = 0
+// [rad/s] The pendulum wall's spring frequency at most: 0.5 rad per RK4 substep of the longest
+// substep that integrates it, 0.1 s (the plant's kDefaultMaxSubstepS, which asserts the pair).
+inline constexpr double kMaxWallOmegaRadps = 5.0;
 
 // An upright flat-bottomed cylinder fixed in the body.
 struct CylindricalTank {
@@ -187,4 +192,4 @@ double total_kinetic_energy(const RigidBodyMassProps& body, std::span<const Slos
 // capillary hold's m g_c (n . s).
 double slosh_spring_energy(std::span<const SloshTankParams> tanks, std::span<const SloshState> states);  // [J]
 
-}  // namespace chaser::plant
+}  // namespace chaser::model

@@ -1,4 +1,4 @@
-#include "plant/slosh.hpp"
+#include "model/slosh.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -7,12 +7,8 @@
 #include <cstddef>
 
 #include "core/constants.hpp"
-#include "plant/propagator.hpp"
 
-namespace chaser::plant {
-
-// [rad/s] The wall spring's frequency at most: 0.5 rad per RK4 substep of the plant's longest.
-constexpr double kMaxWallOmegaRadps = 0.5 / kDefaultMaxSubstepS;
+namespace chaser::model {
 
 SloshTankFill slosh_tank_from_fill(const CylindricalTank& tank, double liquid_mass_kg, double fill_height_m,
                                    double g_eff_mps2, double damping_ratio) {
@@ -285,4 +281,4 @@ SloshState on_constraint(const SloshTankParams& tank, const SloshState& state) {
   return {tank.pendulum_length_m * (tank.axis_body - u), lateral(u, state.s_dot_body_mps)};
 }
 
-}  // namespace chaser::plant
+}  // namespace chaser::model
