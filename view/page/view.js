@@ -550,9 +550,13 @@
     requestRender();
   }
   window.addEventListener('resize', resize);
-  const frameTimes = [];
+  // While playing: the interval between frames and the page's own work per frame (the state at t,
+  // the panel, the render), the last 600 of each.
+  const frameTimes = [], frameWork = [];
   let lastFrame = null;
   function frame(now) {
+    const workStart = performance.now();
+    const playing = state.playing;
     if (state.playing) {
       if (lastFrame !== null) {
         const dt = (now - lastFrame) / 1000;
@@ -569,6 +573,10 @@
       placeCamera();
       renderer.render(scene, camera);
       needsRender = false;
+    }
+    if (playing) {
+      frameWork.push(performance.now() - workStart);
+      if (frameWork.length > 600) frameWork.shift();
     }
     requestAnimationFrame(frame);
   }
@@ -627,6 +635,7 @@
       };
     },
     frameIntervalsMs() { return frameTimes.slice(); },
+    frameWorkMs() { return frameWork.slice(); },
   };
   document.title = document.title + ' (ready)';
 })();
