@@ -97,9 +97,9 @@ std::vector<ReplayEvent> replay_events(const sim::TelemetryRows& telemetry, cons
   const std::vector<ActiveSetChange> active = active_set_changes(telemetry);
   for (std::size_t i = 1; i < active.size(); ++i) {
     const unsigned before = active[i - 1].mask, after = active[i].mask;
-    std::string label = "recovery: active set";
-    if (after & ~before) label += " +" + thruster_names(after & ~before);
-    if (before & ~after) label += " -" + thruster_names(before & ~after);
+    const unsigned in = after & ~before, out = before & ~after;
+    const std::string label = fmt::format("recovery:{}{}{}", in ? fmt::format(" {} in", thruster_names(in)) : "",
+                                          in && out ? ";" : "", out ? fmt::format(" {} out", thruster_names(out)) : "");
     events.push_back({active[i].t_s, "recovery", label, -1});
   }
   summary_events(summary, events);

@@ -146,7 +146,10 @@ try {
   await page.goto('file://' + pagePath);
   await page.waitForFunction(() => window.chaserView !== undefined, null, { timeout: 60000 });
   const loadMs = await page.evaluate(() => window.chaserView.loadMs);
-  console.log(`load: ${loadMs.toFixed(0)} ms from navigation to the first frame`);
+  const steps = await page.evaluate(() => window.chaserView.loadSteps);
+  console.log(`load: ${loadMs.toFixed(0)} ms from navigation to the first frame (page and three.js read ${steps.scriptStartMs.toFixed(0)}, ` +
+    `data parsed ${(steps.dataParsedMs - steps.scriptStartMs).toFixed(0)}, scene built ${(steps.sceneBuiltMs - steps.dataParsedMs).toFixed(0)}, ` +
+    `first frame ${(steps.firstFrameMs - steps.sceneBuiltMs).toFixed(0)})`);
   check(loadMs < 10000, `the page loads (first frame in ${loadMs.toFixed(0)} ms)`);
   const webgl2 = await page.evaluate(() => !!document.querySelector('#scene canvas').getContext('webgl2'));
   check(webgl2, 'the scene draws through WebGL 2');
@@ -297,7 +300,10 @@ try {
     const shot = await page.screenshot({ clip: scene, path: path.join(dir, `view-${cam}.png`) });
     const figures = colourFigures(decodePng(shot));
     console.log(`screenshot ${cam}: ${figures.distinct} colours, ${(100 * figures.litFraction).toFixed(1)} % of pixels off the background`);
-    check(figures.distinct > 100 && figures.litFraction > 0.005, `the ${cam} camera shows the scene (${figures.distinct} colours)`);
+    // A blank canvas has one colour. The LVLH camera sees the whole scene: hundreds of colours; from
+    // close in (the chaser's camera at a capture's hold point) a face of the target may fill the view.
+    const least = cam === 'lvlh' ? 100 : 30;
+    check(figures.distinct >= least && figures.litFraction > 0.005, `the ${cam} camera shows the scene (${figures.distinct} colours, at least ${least})`);
   }
   // CHASER_VIEW_SHOTS=DIR keeps the screenshots (DIR/view-RUN-CAMERA.png).
   if (process.env.CHASER_VIEW_SHOTS)

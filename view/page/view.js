@@ -5,7 +5,9 @@
 'use strict';
 
 (function () {
+  const scriptStartMs = performance.now();  // the HTML, three.js and the data read by the browser
   const data = JSON.parse(document.getElementById('chaser-data').textContent);
+  const dataParsedMs = performance.now();
   const geo = data.geometry;
   const summary = data.summary;
   const track = data.track;
@@ -146,15 +148,15 @@
   // The target, turning as the truth turns.
   const target = new THREE.Group();
   scene.add(target);
-  const gold = new THREE.MeshStandardMaterial({ color: 0xc9a24a, metalness: 0.5, roughness: 0.45 });
-  const panelMat = new THREE.MeshStandardMaterial({ color: 0x1d3d8f, metalness: 0.3, roughness: 0.35, emissive: 0x050a20 });
+  const gold = new THREE.MeshPhongMaterial({ color: 0xc9a24a, shininess: 40 });
+  const panelMat = new THREE.MeshPhongMaterial({ color: 0x1d3d8f, shininess: 60, emissive: 0x050a20 });
   const keepOutZone = new THREE.Group();
   target.add(keepOutZone);
   let targetSize = 0.3;
   const boxes = geo.target.keep_out || [];
   if (!geo.target.body || boxes.length === 0) {
     // MSR's orbiting sample container: a sphere (the scenario gives no size: drawn 0.3 m across).
-    const s = new THREE.Mesh(new THREE.SphereGeometry(0.15, 32, 16), new THREE.MeshStandardMaterial({ color: 0xe8e8e8, metalness: 0.2, roughness: 0.5 }));
+    const s = new THREE.Mesh(new THREE.SphereGeometry(0.15, 32, 16), new THREE.MeshPhongMaterial({ color: 0xe8e8e8, shininess: 40 }));
     target.add(s);
     const band = new THREE.Mesh(new THREE.TorusGeometry(0.151, 0.012, 8, 48), gold);
     target.add(band);
@@ -182,12 +184,12 @@
     if (fx) {
       const normal = v3(fx.normal_target);
       if (fx.kind === 'ring') {  // the launcher adapter ring, its rim the grasp point
-        const ring = new THREE.Mesh(new THREE.TorusGeometry(fx.radius_m, 0.04, 12, 64), new THREE.MeshStandardMaterial({ color: 0xb0b6c0, metalness: 0.8, roughness: 0.3 }));
+        const ring = new THREE.Mesh(new THREE.TorusGeometry(fx.radius_m, 0.04, 12, 64), new THREE.MeshPhongMaterial({ color: 0xb0b6c0, shininess: 40 }));
         ring.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
         ring.position.copy(v3(fx.centre_target_m).add(normal.clone().multiplyScalar(0.06)));
         target.add(ring);
       } else {  // a berthing drogue: a cone opening outwards
-        const cone = new THREE.Mesh(new THREE.ConeGeometry(fx.radius_m, 0.15, 24, 1, true), new THREE.MeshStandardMaterial({ color: 0xd0d0d0, side: THREE.DoubleSide }));
+        const cone = new THREE.Mesh(new THREE.ConeGeometry(fx.radius_m, 0.15, 24, 1, true), new THREE.MeshPhongMaterial({ color: 0xd0d0d0, side: THREE.DoubleSide }));
         cone.quaternion.setFromUnitVectors(new THREE.Vector3(0, -1, 0), normal);
         cone.position.copy(v3(fx.centre_target_m).add(normal.clone().multiplyScalar(0.075)));
         target.add(cone);
@@ -224,14 +226,14 @@
   const armLinks = [];
   const armJoints = [];
   if (track.arm) {
-    const linkMat = new THREE.MeshStandardMaterial({ color: 0xe0e4ea, metalness: 0.4, roughness: 0.4 });
-    const jointMat = new THREE.MeshStandardMaterial({ color: 0x5a6478 });
+    const linkMat = new THREE.MeshPhongMaterial({ color: 0xe0e4ea, shininess: 40 });
+    const jointMat = new THREE.MeshPhongMaterial({ color: 0x5a6478 });
     for (let i = 0; i < 8; ++i) {
       const link = new THREE.Mesh(new THREE.CylinderGeometry(i < 1 ? 0.03 : 0.06, i < 1 ? 0.03 : 0.06, 1, 12), linkMat);
       arm.add(link); armLinks.push(link);
     }
     for (let i = 0; i < 9; ++i) {
-      const j = new THREE.Mesh(new THREE.SphereGeometry(i === 8 ? 0.07 : 0.085, 12, 8), i === 8 ? new THREE.MeshStandardMaterial({ color: 0x8fe388 }) : jointMat);
+      const j = new THREE.Mesh(new THREE.SphereGeometry(i === 8 ? 0.07 : 0.085, 12, 8), i === 8 ? new THREE.MeshPhongMaterial({ color: 0x8fe388 }) : jointMat);
       arm.add(j); armJoints.push(j);
     }
   }
@@ -268,7 +270,7 @@
   chaser.add(body);
   const bus = geo.chaser.bus;
   const busMesh = new THREE.Mesh(new THREE.BoxGeometry(2 * bus.half_extents_m[0], 2 * bus.half_extents_m[1], 2 * bus.half_extents_m[2]),
-    new THREE.MeshStandardMaterial({ color: 0xd9dde3, metalness: 0.35, roughness: 0.5 }));
+    new THREE.MeshPhongMaterial({ color: 0xd9dde3, shininess: 40 }));
   busMesh.position.copy(v3(bus.centre_body_m));
   body.add(busMesh);
   busMesh.add(new THREE.LineSegments(new THREE.EdgesGeometry(busMesh.geometry), new THREE.LineBasicMaterial({ color: 0x6b7384 })));
@@ -283,7 +285,7 @@
     g.position.copy(v3(th.position_body_m));
     const exhaust = v3(th.direction_body).normalize().negate();  // the plume leaves opposite the force
     g.quaternion.setFromUnitVectors(up, exhaust);
-    const nozzleMat = new THREE.MeshStandardMaterial({ color: 0x9aa3b5, metalness: 0.7, roughness: 0.3 });
+    const nozzleMat = new THREE.MeshPhongMaterial({ color: 0x9aa3b5, shininess: 40 });
     const nozzle = new THREE.Mesh(new THREE.CylinderGeometry(0.03, 0.055, 0.1, 12), nozzleMat);
     nozzle.position.y = 0.05;
     g.add(nozzle);
@@ -596,10 +598,12 @@
     if (e.code === 'ArrowLeft') prevEvent();
   });
 
+  const sceneBuiltMs = performance.now();
   resize();
   apply(t0);
   placeCamera();
   renderer.render(scene, camera);
+  renderer.getContext().finish();  // the first frame drawn, shaders compiled
   needsRender = false;
   requestAnimationFrame(frame);
 
@@ -608,6 +612,8 @@
   function quatWxyz(q) { return [q.w, q.x, q.y, q.z]; }
   window.chaserView = {
     loadMs: performance.now(),  // from the start of navigation to the first frame drawn
+    // Where the load went: milliseconds from the start of navigation to each step's end.
+    loadSteps: { scriptStartMs, dataParsedMs, sceneBuiltMs, firstFrameMs: performance.now() },
     t0, tEnd,
     events: data.events,
     meta: data.meta,
