@@ -35,9 +35,11 @@ void number(std::string& out, double v, int decimals) {
   fmt::format_to(std::back_inserter(out), "{:.{}f}", v, decimals);
 }
 
+// The kept rows' values, `width` a row, as a flat JSON array (after "key": when a key is given).
 template <class Get>
 void array(std::string& out, const char* key, const std::vector<std::size_t>& kept, int width, int decimals, Get get) {
-  fmt::format_to(std::back_inserter(out), "\"{}\":[", key);
+  if (*key) fmt::format_to(std::back_inserter(out), "\"{}\":", key);
+  out += '[';
   bool first = true;
   for (std::size_t r : kept)
     for (int k = 0; k < width; ++k) {
@@ -68,10 +70,10 @@ std::string track_json(const ReplayTrack& k, const std::vector<std::size_t>& kep
   if (k.arm.empty()) {
     out += "null";
   } else {
+    // The points flat, 27 a row; null where the arm sleeps.
     array(out, "", kept, 3 * kArmPoints, 4, [&](std::size_t r, int c) {
       return k.arm[r] ? (*k.arm[r])[static_cast<std::size_t>(c / 3)](c % 3) : std::nan("");
     });
-    out.erase(out.find("\"\":["), 3);  // an anonymous array: the flat points, null where the arm sleeps
   }
   out += '}';
   return out;
