@@ -75,6 +75,8 @@ void summary_events(const nlohmann::json& summary, std::vector<ReplayEvent>& out
   step("grasp", "lock_s", "capture: gripper locked");
   step("rigidisation", "brakes_s", "rigidisation: brakes engaged");
   step("stabilisation", "below_goal_s", "stabilisation: rate below goal");
+  step("berthing", "soft_dock_s", "berthing: soft dock (latches)");
+  step("berthing", "hard_dock_s", "berthing: hard dock (pins)");
   if (const double t = number_or(reach, "hold_from_s", -1.0); t >= 0.0) out.push_back({t, "capture", "reach: gripper over the hold", -1});
 }
 

@@ -163,4 +163,24 @@ TEST(ViewEvents, AlarmsIsolationsRecoveriesFaultsAndPhasesAtTheirTimes) {
   EXPECT_EQ(events[4].label, "recovery: T9, T10, T11, T12, T13, T14, T15, T16 in; T1, T2, T3, T4, T5, T6, T7, T8 out");
 }
 
+// A capture's and a berthing's steps, from summary.json's reach; a step not reached (null) is none.
+TEST(ViewEvents, TheCapturesStepsFromTheSummary) {
+  chaser::sim::TelemetryRows rows;
+  rows.channels = {"t_s"};
+  rows.new_row()[0] = 0.0;
+  const nlohmann::json summary = {{"reach",
+                                   {{"hold_from_s", 10.0},
+                                    {"grasp", {{"closure_s", 12.0}, {"lock_s", 12.5}}},
+                                    {"rigidisation", {{"brakes_s", 20.0}}},
+                                    {"stabilisation", {{"below_goal_s", nullptr}}},
+                                    {"berthing", {{"soft_dock_s", 13.0}, {"hard_dock_s", 30.0}}}}}};
+  std::vector<std::pair<double, std::string>> seen;
+  for (const ReplayEvent& e : replay_events(rows, summary)) seen.emplace_back(e.t_s, e.label);
+  const std::vector<std::pair<double, std::string>> expected{
+      {10.0, "reach: gripper over the hold"}, {12.0, "capture: jaws closed"},
+      {12.5, "capture: gripper locked"},      {13.0, "berthing: soft dock (latches)"},
+      {20.0, "rigidisation: brakes engaged"}, {30.0, "berthing: hard dock (pins)"}};
+  EXPECT_EQ(seen, expected);
+}
+
 }  // namespace
