@@ -301,6 +301,15 @@ try {
   check(played.t > meta.t0_s + 50 && played.t < meta.t_end_s && !played.playing && played.speed === 100, `play moves the time on (to ${played.t.toFixed(1)} s) and pause stops it`);
   await page.waitForTimeout(300);
   check((await state()).t === played.t, 'paused, the time holds');
+  // The keyboard: space plays and pauses, the arrows step through the events.
+  await page.locator('#scene canvas').click();
+  await page.keyboard.press('Space');
+  check((await state()).playing, 'space plays');
+  await page.keyboard.press('Space');
+  check(!(await state()).playing, 'space again pauses');
+  await setTime(meta.t0_s);
+  await page.keyboard.press('ArrowRight');
+  check(times.length === 0 || Math.abs((await state()).t - times[0]) < 1e-9, 'the right arrow goes to the first event');
 
   // Screenshots from each camera: the scene, not a blank canvas.
   const tShot = summary.faults.length ? summary.faults[0].onset_s + 0.3 : meta.t0_s + 0.8 * (meta.t_end_s - meta.t0_s);

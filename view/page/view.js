@@ -593,6 +593,8 @@
   $('camera').addEventListener('change', (e) => { view.mode = state.camera = e.target.value; requestRender(); });
   slider.addEventListener('input', () => setTime(Number(slider.value)));
   window.addEventListener('keydown', (e) => {
+    // Keys pressed on a control are the control's (space on the Play button clicks it once).
+    if (e.target instanceof HTMLElement && e.target.closest('button, select, input')) return;
     if (e.code === 'Space') { e.preventDefault(); state.playing ? pause() : play(); }
     if (e.code === 'ArrowRight') nextEvent();
     if (e.code === 'ArrowLeft') prevEvent();
