@@ -2,17 +2,23 @@
 # Writes OUT, a C++ file defining chaser::view::page_assets(): the page's files and three.js with
 # its licence and version, as raw string literals (view/CMakeLists.txt).
 set(delimiter "cv_asset")  # at most 16 characters
-function(embed var file)
-  file(READ ${file} text)
+# The raw string literal of the files' text, one after the other.
+function(embed var)
+  set(text "")
+  foreach(file ${ARGN})
+    file(READ ${file} part)
+    string(APPEND text "${part}")
+  endforeach()
   string(FIND "${text}" ")${delimiter}\"" clash)
   if(NOT clash EQUAL -1)
-    message(FATAL_ERROR "${file} holds the raw string's delimiter )${delimiter}\"")
+    message(FATAL_ERROR "${ARGN} hold the raw string's delimiter )${delimiter}\"")
   endif()
   set(${var} "R\"${delimiter}(${text})${delimiter}\"" PARENT_SCOPE)
 endfunction()
 embed(html ${PAGE_DIR}/index.html)
 embed(css ${PAGE_DIR}/view.css)
-embed(js ${PAGE_DIR}/view.js)
+# The page's script: its parts in the order they run (view/page/index.html wraps them in one scope).
+embed(js ${PAGE_DIR}/data.js ${PAGE_DIR}/scene.js ${PAGE_DIR}/camera.js ${PAGE_DIR}/panel.js ${PAGE_DIR}/replay.js)
 embed(three ${THREE_DIR}/build/three.cjs)
 embed(licence ${THREE_DIR}/LICENSE)
 file(READ ${THREE_DIR}/package.json package)
