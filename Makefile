@@ -1,7 +1,8 @@
-# Chaser: `make demo` runs the main job, `make test` builds and runs every test, `make bench` the
-# benchmarks, `make sanitize` every test under ASan and UBSan (`make sanitize-fast` CI's subset),
-# `make fuzz` the loaders' fuzzers (docs/reliability.md), `make servicing` COMRADE's synchronisation,
-# its Table 5 and the reach, `make docs` the generated tables of README.md and docs/ (scripts/doc_tables.py).
+# Chaser: `make demo` runs the main job and writes its 3D replay (demo-out/view.html), `make test`
+# builds and runs every test, `make bench` the benchmarks, `make sanitize` every test under ASan and
+# UBSan (`make sanitize-fast` CI's subset), `make fuzz` the loaders' fuzzers (docs/reliability.md),
+# `make servicing` COMRADE's synchronisation, its Table 5 and the reach (with their replays), `make
+# docs` the generated tables of README.md and docs/ (scripts/doc_tables.py).
 # Each target installs missing system packages first (scripts/install-deps).
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -39,6 +40,7 @@ demo: build
 	  --set 'faults=[{thruster: T8, kind: stuck_open, onset_s: 1000}]'
 	@$(PYTHON) python/plot_run.py $(DEMO_OUT)
 	@$(PYTHON) python/plot_fdi.py $(DEMO_OUT)
+	@./$(BUILD)/cli/chaser view $(DEMO_OUT) --out $(DEMO_OUT)/view.html
 
 # Zhou 2018's failure-mode analysis and reconfiguration study, with the search and per-mode plots.
 fmea: build
@@ -55,11 +57,13 @@ fmea: build
 servicing: build
 	@./$(BUILD)/cli/chaser run scenarios/comrade_sync.yaml --out $(SERVICING_OUT)/flight
 	@$(PYTHON) python/plot_servicing.py $(SERVICING_OUT)/flight
+	@./$(BUILD)/cli/chaser view $(SERVICING_OUT)/flight
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_sync.yaml --preset comrade-table5 \
 	  --also scenarios/comrade_assist.yaml --out $(SERVICING_OUT)/table5
 	@$(PYTHON) python/plot_table5.py $(SERVICING_OUT)/table5
 	@./$(BUILD)/cli/chaser run scenarios/comrade_capture.yaml --out $(SERVICING_OUT)/reach
 	@$(PYTHON) python/plot_reach.py $(SERVICING_OUT)/reach
+	@./$(BUILD)/cli/chaser view $(SERVICING_OUT)/reach
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-reach \
 	  --out $(SERVICING_OUT)/reach-campaign
 	@./$(BUILD)/cli/chaser campaign scenarios/comrade_capture.yaml --preset comrade-stabilise \

@@ -6,6 +6,7 @@
 
 #include "campaign/glr_envelope.hpp"
 #include "campaign/run_row.hpp"
+#include "sim/run_geometry.hpp"
 #include "sim/summary.hpp"
 
 namespace chaser::campaign {
@@ -19,6 +20,8 @@ sim::RunResult fly(const RunSetup& setup, const CampaignPlan& plan, const flight
   std::filesystem::create_directories(telemetry_dir);
   options.telemetry_path = (std::filesystem::path(telemetry_dir) / "telemetry.csv").string();
   sim::RunResult result = sim::run_scenario(setup.truth, flight, options);
+  // The run's shapes, so that `chaser view` replays a kept run as it does `chaser run`'s.
+  std::ofstream(std::filesystem::path(telemetry_dir) / "geometry.json") << sim::run_geometry(setup.truth).dump(2) << '\n';
   std::ofstream(std::filesystem::path(telemetry_dir) / "summary.json")
       << sim::run_summary(setup.truth, plan.scenario_hash, result).dump(2) << '\n';
   return result;

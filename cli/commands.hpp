@@ -74,6 +74,12 @@ struct ControlDesignArgs {
   std::vector<std::string> overrides;
 };
 
+// chaser view (docs/view.md).
+struct ViewArgs {
+  std::string run_dir;
+  std::string out_path;  // empty: RUN_DIR/view.html
+};
+
 struct CampaignMergeArgs {
   std::string out_dir;
   std::vector<std::string> shard_dirs;
@@ -87,6 +93,7 @@ int fdi_design_command(const FdiDesignArgs& args);
 int fmea_command(const FmeaArgs& args);
 int thrusters_command(const ThrustersArgs& args);
 int control_design_command(const ControlDesignArgs& args);
+int view_command(const ViewArgs& args);
 int validate_command(const std::string& scenario_path, const std::vector<std::string>& overrides);
 
 }  // namespace chaser::cli

@@ -144,6 +144,12 @@ int main(int argc, char** argv) {
   fmea_cmd->add_flag("--nominal-only", fmea.nominal_only,
                      "Fly only the nominal case of each layout (for calibrations: python/invsim_study/calibrate_invsim.py)");
 
+  ViewArgs view;
+  CLI::App* view_cmd = app.add_subcommand(
+      "view", "Replay a run in 3D: one self-contained HTML page from its folder (docs/view.md)");
+  view_cmd->add_option("run_dir", view.run_dir, "Run folder (telemetry.csv or .npy, summary.json, geometry.json)")->required();
+  view_cmd->add_option("--out", view.out_path, "HTML file to write (default: RUN_DIR/view.html)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -151,6 +157,7 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   if (*run_cmd) return run_command(run);
+  if (*view_cmd) return view_command(view);
   if (*validate_cmd) return validate_command(validate_path, validate_overrides);
   if (*design_cmd) return fdi_design_command(fdi_design);
   if (*control_design_cmd) return control_design_command(control_design);

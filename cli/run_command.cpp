@@ -11,6 +11,7 @@
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
 #include "sim/run_directory.hpp"
+#include "sim/run_geometry.hpp"
 #include "sim/summary.hpp"
 #include "sim/telemetry_channels.hpp"
 
@@ -50,6 +51,7 @@ int run_command(const RunArgs& args) {
     std::cerr << fmt::format("chaser: cannot write {}\n", telemetry.string());
     return kExitFailure;
   }
+  if (!write_output_file(out / "geometry.json", sim::run_geometry(scenario).dump(2) + "\n")) return kExitFailure;
   // summary.json last: where it exists, the run and its telemetry are complete.
   if (!write_output_file(out / "summary.json", sim::run_summary(scenario, loaded->hash, result).dump(2) + "\n"))
     return kExitFailure;

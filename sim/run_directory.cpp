@@ -12,8 +12,10 @@ std::string prepare_run_directory(const std::filesystem::path& dir) {
   // A previous run's files go first: a run that is stopped leaves none of them beside its own to be
   // taken for its results (a telemetry.csv beside a new telemetry.npy, an older summary.json), and
   // the renames that finish the files then replace nothing (ext4 flushes a file renamed over
-  // another before the rename returns: 16 ms for a 10 MB telemetry file).
-  for (const char* name : {"summary.json", "telemetry.csv", "telemetry.npy"}) std::filesystem::remove(dir / name, ec);
+  // another before the rename returns: 16 ms for a 10 MB telemetry file). geometry.json (`chaser
+// view`'s) goes with them.
+  for (const char* name : {"summary.json", "geometry.json", "telemetry.csv", "telemetry.npy"})
+    std::filesystem::remove(dir / name, ec);
   return {};
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 // The folder of one run, as `chaser run --out DIR` and the Python module's chaser.run(out=DIR)
-// write it: DIR/telemetry.csv or DIR/telemetry.npy, then DIR/summary.json, last.
+// write it: DIR/telemetry.csv or DIR/telemetry.npy, DIR/geometry.json (the scenario's shapes, for
+// `chaser view`: sim/run_geometry.hpp), then DIR/summary.json, last.
 #include <filesystem>
 #include <string>
 
 namespace chaser::sim {
 
-// Creates `dir` and removes an earlier run's summary.json and telemetry.* from it. An error
+// Creates `dir` and removes an earlier run's summary.json, geometry.json and telemetry.* from it. An error
 // message, or empty when the folder is ready.
 std::string prepare_run_directory(const std::filesystem::path& dir);
 

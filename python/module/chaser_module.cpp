@@ -17,8 +17,11 @@
 #include "python/module/module.hpp"
 #include "sim/run.hpp"
 #include "sim/run_directory.hpp"
+#include "sim/run_geometry.hpp"
 #include "sim/summary.hpp"
 #include "sim/telemetry_channels.hpp"
+#include "view/replay_page.hpp"
+#include "view/run_files.hpp"
 
 namespace chaser::python {
 
@@ -108,6 +111,9 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
       summary_json = sim::run_summary(scenario, loaded.hash, result).dump(2) + "\n";
       report = sim::summary_text(scenario, result);
       if (!result.telemetry_ok) problem = "cannot write " + telemetry_path.string();
+      else if (out && !sim::write_whole_file(std::filesystem::path(*out) / "geometry.json",
+                                             sim::run_geometry(scenario).dump(2) + "\n"))
+        problem = "cannot write " + (std::filesystem::path(*out) / "geometry.json").string();
       // summary.json last: where it exists, the run and its telemetry are complete.
       else if (out && !sim::write_whole_file(std::filesystem::path(*out) / "summary.json", summary_json))
         problem = "cannot write " + (std::filesystem::path(*out) / "summary.json").string();
@@ -118,6 +124,30 @@ RunResult run(const Scenario& loaded, std::optional<std::uint64_t> seed, std::op
     throw py::error_already_set();
   }
   return run_result(summary_json, report, memory);
+}
+
+// `chaser view`, from Python: the page of a run folder (chaser.run(..., out=DIR)'s), written to
+// `out` (default DIR/view.html); its path. ValueError, naming the file, for a folder it cannot draw.
+std::string write_view(const std::string& run_dir, std::optional<std::string> out) {
+  const std::filesystem::path path = out ? std::filesystem::path(*out) : std::filesystem::path(run_dir) / "view.html";
+  std::string problem;
+  {
+    py::gil_scoped_release released;
+    try {
+      const view::ViewPage page = view::view_page(view::read_run_files(run_dir));
+      if (!sim::write_whole_file(path, page.html)) problem = "cannot write " + path.string();
+    } catch (const view::ViewInputError& e) {
+      problem = e.what();
+    } catch (const nlohmann::json::exception& e) {
+      problem = run_dir + ": summary.json or geometry.json does not read (" + e.what() + ")";
+    }
+  }
+  if (problem.rfind("cannot write", 0) == 0) {
+    PyErr_SetString(PyExc_OSError, problem.c_str());
+    throw py::error_already_set();
+  }
+  if (!problem.empty()) throw py::value_error(problem);
+  return path.string();
 }
 
 }  // namespace
@@ -218,8 +248,13 @@ PYBIND11_MODULE(chaser, m) {
   m.def("run", &run, py::arg("scenario"), py::arg("seed") = py::none(), py::arg("out") = py::none(),
         py::arg("telemetry") = "csv", py::arg("channels") = std::vector<std::string>{},
         "One closed-loop run, as `chaser run`: seed replaces the scenario's; with out=DIR it writes "
-        "DIR/telemetry.<csv|npy> (telemetry='none': no file) and DIR/summary.json as `chaser run --out DIR` does; "
+        "DIR/telemetry.<csv|npy> (telemetry='none': no file), DIR/geometry.json and DIR/summary.json as `chaser run --out DIR` "
+        "does (chaser.view(DIR) then replays it); "
         "channels keeps the channels matching those patterns (and t_s), in memory and in the file.");
+  m.def("view", &write_view, py::arg("run_dir"), py::arg("out") = py::none(),
+        "The run in run_dir (chaser.run(..., out=run_dir)'s folder) replayed in 3D in one HTML page, as "
+        "`chaser view run_dir --out out` writes it (docs/view.md); out defaults to run_dir/view.html. Returns "
+        "the page's path; raises ValueError naming the file for a missing or truncated telemetry or summary.");
   add_campaign(m);
   add_analyses(m);
   add_simulation(m);

@@ -66,8 +66,8 @@ TEST(Cli, MissingFileAndBadArgumentsExitWith2) {
 // A run killed mid-way (SIGKILL while the telemetry is being written) leaves no file that looks
 // complete: telemetry.csv and summary.json appear only when the run has finished them; what is on
 // disk is telemetry.csv.partial, and an earlier run's files in the same directory (here an npy
-// run's) are gone, not left to pass for this run's. The same command run to the end leaves exactly
-// the two files.
+// run's, geometry.json included) are gone, not left to pass for this run's. The same command run to
+// the end leaves exactly its three files.
 TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
   const auto dir = chaser::testing::scratch_path("chaser_cli_killed");
   std::filesystem::remove_all(dir);
@@ -90,13 +90,14 @@ TEST(Cli, RunKilledMidwayLeavesNoFileThatLooksComplete) {
   EXPECT_FALSE(std::filesystem::exists(dir / "telemetry.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
   EXPECT_FALSE(std::filesystem::exists(dir / "telemetry.npy"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "geometry.json"));
 
   std::filesystem::remove_all(dir);
   ASSERT_EQ(run_chaser("run scenarios/msr_terminal.yaml --set duration_s=5 --telemetry npy --out " + out).exit_code, 0);
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(dir)) files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"summary.json", "telemetry.npy"}));
+  EXPECT_EQ(files, (std::vector<std::string>{"geometry.json", "summary.json", "telemetry.npy"}));
   std::filesystem::remove_all(dir);
 }
 
