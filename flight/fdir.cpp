@@ -156,7 +156,16 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
 
 void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& state, const FdirInput& in,
                    FdirOutput& out) {
-  fdi::step_deficit_detector(p.detector, w.deficit, state.deficit_bank, state.detector);
+  if (p.impulse_detection) {
+    // The impulse statistic's verdict, where the rest of the FDIR reads the detector's.
+    fdi::step_impulse_detector(p.impulse, w.deficit, state.deficit_bank, state.impulse);
+    state.detector.statistic = state.impulse.statistic;
+    state.detector.suspect = state.impulse.suspect;
+    state.detector.alarm = state.impulse.alarm;
+    state.detector.alarm_sample = state.impulse.alarm_sample;
+  } else {
+    fdi::step_deficit_detector(p.detector, w.deficit, state.deficit_bank, state.detector);
+  }
   const fdi::DeficitDecision& d = fdi::step_deficit_decision(w.deficit, state.deficit_bank, state.detector_deficit,
                                                              state.detector.alarm ? state.detector.alarm_sample : -1);
   fdi::FdiSchemeOutput& detector = out.schemes[kDeficitScheme];
@@ -185,6 +194,7 @@ void start_watch(FdirState& state, std::int64_t period, double t_s) {
   state.event = {};
   state.deficit_bank = {};
   state.detector = {};
+  state.impulse = {};
   state.position_deficit = state.attitude_deficit = state.detector_deficit = {};
   state.position_isolated_s = state.attitude_isolated_s = state.detector_isolated_s = -1;
   state.latches = {};
@@ -294,6 +304,15 @@ FdirParams make_fdir_params(const model::Scenario& s) {
       // The gains every second period (half the cost, the alarm at most one period later) when the
       // window is a whole number of such blocks, else every period.
       .evaluate_every = detection_window % 2 == 0 ? 2 : 1,
+  };
+  p.impulse_detection = s.fdi.deficit.detection_statistic == model::DetectionStatistic::kImpulse;
+  const int block = model::impulse_block_periods(s.control_period_s);
+  const double block_s = block * s.control_period_s;
+  p.impulse = fdi::ImpulseDetectorParams{
+      .block = block,
+      .window_blocks = std::max(1, static_cast<int>(std::lround(s.fdi.deficit.impulse_window_s / block_s))),
+      .baseline_blocks = std::max(1, static_cast<int>(std::lround(s.fdi.deficit.impulse_baseline_s / block_s))),
+      .threshold_Nms = s.fdi.deficit.impulse_threshold_Nms,
   };
   return p;
 }

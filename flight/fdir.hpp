@@ -23,6 +23,7 @@
 #include "flight/fdi/design/design_inputs.hpp"
 #include "flight/fdi/event_resolution.hpp"
 #include "flight/fdi/fdi_scheme.hpp"
+#include "flight/fdi/impulse_detector.hpp"
 #include "model/messages.hpp"
 #include "model/scenario.hpp"
 
@@ -50,6 +51,10 @@ struct FdirParams {
   bool deficit_isolation = false;   // the deficit bank names the thruster for both schemes
   bool deficit_detection = false;   // the deficit detector runs as a third scheme
   fdi::DeficitDetectorParams detector;
+  // The detector's statistic: the gain (detector) or, with fdi.deficit.detection_statistic impulse,
+  // the impulse (flight/fdi/impulse_detector.hpp).
+  bool impulse_detection = false;
+  fdi::ImpulseDetectorParams impulse;
   // [0]: the starting active set; then every set a recovery can switch to (with the FDI's size).
   std::vector<FdiWatchedParams> watched;
   double period_s = 0.1;                 // [s] T
@@ -112,7 +117,8 @@ struct FdirState {
   fdi::DeficitBankState deficit_bank;           // samples of the last periods, with deficit isolation
   fdi::DeficitDecisionState position_deficit;   // the bank's decision after each scheme's alarm
   fdi::DeficitDecisionState attitude_deficit;
-  fdi::DeficitDetectorState detector;           // the third scheme
+  fdi::DeficitDetectorState detector;           // the third scheme (its verdict, whichever statistic)
+  fdi::ImpulseDetectorState impulse;            // its impulse statistic, with impulse_detection
   fdi::DeficitDecisionState detector_deficit;
   double detector_isolated_s = -1;
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not

@@ -76,6 +76,13 @@ void read_deficit(MapReader& r, model::DeficitParams& out) {
   r.number("detection_threshold", Range::positive(), out.detection_threshold);
   r.number("detection_min_constant", Range::closed(0.0, 1.0), out.detection_min_constant);
   r.number("detection_min_proportional", Range::closed(0.0, 1.0), out.detection_min_proportional);
+  if (r.has("detection_statistic"))
+    r.choice("detection_statistic",
+             {{"gain", model::DetectionStatistic::kGain}, {"impulse", model::DetectionStatistic::kImpulse}},
+             out.detection_statistic);
+  if (r.has("impulse_window_s")) r.number("impulse_window_s", Range::positive(), out.impulse_window_s);
+  if (r.has("impulse_baseline_s")) r.number("impulse_baseline_s", Range::positive(), out.impulse_baseline_s);
+  if (r.has("impulse_threshold_Nms")) r.number("impulse_threshold_Nms", Range::positive(), out.impulse_threshold_Nms);
 }
 
 // The on-times against the valve's minimum on-time, the control period and each other, and

@@ -76,7 +76,22 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
   if (d.clean(detection) && (w.detection_window_s < 2 * period || w.detection_window_s > longest_s))
     d.add(detection, fmt::format("must be in [2 control periods = {}, {}] (got {})", format_number(2 * period),
                                  format_number(longest_s), format_number(w.detection_window_s)));
+  // The impulse statistic's window and baseline: at least a block each, together within the ring.
+  const char* window = "fdi.deficit.impulse_window_s";
+  const char* baseline = "fdi.deficit.impulse_baseline_s";
+  const double block_s = model::impulse_block_periods(period) * period;
+  for (const char* key : {window, baseline}) {
+    const double value = key == window ? w.impulse_window_s : w.impulse_baseline_s;
+    if (d.clean(key) && value < block_s)
+      d.add(key, fmt::format("must be >= one block of the impulse statistic, {} s (got {})", format_number(block_s),
+                             format_number(value)));
+  }
+  const double ring_s = model::kMaxImpulseBlocks * block_s;
+  if (d.clean(window) && d.clean(baseline) && w.impulse_window_s + w.impulse_baseline_s > ring_s + 0.5 * block_s)
+    d.add(baseline, fmt::format("impulse_window_s + impulse_baseline_s must be <= {} s (got {})", format_number(ring_s),
+                                format_number(w.impulse_window_s + w.impulse_baseline_s)));
 }
+
 
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,
 // and a check's pulse is informative (else the thruster would be checked every period); its bound

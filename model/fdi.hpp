@@ -1,6 +1,8 @@
 #pragma once
 // Parameters of the thruster fault detection, isolation and recovery (Fonod 2015, sections IV-V).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace chaser::model {
@@ -18,6 +20,19 @@ enum class IsolationMethod {
   kSignature,  // correlation with each thruster's residual signature (flight/fdi/isolation.hpp)
   kDeficit,    // 6-DOF impulse-deficit hypothesis bank (flight/fdi/deficit_isolation.hpp)
 };
+
+// What the deficit detector (the third scheme) alarms on.
+enum class DetectionStatistic {
+  kGain,     // the hypotheses' GLR gain on a sliding window of torque rows (flight/fdi/deficit_detector.hpp)
+  kImpulse,  // the change of the mean torque row as an impulse (flight/fdi/impulse_detector.hpp)
+};
+
+// The impulse statistic sums the torque rows in blocks of about a second: this many control periods.
+inline int impulse_block_periods(double control_period_s) {
+  return std::max(1, static_cast<int>(std::lround(1.0 / control_period_s)));
+}
+// Longest impulse window plus baseline the on-board ring holds, in blocks.
+inline constexpr int kMaxImpulseBlocks = 600;
 
 // Samples the deficit isolation's on-board ring holds: its longest window is one less.
 inline constexpr int kMaxDeficitWindowPeriods = 160;
@@ -39,6 +54,12 @@ struct DeficitParams {
   double detection_threshold = 100.0;  // [-] on the gain S_i
   double detection_min_constant = 0.05;      // [-] smallest constant deficit a that counts
   double detection_min_proportional = 0.3;   // [-] smallest command-proportional deficit -b that counts
+  DetectionStatistic detection_statistic = DetectionStatistic::kGain;
+  // The impulse statistic (flight/fdi/impulse_detector.hpp): the change of the mean torque row over
+  // the last impulse_window_s against the impulse_baseline_s before it, as an impulse.
+  double impulse_window_s = 20.0;         // [s] W
+  double impulse_baseline_s = 100.0;      // [s] L
+  double impulse_threshold_Nms = 40.0;    // [N m s] on the largest axis of the change
 };
 
 // Longest detector window the on-board sums hold, in periods.

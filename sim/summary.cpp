@@ -118,7 +118,10 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   const double onset = first_onset_s(scenario);
   nlohmann::json out{
       {"glr_threshold", scenario.fdi.glr_threshold},                   // position and attitude schemes
-      {"deficit_threshold", scenario.fdi.deficit.detection_threshold}, // deficit scheme
+      // deficit scheme: on its gain or, with the impulse statistic, in N m s
+      {"deficit_threshold", scenario.fdi.deficit.detection_statistic == model::DetectionStatistic::kImpulse
+                                ? scenario.fdi.deficit.impulse_threshold_Nms
+                                : scenario.fdi.deficit.detection_threshold},
       {"detection_time_s", f.detection_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.detection_s - onset)},
       {"isolation_time_s", f.isolation_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.isolation_s - onset)},
       {"isolated_thruster", thruster_json(f.isolated_thruster)},
