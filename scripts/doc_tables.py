@@ -1239,6 +1239,38 @@ def comrade_deficit_rows(*outs):
     return rows
 
 
+# COMRADE's synchronisation with the detector on its impulse statistic (docs/fdi.md, "Turning flight"):
+# faults at the campaign's onset, 1,500 s, the rest of the phase flown after it.
+COMRADE_SYNC_FDI = ("campaign", "scenarios/comrade_sync.yaml",
+                    "--runs", "none=200,stuck_open=50,stuck_closed=50,leak=50,loss=50")
+
+
+def comrade_sync_fdi_rows(*outs):
+    """Per campaign (diagnose only, shipped): fault-free false alarms, largest statistic and captures;
+    per fault case the missed, wrong and right names, mean and largest t_d, and the captures
+    (COMRADE Table 1 met at the end)."""
+    cols = [campaign_runs(out) for out in outs[:2]]
+    rows = [[], [], []]
+    for runs in cols:
+        fault_free = fdir_case_runs(runs, "none").runs
+        rows[0].append(f"{sum(int(r['fdir_false_alarm']) for r in fault_free)} of {len(fault_free)}")
+        rows[1].append(f"{fixed(max(number(r['deficit_glr_max_before_onset']) for r in fault_free), 1)} N m s")
+        rows[2].append(f"{sum(int(r['capture']) for r in fault_free)} of {len(fault_free)}")
+    for case in FAULT_CASES:
+        cases = [fdir_case_runs(runs, case) for runs in cols]
+        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
+                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
+                     for c in cases])
+        rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s" if c.td else "-" for c in cases])
+        rows.append([f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}" for c in cases])
+    return rows
+
+
+def comrade_sync_fdi_fill(_diagnose, _shipped, gain):
+    runs = fdir_case_runs(campaign_runs(gain), "none").runs
+    return {"gain": sum(int(r['fdir_false_alarm']) for r in runs), "runs": len(runs)}
+
+
 # The bound, the pulse and what is informative, traded on a smaller campaign with checks all along:
 # (label, pulse cell, overrides); the first row without checks, the shipped bound and pulse marked.
 CHECK_TRADE_ROWS = (
@@ -1677,6 +1709,11 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("comrade-deficit-passive", COMRADE_DEFICIT + ("--set", "fdi.active_check.enabled=false", "--out", "OUT"),
             quick=False),
     Command("comrade-deficit", COMRADE_DEFICIT + ("--out", "OUT"), quick=False),
+    Command("comrade-sync-diagnose", COMRADE_SYNC_FDI + ("--set", "fdi.recovery=none", "--out", "OUT"), quick=False),
+    Command("comrade-sync-fdi", COMRADE_SYNC_FDI + ("--out", "OUT"), quick=False),
+    Command("comrade-sync-gain", ("campaign", "scenarios/comrade_sync.yaml", "--runs", "none=200", "--cases", "none",
+                                  "--set", "fdi.deficit.detection_statistic=gain", "--set", "fdi.recovery=none",
+                                  "--out", "OUT"), quick=False),
     Command("T2-onset-500", T2_PRESET + ONSET_500 + ("--out", "OUT"), quick=False),
     Command("T2-onset-500-all-along", T2_PRESET + ONSET_500 + ("--set", "fdi.active_check.arm_range_m=1e9", "--out", "OUT"),
             quick=False),
@@ -1863,6 +1900,16 @@ TABLES = [
           + sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / max t_d; every one found by")
                  for case in FAULT_CASES), ()),
           comrade_deficit_rows, words=("of", "g", "s", "%")),
+    Table("fdi-comrade-sync", "docs/fdi.md", ("comrade-sync-diagnose", "comrade-sync-fdi", "comrade-sync-gain"),
+          ("FDIR (the deficit scheme, impulse statistic)", "diagnose only (`fdi.recovery: none`)",
+           "**flies on without it (`exclude`, shipped)**"),
+          ("fault-free: false alarms", "fault-free: largest statistic", "fault-free: Table 1 met at the end")
+          + sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / max t_d",
+                  f"{case.replace('_', ' ')}: Table 1 met at the end") for case in FAULT_CASES), ()),
+          comrade_sync_fdi_rows, words=("of", "N", "m", "s"),
+          caption="The gain statistic (`--set fdi.deficit.detection_statistic=gain`) false-alarms in {gain} of "
+                  "{runs} fault-free runs.",
+          fill=comrade_sync_fdi_fill),
     Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
           ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
            "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,
