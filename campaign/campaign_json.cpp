@@ -27,6 +27,7 @@ nlohmann::ordered_json campaign_json(const CampaignPlan& plan, const Shard& shar
   j["shard_runs"] = {range.begin, range.end};
   j["onset_s"] = c.onset_s;
   j["horizon_after_onset_s"] = c.horizon_after_onset_s;
+  if (c.onset_max_s) j["onset_max_s"] = *c.onset_max_s;  // onsets drawn in [onset_s, onset_max_s]
   j["run_duration_s"] = run_duration_s(plan.nominal);
   j["threshold_margin"] = c.threshold_margin;
   j["glr_threshold"] = plan.nominal.fdi.glr_threshold;

@@ -26,13 +26,15 @@ std::optional<model::FaultParams> sample_fault(FaultCase fault_case, const model
   RandomStream rng(run_seed, "campaign/fault");
   model::FaultParams f;
   f.kind = kind_of(fault_case);
-  const model::ThrusterList list = model::thruster_list(candidates);
+  const model::ThrusterMask among = params.fault_thrusters != 0 ? params.fault_thrusters : candidates;
+  const model::ThrusterList list = model::thruster_list(among);
   const int drawn = static_cast<int>(rng.uniform() * list.count);
   f.thruster = list.index[static_cast<std::size_t>(std::clamp(drawn, 0, std::max(list.count - 1, 0)))];
   f.onset_s = params.onset_s;
   f.leak_slope_per_s = params.leak_slope_per_s;
   if (fault_case == FaultCase::kLeak) f.leak_size = rng.uniform(params.leak_size_min, params.leak_size_max);
   if (fault_case == FaultCase::kLoss) f.loss_size = rng.uniform(params.loss_size_min, params.loss_size_max);
+  if (params.onset_max_s) f.onset_s = rng.uniform(params.onset_s, *params.onset_max_s);
   return f;
 }
 

@@ -18,12 +18,41 @@ void check_ordered(MapReader& r, std::string_view min_key, double min, std::stri
   d.add(max_path, fmt::format("must be >= {} = {} (got {})", min_path, format_number(min), format_number(max)));
 }
 
+// fault_thrusters: names T1..TN; that they fly at the start is checked in validate_campaign.
+void read_fault_thrusters(MapReader& r, model::CampaignParams& out) {
+  if (!r.has("fault_thrusters")) return;
+  const auto node = r.child("fault_thrusters", "a list of thruster names");
+  const std::string path = r.path_of("fault_thrusters");
+  if (!node) return;
+  if (!node->IsSequence() || node->size() == 0 || node->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    r.diagnostics().add(path, fmt::format("must be a list of 1 to {} thruster names, e.g. [T1, T5] (got {})",
+                                          model::kMaxThrusters, describe_node(*node)));
+    return;
+  }
+  for (std::size_t i = 0; i < node->size(); ++i) {
+    const YAML::Node& item = (*node)[i];
+    int index = -1;
+    for (int k = 0; k < model::kMaxThrusters && item.IsScalar(); ++k)
+      if (item.Scalar() == model::thruster_name(k)) index = k;
+    if (index < 0) {
+      r.diagnostics().add(join_path(path, std::to_string(i)),
+                          fmt::format("must be a thruster name T1..T{} (got {})", model::kMaxThrusters, describe_node(item)));
+      continue;
+    }
+    out.fault_thrusters |= model::ThrusterMask{1} << index;
+  }
+}
+
 }  // namespace
 
 void read_campaign(MapReader& r, model::CampaignParams& out) {
   r.count("seed", out.seed);
   r.number("onset_s", Range::right_open(0.0, kMaxCampaignRunS), out.onset_s);
   r.number("horizon_after_onset_s", Range::left_open(0.0, kMaxCampaignRunS), out.horizon_after_onset_s);
+  double onset_max_s = 0.0;  // checked against onset_s and the run's end in validate_campaign
+  if (r.has("onset_max_s") && r.number("onset_max_s", Range::right_open(0.0, kMaxCampaignRunS), onset_max_s))
+    out.onset_max_s = onset_max_s;
+  read_fault_thrusters(r, out);
   // Below 1 a truncated draw keeps mass and moments positive: (1 - 3 sigma) > 0.
   r.number("mass_3sigma_rel", Range::right_open(0.0, 1.0), out.mass_3sigma_rel);
   r.number("inertia_3sigma_rel", Range::right_open(0.0, 1.0), out.inertia_3sigma_rel);
@@ -61,8 +90,24 @@ void validate_campaign(const model::Scenario& s, Diagnostics& d) {
     d.add(s.campaign.target_spin_rate_3sigma_rel > 0.0 ? "campaign.target_spin_rate_3sigma_rel"
                                                        : "campaign.target_spin_axis_3sigma_deg",
           "needs target.body (a tumbling target); remove it or set it to 0");
+  // A fault is drawn among thrusters that fly when it strikes.
+  const model::ThrusterMask active = model::initial_active_set(s.thrusters);
+  if (d.clean("campaign.fault_thrusters") && d.clean("thrusters.list") && (s.campaign.fault_thrusters & ~active) != 0) {
+    for (int i = 0; i < model::kMaxThrusters; ++i)
+      if ((s.campaign.fault_thrusters >> i) & 1U && !((active >> i) & 1U)) {
+        d.add("campaign.fault_thrusters", fmt::format("{} is not in the starting active set (thrusters.list, "
+                                                      "standby_groups)", model::thruster_name(i)));
+        break;
+      }
+  }
   const char* path = "campaign.horizon_after_onset_s";
   if (!d.clean("control_period_s") || !d.clean("campaign.onset_s") || !d.clean(path)) return;
+  const double end_s = s.campaign.onset_s + s.campaign.horizon_after_onset_s;
+  if (s.campaign.onset_max_s && d.clean("campaign.onset_max_s") &&
+      (*s.campaign.onset_max_s < s.campaign.onset_s || *s.campaign.onset_max_s >= end_s))
+    d.add("campaign.onset_max_s", fmt::format("must be in [campaign.onset_s = {}, onset_s + horizon_after_onset_s = {}) "
+                                              "(got {})", format_number(s.campaign.onset_s), format_number(end_s),
+                                              format_number(*s.campaign.onset_max_s)));
   const double run_s = s.campaign.onset_s + s.campaign.horizon_after_onset_s;
   const double periods = run_s / s.control_period_s;
   if (run_s > kMaxCampaignRunS)

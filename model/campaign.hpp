@@ -3,6 +3,9 @@
 // chaser drawn per run, the fault population of each case, when faults start and how long a run
 // flies after the onset. Read from the scenario's campaign section; used only by campaign/.
 #include <cstdint>
+#include <optional>
+
+#include "model/thrusters.hpp"
 
 namespace chaser::model {
 
@@ -10,6 +13,12 @@ struct CampaignParams {
   std::uint64_t seed = 1;               // campaign seed: run seed = run_seed(seed, run index)
   double onset_s = 1000.0;              // [s] fault onset t_f of every faulty run
   double horizon_after_onset_s = 200.0; // [s] a run ends at onset_s + horizon_after_onset_s
+  // Optional: each faulty run's onset uniform in [onset_s, onset_max_s] instead (drawn after the
+  // thruster and the size, so a campaign without it keeps its draws); runs still end at
+  // onset_s + horizon_after_onset_s.
+  std::optional<double> onset_max_s;    // [s]
+  // Optional: the thrusters a fault is drawn among (0: the starting active set, as by default).
+  ThrusterMask fault_thrusters = 0;
   // Dispersions, 3-sigma, normal truncated at 3 sigma (Fonod 2015, Table 1). Thruster forces are
   // dispersed by the plant itself (thrusters.thrust_sigma), not here.
   double mass_3sigma_rel = 0.10;        // [-] relative to the nominal mass

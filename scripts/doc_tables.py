@@ -1243,6 +1243,10 @@ def comrade_deficit_rows(*outs):
 # faults at the campaign's onset, 1,500 s, the rest of the phase flown after it.
 COMRADE_SYNC_FDI = ("campaign", "scenarios/comrade_sync.yaml",
                     "--runs", "none=200,stuck_open=50,stuck_closed=50,leak=50,loss=50")
+# The same with the onsets spread over 300-2,900 s of the flight.
+COMRADE_SYNC_SPREAD = ("campaign", "scenarios/comrade_sync.yaml", "--runs", "50",
+                       "--cases", "stuck_open,stuck_closed,leak,loss", "--set", "campaign.onset_s=300",
+                       "--set", "campaign.onset_max_s=2900", "--set", "campaign.horizon_after_onset_s=2700")
 
 
 def comrade_sync_fdi_rows(*outs):
@@ -1262,6 +1266,22 @@ def comrade_sync_fdi_rows(*outs):
                      f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
                      for c in cases])
         rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s" if c.td else "-" for c in cases])
+        rows.append([f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}" for c in cases])
+    return rows
+
+
+def comrade_sync_spread_rows(*outs):
+    """Per campaign (the paper's four thrusters, all 24), faults at onsets spread over the flight:
+    per case the missed, wrong and right names, mean and 95th-percentile t_d, and the captures."""
+    cols = [campaign_runs(out) for out in outs]
+    rows = []
+    for case in FAULT_CASES:
+        cases = [fdir_case_runs(runs, case) for runs in cols]
+        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
+                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
+                     for c in cases])
+        rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(sorted(c.td)[math.ceil(0.95 * len(c.td)) - 1], 1)} s"
+                     if c.td else "-" for c in cases])
         rows.append([f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}" for c in cases])
     return rows
 
@@ -1711,6 +1731,9 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("comrade-deficit", COMRADE_DEFICIT + ("--out", "OUT"), quick=False),
     Command("comrade-sync-diagnose", COMRADE_SYNC_FDI + ("--set", "fdi.recovery=none", "--out", "OUT"), quick=False),
     Command("comrade-sync-fdi", COMRADE_SYNC_FDI + ("--out", "OUT"), quick=False),
+    Command("comrade-sync-paper-four", COMRADE_SYNC_SPREAD + ("--set", "campaign.fault_thrusters=[T1, T5, T13, T17]",
+                                                              "--out", "OUT"), quick=False),
+    Command("comrade-sync-spread", COMRADE_SYNC_SPREAD + ("--out", "OUT"), quick=False),
     Command("comrade-sync-gain", ("campaign", "scenarios/comrade_sync.yaml", "--runs", "none=200", "--cases", "none",
                                   "--set", "fdi.deficit.detection_statistic=gain", "--set", "fdi.recovery=none",
                                   "--out", "OUT"), quick=False),
@@ -1910,6 +1933,11 @@ TABLES = [
           caption="The gain statistic (`--set fdi.deficit.detection_statistic=gain`) false-alarms in {gain} of "
                   "{runs} fault-free runs.",
           fill=comrade_sync_fdi_fill),
+    Table("fdi-comrade-sync-spread", "docs/fdi.md", ("comrade-sync-paper-four", "comrade-sync-spread"),
+          ("FDIR, shipped, onsets in 300-2,900 s", "T1, T5, T13, T17 (COMRADE's four)", "all 24"),
+          sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / 95th pct. t_d",
+                f"{case.replace('_', ' ')}: Table 1 met at the end") for case in FAULT_CASES), ()),
+          comrade_sync_spread_rows, words=("of", "s")),
     Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
           ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
            "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,

@@ -56,5 +56,24 @@ TEST(CampaignReader, RunLengthIsWholePeriodsAndBounded) {
   EXPECT_TRUE(load_msr({"campaign.onset_s=100", "campaign.horizon_after_onset_s=20"}).errors.empty());
 }
 
+// The optional fault population keys: onsets spread within the run, faults drawn among named
+// thrusters of the starting active set (MSR's branch A: T1..T8; T9..T16 are its standby branch).
+TEST(CampaignReader, OnsetSpreadAndFaultThrusters) {
+  const LoadResult r = load_msr({"campaign.onset_max_s=1150", "campaign.fault_thrusters=[T1, T5]"});
+  ASSERT_TRUE(r.errors.empty()) << format_errors(r.errors);
+  EXPECT_EQ(r.scenario->campaign.onset_max_s, 1150.0);
+  EXPECT_EQ(r.scenario->campaign.fault_thrusters, model::ThrusterMask{0b10001});
+  EXPECT_FALSE(load_msr().scenario->campaign.onset_max_s);
+  EXPECT_EQ(load_msr().scenario->campaign.fault_thrusters, 0u);
+  EXPECT_TRUE(has_error(load_msr({"campaign.onset_max_s=900"}), "campaign.onset_max_s",
+                        "must be in [campaign.onset_s = 1000, onset_s + horizon_after_onset_s = 1200) (got 900)"));
+  EXPECT_TRUE(has_error(load_msr({"campaign.onset_max_s=1200"}), "campaign.onset_max_s", "(got 1200)"));
+  EXPECT_TRUE(has_error(load_msr({"campaign.fault_thrusters=[T1, X2]"}), "campaign.fault_thrusters.1",
+                        "must be a thruster name T1..T32"));
+  EXPECT_TRUE(has_error(load_msr({"campaign.fault_thrusters=[]"}), "campaign.fault_thrusters", "a list of 1 to 32"));
+  EXPECT_TRUE(has_error(load_msr({"campaign.fault_thrusters=[T9]"}), "campaign.fault_thrusters",
+                        "T9 is not in the starting active set"));
+}
+
 }  // namespace
 }  // namespace chaser::io
