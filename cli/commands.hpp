@@ -23,7 +23,7 @@ struct RunArgs {
 
 struct FdiDesignArgs {
   std::string scenario_path;
-  std::string model = "position";  // "position" or "attitude"
+  std::string model = "position";  // "position", "attitude" or "rate"
   std::string out_path;            // empty: print only
   std::vector<std::string> overrides;
 };

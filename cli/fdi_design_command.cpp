@@ -1,5 +1,7 @@
 // chaser fdi design: the offline design of the delay-robust residual generator (Fonod 2015, IV.A)
-// for the position or the attitude model of a scenario, with the figures a user judges it by.
+// for the position or the attitude model of a scenario, with the figures a user judges it by; or,
+// with --model rate, the body-rate model with the tanks' slosh a diagnosis designs from (COMRADE
+// 2018, sec. 6.3; flight/fdi/design/rate_model.hpp).
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
@@ -45,12 +47,45 @@ void print_design(const flight::fdi::ResidualDesign& d) {
   std::cout << "\n";
 }
 
+void print_rate_model(const flight::fdi::RateModel& m) {
+  std::cout << fmt::format("rate model: thruster on-times ({}) to the gyro's rates, Euler's equation with {} tanks' "
+                           "first slosh modes, linearised at rest\n",
+                           m.thrusters, m.modes.size() / 2);
+  std::cout << fmt::format("  order {} (3 rates, {} slosh states); reduced to {}: the modes the thrusters can "
+                           "drive and the gyro can see\n",
+                           m.A.rows(), m.A.rows() - 3, m.A_reduced.rows());
+  for (std::size_t i = 0; i < m.modes.size(); ++i) {
+    const flight::fdi::SloshModeFigures& f = m.modes[i];
+    std::cout << fmt::format("  slosh mode {}: {:.4f} rad/s (period {:.1f} s), damping {:.4f}; controllability "
+                             "{:.2e}, observability {:.2e}: {}\n",
+                             i + 1, f.frequency_radps, 2.0 * 3.141592653589793 / f.frequency_radps, f.damping_ratio,
+                             f.controllability, f.observability, f.kept ? "kept" : "dropped");
+  }
+}
+
+int rate_model_command(const model::Scenario& scenario, const FdiDesignArgs& args) {
+  flight::fdi::RateModel m;
+  try {
+    m = flight::fdi::rate_model(scenario);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "chaser fdi design: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  print_rate_model(m);
+  if (!args.out_path.empty()) {
+    if (!write_output_file(args.out_path, flight::fdi::to_json(m).dump(2) + "\n")) return kExitFailure;
+    std::cout << fmt::format("  wrote {}\n", args.out_path);
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int fdi_design_command(const FdiDesignArgs& args) {
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& scenario = *loaded->scenario;
+  if (args.model == "rate") return rate_model_command(scenario, args);
   // Fonod 2015's residual generators have a fault column per thruster of MSR's branch of eight; on
   // another set a design of "the first eight" would describe no scheme that flies.
   const int active = model::thruster_count(model::initial_active_set(scenario.thrusters));

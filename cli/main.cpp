@@ -95,8 +95,9 @@ int main(int argc, char** argv) {
   CLI::App* design_cmd =
       fdi_cmd->add_subcommand("design", "Design the delay-robust residual generator (Fonod 2015, IV.A)");
   design_cmd->add_option("scenario", fdi_design.scenario_path, "Scenario file (YAML)")->required();
-  design_cmd->add_option("--model", fdi_design.model, "Model the residual is built on")
-      ->check(CLI::IsMember({"position", "attitude"}))
+  design_cmd->add_option("--model", fdi_design.model,
+                         "Model the residual is built on (position, attitude), or rate: the body-rate model with slosh")
+      ->check(CLI::IsMember({"position", "attitude", "rate"}))
       ->capture_default_str();
   design_cmd->add_option("--out", fdi_design.out_path, "Write the design and its figures as JSON");
   design_cmd->add_option("--set", fdi_design.overrides, "Override a scenario key: key.path=value (repeatable)");

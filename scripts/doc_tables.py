@@ -1270,6 +1270,14 @@ def comrade_sync_fdi_rows(*outs):
     return rows
 
 
+def rate_model_rows(path):
+    """Per slosh mode of the rate model (chaser fdi design --model rate): frequency, period, damping,
+    the PBH measures and whether the reduced model keeps it."""
+    return [[sig(m["frequency_radps"], 4), fixed(2.0 * math.pi / m["frequency_radps"], 1), sig(m["damping_ratio"], 3),
+             sci(m["controllability"], 2), sci(m["observability"], 2), "yes" if m["kept"] else "no"]
+            for m in load_json(path)["slosh_modes"]]
+
+
 def comrade_sync_spread_rows(*outs):
     """Per campaign (the paper's four thrusters, all 24), faults at onsets spread over the flight:
     per case the missed, wrong and right names, mean and 95th-percentile t_d, and the captures."""
@@ -1770,6 +1778,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
                                   "OUT"), quick=True),
     Command("fdi-attitude.json", ("fdi", "design", "scenarios/msr_terminal.yaml", "--model", "attitude", "--out",
                                   "OUT"), quick=True),
+    Command("comrade-rate.json", ("fdi", "design", "scenarios/comrade_sync.yaml", "--model", "rate", "--out", "OUT"),
+            quick=True),
     Command("msr-control.json", ("control", "design", "scenarios/msr_terminal.yaml", "--out", "OUT"), quick=True),
     Command("envisat-control.json", ("control", "design", "scenarios/comrade_envisat.yaml", "--out", "OUT"),
             quick=True),
@@ -2011,6 +2021,9 @@ TABLES = [
            "sigma_max(R E_d), max over f", "delay gain per N (position) or N m (attitude) commanded, max over f")
           + tuple(f"DC fault gain, T{i} [per unit on-time]" for i in range(1, 9)),
           fdi_design_rows),
+    Table("fdi-rate-model", "docs/fdi_design.md", ("comrade-rate.json",),
+          ("slosh mode", "frequency [rad/s]", "period [s]", "damping", "controllability", "observability", "kept"),
+          ("1", "2", "3", "4"), rate_model_rows, words=("yes", "no", "s")),
     Table("gnc-lqr-loops", "docs/gnc.md", ("msr-control.json",),
           ("loop", "weights", "w_n [rad/s]", "zeta", "time constant 1/(zeta w_n)", "gains"), LQR_LOOPS, lqr_rows,
           words=LQR_WORDS, caption="MSR's nominal mass {mass} kg and inertia diag({ixx}, {iyy}, {izz}) kg m^2, period {period} s.",

@@ -89,12 +89,18 @@ py::object thrusters(const py::object& scenario_arg) {
 
 // `chaser fdi design SCENARIO --model M --out F`'s document.
 py::object fdi_design(const py::object& scenario_arg, const std::string& model) {
-  if (model != "position" && model != "attitude")
-    throw py::value_error("model: position or attitude (got '" + model + "')");
+  if (model != "position" && model != "attitude" && model != "rate")
+    throw py::value_error("model: position, attitude or rate (got '" + model + "')");
   const Scenario scenario = scenario_argument(scenario_arg);
   nlohmann::json design;
   std::string problem;
-  {
+  if (model == "rate") {  // the body-rate model with slosh (flight/fdi/design/rate_model.hpp)
+    try {
+      design = flight::fdi::to_json(flight::fdi::rate_model(scenario.scenario));
+    } catch (const std::invalid_argument& e) {
+      problem = e.what();
+    }
+  } else {
     py::gil_scoped_release released;
     const flight::fdi::DesignInputs inputs = flight::scheme_design_inputs(
         scenario.scenario, model == "position" ? flight::FdiModel::kPosition : flight::FdiModel::kAttitude);

@@ -51,8 +51,19 @@ def test_fdi_design_is_the_command_lines_json(cli, tmp_path):
     assert chaser.fdi_design(str(MSR))["inputs"]["name"] == "position"
 
 
+def test_rate_model_is_the_command_lines_json(cli, tmp_path):
+    sync = MSR.parent / "comrade_sync.yaml"
+    shown = run_cli(cli, "fdi", "design", sync, "--model", "rate", "--out", tmp_path / "r.json")
+    assert shown.returncode == 0, shown.stderr
+    got = chaser.fdi_design(str(sync), model="rate")
+    assert_same_document(got, json.loads((tmp_path / "r.json").read_text()))
+    assert got["reduced"]["order"] == 9 and got["full"]["A"].shape == (11, 11)
+    with pytest.raises(ValueError, match="chaser.slosh"):
+        chaser.fdi_design(str(MSR), model="rate")
+
+
 def test_bad_analysis_arguments_raise():
-    with pytest.raises(ValueError, match="model: position or attitude"):
+    with pytest.raises(ValueError, match="model: position, attitude or rate"):
         chaser.fdi_design(str(MSR), model="orbit")
     with pytest.raises(TypeError, match="scenario"):
         chaser.thrusters(None)

@@ -90,4 +90,24 @@ json to_json(const ResidualDesign& d) {
           {"figures", figures_json(d.figures, d.assignment)}};
 }
 
+json to_json(const RateModel& m) {
+  json modes = json::array();
+  for (const SloshModeFigures& f : m.modes)
+    modes.push_back({{"frequency_radps", f.frequency_radps},
+                     {"damping_ratio", f.damping_ratio},
+                     {"controllability", f.controllability},
+                     {"observability", f.observability},
+                     {"kept", f.kept}});
+  return {{"states", m.state_names},
+          {"thrusters", m.thrusters},
+          {"full", {{"A", matrix_json(m.A)}, {"B", matrix_json(m.B)}, {"E", matrix_json(m.E)}, {"C", matrix_json(m.C)}}},
+          {"reduced",
+           {{"order", m.A_reduced.rows()},
+            {"A", matrix_json(m.A_reduced)},
+            {"B", matrix_json(m.B_reduced)},
+            {"E", matrix_json(m.E_reduced)},
+            {"C", matrix_json(m.C_reduced)}}},
+          {"slosh_modes", modes}};
+}
+
 }  // namespace chaser::flight::fdi

@@ -4,10 +4,15 @@
 // Matrices are arrays of rows; complex numbers are [re, im].
 #include <nlohmann/json.hpp>
 
+#include "flight/fdi/design/rate_model.hpp"
 #include "flight/fdi/design/residual_design.hpp"
 
 namespace chaser::flight::fdi {
 
 nlohmann::json to_json(const ResidualDesign& design);
+
+// The body-rate model (`chaser fdi design --model rate --out FILE.json`): full and reduced
+// matrices, the state names and each slosh mode's figures.
+nlohmann::json to_json(const RateModel& model);
 
 }  // namespace chaser::flight::fdi
