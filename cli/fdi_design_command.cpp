@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
+#include "core/constants.hpp"
 #include "cli/scenario_input.hpp"
 #include "flight/fdir.hpp"
 #include "flight/fdi/design/residual_design.hpp"
@@ -58,22 +59,25 @@ void print_rate_model(const flight::fdi::RateModel& m) {
     const flight::fdi::SloshModeFigures& f = m.modes[i];
     std::cout << fmt::format("  slosh mode {}: {:.4f} rad/s (period {:.1f} s), damping {:.4f}; controllability "
                              "{:.2e}, observability {:.2e}: {}\n",
-                             i + 1, f.frequency_radps, 2.0 * 3.141592653589793 / f.frequency_radps, f.damping_ratio,
+                             i + 1, f.frequency_radps, 2.0 * kPi / f.frequency_radps, f.damping_ratio,
                              f.controllability, f.observability, f.kept ? "kept" : "dropped");
   }
 }
 
-int rate_model_command(const model::Scenario& scenario, const FdiDesignArgs& args) {
-  flight::fdi::RateModel m;
+// Makes the design (its std::invalid_argument is the command's exit 2), prints it and, with --out,
+// writes its JSON.
+template <class Make, class Print>
+int design_and_report(const FdiDesignArgs& args, const Make& make, const Print& print) {
+  decltype(make()) design;
   try {
-    m = flight::fdi::rate_model(scenario);
+    design = make();
   } catch (const std::invalid_argument& e) {
     std::cerr << "chaser fdi design: " << e.what() << "\n";
     return kExitBadInput;
   }
-  print_rate_model(m);
+  print(design);
   if (!args.out_path.empty()) {
-    if (!write_output_file(args.out_path, flight::fdi::to_json(m).dump(2) + "\n")) return kExitFailure;
+    if (!write_output_file(args.out_path, flight::fdi::to_json(design).dump(2) + "\n")) return kExitFailure;
     std::cout << fmt::format("  wrote {}\n", args.out_path);
   }
   return kExitOk;
@@ -85,7 +89,8 @@ int fdi_design_command(const FdiDesignArgs& args) {
   const auto loaded = load_or_report(args.scenario_path, args.overrides);
   if (!loaded) return kExitBadInput;
   const model::Scenario& scenario = *loaded->scenario;
-  if (args.model == "rate") return rate_model_command(scenario, args);
+  if (args.model == "rate")
+    return design_and_report(args, [&] { return flight::fdi::rate_model(scenario); }, print_rate_model);
   // Fonod 2015's residual generators have a fault column per thruster of MSR's branch of eight; on
   // another set a design of "the first eight" would describe no scheme that flies.
   const int active = model::thruster_count(model::initial_active_set(scenario.thrusters));
@@ -99,19 +104,7 @@ int fdi_design_command(const FdiDesignArgs& args) {
   }
   const flight::fdi::DesignInputs inputs = flight::scheme_design_inputs(
       scenario, args.model == "position" ? flight::FdiModel::kPosition : flight::FdiModel::kAttitude);
-  flight::fdi::ResidualDesign design;
-  try {
-    design = flight::fdi::design_residual_generator(inputs);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "chaser fdi design: " << e.what() << "\n";
-    return kExitBadInput;
-  }
-  print_design(design);
-  if (!args.out_path.empty()) {
-    if (!write_output_file(args.out_path, flight::fdi::to_json(design).dump(2) + "\n")) return kExitFailure;
-    std::cout << fmt::format("  wrote {}\n", args.out_path);
-  }
-  return kExitOk;
+  return design_and_report(args, [&] { return flight::fdi::design_residual_generator(inputs); }, print_design);
 }
 
 }  // namespace chaser::cli

@@ -1216,6 +1216,17 @@ COMRADE_DEFICIT = ("campaign", "scenarios/comrade_envisat.yaml",
 COMRADE_DEFICIT_ONSET_S = 600.0
 
 
+def names_cell(c):
+    """A case's runs: how many the FDIR missed, named wrong and named right, of how many."""
+    right = sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)
+    return f"{c.count('missed')}, {c.count('wrong_isolation')}, {right} of {len(c.runs)}"
+
+
+def captures_cell(c):
+    """A case's runs that met COMRADE Table 1 at the end, of how many."""
+    return f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}"
+
+
 def comrade_deficit_rows(*outs):
     """Per campaign (passive, shipped): fault-free false alarms and propellant; per fault case the
     missed, wrong and right names, mean and largest t_d, and the time by which every fault was found."""
@@ -1231,9 +1242,7 @@ def comrade_deficit_rows(*outs):
         rows[1].append(f"{fixed(grams, 1)} g{more}")
     for case in FAULT_CASES:
         cases = [fdir_case_runs(runs, case) for runs in cols]
-        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
-                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
-                     for c in cases])
+        rows.append([names_cell(c) for c in cases])
         rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s; "
                      f"{fixed(COMRADE_DEFICIT_ONSET_S + max(c.td), 0)} s" for c in cases])
     return rows
@@ -1262,11 +1271,9 @@ def comrade_sync_fdi_rows(*outs):
         rows[2].append(f"{sum(int(r['capture']) for r in fault_free)} of {len(fault_free)}")
     for case in FAULT_CASES:
         cases = [fdir_case_runs(runs, case) for runs in cols]
-        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
-                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
-                     for c in cases])
+        rows.append([names_cell(c) for c in cases])
         rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s" if c.td else "-" for c in cases])
-        rows.append([f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}" for c in cases])
+        rows.append([captures_cell(c) for c in cases])
     return rows
 
 
@@ -1285,12 +1292,10 @@ def comrade_sync_spread_rows(*outs):
     rows = []
     for case in FAULT_CASES:
         cases = [fdir_case_runs(runs, case) for runs in cols]
-        rows.append([f"{c.count('missed')}, {c.count('wrong_isolation')}, "
-                     f"{sum(int(r['fdir_isolated']) == int(r['fault_thruster']) for r in c.runs)} of {len(c.runs)}"
-                     for c in cases])
+        rows.append([names_cell(c) for c in cases])
         rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(sorted(c.td)[math.ceil(0.95 * len(c.td)) - 1], 1)} s"
                      if c.td else "-" for c in cases])
-        rows.append([f"{sum(int(r['capture']) for r in c.runs)} of {len(c.runs)}" for c in cases])
+        rows.append([captures_cell(c) for c in cases])
     return rows
 
 
