@@ -157,7 +157,9 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
 void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& state, const FdirInput& in,
                    FdirOutput& out) {
   if (p.impulse_detection) {
-    // The impulse statistic's verdict, where the rest of the FDIR reads the detector's.
+    // The impulse statistic's verdict, where the rest of the FDIR reads the detector's. Its
+    // material_statistic stays 0: the active checks' recheck of a suspect (deficit_suspect) reads
+    // the gain statistic's material fits, which this statistic has not.
     fdi::step_impulse_detector(p.impulse, w.deficit, state.deficit_bank, state.impulse);
     state.detector.statistic = state.impulse.statistic;
     state.detector.suspect = state.impulse.suspect;

@@ -92,7 +92,6 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
                                 format_number(w.impulse_window_s + w.impulse_baseline_s)));
 }
 
-
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,
 // and a check's pulse is informative (else the thruster would be checked every period); its bound
 // is at least one period, the cadence at which the flight software can check.

@@ -59,7 +59,7 @@ struct DeficitParams {
   // the last impulse_window_s against the impulse_baseline_s before it, as an impulse.
   double impulse_window_s = 20.0;         // [s] W
   double impulse_baseline_s = 100.0;      // [s] L
-  double impulse_threshold_Nms = 40.0;    // [N m s] on the largest axis of the change
+  double impulse_threshold_Nms = 40.0;    // [N m s] on the change's largest excess over the model-error bound
 };
 
 // Longest detector window the on-board sums hold, in periods.
