@@ -308,12 +308,10 @@ FdirParams make_fdir_params(const model::Scenario& s) {
       .evaluate_every = detection_window % 2 == 0 ? 2 : 1,
   };
   p.impulse_detection = s.fdi.deficit.detection_statistic == model::DetectionStatistic::kImpulse;
-  const int block = model::impulse_block_periods(s.control_period_s);
-  const double block_s = block * s.control_period_s;
   p.impulse = fdi::ImpulseDetectorParams{
-      .block = block,
-      .window_blocks = std::max(1, static_cast<int>(std::lround(s.fdi.deficit.impulse_window_s / block_s))),
-      .baseline_blocks = std::max(1, static_cast<int>(std::lround(s.fdi.deficit.impulse_baseline_s / block_s))),
+      .block = model::impulse_block_periods(s.control_period_s),
+      .window_blocks = model::impulse_blocks(s.fdi.deficit.impulse_window_s, s.control_period_s),
+      .baseline_blocks = model::impulse_blocks(s.fdi.deficit.impulse_baseline_s, s.control_period_s),
       .threshold_Nms = s.fdi.deficit.impulse_threshold_Nms,
   };
   return p;

@@ -31,15 +31,13 @@ void read_fault_thrusters(MapReader& r, model::CampaignParams& out) {
   }
   for (std::size_t i = 0; i < node->size(); ++i) {
     const YAML::Node& item = (*node)[i];
-    int index = -1;
-    for (int k = 0; k < model::kMaxThrusters && item.IsScalar(); ++k)
-      if (item.Scalar() == model::thruster_name(k)) index = k;
-    if (index < 0) {
+    const std::optional<int> index = item.IsScalar() ? model::thruster_index(item.Scalar()) : std::nullopt;
+    if (!index) {
       r.diagnostics().add(join_path(path, std::to_string(i)),
                           fmt::format("must be a thruster name T1..T{} (got {})", model::kMaxThrusters, describe_node(item)));
       continue;
     }
-    out.fault_thrusters |= model::ThrusterMask{1} << index;
+    out.fault_thrusters |= model::ThrusterMask{1} << *index;
   }
 }
 

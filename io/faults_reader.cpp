@@ -14,13 +14,6 @@ using model::FaultKind;
 constexpr std::array<FaultKind, 4> kKinds = {FaultKind::kStuckOpen, FaultKind::kStuckClosed,
                                              FaultKind::kLeak, FaultKind::kLoss};
 
-// T1..T32: whether the scenario has that many thrusters is checked in validate_scenario.
-std::optional<int> thruster_index(const std::string& name) {
-  for (int i = 0; i < model::kMaxThrusters; ++i)
-    if (name == model::thruster_name(i)) return i;
-  return std::nullopt;
-}
-
 std::optional<FaultKind> fault_kind(const std::string& text) {
   for (FaultKind k : kKinds)
     if (text == model::to_string(k)) return k;
@@ -41,7 +34,7 @@ std::optional<int> read_fault(const YAML::Node& node, const std::string& path, m
   MapReader m(node, path, diag);
   std::string name, kind_text;
   std::optional<int> index;
-  if (m.text("thruster", name) && !(index = thruster_index(name)))
+  if (m.text("thruster", name) && !(index = model::thruster_index(name)))
     diag.add(m.path_of("thruster"), fmt::format("must be a thruster name T1..TN, N the number of thrusters.list entries (got '{}')", name));
   std::optional<FaultKind> kind;
   if (m.text("kind", kind_text) && !(kind = fault_kind(kind_text)))

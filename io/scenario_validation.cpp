@@ -86,10 +86,13 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
       d.add(key, fmt::format("must be >= one block of the impulse statistic, {} s (got {})", format_number(block_s),
                              format_number(value)));
   }
-  const double ring_s = model::kMaxImpulseBlocks * block_s;
-  if (d.clean(window) && d.clean(baseline) && w.impulse_window_s + w.impulse_baseline_s > ring_s + 0.5 * block_s)
-    d.add(baseline, fmt::format("impulse_window_s + impulse_baseline_s must be <= {} s (got {})", format_number(ring_s),
-                                format_number(w.impulse_window_s + w.impulse_baseline_s)));
+  // In whole blocks, as the flight software rounds them (model::impulse_blocks), so that what passes
+  // here fits the ring.
+  const int blocks = model::impulse_blocks(w.impulse_window_s, period) + model::impulse_blocks(w.impulse_baseline_s, period);
+  if (d.clean(window) && d.clean(baseline) && blocks > model::kMaxImpulseBlocks)
+    d.add(baseline, fmt::format("impulse_window_s + impulse_baseline_s must be <= {} s, {} blocks once each is rounded "
+                                "to whole blocks (got {} blocks)",
+                                format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
 }
 
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,

@@ -31,6 +31,11 @@ enum class DetectionStatistic {
 inline int impulse_block_periods(double control_period_s) {
   return std::max(1, static_cast<int>(std::lround(1.0 / control_period_s)));
 }
+// A window of the impulse statistic in whole blocks (at least one), as the flight software takes it.
+inline int impulse_blocks(double seconds, double control_period_s) {
+  const double block_s = impulse_block_periods(control_period_s) * control_period_s;
+  return std::max(1, static_cast<int>(std::lround(seconds / block_s)));
+}
 // Longest impulse window plus baseline the on-board ring holds, in blocks.
 inline constexpr int kMaxImpulseBlocks = 600;
 

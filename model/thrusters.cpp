@@ -25,6 +25,12 @@ ThrusterMask initial_active_set(const ThrusterSetParams& set) {
 // fmt, not "T" + std::to_string: GCC 12 -O3 warns falsely (-Wrestrict) on that operator+.
 std::string thruster_name(int index) { return index < 0 ? std::string("none") : fmt::format("T{}", index + 1); }
 
+std::optional<int> thruster_index(std::string_view name) {
+  for (int i = 0; i < kMaxThrusters; ++i)
+    if (name == thruster_name(i)) return i;
+  return std::nullopt;
+}
+
 ThrusterList thruster_list(ThrusterMask mask) {
   ThrusterList list;
   for (int i = 0; mask != 0; ++i, mask >>= 1)

@@ -10,7 +10,9 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/types.hpp"
@@ -69,6 +71,9 @@ ThrusterMask initial_active_set(const ThrusterSetParams& set);
 
 // "T1".."TN" for indices 0..N-1, "none" for kNoThruster.
 std::string thruster_name(int index);
+// And back: the index of "T1".."T32" (kMaxThrusters); none for any other text. Whether the scenario
+// has that many thrusters is the caller's to check.
+std::optional<int> thruster_index(std::string_view name);
 // The same thruster in a table of numbers: n of its name Tn, 0 for kNoThruster; and back (any
 // number below 1 reads as none: runs.csv files written before this rule used -1).
 inline int thruster_number(int index) { return index == kNoThruster ? 0 : index + 1; }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "flight/diagnosis_schemes.hpp"
+#include "flight/flight_software.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
 
@@ -69,6 +70,25 @@ TEST(SyncImpulseDetection, ALeakIsNamedWithinAMinute) {
   EXPECT_EQ(d.isolated_thruster, 4);
   EXPECT_LT(d.isolated_s, 1560.0);
   EXPECT_EQ(d.diagnosed_kind, model::FaultKind::kLeak);
+}
+
+// The scenario's seconds become whole blocks of a second (T = 0.1 s: ten periods) as the flight
+// software takes them, and what validation passes fits the detector's ring.
+TEST(SyncImpulseDetection, WindowsBecomeWholeBlocks) {
+  const flight::fdi::ImpulseDetectorParams p = flight::make_flight_params(sync_with("impulse")).fdir.impulse;
+  EXPECT_EQ(p.block, 10);
+  EXPECT_EQ(p.window_blocks, 20);
+  EXPECT_EQ(p.baseline_blocks, 100);
+  EXPECT_EQ(p.threshold_Nms, 40.0);
+  EXPECT_TRUE(flight::fdi::validate(p).empty());
+  // 300.5 s rounds to 301 blocks: with 299.9 s (300 blocks) one more than the ring's 600.
+  const io::LoadResult over = io::load_scenario_file(
+      "scenarios/comrade_sync.yaml", {"fdi.deficit.impulse_window_s=300.5", "fdi.deficit.impulse_baseline_s=299.9"});
+  EXPECT_NE(io::format_errors(over.errors).find("(got 601 blocks)"), std::string::npos) << io::format_errors(over.errors);
+  const io::LoadResult fits = io::load_scenario_file(
+      "scenarios/comrade_sync.yaml", {"fdi.deficit.impulse_window_s=300.4", "fdi.deficit.impulse_baseline_s=299.9"});
+  EXPECT_TRUE(fits.errors.empty()) << io::format_errors(fits.errors);
+  EXPECT_TRUE(flight::fdi::validate(flight::make_flight_params(*fits.scenario).fdir.impulse).empty());
 }
 
 // The keys' checks name the key and the allowed range.

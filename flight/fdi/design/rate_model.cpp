@@ -34,10 +34,10 @@ struct Equations {
 
   Eigen::VectorXd derivative(const Eigen::VectorXd& x, const Vec6& wrench, const Vec3& disturbance, double mass_kg) const {
     const auto tanks = static_cast<std::size_t>(slosh.count);
+    const Eigen::Index rates = 3 + 2 * static_cast<Eigen::Index>(tanks);  // where q' starts in x
     std::array<model::SloshState, model::kMaxSloshTanks> states{};
     for (std::size_t i = 0; i < tanks; ++i) {
       const auto k = static_cast<Eigen::Index>(2 * i);
-      const Eigen::Index rates = 3 + 2 * static_cast<Eigen::Index>(tanks);
       states[i].s_body_m = basis[i][0] * x(3 + k) + basis[i][1] * x(4 + k);
       states[i].s_dot_body_mps = basis[i][0] * x(rates + k) + basis[i][1] * x(rates + k + 1);
     }
@@ -51,7 +51,6 @@ struct Equations {
         std::span<const model::SloshState>(states.data(), tanks), Vec3(x.head<3>()), force, torque);
     Eigen::VectorXd dx(n);
     dx.head<3>() = a.omega_dot_body_radps2;
-    const Eigen::Index rates = 3 + 2 * static_cast<Eigen::Index>(tanks);
     for (std::size_t i = 0; i < tanks; ++i) {
       const auto k = static_cast<Eigen::Index>(2 * i);
       for (Eigen::Index j = 0; j < 2; ++j) {
@@ -85,7 +84,6 @@ RateModel rate_model(const model::Scenario& s) {
   const double mass = s.chaser.mass_kg;
 
   RateModel m;
-  m.inertia_kgm2 = s.chaser.inertia_kgm2;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(eq.n);
   m.A = jacobian([&](int j, double h) {
     Eigen::VectorXd x = rest;

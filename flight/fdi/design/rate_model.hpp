@@ -42,7 +42,6 @@ struct RateModel {
   Eigen::MatrixXd A_reduced, B_reduced, E_reduced, C_reduced;  // rigid rates and kept modes, real modal form
   std::vector<SloshModeFigures> modes;  // every slosh mode of A, by frequency
   int thrusters = 0;                    // columns of B
-  Mat3 inertia_kgm2 = Mat3::Identity(); // [kg m^2] the whole chaser's at rest (nominal)
 };
 
 inline constexpr double kRateModeTolerance = 1e-6;  // [-] controllability and observability below: dropped
