@@ -64,6 +64,27 @@ void print_rate_model(const flight::fdi::RateModel& m) {
   }
 }
 
+void print_uio_bank(const flight::fdi::UioBank& b) {
+  std::cout << fmt::format("observer bank: {} discrete H-infinity unknown-input observers on the reduced rate model "
+                           "(order {}), each blind to one thruster\n",
+                           b.observers.size(), b.Ad.rows());
+  std::cout << "  observer  gamma_min  gamma      sweep      rho(N)   noise rms  | its thruster: also blind     "
+               "least moved  SNR\n";
+  for (const flight::fdi::UioObserver& o : b.observers) {
+    const auto j = static_cast<std::size_t>(o.thruster);
+    std::string blind;
+    for (const int other : b.blind[j]) blind += fmt::format("{}T{}", blind.empty() ? "" : ",", other + 1);
+    std::cout << fmt::format("  T{:<7d} {:.3e}  {:.3e}  {:.3e}  {:.5f}  {:.2e}   | {:<22} T{:<10d} {:.0f}\n",
+                             o.thruster + 1, o.gamma_min, o.gamma, o.gamma_sweep, o.spectral_radius,
+                             o.residual_noise_rms, blind.empty() ? "none" : blind, b.closest[j] + 1,
+                             b.isolation_snr[j]);
+  }
+  std::cout << "  gamma: rate error [rad/s] per unit normalised disturbance and gyro noise (sweep: the achieved); "
+               "also blind: the other observers\n  that do not see the thruster's fault at steady state (the "
+               "smallest residual names that group); least moved: the\n  other observer its fault moves least, "
+               "SNR its steady residual per unit on-time over its noise rms\n";
+}
+
 // Makes the design (its std::invalid_argument is the command's exit 2), prints it and, with --out,
 // writes its JSON.
 template <class Make, class Print>
@@ -91,6 +112,8 @@ int fdi_design_command(const FdiDesignArgs& args) {
   const model::Scenario& scenario = *loaded->scenario;
   if (args.model == "rate")
     return design_and_report(args, [&] { return flight::fdi::rate_model(scenario); }, print_rate_model);
+  if (args.model == "uio-bank")
+    return design_and_report(args, [&] { return flight::fdi::design_uio_bank(scenario); }, print_uio_bank);
   // Fonod 2015's residual generators have a fault column per thruster of MSR's branch of eight; on
   // another set a design of "the first eight" would describe no scheme that flies.
   const int active = model::thruster_count(model::initial_active_set(scenario.thrusters));

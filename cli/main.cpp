@@ -96,8 +96,9 @@ int main(int argc, char** argv) {
       fdi_cmd->add_subcommand("design", "Design the delay-robust residual generator (Fonod 2015, IV.A)");
   design_cmd->add_option("scenario", fdi_design.scenario_path, "Scenario file (YAML)")->required();
   design_cmd->add_option("--model", fdi_design.model,
-                         "Model the residual is built on (position, attitude), or rate: the body-rate model with slosh")
-      ->check(CLI::IsMember({"position", "attitude", "rate"}))
+                         "Model the residual is built on (position, attitude), or rate: the body-rate model with slosh, or "
+                         "uio-bank: the unknown-input observers on it")
+      ->check(CLI::IsMember({"position", "attitude", "rate", "uio-bank"}))
       ->capture_default_str();
   design_cmd->add_option("--out", fdi_design.out_path, "Write the design and its figures as JSON");
   design_cmd->add_option("--set", fdi_design.overrides, "Override a scenario key: key.path=value (repeatable)");

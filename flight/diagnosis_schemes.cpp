@@ -14,6 +14,9 @@ std::vector<DiagnosisScheme>& table() {
       {.name = "position", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.position_enabled; }},
       {.name = "attitude", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.attitude_enabled; }},
       {.name = "deficit", .residual_channels = 0, .enabled = [](const FdirParams& p) { return p.deficit_detection; }},
+      // residual_bank_1: the nominal observer's mean residual, _2: the smallest observer's [rad/s]
+      {.name = "bank", .residual_channels = 2, .enabled = [](const FdirParams& p) { return p.bank_enabled; },
+       .step = step_bank_scheme},
   };
   return schemes;
 }

@@ -10,7 +10,7 @@
 // detector; step_fdir runs them itself, since their isolation, the event resolution and the
 // deficit bank are coupled (flight/fdir.hpp). A scheme with a `step` is run by step_fdir after
 // them, each period, on the period's measurements and the FDI's inputs; its first alarm and first
-// confirmation are latched for it.
+// confirmation are latched for it. The fourth row, the observer bank, is such a scheme.
 #include <string>
 #include <vector>
 
@@ -20,19 +20,24 @@
 namespace chaser::flight {
 
 struct FdirParams;
+struct FdirState;
 struct FdirInput;
 
-inline constexpr int kMaxDiagnosisSchemes = 5;  // the three built in and two more
+inline constexpr int kMaxDiagnosisSchemes = 5;  // the four built in and one more
 inline constexpr int kPositionScheme = 0;
 inline constexpr int kAttitudeScheme = 1;
 inline constexpr int kDeficitScheme = 2;
+inline constexpr int kBankScheme = 3;  // the observer bank (flight/fdi/observer_bank.hpp), a registered row
 
 struct DiagnosisScheme {
   std::string name;           // a plain name: it names channels, columns and keys
   int residual_channels = 0;  // residual_<name>_1..n in telemetry (0: none)
   bool (*enabled)(const FdirParams&) = nullptr;
   // A scheme module's period; nullptr for the three step_fdir runs itself. Lanes of the watched set.
-  void (*step)(const FdirParams&, const model::SensorMeasurements&, const FdirInput&, fdi::FdiSchemeOutput&) = nullptr;
+  // A scheme keeps its own state in FdirState (the FDIR's state is the one place a run's flight
+  // software state lives), reading the rest of it at most.
+  void (*step)(const FdirParams&, FdirState&, const model::SensorMeasurements&, const FdirInput&,
+               fdi::FdiSchemeOutput&) = nullptr;
 };
 
 // The table, in slot order.

@@ -8,6 +8,7 @@
 #include "core/rotation.hpp"
 #include "flight/fdi/design/design_inputs.hpp"
 #include "flight/fdi/design/residual_design.hpp"
+#include "flight/fdi/design/uio_bank.hpp"
 #include "flight/fdi/residual_generator.hpp"
 #include "flight/guidance.hpp"
 #include "model/recovery.hpp"
@@ -109,6 +110,7 @@ double uncommanded_on_fraction(const FdirState& state, int slot, int lane) {
   const fdi::DeficitDecision* d = slot == kPositionScheme   ? &state.position_deficit.decision
                                   : slot == kAttitudeScheme ? &state.attitude_deficit.decision
                                   : slot == kDeficitScheme  ? &state.detector_deficit.decision
+                                  : slot == kBankScheme     ? &state.bank_deficit.decision
                                                             : nullptr;
   if (d == nullptr || !d->decided || d->thruster != lane) return 0.0;
   if (d->kind == model::FaultKind::kStuckOpen) return 1.0;
@@ -200,6 +202,8 @@ void start_watch(FdirState& state, std::int64_t period, double t_s) {
   state.position_deficit = state.attitude_deficit = state.detector_deficit = {};
   state.position_isolated_s = state.attitude_isolated_s = state.detector_isolated_s = -1;
   state.latches = {};
+  fdi::restart_observer_bank(state.bank);
+  state.bank_deficit = {};
   state.confirmed_thruster = model::kNoThruster;
   state.confirmed_s = -1;
   fdi::FdiSchemeOutput ignored;
@@ -215,7 +219,7 @@ void step_registered_schemes(const FdirParams& p, FdirState& state, const model:
   for (std::size_t i = kDeficitScheme + 1; i < schemes.size(); ++i) {
     if (!schemes[i].enabled(p)) continue;
     fdi::FdiSchemeOutput& o = out.schemes[i];
-    schemes[i].step(p, meas, in, o);
+    schemes[i].step(p, state, meas, in, o);
     if (!state.armed) {
       o.alarm = false;
       o.candidate = o.confirmed = -1;
@@ -269,7 +273,26 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.deficit_isolation = s.fdi.isolation_method == model::IsolationMethod::kDeficit;
   p.deficit_detection = p.deficit_isolation && s.fdi.deficit.detection;
   p.schemes = static_cast<int>(diagnosis_schemes().size());
-  if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection) return p;
+  p.bank_enabled = s.fdi.observer_bank.enabled;
+  if (p.bank_enabled) {
+    // The bank models the starting active set, its columns in thruster order (configuration_columns').
+    std::vector<int> column_thruster;
+    const model::ThrusterMask active = model::initial_active_set(s.thrusters);
+    for (int t = 0; t < model::kMaxThrusters; ++t)
+      if (active & (model::ThrusterMask{1} << t)) column_thruster.push_back(t);
+    const model::ObserverBankParams& b = s.fdi.observer_bank;
+    const double T = s.control_period_s;
+    p.bank = fdi::make_observer_bank(fdi::design_uio_bank(s, /*figures=*/false), column_thruster, s.chaser.inertia_kgm2,
+                                     {.block = model::impulse_block_periods(T),
+                                      .window_blocks = model::impulse_blocks(b.window_s, T),
+                                      .baseline_blocks = model::impulse_blocks(b.baseline_s, T),
+                                      .threshold_Nm = b.threshold_Nm,
+                                      .isolation_ratio = b.isolation_ratio,
+                                      .period_s = T,
+                                      .com_uncertainty_m = s.fdi.deficit.com_uncertainty_m,
+                                      .inertia_uncertainty = s.fdi.deficit.inertia_uncertainty});
+  }
+  if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection && !p.bank_enabled) return p;
   // Designed once, for the starting set. The two designs are independent pure functions of the
   // scenario: the attitude one runs on a second thread while this one designs the position scheme
   // (the same results; the run waits for max(position, attitude) instead of their sum).
@@ -410,7 +433,8 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
   if (!state.armed) return;
 
   // The fault-free noise estimate of the deficit bank must not learn from the fault.
-  if (state.position.alarm || state.attitude.alarm || state.detector.alarm) state.deficit_bank.frozen = true;
+  if (state.position.alarm || state.attitude.alarm || state.detector.alarm || state.bank.alarm)
+    state.deficit_bank.frozen = true;
 
   // The first confirmation by any scheme, in slot order, is the watch's confirmed thruster.
   if (state.confirmed_thruster == model::kNoThruster) {
@@ -423,6 +447,34 @@ void step_fdir(const FdirParams& p, FdirState& state, const model::SensorMeasure
       out.confirmed_now = state.confirmed_thruster;
       out.confirmed_uncommanded_on_fraction = uncommanded_on_fraction(state, slot, lane);
     }
+  }
+}
+
+void step_bank_scheme(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
+                      const FdirInput& in, fdi::FdiSchemeOutput& out) {
+  if (state.bank.z.empty()) state.bank = fdi::make_observer_bank_state(p.bank);  // the first period
+  const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
+  fdi::ObserverBankState& b = state.bank;
+  fdi::step_observer_bank(p.bank, b, meas.omega_body_radps, w.set, in.ton, in.commanded_wrench);
+  const auto lane_of = [&](int thruster) {
+    for (int lane = 0; lane < w.set.count; ++lane)
+      if (w.set.index[static_cast<std::size_t>(lane)] == thruster) return lane;
+    return -1;
+  };
+  const bool deciding = b.filled == p.bank.window_blocks + p.bank.baseline_blocks;
+  out.residual = Vec3(b.nominal_change_radps, deciding ? b.smallest_change_radps : 0.0, 0.0);  // [rad/s]
+  out.glr = fdi::GlrStatistic::of_value(b.statistic_Nm);
+  out.alarm = b.alarm;
+  out.alarm_time_s = b.alarm ? static_cast<double>(b.alarm_period + state.bank_first_period) * p.period_s : -1.0;
+  out.candidate = b.candidate >= 0 ? lane_of(b.candidate) : -1;
+  out.confirmed = b.confirmed >= 0 ? lane_of(b.confirmed) : -1;
+  // More than one hypothesis: the deficit bank's forces may name one of them (its decision latches).
+  if (out.confirmed < 0 && b.alarm && p.deficit_isolation && !state.lidar_gap && state.armed) {
+    const fdi::DeficitDecision& d =
+        fdi::step_deficit_decision(w.deficit, state.deficit_bank, state.bank_deficit, b.alarm_period);
+    if (d.decided && d.thruster >= 0 &&
+        (b.hypotheses & (model::ThrusterMask{1} << w.set.index[static_cast<std::size_t>(d.thruster)])))
+      out.confirmed = d.thruster;
   }
 }
 
@@ -444,8 +496,12 @@ FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {
   const std::vector<DiagnosisScheme>& schemes = diagnosis_schemes();
   for (std::size_t i = kDeficitScheme + 1; i < schemes.size(); ++i) {
     const SchemeLatch& l = f.latches[i];
+    // The observer bank's name may be the deficit bank's (step_bank_scheme): then its reading comes along.
+    const fdi::DeficitDecision& bank = f.bank_deficit.decision;
+    const bool named_by_bank = i == kBankScheme && bank.decided && bank.thruster >= 0 && bank.thruster == l.confirmed;
+    const fdi::DeficitDecision diagnosis = named_by_bank ? bank : fdi::DeficitDecision{};
     e.schemes[i] = summary_of(w, schemes[i].enabled(p) && l.alarm_s >= 0, l.alarm_s, l.confirmed, l.isolated_s,
-                              fdi::DeficitDecision{}, f.bank_first_period, T);
+                              diagnosis, f.bank_first_period, T);
   }
   return e;
 }

@@ -24,6 +24,7 @@
 #include "flight/fdi/event_resolution.hpp"
 #include "flight/fdi/fdi_scheme.hpp"
 #include "flight/fdi/impulse_detector.hpp"
+#include "flight/fdi/observer_bank.hpp"
 #include "model/messages.hpp"
 #include "model/scenario.hpp"
 
@@ -55,6 +56,9 @@ struct FdirParams {
   // the impulse (flight/fdi/impulse_detector.hpp).
   bool impulse_detection = false;
   fdi::ImpulseDetectorParams impulse;
+  // The observer bank on the body-rate model (fdi.observer_bank.enabled): the `bank` scheme.
+  bool bank_enabled = false;
+  fdi::ObserverBankFlightParams bank;
   // [0]: the starting active set; then every set a recovery can switch to (with the FDI's size).
   std::vector<FdiWatchedParams> watched;
   double period_s = 0.1;                 // [s] T
@@ -121,6 +125,8 @@ struct FdirState {
   fdi::ImpulseDetectorState impulse;            // its impulse statistic, with impulse_detection
   fdi::DeficitDecisionState detector_deficit;
   double detector_isolated_s = -1;
+  fdi::ObserverBankState bank;                  // the observer bank, with bank_enabled (sized in its first period)
+  fdi::DeficitDecisionState bank_deficit;       // the deficit bank's name after the observer bank's alarm
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
   std::array<SchemeLatch, kMaxDiagnosisSchemes> latches{};  // registered schemes' slots
@@ -158,6 +164,12 @@ struct FdirInput {
 // scheme slots are a few hundred bytes, which a returned value would copy every period.
 void step_fdir(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas, const FdirInput& in,
                FdirOutput& out);
+
+// The observer bank's period (the `bank` row of flight/diagnosis_schemes.hpp): its observers, its
+// alarm and hypotheses, and, when they leave more than one thruster and the deficit bank runs
+// (isolation_method deficit), the deficit bank's name if it is one of them.
+void step_bank_scheme(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
+                      const FdirInput& in, fdi::FdiSchemeOutput& out);
 
 // The figures of the current watch (not yet ended by a recovery).
 FdirEpisode current_episode(const FdirParams& params, const FdirState& state);

@@ -85,6 +85,17 @@ void read_deficit(MapReader& r, model::DeficitParams& out) {
   if (r.has("impulse_threshold_Nms")) r.number("impulse_threshold_Nms", Range::positive(), out.impulse_threshold_Nms);
 }
 
+// The window and baseline against the control period are checked in validate_scenario.
+void read_observer_bank(MapReader& r, model::ObserverBankParams& out) {
+  if (r.has("enabled")) r.boolean("enabled", out.enabled);
+  if (r.has("disturbance_torque_Nm")) r.number("disturbance_torque_Nm", Range::positive(), out.disturbance_torque_Nm);
+  if (r.has("gamma_backoff")) r.number("gamma_backoff", Range::left_open(1.0, 10.0), out.gamma_backoff);
+  if (r.has("window_s")) r.number("window_s", Range::positive(), out.window_s);
+  if (r.has("baseline_s")) r.number("baseline_s", Range::positive(), out.baseline_s);
+  if (r.has("threshold_Nm")) r.number("threshold_Nm", Range::positive(), out.threshold_Nm);
+  if (r.has("isolation_ratio")) r.number("isolation_ratio", Range::open(0.0, 1.0), out.isolation_ratio);
+}
+
 // The on-times against the valve's minimum on-time, the control period and each other, and
 // max_unverified_s against the period, are checked in validate_scenario.
 void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
@@ -118,6 +129,8 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   read_count_in(r, "isolation_settle", 0, 10 * kMaxFdiWindow, out.isolation_settle);
   r.boolean("glr_increase_only", out.glr_increase_only);
   read_section(r, "deficit", [&](MapReader& m) { read_deficit(m, out.deficit); });
+  if (r.has("observer_bank"))  // optional: model/fdi.hpp's defaults, the bank off
+    read_section(r, "observer_bank", [&](MapReader& m) { read_observer_bank(m, out.observer_bank); });
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
   read_recovery(r, out.recovery);
   r.number("rearm_after_recovery_s", Range::non_negative(), out.rearm_after_recovery_s);

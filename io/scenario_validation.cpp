@@ -95,6 +95,28 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
                                 format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
 }
 
+// The observer bank needs the tanks (its rate model) and a window of whole periods it can hold.
+void check_observer_bank(Diagnostics& d, const model::Scenario& s, double period) {
+  const model::ObserverBankParams& b = s.fdi.observer_bank;
+  if (b.enabled && !s.chaser.slosh)
+    d.add("fdi.observer_bank.enabled", "needs chaser.slosh: the bank's rate model is built from the tanks' slosh");
+  // In whole blocks of about a second, as the impulse statistic's, and together within its ring size.
+  const char* window = "fdi.observer_bank.window_s";
+  const char* baseline = "fdi.observer_bank.baseline_s";
+  const double block_s = model::impulse_block_periods(period) * period;
+  for (const char* key : {window, baseline}) {
+    const double value = key == window ? b.window_s : b.baseline_s;
+    if (d.clean(key) && value < block_s)
+      d.add(key, fmt::format("must be >= one block of the bank's statistic, {} s (got {})", format_number(block_s),
+                             format_number(value)));
+  }
+  const int blocks = model::impulse_blocks(b.window_s, period) + model::impulse_blocks(b.baseline_s, period);
+  if (d.clean(window) && d.clean(baseline) && blocks > model::kMaxImpulseBlocks)
+    d.add(baseline, fmt::format("window_s + baseline_s must be <= {} s, {} blocks once each is rounded to whole "
+                                "blocks (got {} blocks)",
+                                format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
+}
+
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,
 // and a check's pulse is informative (else the thruster would be checked every period); its bound
 // is at least one period, the cadence at which the flight software can check.
@@ -162,6 +184,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
                                                 format_number(s.fdi.design_delay_max_s)));
   check_deficit_windows(d, s.fdi.deficit, period);
   check_active_check(d, s, period);
+  check_observer_bank(d, s, period);
   if (s.sensors.target_pose)
     check_sample_timing(d, "sensors.target_pose", s.sensors.target_pose->period_s, s.sensors.target_pose->latency_s, period);
   if (s.sensors.arm_camera) {  // the same timing rules; on the gripper, so with an arm

@@ -42,6 +42,20 @@ inline constexpr int kMaxImpulseBlocks = 600;
 // Samples the deficit isolation's on-board ring holds: its longest window is one less.
 inline constexpr int kMaxDeficitWindowPeriods = 160;
 
+// The bank of unknown-input observers on the body-rate model (COMRADE 2018, sec. 6.3;
+// flight/fdi/design/uio_bank.hpp, flight/fdi/observer_bank.hpp): its design weights and, with
+// `enabled`, its run as a diagnosis scheme. Needs chaser.slosh (the rate model's tanks).
+
+struct ObserverBankParams {
+  bool enabled = false;               // run the bank as the `bank` diagnosis scheme
+  double disturbance_torque_Nm = 0.1;  // [N m] 1 sigma per period per axis: the torque the model leaves out
+  double gamma_backoff = 1.1;          // [-] the observers' gamma over the smallest admissible, in (1, 10]
+  double window_s = 20.0;              // [s] W: the residuals' recent mean ...
+  double baseline_s = 100.0;           // [s] L: ... against their mean over the L seconds before
+  double threshold_Nm = 1.0;           // [N m] the nominal observer's change, as torque, over the model-error bound, that alarms
+  double isolation_ratio = 0.2;        // [-] an observer whose change is below this x the nominal's is blind to the fault
+};
+
 // The impulse-deficit isolation (flight/fdi/deficit_isolation.hpp): its window about the alarm and
 // its decision thresholds.
 struct DeficitParams {
@@ -118,6 +132,7 @@ struct FdiParams {
   int isolation_settle = 0;         // [-] periods after the alarm before isolation starts (0: paper)
   bool glr_increase_only = false;   // [-] only a residual increase counts (eq. 41 as printed: false)
   DeficitParams deficit;            // used when isolation_method is kDeficit
+  ObserverBankParams observer_bank;
   // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
   double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
   // Recovery (flight/recovery.hpp): what a confirmed fault changes in the active set, and how long

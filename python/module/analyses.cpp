@@ -89,14 +89,15 @@ py::object thrusters(const py::object& scenario_arg) {
 
 // `chaser fdi design SCENARIO --model M --out F`'s document.
 py::object fdi_design(const py::object& scenario_arg, const std::string& model) {
-  if (model != "position" && model != "attitude" && model != "rate")
-    throw py::value_error("model: position, attitude or rate (got '" + model + "')");
+  if (model != "position" && model != "attitude" && model != "rate" && model != "uio-bank")
+    throw py::value_error("model: position, attitude, rate or uio-bank (got '" + model + "')");
   const Scenario scenario = scenario_argument(scenario_arg);
   nlohmann::json design;
   std::string problem;
-  if (model == "rate") {  // the body-rate model with slosh (flight/fdi/design/rate_model.hpp)
+  if (model == "rate" || model == "uio-bank") {  // flight/fdi/design/rate_model.hpp, uio_bank.hpp
     try {
-      design = flight::fdi::to_json(flight::fdi::rate_model(scenario.scenario));
+      design = model == "rate" ? flight::fdi::to_json(flight::fdi::rate_model(scenario.scenario))
+                               : flight::fdi::to_json(flight::fdi::design_uio_bank(scenario.scenario));
     } catch (const std::invalid_argument& e) {
       problem = e.what();
     }

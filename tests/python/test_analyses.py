@@ -63,7 +63,7 @@ def test_rate_model_is_the_command_lines_json(cli, tmp_path):
 
 
 def test_bad_analysis_arguments_raise():
-    with pytest.raises(ValueError, match="model: position, attitude or rate"):
+    with pytest.raises(ValueError, match="model: position, attitude, rate or uio-bank"):
         chaser.fdi_design(str(MSR), model="orbit")
     with pytest.raises(TypeError, match="scenario"):
         chaser.thrusters(None)

@@ -6,6 +6,7 @@
 
 #include "flight/fdi/design/rate_model.hpp"
 #include "flight/fdi/design/residual_design.hpp"
+#include "flight/fdi/design/uio_bank.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -14,5 +15,9 @@ nlohmann::json to_json(const ResidualDesign& design);
 // The body-rate model (`chaser fdi design --model rate --out FILE.json`): full and reduced
 // matrices, the state names and each slosh mode's figures.
 nlohmann::json to_json(const RateModel& model);
+
+// The observer bank (`chaser fdi design --model uio-bank --out FILE.json`): per observer its
+// matrices and figures, the fault gains and each thruster's closest observer.
+nlohmann::json to_json(const UioBank& bank);
 
 }  // namespace chaser::flight::fdi

@@ -19,8 +19,8 @@
 namespace chaser {
 namespace {
 
-void ramp_step(const flight::FdirParams&, const model::SensorMeasurements&, const flight::FdirInput& in,
-               flight::fdi::FdiSchemeOutput& out) {
+void ramp_step(const flight::FdirParams&, flight::FdirState&, const model::SensorMeasurements&,
+               const flight::FdirInput& in, flight::fdi::FdiSchemeOutput& out) {
   out.residual[0] = in.t_s;
   out.glr = flight::fdi::GlrStatistic::of_value(in.t_s);
   out.alarm = in.t_s >= 5.0;
@@ -39,15 +39,15 @@ model::Scenario msr(double duration_s) {
 }
 
 TEST(AddedScheme, TakesTheNextSlotAndRefusesATakenOrUnplainName) {
-  EXPECT_EQ(kRampSlot, 3);
-  ASSERT_EQ(flight::diagnosis_schemes().size(), 4u);
+  EXPECT_EQ(kRampSlot, 4);  // after the four built in
+  ASSERT_EQ(flight::diagnosis_schemes().size(), 5u);
   EXPECT_EQ(flight::register_diagnosis_scheme({.name = "ramp", .residual_channels = 0,
                                                .enabled = [](const flight::FdirParams&) { return true; }, .step = ramp_step}),
             -1);
   EXPECT_EQ(flight::register_diagnosis_scheme({.name = "../x", .residual_channels = 0,
                                                .enabled = [](const flight::FdirParams&) { return true; }, .step = ramp_step}),
             -1);
-  EXPECT_EQ(flight::diagnosis_schemes().size(), 4u);
+  EXPECT_EQ(flight::diagnosis_schemes().size(), 5u);
 }
 
 TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
@@ -61,7 +61,7 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
   const std::size_t glr = column("glr_ramp"), alarm = column("alarm_ramp"), confirmed = column("confirmed_ramp");
   ASSERT_LT(confirmed, rows.channels.size());
   EXPECT_EQ(column("residual_ramp_1") + 1, glr);
-  EXPECT_EQ(column("confirmed_deficit") + 2, glr);  // after the three built in
+  EXPECT_EQ(column("confirmed_bank") + 2, glr);  // after the four built in
   const std::size_t width = rows.channels.size();
   for (std::size_t k = 0; k < 200; ++k) {
     const double t = 0.1 * static_cast<double>(k);
@@ -76,7 +76,7 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
   EXPECT_NEAR(ramp.isolated_s, 7.0, 1e-9);
   EXPECT_EQ(ramp.isolated_thruster, 0);
   EXPECT_EQ(r.fdir.isolated_thruster, 0);  // the FDIR's first confirmation, no built-in scheme confirming
-  EXPECT_FLOAT_EQ(r.glr_max_per_s[10][3], 10.9f);  // the largest in second 10
+  EXPECT_FLOAT_EQ(r.glr_max_per_s[10][kRampSlot], 10.9f);  // the largest in second 10
   const nlohmann::json j = sim::run_summary(s, "hash", r);
   EXPECT_EQ(j["fdir"]["ramp_scheme"]["isolated_thruster"], "T1");
   EXPECT_NEAR(j["fdir"]["ramp_scheme"]["alarm_s"].get<double>(), 5.0, 1e-9);
@@ -87,12 +87,12 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
 
 TEST(AddedScheme, AppearsInRunsCsvAndTheCampaignsTable) {
   const std::string header = campaign::runs_header(campaign::RunColumnSet::kStandard);
-  EXPECT_NE(header.find("deficit_glr_max_before_onset,ramp_detection_s,ramp_isolation_s,ramp_isolated,ramp_false_alarm,"
+  EXPECT_NE(header.find("bank_glr_max_before_onset,ramp_detection_s,ramp_isolation_s,ramp_isolated,ramp_false_alarm,"
                         "ramp_missed,ramp_wrong_isolation,ramp_glr_max_before_onset,fdir_detection_s"),
             std::string::npos)
       << header;
   EXPECT_EQ(campaign::statistics_schemes(),
-            (std::vector<std::string>{"position", "attitude", "deficit", "ramp", "fdir"}));
+            (std::vector<std::string>{"position", "attitude", "deficit", "bank", "ramp", "fdir"}));
   // Two fault-free runs of 30 s: the ramp alarms in each (a false alarm, P_f = 1), the others do not.
   const campaign::CampaignPlan plan = campaign::testing::short_plan({{campaign::FaultCase::kNone, 2}}, {"fdi.recovery=none"});
   const auto dir = campaign::testing::fresh_dir("added_scheme");
