@@ -76,6 +76,55 @@ void BM_EndToEndComrade(benchmark::State& state, const char* file) {
 BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// COMRADE's whole synchronisation (3,000 s), as shipped and with the observer bank on beside the
+// deficit detector: what the bank costs a run, its design at the start included.
+void BM_EndToEndSync(benchmark::State& state, bool bank) {
+  model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
+  scenario.fdi.observer_bank.enabled = bank;
+  double simulated_s = 0;
+  for (auto _ : state) {
+    const sim::RunResult result = sim::run_scenario(scenario);
+    simulated_s += result.simulated_s;
+    benchmark::DoNotOptimize(result);
+  }
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The observer bank's period alone (flight/fdi/observer_bank.hpp): comrade_sync's 25 observers of
+// order 9 on 24 thrusters, fed 1,000 recorded-like periods in turn (rates near the hold's, random
+// on-times), its window full and deciding every tenth period.
+void BM_ObserverBankPeriod(benchmark::State& state) {
+  model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
+  scenario.fdi.observer_bank.enabled = true;
+  const flight::FdirParams fdir = flight::make_flight_params(scenario).fdir;
+  flight::fdi::ObserverBankState bank = flight::fdi::make_observer_bank_state(fdir.bank);
+  const flight::fdi::WatchedSet& set = fdir.watched[0].set;
+  constexpr std::size_t kInputs = 1000;
+  std::vector<Vec3> rates(kInputs);
+  std::vector<flight::fdi::WatchedTon> on_times(kInputs, flight::fdi::WatchedTon::Zero());
+  std::vector<Vec6> wrenches(kInputs, Vec6::Zero());
+  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
+  const auto uniform = [&x] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  };
+  for (std::size_t k = 0; k < kInputs; ++k) {
+    rates[k] = Vec3(0.03, -0.02, 0.01) + 1e-4 * Vec3(uniform(), uniform(), uniform());
+    for (int lane = 0; lane < set.count; ++lane) on_times[k][lane] = 0.05 * uniform();
+  }
+  for (std::size_t k = 0; k < 1300; ++k)  // fill W + L = 120 s of blocks
+    flight::fdi::step_observer_bank(fdir.bank, bank, rates[k % kInputs], set, on_times[k % kInputs], wrenches[0]);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    flight::fdi::step_observer_bank(fdir.bank, bank, rates[k], set, on_times[k], wrenches[k]);
+    k = k + 1 == kInputs ? 0 : k + 1;
+  }
+  benchmark::DoNotOptimize(bank.statistic_Nm);
+}
+BENCHMARK(BM_ObserverBankPeriod);
+
 // What `chaser run` waits for, less process start and scenario loading: the whole 1200 s run with
 // its telemetry file written (csv or npy, every channel, finished and renamed), against none. The
 // target: at least half the rate of BM_ControlPeriod/fdi_on's closed loop. As `chaser run`

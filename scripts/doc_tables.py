@@ -1304,6 +1304,77 @@ def comrade_sync_fdi_fill(_diagnose, _shipped, gain):
     return {"gain": sum(int(r['fdir_false_alarm']) for r in runs), "runs": len(runs)}
 
 
+UIO_BANK_LABELS = ("nominal (mode 0)", "T1", "T5", "T13", "T17", "all 24")
+
+
+def uio_bank_rows(path):
+    """The observer bank (chaser fdi design --model uio-bank): per observer gamma_min, gamma, the
+    sweep's norm, rho(N), the residual's noise rms; per thruster the other observers blind to it and
+    the least moved of the rest with its SNR. COMRADE's four, then the ranges over all 24."""
+    bank = load_json(path)
+    observers = {o["thruster"]: o for o in bank["observers"]}
+    closest = {c["thruster"]: c for c in bank["closest"]}
+
+    def cells(o, c):
+        blind = ",".join(f"T{t}" for t in c["blind"]) if c else "-"
+        moved = f"T{c['observer']}, {fixed(c['snr'], 0)}" if c else "-"
+        return [sci(o["gamma_min"], 2), sci(o["gamma"], 2), sci(o["gamma_sweep"], 2), fixed(o["spectral_radius"], 5),
+                sci(o["residual_noise_rms_radps"], 2), blind, moved]
+
+    rows = [cells(bank["nominal"], None)] + [cells(observers[t], closest[t]) for t in (1, 5, 13, 17)]
+
+    def span(key, fmt):
+        values = [o[key] for o in bank["observers"]]
+        return f"{fmt(min(values))} - {fmt(max(values))}"
+
+    rows.append([span("gamma_min", lambda v: sci(v, 2)), span("gamma", lambda v: sci(v, 2)),
+                 span("gamma_sweep", lambda v: sci(v, 2)), span("spectral_radius", lambda v: fixed(v, 5)),
+                 span("residual_noise_rms_radps", lambda v: sci(v, 2)),
+                 f"{min(len(c['blind']) for c in bank['closest'])} - {max(len(c['blind']) for c in bank['closest'])}",
+                 f"SNR {fixed(min(c['snr'] for c in bank['closest']), 0)} - {fixed(max(c['snr'] for c in bank['closest']), 0)}"])
+    return rows
+
+
+def first_namer(runs, case):
+    """Diagnose-only runs with both schemes: in how many the bank, and the deficit scheme, named the
+    right thruster first (the other naming it later or never)."""
+    bank = deficit = 0
+    for r in runs:
+        if r["case"] != case or r["status"] != "ok":
+            continue
+        times = {s: number(r[f"{s}_isolation_s"]) if int(r[f"{s}_isolated"]) == int(r["fault_thruster"]) else math.inf
+                 for s in ("bank", "deficit")}
+        if times["bank"] < times["deficit"]:
+            bank += 1
+        elif times["deficit"] < times["bank"]:
+            deficit += 1
+    return bank, deficit
+
+
+def comrade_sync_bank_rows(shipped, bank, both):
+    """Per campaign (the deficit scheme shipped, the bank alone), fault-free false alarms and largest
+    statistic; per case missed, wrong and right names, mean / max t_d and Table 1 at the end. The
+    third column: both schemes diagnosing only, which named the right thruster first."""
+    cols = [campaign_runs(out) for out in (shipped, bank)]
+    both_runs = campaign_runs(both)
+    rows = [[], []]
+    for runs, scheme, unit in zip(cols, ("deficit", "bank"), ("N m s", "N m")):
+        fault_free = fdir_case_runs(runs, "none").runs
+        rows[0].append(f"{sum(int(r['fdir_false_alarm']) for r in fault_free)} of {len(fault_free)}")
+        rows[1].append(f"{fixed(max(number(r[f'{scheme}_glr_max_before_onset']) for r in fault_free), 2)} {unit}")
+    both_free = fdir_case_runs(both_runs, "none").runs
+    rows[0].append(f"{sum(int(r['fdir_false_alarm']) for r in both_free)} of {len(both_free)}")
+    rows[1].append("-")
+    for case in FAULT_CASES:
+        cases = [fdir_case_runs(runs, case) for runs in cols]
+        first = first_namer(both_runs, case)
+        rows.append([names_cell(c) for c in cases] + [f"bank {first[0]}, deficit {first[1]}"])
+        rows.append([f"{fixed(statistics.mean(c.td), 1)} / {fixed(max(c.td), 1)} s" if c.td else "-" for c in cases]
+                    + ["-"])
+        rows.append([captures_cell(c) for c in cases] + ["-"])
+    return rows
+
+
 # The bound, the pulse and what is informative, traded on a smaller campaign with checks all along:
 # (label, pulse cell, overrides); the first row without checks, the shipped bound and pulse marked.
 CHECK_TRADE_ROWS = (
@@ -1747,6 +1818,10 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("comrade-sync-paper-four", COMRADE_SYNC_SPREAD + ("--set", "campaign.fault_thrusters=[T1, T5, T13, T17]",
                                                               "--out", "OUT"), quick=False),
     Command("comrade-sync-spread", COMRADE_SYNC_SPREAD + ("--out", "OUT"), quick=False),
+    Command("comrade-sync-bank", COMRADE_SYNC_FDI + ("--set", "fdi.observer_bank.enabled=true",
+                                                     "--set", "fdi.deficit.detection=false", "--out", "OUT"), quick=False),
+    Command("comrade-sync-both", COMRADE_SYNC_FDI + ("--set", "fdi.observer_bank.enabled=true",
+                                                     "--set", "fdi.recovery=none", "--out", "OUT"), quick=False),
     Command("comrade-sync-gain", ("campaign", "scenarios/comrade_sync.yaml", "--runs", "none=200", "--cases", "none",
                                   "--set", "fdi.deficit.detection_statistic=gain", "--set", "fdi.recovery=none",
                                   "--out", "OUT"), quick=False),
@@ -1784,6 +1859,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
     Command("fdi-attitude.json", ("fdi", "design", "scenarios/msr_terminal.yaml", "--model", "attitude", "--out",
                                   "OUT"), quick=True),
     Command("comrade-rate.json", ("fdi", "design", "scenarios/comrade_sync.yaml", "--model", "rate", "--out", "OUT"),
+            quick=True),
+    Command("comrade-uio-bank.json", ("fdi", "design", "scenarios/comrade_sync.yaml", "--model", "uio-bank", "--out", "OUT"),
             quick=True),
     Command("msr-control.json", ("control", "design", "scenarios/msr_terminal.yaml", "--out", "OUT"), quick=True),
     Command("envisat-control.json", ("control", "design", "scenarios/comrade_envisat.yaml", "--out", "OUT"),
@@ -1948,6 +2025,13 @@ TABLES = [
           caption="The gain statistic (`--set fdi.deficit.detection_statistic=gain`) false-alarms in {gain} of "
                   "{runs} fault-free runs.",
           fill=comrade_sync_fdi_fill),
+    Table("fdi-bank-comrade-sync", "docs/fdi.md", ("comrade-sync-fdi", "comrade-sync-bank", "comrade-sync-both"),
+          ("faults at 1,500 s", "deficit scheme, impulse statistic (shipped)", "observer bank alone",
+           "both, diagnose only: first to name it"),
+          ("fault-free: false alarms", "fault-free: largest statistic")
+          + sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / max t_d",
+                  f"{case.replace('_', ' ')}: Table 1 met at the end") for case in FAULT_CASES), ()),
+          comrade_sync_bank_rows, words=("of", "N", "m", "s", "bank", "deficit")),
     Table("fdi-comrade-sync-spread", "docs/fdi.md", ("comrade-sync-paper-four", "comrade-sync-spread"),
           ("FDIR, shipped, onsets in 300-2,900 s", "T1, T5, T13, T17 (COMRADE's four)", "all 24"),
           sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / 95th pct. t_d",
@@ -2026,6 +2110,9 @@ TABLES = [
            "sigma_max(R E_d), max over f", "delay gain per N (position) or N m (attitude) commanded, max over f")
           + tuple(f"DC fault gain, T{i} [per unit on-time]" for i in range(1, 9)),
           fdi_design_rows),
+    Table("fdi-uio-bank", "docs/fdi_design.md", ("comrade-uio-bank.json",),
+          ("observer", "gamma_min", "gamma", "sweep", "rho(N)", "noise rms [rad/s]", "also blind",
+           "least moved, SNR"), UIO_BANK_LABELS, uio_bank_rows, words=("T", "SNR")),
     Table("fdi-rate-model", "docs/fdi_design.md", ("comrade-rate.json",),
           ("slosh mode", "frequency [rad/s]", "period [s]", "damping", "controllability", "observability", "kept"),
           ("1", "2", "3", "4"), rate_model_rows, words=("yes", "no", "s")),

@@ -62,6 +62,19 @@ def test_rate_model_is_the_command_lines_json(cli, tmp_path):
         chaser.fdi_design(str(MSR), model="rate")
 
 
+def test_observer_bank_is_the_command_lines_json(cli, tmp_path):
+    sync = MSR.parent / "comrade_sync.yaml"
+    shown = run_cli(cli, "fdi", "design", sync, "--model", "uio-bank", "--out", tmp_path / "b.json")
+    assert shown.returncode == 0, shown.stderr
+    got = chaser.fdi_design(str(sync), model="uio-bank")
+    assert_same_document(got, json.loads((tmp_path / "b.json").read_text()))
+    assert len(got["observers"]) == 24 and got["nominal"]["thruster"] == 0
+    assert all(o["gamma_sweep"] <= o["gamma"] for o in got["observers"] + [got["nominal"]])
+    assert got["closest"][0]["blind"] == [10, 13, 22]  # T1's torque line (docs/fdi_design.md)
+    with pytest.raises(ValueError, match="chaser.slosh"):
+        chaser.fdi_design(str(MSR), model="uio-bank")
+
+
 def test_bad_analysis_arguments_raise():
     with pytest.raises(ValueError, match="model: position, attitude, rate or uio-bank"):
         chaser.fdi_design(str(MSR), model="orbit")
