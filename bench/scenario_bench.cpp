@@ -44,9 +44,8 @@ model::Scenario with_fdi(model::Scenario s, Fdi fdi) {
 // The whole 1200 s run, every model on, no telemetry: simulated seconds per wall-clock second.
 // The FDI variants fly the same run (fault-free, no alarm): their difference is what the FDI adds
 // to a run, its design in memory at the start included.
-void BM_EndToEnd(benchmark::State& state, bool with_fault, Fdi fdi) {
-  model::Scenario scenario = with_fdi(msr_scenario(), fdi);
-  if (with_fault) scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7}};
+// Flies `scenario` whole every iteration and reports simulated seconds per wall second.
+void fly_whole_runs(benchmark::State& state, const model::Scenario& scenario) {
   double simulated_s = 0;
   for (auto _ : state) {
     const sim::RunResult result = sim::run_scenario(scenario);
@@ -54,6 +53,12 @@ void BM_EndToEnd(benchmark::State& state, bool with_fault, Fdi fdi) {
     benchmark::DoNotOptimize(result);
   }
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
+}
+
+void BM_EndToEnd(benchmark::State& state, bool with_fault, Fdi fdi) {
+  model::Scenario scenario = with_fdi(msr_scenario(), fdi);
+  if (with_fault) scenario.faults = {model::FaultParams{.kind = model::FaultKind::kStuckOpen, .thruster = 7}};
+  fly_whole_runs(state, scenario);
 }
 BENCHMARK_CAPTURE(BM_EndToEnd, nominal, false, Fdi::kOn)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEnd, nominal_fdi_published, false, Fdi::kPublished)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -63,16 +68,7 @@ BENCHMARK_CAPTURE(BM_EndToEnd, stuck_open_T8, true, Fdi::kOn)->Unit(benchmark::k
 // The COMRADE scenarios' whole runs as shipped (ENVISAT 1,200 s, ASSIST 1,600 s; every environment
 // model on, 24 thrusters, FDI off as the scenarios have it), no telemetry. The target:
 // 30,000 simulated s per CPU s.
-void BM_EndToEndComrade(benchmark::State& state, const char* file) {
-  const model::Scenario scenario = shipped_scenario(file);
-  double simulated_s = 0;
-  for (auto _ : state) {
-    const sim::RunResult result = sim::run_scenario(scenario);
-    simulated_s += result.simulated_s;
-    benchmark::DoNotOptimize(result);
-  }
-  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
-}
+void BM_EndToEndComrade(benchmark::State& state, const char* file) { fly_whole_runs(state, shipped_scenario(file)); }
 BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -81,13 +77,7 @@ BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(bench
 void BM_EndToEndSync(benchmark::State& state, bool bank) {
   model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
   scenario.fdi.observer_bank.enabled = bank;
-  double simulated_s = 0;
-  for (auto _ : state) {
-    const sim::RunResult result = sim::run_scenario(scenario);
-    simulated_s += result.simulated_s;
-    benchmark::DoNotOptimize(result);
-  }
-  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
+  fly_whole_runs(state, scenario);
 }
 BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, false)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, true)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
@@ -54,6 +55,26 @@ void check_sensor_delay(Diagnostics& d, const char* path, double value, double p
                             format_number(kMaxSensorDelayPeriods * period_s), format_number(value)));
 }
 
+// A statistic of block changes (the impulse statistic, the observer bank): its window and baseline
+// (keys <prefix>window_s and <prefix>baseline_s) at least a block each, and together, in whole
+// blocks as the flight software rounds them (model::impulse_blocks), within the ring.
+void check_block_windows(Diagnostics& d, const std::string& prefix, double window_s, double baseline_s, double period) {
+  const std::string window = prefix + "window_s", baseline = prefix + "baseline_s";
+  const double block_s = model::impulse_block_periods(period) * period;
+  for (const std::string& key : {window, baseline}) {
+    const double value = key == window ? window_s : baseline_s;
+    if (d.clean(key) && value < block_s)
+      d.add(key, fmt::format("must be >= one block of the statistic, {} s (got {})", format_number(block_s),
+                             format_number(value)));
+  }
+  const int blocks = model::impulse_blocks(window_s, period) + model::impulse_blocks(baseline_s, period);
+  if (d.clean(window) && d.clean(baseline) && blocks > model::kMaxImpulseBlocks)
+    d.add(baseline, fmt::format("{}window_s + {}baseline_s must be <= {} s, {} blocks once each is rounded to whole "
+                                "blocks (got {} blocks)",
+                                prefix.substr(prefix.rfind('.') + 1), prefix.substr(prefix.rfind('.') + 1),
+                                format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
+}
+
 // The deficit isolation's windows, in whole periods: at least one period before the alarm, two
 // after it, the longest window holding both, and no longer than the on-board ring of samples.
 void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double period) {
@@ -76,23 +97,7 @@ void check_deficit_windows(Diagnostics& d, const model::DeficitParams& w, double
   if (d.clean(detection) && (w.detection_window_s < 2 * period || w.detection_window_s > longest_s))
     d.add(detection, fmt::format("must be in [2 control periods = {}, {}] (got {})", format_number(2 * period),
                                  format_number(longest_s), format_number(w.detection_window_s)));
-  // The impulse statistic's window and baseline: at least a block each, together within the ring.
-  const char* window = "fdi.deficit.impulse_window_s";
-  const char* baseline = "fdi.deficit.impulse_baseline_s";
-  const double block_s = model::impulse_block_periods(period) * period;
-  for (const char* key : {window, baseline}) {
-    const double value = key == window ? w.impulse_window_s : w.impulse_baseline_s;
-    if (d.clean(key) && value < block_s)
-      d.add(key, fmt::format("must be >= one block of the impulse statistic, {} s (got {})", format_number(block_s),
-                             format_number(value)));
-  }
-  // In whole blocks, as the flight software rounds them (model::impulse_blocks), so that what passes
-  // here fits the ring.
-  const int blocks = model::impulse_blocks(w.impulse_window_s, period) + model::impulse_blocks(w.impulse_baseline_s, period);
-  if (d.clean(window) && d.clean(baseline) && blocks > model::kMaxImpulseBlocks)
-    d.add(baseline, fmt::format("impulse_window_s + impulse_baseline_s must be <= {} s, {} blocks once each is rounded "
-                                "to whole blocks (got {} blocks)",
-                                format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
+  check_block_windows(d, "fdi.deficit.impulse_", w.impulse_window_s, w.impulse_baseline_s, period);
 }
 
 // The observer bank needs the tanks (its rate model) and a window of whole periods it can hold.
@@ -100,21 +105,7 @@ void check_observer_bank(Diagnostics& d, const model::Scenario& s, double period
   const model::ObserverBankParams& b = s.fdi.observer_bank;
   if (b.enabled && !s.chaser.slosh)
     d.add("fdi.observer_bank.enabled", "needs chaser.slosh: the bank's rate model is built from the tanks' slosh");
-  // In whole blocks of about a second, as the impulse statistic's, and together within its ring size.
-  const char* window = "fdi.observer_bank.window_s";
-  const char* baseline = "fdi.observer_bank.baseline_s";
-  const double block_s = model::impulse_block_periods(period) * period;
-  for (const char* key : {window, baseline}) {
-    const double value = key == window ? b.window_s : b.baseline_s;
-    if (d.clean(key) && value < block_s)
-      d.add(key, fmt::format("must be >= one block of the bank's statistic, {} s (got {})", format_number(block_s),
-                             format_number(value)));
-  }
-  const int blocks = model::impulse_blocks(b.window_s, period) + model::impulse_blocks(b.baseline_s, period);
-  if (d.clean(window) && d.clean(baseline) && blocks > model::kMaxImpulseBlocks)
-    d.add(baseline, fmt::format("window_s + baseline_s must be <= {} s, {} blocks once each is rounded to whole "
-                                "blocks (got {} blocks)",
-                                format_number(model::kMaxImpulseBlocks * block_s), model::kMaxImpulseBlocks, blocks));
+  check_block_windows(d, "fdi.observer_bank.", b.window_s, b.baseline_s, period);
 }
 
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,

@@ -111,27 +111,29 @@ json to_json(const RateModel& m) {
 }
 
 json to_json(const UioBank& b) {
+  const auto observer = [](const UioObserver& o) {
+    return json{{"thruster", o.thruster + 1},  // 0: the nominal observer, blind to none
+                {"gamma_min", o.gamma_min},
+                {"gamma", o.gamma},
+                {"gamma_sweep", o.gamma_sweep},
+                {"spectral_radius", o.spectral_radius},
+                {"residual_noise_rms_radps", o.residual_noise_rms},
+                {"N", matrix_json(o.N)},
+                {"G", matrix_json(o.G)},
+                {"L", matrix_json(o.L)},
+                {"H", matrix_json(o.H)},
+                {"Q", matrix_json(o.Q)}};
+  };
   json observers = json::array();
-  for (const UioObserver& o : b.observers)
-    observers.push_back({{"thruster", o.thruster + 1},
-                         {"gamma_min", o.gamma_min},
-                         {"gamma", o.gamma},
-                         {"gamma_sweep", o.gamma_sweep},
-                         {"spectral_radius", o.spectral_radius},
-                         {"residual_noise_rms_radps", o.residual_noise_rms},
-                         {"N", matrix_json(o.N)},
-                         {"G", matrix_json(o.G)},
-                         {"L", matrix_json(o.L)},
-                         {"H", matrix_json(o.H)},
-                         {"Q", matrix_json(o.Q)}});
+  for (const UioObserver& o : b.observers) observers.push_back(observer(o));
   json closest = json::array();
-  for (std::size_t j = 0; j < b.closest.size(); ++j)
-  {
+  for (std::size_t j = 0; j < b.closest.size(); ++j) {
     json blind = json::array();
     for (const int o : b.blind[j]) blind.push_back(o + 1);
     closest.push_back({{"thruster", j + 1}, {"blind", blind}, {"observer", b.closest[j] + 1}, {"snr", b.isolation_snr[j]}});
   }
   return {{"model", {{"Ad", matrix_json(b.Ad)}, {"Bd", matrix_json(b.Bd)}, {"Ed", matrix_json(b.Ed)}, {"C", matrix_json(b.C)}}},
+          {"nominal", observer(b.nominal)},
           {"observers", observers},
           {"fault_gain_radps", matrix_json(b.fault_gain)},
           {"closest", closest}};

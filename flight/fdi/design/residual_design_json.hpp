@@ -16,8 +16,9 @@ nlohmann::json to_json(const ResidualDesign& design);
 // matrices, the state names and each slosh mode's figures.
 nlohmann::json to_json(const RateModel& model);
 
-// The observer bank (`chaser fdi design --model uio-bank --out FILE.json`): per observer its
-// matrices and figures, the fault gains and each thruster's closest observer.
+// The observer bank (`chaser fdi design --model uio-bank --out FILE.json`): the discrete model, the
+// nominal observer and per thruster its observer (matrices and figures), the steady fault gains and
+// each thruster's blind and least moved observers.
 nlohmann::json to_json(const UioBank& bank);
 
 }  // namespace chaser::flight::fdi

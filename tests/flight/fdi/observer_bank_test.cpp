@@ -98,6 +98,18 @@ std::vector<int> parallel_torques(const model::ThrusterSetParams& set, int j) {
   return out;
 }
 
+// Of those, the ones whose torque is opposite to j's: they give j's excess by giving too little.
+std::vector<int> opposite_torques(const model::ThrusterSetParams& set, int j) {
+  const auto torque = [&](int i) {
+    const auto& t = set.thrusters[static_cast<std::size_t>(i)];
+    return Vec3(t.position_body_m.cross(t.direction_body));
+  };
+  std::vector<int> out;
+  for (const int t : parallel_torques(set, j))
+    if (torque(t).dot(torque(j)) < 0) out.push_back(t);
+  return out;
+}
+
 model::ThrusterMask mask_of(const std::vector<int>& thrusters) {
   model::ThrusterMask m = 0;
   for (const int t : thrusters) m |= model::ThrusterMask{1} << t;
@@ -123,12 +135,7 @@ TEST(ObserverBank, StuckOpenAlarmsAndLeavesItsTorqueLine) {
 TEST(ObserverBank, TooLittleNeedsACommand) {
   const model::Scenario scenario = two_tank_chaser();
   const Flight f = make_flight(scenario);
-  std::vector<int> opposite;
-  const auto& set = scenario.thrusters;
-  const Vec3 t5 = set.thrusters[kT5].position_body_m.cross(set.thrusters[kT5].direction_body);
-  for (const int t : parallel_torques(set, kT5))
-    if (set.thrusters[static_cast<std::size_t>(t)].position_body_m.cross(set.thrusters[static_cast<std::size_t>(t)].direction_body).dot(t5) < 0)
-      opposite.push_back(t);
+  const std::vector<int> opposite = opposite_torques(scenario.thrusters, kT5);
   ASSERT_EQ(opposite.size(), 2u);
   const int onset = kFullRing + 50;
   const ObserverBankState s = fly(f, onset + 300, stuck_open_t5(onset, 24, opposite));
@@ -145,12 +152,7 @@ TEST(ObserverBank, ALoneHypothesisIsConfirmed) {
   for (int t = partner; t + 1 < 24; ++t) scenario.thrusters.thrusters[static_cast<std::size_t>(t)] = scenario.thrusters.thrusters[static_cast<std::size_t>(t) + 1];
   scenario.thrusters.count = 23;
   const Flight f = make_flight(scenario);
-  std::vector<int> opposite;
-  const auto& set = scenario.thrusters;
-  const Vec3 t5 = set.thrusters[kT5].position_body_m.cross(set.thrusters[kT5].direction_body);
-  for (const int t : parallel_torques(set, kT5))
-    if (set.thrusters[static_cast<std::size_t>(t)].position_body_m.cross(set.thrusters[static_cast<std::size_t>(t)].direction_body).dot(t5) < 0)
-      opposite.push_back(t);
+  const std::vector<int> opposite = opposite_torques(scenario.thrusters, kT5);
   const int onset = kFullRing + 50;
   const ObserverBankState s = fly(f, onset + 300, stuck_open_t5(onset, 23, opposite));
   ASSERT_TRUE(s.alarm);
