@@ -21,13 +21,6 @@
 // (fdi.deficit.com_uncertainty_m, inertia_uncertainty): the impulse statistic's bound. Without it
 // the transfer into the hold, 40 N of force change on a centre of mass up to 3 cm off, read 2 N m.
 // The alarm latches.
-//// every period each observer takes the gyro's rates, the thrusters' commanded on-times and the
-// gyroscopic torque it can compute from the rates, and gives its residual; the residuals are
-// averaged over a sliding window.
-//
-// Detection: the nominal observer (blind to no thruster) alarms when its mean residual exceeds the
-// threshold; the alarm latches. The mean is what a persistent fault moves and what the liquid's
-// oscillation (periods of ~50 s) and the commands' quantisation largely cancel in.
 //
 // Isolation, after the alarm (the paper's rule, with what the rates alone can say): an observer
 // whose |d| stays below isolation_ratio x the nominal's is blind to the fault, so its
@@ -41,9 +34,10 @@
 // bank, which reads the forces too, and accepts its name only if it is one of the hypotheses).
 // A single hypothesis held for confirm_blocks blocks is confirmed.
 //
-// Allocation: everything is sized when the parameters are made (make_observer_bank); a period
-// allocates nothing. Cost per period: n^2 + 6 n + 12 multiply-adds per observer (n = 9: 147) plus
-// the commands' n x m product once.
+// Allocation: the parameters are sized when made (make_observer_bank), the state once, in the
+// bank's first period (make_observer_bank_state); a period allocates nothing after that. Cost per
+// period: n^2 + 8 n + 6 multiply-adds per observer (n = 9: 159; the nominal's a few more) plus the
+// commands' n x m product once.
 #include <array>
 #include <cstdint>
 #include <vector>
