@@ -11,12 +11,15 @@ namespace {
 
 std::vector<DiagnosisScheme>& table() {
   static std::vector<DiagnosisScheme> schemes = {
-      {.name = "position", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.position_enabled; }},
-      {.name = "attitude", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.attitude_enabled; }},
-      {.name = "deficit", .residual_channels = 0, .enabled = [](const FdirParams& p) { return p.deficit_detection; }},
+      {.name = "position", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.position_enabled; },
+       .deficit = [](const FdirState& f) { return &f.position_deficit.decision; }},
+      {.name = "attitude", .residual_channels = 3, .enabled = [](const FdirParams& p) { return p.attitude_enabled; },
+       .deficit = [](const FdirState& f) { return &f.attitude_deficit.decision; }},
+      {.name = "deficit", .residual_channels = 0, .enabled = [](const FdirParams& p) { return p.deficit_detection; },
+       .deficit = [](const FdirState& f) { return &f.detector_deficit.decision; }},
       // residual_bank_1: the nominal observer's mean residual, _2: the smallest observer's [rad/s]
       {.name = "bank", .residual_channels = 2, .enabled = [](const FdirParams& p) { return p.bank_enabled; },
-       .step = step_bank_scheme},
+       .step = step_bank_scheme, .deficit = [](const FdirState& f) { return &f.bank_deficit.decision; }},
   };
   return schemes;
 }

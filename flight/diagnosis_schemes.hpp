@@ -19,6 +19,9 @@
 
 namespace chaser::flight {
 
+namespace fdi {
+struct DeficitDecision;
+}
 struct FdirParams;
 struct FdirState;
 struct FdirInput;
@@ -38,6 +41,10 @@ struct DiagnosisScheme {
   // software state lives), reading the rest of it at most.
   void (*step)(const FdirParams&, FdirState&, const model::SensorMeasurements&, const FdirInput&,
                fdi::FdiSchemeOutput&) = nullptr;
+  // The deficit bank's decision the scheme may take its name from (flight/fdi/deficit_isolation.hpp),
+  // nullptr where it names without it: where the two agree on the confirmed lane, the bank's reading
+  // of the fault (stuck open, leak, its size) goes with the name to the recovery and the episode.
+  const fdi::DeficitDecision* (*deficit)(const FdirState&) = nullptr;
 };
 
 // The table, in slot order.

@@ -107,11 +107,8 @@ std::vector<model::ThrusterMask> watchable_sets(const model::Scenario& s) {
 // confirming scheme's slot where it named that lane: a stuck-open valve 1, a leak its size (the
 // realised on-time's floor, model/faults.hpp); 0 otherwise.
 double uncommanded_on_fraction(const FdirState& state, int slot, int lane) {
-  const fdi::DeficitDecision* d = slot == kPositionScheme   ? &state.position_deficit.decision
-                                  : slot == kAttitudeScheme ? &state.attitude_deficit.decision
-                                  : slot == kDeficitScheme  ? &state.detector_deficit.decision
-                                  : slot == kBankScheme     ? &state.bank_deficit.decision
-                                                            : nullptr;
+  const DiagnosisScheme& scheme = diagnosis_schemes()[static_cast<std::size_t>(slot)];
+  const fdi::DeficitDecision* d = scheme.deficit ? scheme.deficit(state) : nullptr;
   if (d == nullptr || !d->decided || d->thruster != lane) return 0.0;
   if (d->kind == model::FaultKind::kStuckOpen) return 1.0;
   if (d->kind == model::FaultKind::kLeak) return std::clamp(d->size, 0.0, 1.0);
@@ -276,10 +273,8 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.bank_enabled = s.fdi.observer_bank.enabled;
   if (p.bank_enabled) {
     // The bank models the starting active set, its columns in thruster order (configuration_columns').
-    std::vector<int> column_thruster;
-    const model::ThrusterMask active = model::initial_active_set(s.thrusters);
-    for (int t = 0; t < model::kMaxThrusters; ++t)
-      if (active & (model::ThrusterMask{1} << t)) column_thruster.push_back(t);
+    const fdi::WatchedSet lanes = fdi::watched_set(model::initial_active_set(s.thrusters));
+    const std::vector<int> column_thruster(lanes.index.begin(), lanes.index.begin() + lanes.count);
     const model::ObserverBankParams& b = s.fdi.observer_bank;
     const double T = s.control_period_s;
     p.bank = fdi::make_observer_bank(fdi::design_uio_bank(s, /*figures=*/false), column_thruster, s.chaser.inertia_kgm2,
@@ -456,11 +451,7 @@ void step_bank_scheme(const FdirParams& p, FdirState& state, const model::Sensor
   const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
   fdi::ObserverBankState& b = state.bank;
   fdi::step_observer_bank(p.bank, b, meas.omega_body_radps, w.set, in.ton, in.commanded_wrench);
-  const auto lane_of = [&](int thruster) {
-    for (int lane = 0; lane < w.set.count; ++lane)
-      if (w.set.index[static_cast<std::size_t>(lane)] == thruster) return lane;
-    return -1;
-  };
+  const auto lane_of = [&](int thruster) { return w.set.lane[static_cast<std::size_t>(thruster)]; };
   const bool deciding = b.filled == p.bank.window_blocks + p.bank.baseline_blocks;
   out.residual = Vec3(b.nominal_change_radps, deciding ? b.smallest_change_radps : 0.0, 0.0);  // [rad/s]
   out.glr = fdi::GlrStatistic::of_value(b.statistic_Nm);
@@ -496,10 +487,10 @@ FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {
   const std::vector<DiagnosisScheme>& schemes = diagnosis_schemes();
   for (std::size_t i = kDeficitScheme + 1; i < schemes.size(); ++i) {
     const SchemeLatch& l = f.latches[i];
-    // The observer bank's name may be the deficit bank's (step_bank_scheme): then its reading comes along.
-    const fdi::DeficitDecision& bank = f.bank_deficit.decision;
-    const bool named_by_bank = i == kBankScheme && bank.decided && bank.thruster >= 0 && bank.thruster == l.confirmed;
-    const fdi::DeficitDecision diagnosis = named_by_bank ? bank : fdi::DeficitDecision{};
+    // A scheme's name may be the deficit bank's (the observer bank's, step_bank_scheme): then its reading comes along.
+    const fdi::DeficitDecision* bank = schemes[i].deficit ? schemes[i].deficit(f) : nullptr;
+    const bool named_by_bank = bank && bank->decided && bank->thruster >= 0 && bank->thruster == l.confirmed;
+    const fdi::DeficitDecision diagnosis = named_by_bank ? *bank : fdi::DeficitDecision{};
     e.schemes[i] = summary_of(w, schemes[i].enabled(p) && l.alarm_s >= 0, l.alarm_s, l.confirmed, l.isolated_s,
                               diagnosis, f.bank_first_period, T);
   }

@@ -1,6 +1,7 @@
 #include "flight/fdi/observer_bank.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -81,8 +82,13 @@ void decide(const ObserverBankFlightParams& p, ObserverBankState& s) {
     const double bound = p.com_uncertainty_m * (dF((a + 1) % 3) + dF((a + 2) % 3)) + p.inertia_uncertainty * dtau(a);
     s.statistic_Nm = std::max(s.statistic_Nm, std::abs(torque_Nm(a)) - bound);
   }
+  // Each observer's change, once: the smallest goes to telemetry, all of them to the hypotheses.
+  std::array<double, model::kMaxThrusters> observer_change{};
   s.smallest_change_radps = std::numeric_limits<double>::infinity();
-  for (int c = 0; c < p.columns; ++c) s.smallest_change_radps = std::min(s.smallest_change_radps, change(p, s, residual_row(c), 2));
+  for (int c = 0; c < p.columns; ++c) {
+    observer_change[static_cast<std::size_t>(c)] = change(p, s, residual_row(c), 2);
+    s.smallest_change_radps = std::min(s.smallest_change_radps, observer_change[static_cast<std::size_t>(c)]);
+  }
   if (!s.alarm && s.statistic_Nm > p.threshold_Nm) {
     s.alarm = true;
     s.alarm_period = s.period - 1;
@@ -93,7 +99,7 @@ void decide(const ObserverBankFlightParams& p, ObserverBankState& s) {
   int best = -1, count = 0;
   double best_change = std::numeric_limits<double>::infinity();
   for (int c = 0; c < p.columns; ++c) {
-    const double d = change(p, s, residual_row(c), 2);
+    const double d = observer_change[static_cast<std::size_t>(c)];
     if (!(d < p.isolation_ratio * s.nominal_change_radps)) continue;
     const double along = nominal_change.dot(p.observers[static_cast<std::size_t>(c)].torque_direction);
     const bool commanded = s.window_sum(on_time_row(p, c)) * w > p.min_commanded;

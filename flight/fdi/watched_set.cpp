@@ -10,7 +10,11 @@ WatchedSet watched_set(model::ThrusterMask mask) {
   WatchedSet w;
   w.mask = mask;
   w.count = list.count;
-  for (int k = 0; k < list.count; ++k) w.index[static_cast<std::size_t>(k)] = list.index[static_cast<std::size_t>(k)];
+  for (int k = 0; k < list.count; ++k) {
+    const int thruster = list.index[static_cast<std::size_t>(k)];
+    w.index[static_cast<std::size_t>(k)] = thruster;
+    w.lane[static_cast<std::size_t>(thruster)] = k;
+  }
   return w;
 }
 

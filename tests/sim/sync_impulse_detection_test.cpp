@@ -13,15 +13,14 @@
 #include "flight/flight_software.hpp"
 #include "io/scenario_loader.hpp"
 #include "sim/run.hpp"
+#include "tests/support/scenario_refusal.hpp"
 
 namespace chaser::sim {
 namespace {
 
 model::Scenario sync_with(const std::string& statistic) {
-  const io::LoadResult loaded = io::load_scenario_file(
-      "scenarios/comrade_sync.yaml", {"fdi.deficit.detection=true", "fdi.deficit.detection_statistic=" + statistic});
-  EXPECT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
-  return *loaded.scenario;
+  return testing::load_with("scenarios/comrade_sync.yaml",
+                            {"fdi.deficit.detection=true", "fdi.deficit.detection_statistic=" + statistic});
 }
 
 // The largest statistic of the deficit scheme over the run (per-second maxima).
@@ -94,11 +93,7 @@ TEST(SyncImpulseDetection, WindowsBecomeWholeBlocks) {
 // The keys' checks name the key and the allowed range.
 TEST(SyncImpulseDetection, BadKeysAreRefusedByName) {
   const auto refused = [](std::vector<std::string> sets, const std::string& key, const std::string& says) {
-    const io::LoadResult r = io::load_scenario_file("scenarios/comrade_sync.yaml", sets);
-    ASSERT_FALSE(r.errors.empty()) << key;
-    const std::string text = io::format_errors(r.errors);
-    EXPECT_NE(text.find(key), std::string::npos) << text;
-    EXPECT_NE(text.find(says), std::string::npos) << text;
+    testing::expect_refused("scenarios/comrade_sync.yaml", sets, key, says);
   };
   refused({"fdi.deficit.impulse_window_s=0.5"}, "fdi.deficit.impulse_window_s", ">= one block");
   refused({"fdi.deficit.impulse_baseline_s=590"}, "fdi.deficit.impulse_baseline_s", "<= 600");

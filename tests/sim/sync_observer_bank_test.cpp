@@ -14,15 +14,13 @@
 #include "io/scenario_loader.hpp"
 #include "io/scenario_sections.hpp"
 #include "sim/run.hpp"
+#include "tests/support/scenario_refusal.hpp"
 
 namespace chaser::sim {
 namespace {
 
 model::Scenario sync_with_bank() {
-  const io::LoadResult loaded = io::load_scenario_file(
-      "scenarios/comrade_sync.yaml", {"fdi.observer_bank.enabled=true", "fdi.deficit.detection=false"});
-  EXPECT_TRUE(loaded.scenario) << io::format_errors(loaded.errors);
-  return *loaded.scenario;
+  return testing::load_with("scenarios/comrade_sync.yaml", {"fdi.observer_bank.enabled=true", "fdi.deficit.detection=false"});
 }
 
 double largest_statistic(const RunResult& r) {
@@ -77,11 +75,7 @@ TEST(SyncObserverBank, TheFlightSoftwareFliesTheScenariosBank) {
 // The keys' checks name the key and the allowed range.
 TEST(SyncObserverBank, BadKeysAreRefusedByName) {
   const auto refused = [](std::vector<std::string> sets, const std::string& key, const std::string& says) {
-    const io::LoadResult r = io::load_scenario_file("scenarios/comrade_sync.yaml", sets);
-    ASSERT_FALSE(r.errors.empty()) << key;
-    const std::string text = io::format_errors(r.errors);
-    EXPECT_NE(text.find(key), std::string::npos) << text;
-    EXPECT_NE(text.find(says), std::string::npos) << text;
+    testing::expect_refused("scenarios/comrade_sync.yaml", sets, key, says);
   };
   refused({"fdi.observer_bank.window_s=0.5"}, "fdi.observer_bank.window_s", ">= one block");
   refused({"fdi.observer_bank.baseline_s=590"}, "fdi.observer_bank.baseline_s", "<= 600");

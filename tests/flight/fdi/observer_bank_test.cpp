@@ -87,26 +87,24 @@ std::function<PeriodInput(int)> stuck_open_t5(int onset, int thrusters, std::vec
   };
 }
 
+// Thruster i's torque direction per unit thrust about the body origin [m].
+Vec3 torque_of(const model::ThrusterSetParams& set, int i) {
+  const auto& t = set.thrusters[static_cast<std::size_t>(i)];
+  return t.position_body_m.cross(t.direction_body);
+}
+
 std::vector<int> parallel_torques(const model::ThrusterSetParams& set, int j) {
-  const auto torque = [&](int i) {
-    const auto& t = set.thrusters[static_cast<std::size_t>(i)];
-    return Vec3(t.position_body_m.cross(t.direction_body));
-  };
   std::vector<int> out;
   for (int i = 0; i < set.count; ++i)
-    if (torque(i).cross(torque(j)).norm() < 1e-12) out.push_back(i);
+    if (torque_of(set, i).cross(torque_of(set, j)).norm() < 1e-12) out.push_back(i);
   return out;
 }
 
 // Of those, the ones whose torque is opposite to j's: they give j's excess by giving too little.
 std::vector<int> opposite_torques(const model::ThrusterSetParams& set, int j) {
-  const auto torque = [&](int i) {
-    const auto& t = set.thrusters[static_cast<std::size_t>(i)];
-    return Vec3(t.position_body_m.cross(t.direction_body));
-  };
   std::vector<int> out;
   for (const int t : parallel_torques(set, j))
-    if (torque(t).dot(torque(j)) < 0) out.push_back(t);
+    if (torque_of(set, t).dot(torque_of(set, j)) < 0) out.push_back(t);
   return out;
 }
 
