@@ -1,5 +1,7 @@
 // chaser campaign: a Monte Carlo campaign (or one shard of it), and chaser campaign merge
 // (docs/campaigns.md).
+#include <array>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,6 +16,7 @@
 #include "campaign/progress.hpp"
 #include "campaign/reach_tables.hpp"
 #include "campaign/csv.hpp"
+#include "campaign/faults_tables.hpp"
 #include "campaign/rigidise_study.hpp"
 #include "campaign/mission_tables.hpp"
 #include "campaign/stabilise_tables.hpp"
@@ -36,6 +39,11 @@ constexpr const char* kPresetReach = "comrade-reach";
 constexpr const char* kPresetStabilise = "comrade-stabilise";
 constexpr const char* kPresetMission = "comrade-mission";
 constexpr const char* kPresetRigidise = "comrade-rigidise";
+constexpr const char* kPresetFaults = "comrade-faults";
+// comrade-faults: runs per fault kind for each of COMRADE 2018's four thrusters (sec. 6.3: T1, T5,
+// T13, T17); every other thruster gets a fifth of that, the fault-free case twice.
+constexpr int kFaultsRuns = 100;
+constexpr std::array<int, 4> kComradeFourIndices = {0, 4, 12, 16};
 // COMRADE Table 7's columns: 100 runs each from one capture (~3 s each: two columns in ~5 minutes
 // on 2 cores).
 constexpr int kRigidiseRuns = 100;
@@ -106,9 +114,9 @@ std::optional<Prepared> prepare(const CampaignArgs& args) {
   std::string runs_text = args.runs;
   if (!args.preset.empty()) {
     if (args.preset != kPresetTable2) {
-      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {}, {}, {})\n",
+      std::cerr << fmt::format("chaser campaign: --preset: unknown preset '{}' (allowed: {}, {}, {}, {}, {}, {}, {})\n",
                                args.preset, kPresetTable2, kPresetTable5, kPresetReach, kPresetStabilise, kPresetMission,
-                               kPresetRigidise);
+                               kPresetRigidise, kPresetFaults);
       return std::nullopt;
     }
     overrides.push_back("fdi.recovery=none");  // the paper evaluates each scheme alone
@@ -172,13 +180,16 @@ int campaign_mpi(const CampaignArgs& args) {
 
 // One fault-free campaign of `args` into out_dir/name with `first_override` before the user's --set;
 // false after printing what went wrong (the exit code in `code`).
+// `cases` and `runs` (--cases' and --runs' forms) replace the fault-free case and its runs.
 bool run_case_campaign(const CampaignArgs& args, const std::string& scenario_path, const std::string& name,
-                       const std::vector<std::string>& first_overrides, int& code) {
+                       const std::vector<std::string>& first_overrides, int& code, const std::string& cases = "none",
+                       const std::string& runs = "") {
   CampaignArgs sub = args;
   sub.preset.clear();
   sub.also.clear();
   sub.scenario_path = scenario_path;
-  sub.cases = "none";
+  sub.cases = cases;
+  if (!runs.empty()) sub.runs = runs;
   if (sub.runs.empty()) sub.runs = kTable5Runs;
   sub.out_dir = (std::filesystem::path(args.out_dir) / name).string();
   sub.overrides.insert(sub.overrides.begin(), first_overrides.begin(), first_overrides.end());  // the user's --set win
@@ -374,6 +385,107 @@ int comrade_mission(const CampaignArgs& args) {
   return kExitOk;
 }
 
+// --preset comrade-faults (docs/fdi.md, "Every thruster's faults over the whole synchronisation"):
+// faults of every kind on every thruster of a synchronised-flight scenario, onsets uniform over
+// [duration/10, duration - 100 s]: N runs per kind (--runs N, default 100) for each of COMRADE's
+// four, N/5 (at least 1) for every other starting thruster (or those campaign.fault_thrusters
+// names), 2N fault-free; each thruster's campaign flown twice, with the scenario's accommodation and
+// with diagnosis only (fdi.recovery=none, the same runs: the same seeds); each a campaign in its
+// folder under --out, resumable as any; then faults.md and faults.csv beside them.
+int comrade_faults(const CampaignArgs& args) {
+  if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
+    std::cerr << "chaser campaign: --preset comrade-faults flies its campaigns in one process: leave out --mpi, "
+                 "--shard, --cases and --also\n";
+    return kExitBadInput;
+  }
+  int n = kFaultsRuns;
+  if (!args.runs.empty()) {
+    const auto [end, ec] = std::from_chars(args.runs.data(), args.runs.data() + args.runs.size(), n);
+    if (ec != std::errc{} || end != args.runs.data() + args.runs.size() || n < 1 || n > 100000) {
+      std::cerr << fmt::format("chaser campaign: --runs: --preset comrade-faults takes a count of runs per fault kind "
+                               "for each of COMRADE's four thrusters, in [1, 100000] (got '{}')\n",
+                               args.runs);
+      return kExitBadInput;
+    }
+  }
+  const auto loaded = load_or_report(args.scenario_path, args.overrides);
+  if (!loaded) return kExitBadInput;
+  const model::Scenario& s = *loaded->scenario;
+  if (!s.guidance.synchronised || !s.target.body) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-faults: {} flies no synchronisation "
+                             "(guidance.synchronised, target.body): use scenarios/comrade_sync.yaml\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
+  const model::ThrusterMask active = model::initial_active_set(s.thrusters);
+  model::ThrusterMask four = 0;
+  for (const int t : kComradeFourIndices) four |= model::ThrusterMask{1} << t;
+  if ((active & four) != four) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-faults: {} does not start with T1, T5, T13 and T17 "
+                             "active (COMRADE's four)\n",
+                             args.scenario_path);
+    return kExitBadInput;
+  }
+  if (!(s.duration_s > 200.0)) {
+    std::cerr << fmt::format("chaser campaign: --preset comrade-faults: duration_s must be > 200 s for the onsets' "
+                             "window [duration/10, duration - 100 s] (got {})\n",
+                             s.duration_s);
+    return kExitBadInput;
+  }
+  const model::ThrusterMask others = (s.campaign.fault_thrusters != 0 ? s.campaign.fault_thrusters : active) & ~four;
+  const std::uint64_t seed = args.seed.value_or(s.campaign.seed);
+  const double onset_s = s.duration_s / 10.0;
+  // Before the user's --set (which may move the onsets); the thruster, seed and recovery after them.
+  const std::vector<std::string> window = {fmt::format("campaign.onset_s={}", onset_s),
+                                           fmt::format("campaign.onset_max_s={}", s.duration_s - 100.0),
+                                           fmt::format("campaign.horizon_after_onset_s={}", s.duration_s - onset_s)};
+  const std::filesystem::path out(args.out_dir);
+  const auto fly = [&](const std::string& folder, const std::string& cases, int runs, std::vector<std::string> last,
+                       int& code) {
+    CampaignArgs sub = args;
+    sub.seed.reset();
+    sub.overrides.insert(sub.overrides.end(), last.begin(), last.end());
+    std::cerr << fmt::format("comrade-faults: {}\n", folder);
+    return run_case_campaign(sub, args.scenario_path, folder, window, code, cases, std::to_string(runs));
+  };
+  int code = kExitOk;
+  if (!fly("none", "none", 2 * n, {fmt::format("campaign.seed={}", seed)}, code)) return code;
+  std::string error;
+  const std::optional<campaign::FaultFreeFigures> fault_free = campaign::read_fault_free((out / "none" / "runs.csv").string(), error);
+  if (!fault_free) {
+    std::cerr << ("chaser campaign: " + error + '\n');
+    return kExitFailure;
+  }
+  std::vector<campaign::FaultsColumn> columns;
+  campaign::FaultsColumn rest{.name = fmt::format("other {}", model::thruster_count(others)), .kinds = {}};
+  for (int t = 0; t < model::kMaxThrusters; ++t) {
+    const model::ThrusterMask bit = model::ThrusterMask{1} << t;
+    if (!((four | others) & bit)) continue;
+    const std::string name = model::thruster_name(t);
+    const int runs = (four & bit) ? n : std::max(1, n / 5);
+    // Each thruster's own seed: its runs' dispersions and onsets independent of the other thrusters'.
+    const std::vector<std::string> mine = {fmt::format("campaign.fault_thrusters=[{}]", name),
+                                           fmt::format("campaign.seed={}", seed + static_cast<std::uint64_t>(t) + 1)};
+    std::vector<std::string> diagnose = mine;
+    diagnose.push_back("fdi.recovery=none");
+    const std::string kinds = "stuck_open,stuck_closed,leak,loss";
+    if (!fly(name, kinds, runs, mine, code) || !fly("diagnosis-only/" + name, kinds, runs, diagnose, code)) return code;
+    campaign::FaultsColumn own{.name = name, .kinds = {}};
+    campaign::FaultsColumn& column = (four & bit) ? own : rest;
+    if (!campaign::add_faults_runs(column, (out / name / "runs.csv").string(), false, error) ||
+        !campaign::add_faults_runs(column, (out / "diagnosis-only" / name / "runs.csv").string(), true, error)) {
+      std::cerr << ("chaser campaign: " + error + '\n');
+      return kExitFailure;
+    }
+    if (four & bit) columns.push_back(own);
+  }
+  if (others != 0) columns.push_back(rest);
+  std::ofstream(out / "faults.md") << campaign::faults_markdown(*fault_free, columns);
+  std::ofstream(out / "faults.csv") << campaign::faults_csv(*fault_free, columns);
+  std::cout << fmt::format("comrade-faults: wrote {}/faults.md and faults.csv\n", args.out_dir);
+  return kExitOk;
+}
+
 // --rerun ... --of DIR: the campaign the options describe must be the one DIR holds (its
 // campaign.json, shards aside): run I of another campaign is another run, and nothing would say so.
 std::string check_rerun_of(const std::string& dir, const campaign::CampaignPlan& plan) {
@@ -504,8 +616,9 @@ int campaign_command(const CampaignArgs& args) {
   }
   if (args.rerun) {
     if (args.preset == kPresetTable5 || args.preset == kPresetReach || args.preset == kPresetStabilise ||
-        args.preset == kPresetMission || args.preset == kPresetRigidise || !args.also.empty()) {
-      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise, comrade-mission or --also (rerun one "
+        args.preset == kPresetMission || args.preset == kPresetRigidise || args.preset == kPresetFaults ||
+        !args.also.empty()) {
+      std::cerr << "chaser campaign: --rerun: not with --preset comrade-table5, comrade-reach, comrade-stabilise, comrade-mission, comrade-faults or --also (rerun one "
                    "case's folder: its scenario with --set target.body.spin_case=S1|S2|S3 or capture.law=hinf|"
                    "compliance, and --cases none)\n";
       return kExitBadInput;
@@ -517,6 +630,7 @@ int campaign_command(const CampaignArgs& args) {
   if (args.preset == kPresetStabilise) return comrade_stabilise(args);
   if (args.preset == kPresetMission) return comrade_mission(args);
   if (args.preset == kPresetRigidise) return comrade_rigidise(args);
+  if (args.preset == kPresetFaults) return comrade_faults(args);
   if (!args.also.empty()) {
     std::cerr << "chaser campaign: --also: only with --preset comrade-table5\n";
     return kExitBadInput;

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
                            "With --rerun: the campaign's folder; refuses options that describe another campaign");
   campaign_cmd->add_option("--seed", campaign.seed, "Campaign seed (replaces campaign.seed)");
   campaign_cmd->add_option("--set", campaign.overrides, "Override a scenario key: key.path=value (repeatable)");
-  campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign; comrade-table5: COMRADE 2018 Table 5 by spin case (docs/campaigns.md); comrade-reach: its Tables 5 (reach) and 6 by combined controller (docs/servicing.md); comrade-stabilise: its Table 8 by spin case; comrade-mission: the whole mission's phase verdicts by spin case; comrade-rigidise: its Table 7 by rigidisation law, from one capture (docs/servicing.md)");
+  campaign_cmd->add_option("--preset", campaign.preset, "fonod2015-table2: the paper's campaign; comrade-table5: COMRADE 2018 Table 5 by spin case (docs/campaigns.md); comrade-reach: its Tables 5 (reach) and 6 by combined controller (docs/servicing.md); comrade-stabilise: its Table 8 by spin case; comrade-mission: the whole mission's phase verdicts by spin case; comrade-rigidise: its Table 7 by rigidisation law, from one capture (docs/servicing.md); comrade-faults: every thruster's faults over the synchronisation, with and without accommodation (docs/fdi.md)");
   campaign_cmd->add_option("--also", campaign.also,
                            "With --preset comrade-table5: another scenario's cases in the same table (repeatable)");
   campaign_cmd->add_flag("--mpi", campaign.mpi, "Spread the runs over the ranks of mpirun/srun; rank 0 writes");

@@ -680,6 +680,37 @@ def comrade_mission_rows(out):
     return table
 
 
+# Every thruster's faults over the synchronisation (the comrade-faults preset's faults.csv): per
+# kind the FDIR's names, delays and Table 1, by group of fault thrusters; the fault-free runs first.
+FAULTS_GROUPS = ("T1", "T5", "T13", "T17", "other 20", "all")
+FAULTS_LABELS = (("fault-free: false alarms", "fault-free: Table 1 met at the end")
+                 + sum(((f"{case.replace('_', ' ')}: missed, wrong, right",
+                         f"{case.replace('_', ' ')}: t_d mean / 95th pct.",
+                         f"{case.replace('_', ' ')}: t_i mean / 95th pct.",
+                         f"{case.replace('_', ' ')}: Table 1 met, accommodated; diagnosis only")
+                        for case in FAULT_CASES), ()))
+
+
+def comrade_faults_rows(out):
+    with open(Path(out) / "faults.csv", newline="") as f:
+        rows = {(r["group"], r["case"]): r for r in csv.DictReader(f)}
+    free = rows["none", "none"]
+    blank = ["-"] * (len(FAULTS_GROUPS) - 1)
+    table = [blank + [f"{free['false_alarms']} of {free['flown']}"],
+             blank + [f"{free['table1_met']} of {free['flown']}"]]
+
+    def seconds(mean, p95):
+        return "-" if missing(number(mean)) else f"{fixed(number(mean), 1)} / {fixed(number(p95), 1)} s"
+
+    for case in FAULT_CASES:
+        cells = [rows[g, case] for g in FAULTS_GROUPS]
+        table.append([f"{c['missed']}, {c['wrong']}, {c['right']} of {c['flown']}" for c in cells])
+        table.append([seconds(c["detection_mean_s"], c["detection_p95_s"]) for c in cells])
+        table.append([seconds(c["isolation_mean_s"], c["isolation_p95_s"]) for c in cells])
+        table.append([f"{c['table1_met']}; {c['diagnosed_table1_met']} of {c['flown']}" for c in cells])
+    return table
+
+
 # --------------------------------------------------------------------------------------------------
 # One run, the thruster set, the FDI design, the H-infinity loops
 
@@ -1822,6 +1853,8 @@ COMMANDS = {c.key: c for c in tuple(envisat_final_approach_command(*r) for r in 
                                                      "--set", "fdi.deficit.detection=false", "--out", "OUT"), quick=False),
     Command("comrade-sync-both", COMRADE_SYNC_FDI + ("--set", "fdi.observer_bank.enabled=true",
                                                      "--set", "fdi.recovery=none", "--out", "OUT"), quick=False),
+    Command("comrade-faults", ("campaign", "scenarios/comrade_sync.yaml", "--preset", "comrade-faults", "--out", "OUT"),
+            quick=False),
     Command("comrade-sync-gain", ("campaign", "scenarios/comrade_sync.yaml", "--runs", "none=200", "--cases", "none",
                                   "--set", "fdi.deficit.detection_statistic=gain", "--set", "fdi.recovery=none",
                                   "--out", "OUT"), quick=False),
@@ -2037,6 +2070,8 @@ TABLES = [
           sum(((f"{case.replace('_', ' ')}: missed, wrong, right", f"{case.replace('_', ' ')}: mean / 95th pct. t_d",
                 f"{case.replace('_', ' ')}: Table 1 met at the end") for case in FAULT_CASES), ()),
           comrade_sync_spread_rows, words=("of", "s")),
+    Table("fdi-comrade-faults", "docs/fdi.md", ("comrade-faults",), ("FDIR, shipped, onsets in 300-2,900 s",) + FAULTS_GROUPS,
+          FAULTS_LABELS, comrade_faults_rows, words=("of", "s")),
     Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
           ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
            "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,

@@ -58,7 +58,7 @@ TEST(CampaignCli, BadInputExitsWith2AndNamesTheOption) {
   expect_bad(out + "--threads 0", "--threads");
   expect_bad(out + "--preset nope",
              "--preset: unknown preset 'nope' (allowed: fonod2015-table2, comrade-table5, comrade-reach, comrade-stabilise, "
-             "comrade-mission, comrade-rigidise)");
+             "comrade-mission, comrade-rigidise, comrade-faults)");
   expect_bad(out + "--set campaign.loss_size_max=0.2", "campaign.loss_size_max: must be >= campaign.loss_size_min");
   expect_bad(out + "--resume", "--resume");
   EXPECT_EQ(chaser("campaign").exit_code, 2);
@@ -127,6 +127,67 @@ TEST(CampaignCli, ComradeReachWritesALawFolderPerControllerAndTheTables) {
             std::string::npos) << sync.output;
   const CommandResult shard =
       chaser("campaign scenarios/comrade_capture.yaml --preset comrade-reach --shard 0/2 --out " + dir.string());
+  EXPECT_EQ(shard.exit_code, 2);
+  EXPECT_NE(shard.output.find("leave out --mpi, --shard, --cases and --also"), std::string::npos) << shard.output;
+  fs::remove_all(dir);
+}
+
+// --preset comrade-faults: the fault-free campaign, each of COMRADE's four thrusters' and every other
+// named one's (here T2 only, one run per kind), each also flown with diagnosis only, faults.md and
+// faults.csv beside them, resumable; refused with a count that is not one, on a scenario without a
+// synchronisation and with a shard.
+TEST(CampaignCli, ComradeFaultsFliesEachThrusterWithAndWithoutAccommodation) {
+  const fs::path dir = chaser::testing::scratch_path("chaser_faults_cli");
+  fs::remove_all(dir);
+  const std::string preset = "campaign scenarios/comrade_sync.yaml --preset comrade-faults --runs 1 --threads 2 "
+                             "--set 'campaign.fault_thrusters=[T2]' --out " + dir.string();
+  const CommandResult faults = chaser(preset);
+  ASSERT_EQ(faults.exit_code, 0) << faults.output;
+  for (const char* folder : {"none", "T1", "T5", "T13", "T17", "T2", "diagnosis-only/T1", "diagnosis-only/T2"})
+    EXPECT_TRUE(fs::exists(dir / folder / "runs.csv")) << folder;
+  EXPECT_FALSE(fs::exists(dir / "T3"));
+  // The diagnosis-only runs are the same runs (seeds, faults, onsets), with fdi.recovery=none.
+  const auto fault_columns = [](const std::string& runs) {  // seed, case, fault_thruster, fault_size, onset_s
+    std::istringstream in(runs);
+    std::string line, out;
+    std::vector<std::size_t> keep;
+    for (bool header = true; std::getline(in, line); header = false) {
+      std::vector<std::string> fields;
+      std::istringstream row(line);
+      for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+      if (header)
+        for (std::size_t i = 0; i < fields.size(); ++i)
+          if (fields[i] == "seed" || fields[i] == "case" || fields[i] == "fault_thruster" || fields[i] == "fault_size" ||
+              fields[i] == "onset_s")
+            keep.push_back(i);
+      for (const std::size_t i : keep) out += fields.at(i) + ",";
+      out += "\n";
+    }
+    EXPECT_EQ(keep.size(), 5u);
+    return out;
+  };
+  EXPECT_EQ(fault_columns(read_file(dir / "T5" / "runs.csv")), fault_columns(read_file(dir / "diagnosis-only" / "T5" / "runs.csv")));
+  const std::string none = read_file(dir / "none" / "runs.csv");
+  EXPECT_EQ(std::count(none.begin(), none.end(), '\n'), 3) << none;  // 2 N fault-free runs and the header
+  const std::string table = read_file(dir / "faults.md");
+  EXPECT_NE(table.find("| fault | | T1 | T5 | T13 | T17 | other 1 | all |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| no false alarm in the fault-free runs |"), std::string::npos) << table;
+  const std::string csv = read_file(dir / "faults.csv");
+  EXPECT_NE(csv.find("\nall,loss,5,"), std::string::npos) << csv;  // 4 + 1 loss runs
+  const CommandResult again = chaser(preset + " --resume");  // resumable: every campaign found done
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_file(dir / "faults.md"), table);
+  const CommandResult zero = chaser("campaign scenarios/comrade_sync.yaml --preset comrade-faults --runs none=3 --out " +
+                                    dir.string());
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("--runs: --preset comrade-faults takes a count of runs per fault kind"), std::string::npos)
+      << zero.output;
+  const CommandResult msr = chaser("campaign scenarios/msr_terminal.yaml --preset comrade-faults --out " + dir.string());
+  EXPECT_EQ(msr.exit_code, 2);
+  EXPECT_NE(msr.output.find("--preset comrade-faults: scenarios/msr_terminal.yaml flies no synchronisation"),
+            std::string::npos) << msr.output;
+  const CommandResult shard =
+      chaser("campaign scenarios/comrade_sync.yaml --preset comrade-faults --shard 0/2 --out " + dir.string());
   EXPECT_EQ(shard.exit_code, 2);
   EXPECT_NE(shard.output.find("leave out --mpi, --shard, --cases and --also"), std::string::npos) << shard.output;
   fs::remove_all(dir);

@@ -1,0 +1,61 @@
+#pragma once
+// Thruster faults in COMRADE's synchronised flight over dispersed runs (the comrade-faults preset;
+// docs/fdi.md, "Every thruster's faults over the whole synchronisation"). Per group of fault
+// thrusters (each of COMRADE 2018's four, sec. 6.3, and the others pooled) and fault kind, the FDIR
+// as a whole: Fonod 2015's indices (missed detections, wrong and right isolations; sec. V) with their
+// exact 95 % bounds, the mean and 95th-percentile detection and isolation delays after the onset,
+// and COMRADE Table 1 at the end with the scenario's accommodation and with diagnosis only; the
+// fault-free runs' false alarms; and the targets judged on them.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chaser::campaign {
+
+// One group's runs of one fault kind.
+struct FaultsCell {
+  int runs = 0;   // rows of the case
+  int flown = 0;  // status ok: the figures below are theirs
+  int false_alarms = 0;  // alarmed before the onset
+  int missed = 0, wrong = 0, right = 0;
+  std::vector<double> detection_s;  // [s] after the onset, every detected run
+  std::vector<double> isolation_s;  // [s] after the onset, every right isolation
+  int table1_met = 0;               // COMRADE Table 1 met at the end (runs.csv's capture)
+  // The same runs flown with diagnosis only (fdi.recovery: none): Table 1 at the end.
+  int diagnosed_flown = 0, diagnosed_table1_met = 0;
+};
+
+// The four fault kinds in the campaign's order: stuck_open, stuck_closed, leak, loss.
+inline constexpr std::array<const char*, 4> kFaultKinds = {"stuck_open", "stuck_closed", "leak", "loss"};
+
+struct FaultsColumn {
+  std::string name;  // "T1" or "other 20"
+  std::array<FaultsCell, 4> kinds;  // kFaultKinds' order
+};
+
+struct FaultFreeFigures {
+  int runs = 0, flown = 0, false_alarms = 0, table1_met = 0;
+};
+
+// Adds the rows of a faulty campaign's runs.csv (the FDIR's columns, case, status, capture) to the
+// column: `diagnosed` false for the accommodated runs, true for the diagnosis-only ones (their
+// Table 1 only). False with `error` set when the file cannot be read or lacks a column.
+bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool diagnosed, std::string& error);
+// The fault-free campaign's figures; nullopt with `error` set.
+std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std::string& error);
+
+// The 95th percentile by nearest rank (the smallest value with at least 95 % of them at or under
+// it); NaN for none.
+double percentile_95(std::vector<double> values);
+
+// faults.md: the fault-free figures, a table of the groups (columns, then all pooled) by kind, and
+// the targets (0 false alarms, no stuck-open fault missed, the right thruster named in >= 99 % of
+// the faulty runs, Table 1 met in >= 95 % of them) with their verdicts.
+std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns);
+// faults.csv: group,case,runs,flown,false_alarms,missed,wrong,right,detection_mean_s,detection_p95_s,
+// isolation_mean_s,isolation_p95_s,table1_met,diagnosed_flown,diagnosed_table1_met, a row per group
+// and kind, then "all" per kind; the fault-free row first (group and case "none").
+std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns);
+
+}  // namespace chaser::campaign
