@@ -56,6 +56,7 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .fdir = make_fdir_params(scenario),
       .active_check = make_active_check_params(scenario),
       .recovery = scenario.fdi.recovery,
+      .mass_from_gauge = scenario.control.mass_from_gauge,
   };
 }
 
@@ -69,7 +70,16 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     state.initialised = true;
   }
   const double t_s = to_seconds(meas.t);
-  out.estimate = step_nav(params.navigation, state.navigation, meas, state.force_cmd_lvlh_N_prev);
+  // The chaser's mass as the loops take it (control.mass_from_gauge): the starting mass less the
+  // propellant the tank gauge says is used, in the navigation's prediction (its filter divides the
+  // commanded force by the design mass: scaled so that it divides by this one) and the position loop.
+  PositionControlParams gauged;
+  if (params.mass_from_gauge) gauged = with_mass(params.position, params.position.mass_kg - meas.propellant_used_kg);
+  const PositionControlParams& position = params.mass_from_gauge ? gauged : params.position;
+  const Vec3 force_for_nav_N = params.mass_from_gauge
+                                   ? Vec3(state.force_cmd_lvlh_N_prev * (params.position.mass_kg / position.mass_kg))
+                                   : state.force_cmd_lvlh_N_prev;
+  out.estimate = step_nav(params.navigation, state.navigation, meas, force_for_nav_N);
   if (state.target) {  // the pose in the chaser's body, turned into inertial by the attitude estimate
     if (meas.target_pose.valid)
       state.target->update(meas.target_pose.taken_s,
@@ -127,11 +137,11 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     out.torque_demand_body_Nm = reach_torque_body_Nm;
   } else if (params.hinf.enabled) {
     const HinfDemand demand =
-        hinf_control(params.hinf, state.hinf, params.position, params.attitude, out.estimate, out.reference, lvlh);
+        hinf_control(params.hinf, state.hinf, position, params.attitude, out.estimate, out.reference, lvlh);
     out.force_demand_lvlh_N = demand.force_lvlh_N;
     out.torque_demand_body_Nm = demand.torque_body_Nm;
   } else {
-    out.force_demand_lvlh_N = position_control(params.position, out.estimate, out.reference);
+    out.force_demand_lvlh_N = position_control(position, out.estimate, out.reference);
     out.torque_demand_body_Nm = attitude_control(params.attitude, out.estimate, out.reference);
   }
 

@@ -48,6 +48,7 @@ struct FlightParams {
   FdirParams fdir;
   ActiveCheckParams active_check;
   model::RecoveryPolicy recovery = model::RecoveryPolicy::kNone;
+  bool mass_from_gauge = false;  // control.mass_from_gauge: the loop's mass is position.mass_kg less the gauge's
 };
 
 FlightParams make_flight_params(const model::Scenario& scenario);

@@ -26,6 +26,13 @@ PositionControlParams make_position_control(const model::Scenario& scenario) {
                                  scenario.control_period_s);
 }
 
+PositionControlParams with_mass(const PositionControlParams& params, double mass_kg) {
+  PositionControlParams out = params;
+  out.K *= mass_kg / params.mass_kg;
+  out.mass_kg = mass_kg;
+  return out;
+}
+
 Vec3 position_feedforward(const PositionControlParams& params, const GuidanceRef& ref) {
   const double half = 0.5 * params.period_s;  // mid-period values, to first order in T/2
   const Vec3 r_mid = ref.r_lvlh_m + half * ref.v_lvlh_mps;

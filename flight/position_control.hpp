@@ -34,6 +34,12 @@ PositionControlParams design_position_control(const model::ControlParams& weight
                                               double mean_motion_radps, double period_s);
 PositionControlParams make_position_control(const model::Scenario& scenario);
 
+// The same loop for a chaser of mass `mass_kg` (control.mass_from_gauge: the starting mass less the
+// propellant used): the feed-forward's mass, and K scaled by mass_kg / params.mass_kg, so that the
+// closed loop's poles, eig(Ad - Bd/m K), stay those designed (Bd/m' K m'/m = Bd/m K). The H-infinity
+// loops (flight/hinf_control.hpp) ask for accelerations and multiply by mass_kg themselves.
+PositionControlParams with_mass(const PositionControlParams& params, double mass_kg);
+
 // Desired force F_d in LVLH [N].
 Vec3 position_control(const PositionControlParams& params, const NavEstimate& nav, const GuidanceRef& ref);
 

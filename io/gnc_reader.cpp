@@ -151,6 +151,7 @@ void read_control(MapReader& r, model::ControlParams& out) {
   r.number("tmu_torque_threshold_Nms", Range::positive(), out.tmu_torque_threshold_Nms);
   r.number("tmu_windup_periods", Range::positive(), out.tmu_windup_periods);
   read_allocation_norm(r, out.allocation_norm);
+  if (r.has("mass_from_gauge")) r.boolean("mass_from_gauge", out.mass_from_gauge);
   read_optional_hinf(r, out.hinf);
   read_control_law(r, out);
 }

@@ -139,6 +139,10 @@ struct ControlParams {
   double tmu_windup_periods = 3.0;         // [-]
   AllocationNorm allocation_norm = AllocationNorm::kOne;
   ControlLaw law = ControlLaw::kLqr;
+  // The mass the position loop and the navigation's prediction divide by: false, the scenario's
+  // chaser.mass_kg throughout; true, that less the tank gauge's propellant used, every period
+  // (flight/position_control.hpp, with_mass; docs/gnc.md, "The mass on board").
+  bool mass_from_gauge = false;
   // The H-infinity design (`chaser control design`); absent: the scenario has none.
   std::optional<HinfDesignParams> hinf;
 };

@@ -4,7 +4,10 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <algorithm>
 #include <complex>
+#include <numbers>
+#include <vector>
 
 namespace chaser::flight {
 namespace {
@@ -103,6 +106,42 @@ TEST(PositionControl, FeedForwardTracksApproachWithoutError) {
     x = m.Ad * x + m.Bd / kMass * position_control(pc, nav_at(x.head<3>(), x.tail<3>()), ref);
   }
   EXPECT_LT(worst, 2e-6);
+}
+
+// with_mass (control.mass_from_gauge): a chaser 8 % lighter than designed, as after COMRADE's
+// stuck-open accommodation has burnt 130 kg. The design's K on the lighter chaser moves the poles
+// (the loop is stiffer than designed), the scaled K leaves them where they were, to rounding; and the
+// feed-forward asks for the lighter chaser's force on a circling reference: 8 % less, where the design
+// mass would ask the difference too much, a force the feedback must then hold off.
+TEST(PositionControl, WithMassKeepsTheDesignedPolesOnAnotherMass) {
+  const PositionControlParams pc = default_design();
+  const double lighter = 0.92 * kMass;
+  const PositionControlParams scaled = with_mass(pc, lighter);
+  EXPECT_EQ(scaled.mass_kg, lighter);
+  const DiscreteLinear6 m = discrete_hcw(mean_motion(), kT);
+  const auto poles = [&](const Mat36& K, double mass) {
+    Eigen::EigenSolver<Mat6> eig(Mat6(m.Ad - m.Bd / mass * K));
+    std::vector<std::complex<double>> z(eig.eigenvalues().begin(), eig.eigenvalues().end());
+    std::sort(z.begin(), z.end(), [](auto a, auto b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); });
+    return z;
+  };
+  const auto designed = poles(pc.K, kMass), kept = poles(scaled.K, lighter), moved = poles(pc.K, lighter);
+  double kept_gap = 0.0, moved_gap = 0.0;
+  for (std::size_t i = 0; i < designed.size(); ++i) {
+    kept_gap = std::max(kept_gap, std::abs(kept[i] - designed[i]));
+    moved_gap = std::max(moved_gap, std::abs(moved[i] - designed[i]));
+  }
+  EXPECT_LT(kept_gap, 1e-12);
+  EXPECT_GT(moved_gap, 1e-5);  // what the scaling is for: ~1e-4 here
+  // A reference circling at 2.5 deg/s on a 3.5 m radius: a = w^2 r = 6.7e-3 m/s^2.
+  GuidanceRef ref;
+  const double w = 2.5 * std::numbers::pi / 180.0;
+  ref.r_lvlh_m = Vec3(3.5, 0.0, 0.0);
+  ref.v_lvlh_mps = Vec3(0.0, 3.5 * w, 0.0);
+  ref.a_lvlh_mps2 = Vec3(-3.5 * w * w, 0.0, 0.0);
+  ref.j_lvlh_mps3 = Vec3(0.0, -3.5 * w * w * w, 0.0);
+  const Vec3 f_design = position_feedforward(pc, ref), f_light = position_feedforward(scaled, ref);
+  EXPECT_NEAR((f_design - f_light).norm(), 0.08 * f_design.norm(), 1e-12 * f_design.norm());
 }
 
 // make_position_control reads mass, orbit and period from the scenario.
