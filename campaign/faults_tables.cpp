@@ -54,6 +54,12 @@ std::string verdict(bool met) { return met ? "met" : "**not met**"; }
 
 }  // namespace
 
+FaultsColumn pooled_column(const std::string& name, const std::vector<FaultsColumn>& columns) {
+  FaultsColumn out{.name = name, .kinds = {}};
+  for (std::size_t k = 0; k < kFaultKinds.size(); ++k) out.kinds[k] = pooled(columns, k);
+  return out;
+}
+
 double percentile_95(std::vector<double> values) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());
@@ -114,7 +120,8 @@ std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std
   return out;
 }
 
-std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns) {
+std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns,
+                            const std::vector<FaultsColumn>& each) {
   std::string out = fmt::format(
       "Fault-free: {} runs ({} flown to the end); false alarms {}; COMRADE Table 1 met at the end in {} of {}.\n\n",
       fault_free.runs, fault_free.flown, proportion_cell({fault_free.false_alarms, fault_free.flown}),
@@ -165,10 +172,20 @@ std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vecto
   out += fmt::format("| COMRADE Table 1 met at the end in >= 95 % of them (accommodated) | {} | {} |\n",
                      proportion_cell({all.table1_met, all.flown}), verdict(all.flown > 0 && table1_rate >= 0.95));
   out += fmt::format("\nFaulty runs alarmed before their onset: {} of {}.\n", all.false_alarms, all.flown);
+  if (each.empty()) return out;
+  out += "\nOne by one: missed, wrong, right of the flown runs per kind.\n\n| thruster |";
+  for (const char* kind : kFaultKinds) out += fmt::format(" {} |", kind);
+  out += "\n|---|---|---|---|---|\n";
+  for (const FaultsColumn& c : each) {
+    out += fmt::format("| {} |", c.name);
+    for (const FaultsCell& x : c.kinds) out += fmt::format(" {}, {}, {} of {} |", x.missed, x.wrong, x.right, x.flown);
+    out += '\n';
+  }
   return out;
 }
 
-std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns) {
+std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns,
+                       const std::vector<FaultsColumn>& each) {
   std::string out =
       "group,case,runs,flown,false_alarms,missed,wrong,right,detection_mean_s,detection_p95_s,isolation_mean_s,"
       "isolation_p95_s,table1_met,diagnosed_flown,diagnosed_table1_met\n";
@@ -184,6 +201,8 @@ std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<Fau
   for (const FaultsColumn& c : columns)
     for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(c.name, k, c.kinds[k]);
   for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line("all", k, pooled(columns, k));
+  for (const FaultsColumn& c : each)
+    for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(c.name, k, c.kinds[k]);
   return out;
 }
 

@@ -45,17 +45,24 @@ bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool dia
 // The fault-free campaign's figures; nullopt with `error` set.
 std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std::string& error);
 
+// The columns' runs together, named `name` (the others' column from each of theirs).
+FaultsColumn pooled_column(const std::string& name, const std::vector<FaultsColumn>& columns);
+
 // The 95th percentile by nearest rank (the smallest value with at least 95 % of them at or under
 // it); NaN for none.
 double percentile_95(std::vector<double> values);
 
-// faults.md: the fault-free figures, a table of the groups (columns, then all pooled) by kind, and
-// the targets (0 false alarms, no stuck-open fault missed, the right thruster named in >= 99 % of
-// the faulty runs, Table 1 met in >= 95 % of them) with their verdicts.
-std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns);
+// faults.md: the fault-free figures, a table of the groups (columns, then all pooled) by kind, the
+// targets (0 false alarms, no stuck-open fault missed, the right thruster named in >= 99 % of the
+// faulty runs, Table 1 met in >= 95 % of them) with their verdicts, and, where given, each of the
+// thrusters pooled into a group, one by one (`each`: missed, wrong and right per kind).
+std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns,
+                            const std::vector<FaultsColumn>& each = {});
 // faults.csv: group,case,runs,flown,false_alarms,missed,wrong,right,detection_mean_s,detection_p95_s,
 // isolation_mean_s,isolation_p95_s,table1_met,diagnosed_flown,diagnosed_table1_met, a row per group
-// and kind, then "all" per kind; the fault-free row first (group and case "none").
-std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns);
+// and kind, then "all" per kind, then each of `each` per kind; the fault-free row first (group and
+// case "none").
+std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns,
+                       const std::vector<FaultsColumn>& each = {});
 
 }  // namespace chaser::campaign

@@ -391,7 +391,8 @@ int comrade_mission(const CampaignArgs& args) {
 // four, N/5 (at least 1) for every other starting thruster (or those campaign.fault_thrusters
 // names), 2N fault-free; each thruster's campaign flown twice, with the scenario's accommodation and
 // with diagnosis only (fdi.recovery=none, the same runs: the same seeds); each a campaign in its
-// folder under --out, resumable as any; then faults.md and faults.csv beside them.
+// folder under --out, resumable as any; then faults.md and faults.csv beside them (the groups, and
+// the others one by one).
 int comrade_faults(const CampaignArgs& args) {
   if (args.mpi || !args.shard.empty() || !args.cases.empty() || !args.also.empty()) {
     std::cerr << "chaser campaign: --preset comrade-faults flies its campaigns in one process: leave out --mpi, "
@@ -456,8 +457,7 @@ int comrade_faults(const CampaignArgs& args) {
     std::cerr << ("chaser campaign: " + error + '\n');
     return kExitFailure;
   }
-  std::vector<campaign::FaultsColumn> columns;
-  campaign::FaultsColumn rest{.name = fmt::format("other {}", model::thruster_count(others)), .kinds = {}};
+  std::vector<campaign::FaultsColumn> columns, each_other;
   for (int t = 0; t < model::kMaxThrusters; ++t) {
     const model::ThrusterMask bit = model::ThrusterMask{1} << t;
     if (!((four | others) & bit)) continue;
@@ -471,17 +471,17 @@ int comrade_faults(const CampaignArgs& args) {
     const std::string kinds = "stuck_open,stuck_closed,leak,loss";
     if (!fly(name, kinds, runs, mine, code) || !fly("diagnosis-only/" + name, kinds, runs, diagnose, code)) return code;
     campaign::FaultsColumn own{.name = name, .kinds = {}};
-    campaign::FaultsColumn& column = (four & bit) ? own : rest;
-    if (!campaign::add_faults_runs(column, (out / name / "runs.csv").string(), false, error) ||
-        !campaign::add_faults_runs(column, (out / "diagnosis-only" / name / "runs.csv").string(), true, error)) {
+    if (!campaign::add_faults_runs(own, (out / name / "runs.csv").string(), false, error) ||
+        !campaign::add_faults_runs(own, (out / "diagnosis-only" / name / "runs.csv").string(), true, error)) {
       std::cerr << ("chaser campaign: " + error + '\n');
       return kExitFailure;
     }
-    if (four & bit) columns.push_back(own);
+    ((four & bit) ? columns : each_other).push_back(own);
   }
-  if (others != 0) columns.push_back(rest);
-  std::ofstream(out / "faults.md") << campaign::faults_markdown(*fault_free, columns);
-  std::ofstream(out / "faults.csv") << campaign::faults_csv(*fault_free, columns);
+  if (!each_other.empty())
+    columns.push_back(campaign::pooled_column(fmt::format("other {}", each_other.size()), each_other));
+  std::ofstream(out / "faults.md") << campaign::faults_markdown(*fault_free, columns, each_other);
+  std::ofstream(out / "faults.csv") << campaign::faults_csv(*fault_free, columns, each_other);
   std::cout << fmt::format("comrade-faults: wrote {}/faults.md and faults.csv\n", args.out_dir);
   return kExitOk;
 }

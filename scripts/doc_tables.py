@@ -693,6 +693,19 @@ FAULTS_LABELS = (("fault-free: false alarms", "fault-free: Table 1 met at the en
                     "every faulty run: Table 1 met, accommodated (target >= 95 %)"))
 
 
+def comrade_faults_fill(out):
+    """The thrusters that miss half or more of their proportional faults (stuck closed and loss)."""
+    with open(Path(out) / "faults.csv", newline="") as f:
+        rows = [r for r in csv.DictReader(f) if re.fullmatch(r"T\d+", r["group"])]
+    missed, flown = {}, {}
+    for r in rows:
+        if r["case"] in ("stuck_closed", "loss"):
+            missed[r["group"]] = missed.get(r["group"], 0) + int(r["missed"])
+            flown[r["group"]] = flown.get(r["group"], 0) + int(r["flown"])
+    hard = sorted((g for g in missed if 2 * missed[g] >= flown[g]), key=lambda g: int(g[1:]))
+    return {"hard": ", ".join(f"{g} ({missed[g]} of {flown[g]})" for g in hard)}
+
+
 def comrade_faults_rows(out):
     with open(Path(out) / "faults.csv", newline="") as f:
         rows = {(r["group"], r["case"]): r for r in csv.DictReader(f)}
@@ -2077,7 +2090,9 @@ TABLES = [
                 f"{case.replace('_', ' ')}: Table 1 met at the end") for case in FAULT_CASES), ()),
           comrade_sync_spread_rows, words=("of", "s")),
     Table("fdi-comrade-faults", "docs/fdi.md", ("comrade-faults",), ("FDIR, shipped, onsets in 300-2,900 s",) + FAULTS_GROUPS,
-          FAULTS_LABELS, comrade_faults_rows, words=("of", "s")),
+          FAULTS_LABELS, comrade_faults_rows, words=("of", "s"),
+          caption="Missing half or more of their stuck-closed and loss faults (missed of flown): {hard}.",
+          fill=comrade_faults_fill),
     Table("fdi-check-trade", "docs/fdi.md", tuple(f"T2-checks-{k}" for k in range(len(CHECK_TRADE_ROWS))),
           ("`max_unverified_s` [s]", "`pulse_s`", "propellant, fault-free mean", "stuck closed: mean / max t_d",
            "loss: mean / max t_d"), tuple(r[0] for r in CHECK_TRADE_ROWS), check_trade_rows,

@@ -93,6 +93,16 @@ TEST(FaultsTables, ReadsEachKindAndJudgesTheTargets) {
   ASSERT_TRUE(add_faults_runs(rest, write_runs(dir / "T2", "runs.csv", {fault_run(0, FaultCase::kStuckOpen, kT2, 1.0, kT2, 2.0, true)}),
                               false, error));
   const FaultFreeFigures free{.runs = 2, .flown = 2, .false_alarms = 0, .table1_met = 2};
+  // The others' column pooled from each of theirs, which are listed one by one too.
+  FaultsColumn t2 = rest;
+  t2.name = "T2";
+  const FaultsColumn pooled = pooled_column("other 1", {t2});
+  EXPECT_EQ(pooled.kinds[0].right, rest.kinds[0].right);
+  EXPECT_EQ(pooled.kinds[0].detection_s, rest.kinds[0].detection_s);
+  const std::string with_each = faults_markdown(free, {t1, pooled}, {t2});
+  EXPECT_NE(with_each.find("| T2 | 0, 0, 1 of 1 | 0, 0, 0 of 0 | 0, 0, 0 of 0 | 0, 0, 0 of 0 |"), std::string::npos)
+      << with_each;
+  EXPECT_NE(faults_csv(free, {t1, pooled}, {t2}).find("\nT2,stuck_open,1,1,0,0,0,1,1,1,2,2,1,0,0\n"), std::string::npos);
   const std::string md = faults_markdown(free, {t1, rest});
   EXPECT_NE(md.find("| stuck open | missed, wrong, right | 0, 1, 1 of 2 | 0, 0, 1 of 1 | 0, 1, 2 of 3 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| stuck open | Table 1 met: accommodated; diagnosis only | 1 of 2; 0 of 2 |"), std::string::npos) << md;

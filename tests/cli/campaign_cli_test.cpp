@@ -174,6 +174,8 @@ TEST(CampaignCli, ComradeFaultsFliesEachThrusterWithAndWithoutAccommodation) {
   EXPECT_NE(table.find("| no false alarm in the fault-free runs |"), std::string::npos) << table;
   const std::string csv = read_file(dir / "faults.csv");
   EXPECT_NE(csv.find("\nall,loss,5,"), std::string::npos) << csv;  // 4 + 1 loss runs
+  EXPECT_NE(csv.find("\nT2,loss,1,"), std::string::npos) << csv;   // the others one by one
+  EXPECT_NE(table.find("| T2 | "), std::string::npos) << table;
   const CommandResult again = chaser(preset + " --resume");  // resumable: every campaign found done
   EXPECT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(read_file(dir / "faults.md"), table);
