@@ -338,6 +338,17 @@ void check_hinf(const model::Scenario& s, Diagnostics& d) {
 
 }  // namespace
 
+// The loops divide by the starting mass less the gauge's reading (control.mass_from_gauge): a
+// reading's noise must be small beside the mass, or a reading could turn the loops' sign.
+void check_mass_from_gauge(const model::Scenario& s, Diagnostics& d) {
+  const double limit = 1e-3 * s.chaser.mass_kg;
+  if (s.control.mass_from_gauge && s.sensors.propellant.noise_sigma_kg > limit)
+    d.add("sensors.propellant.noise_sigma_kg",
+          fmt::format("with control.mass_from_gauge the gauge's noise must be <= 1e-3 chaser.mass_kg = {} kg "
+                      "(got {})",
+                      limit, s.sensors.propellant.noise_sigma_kg));
+}
+
 void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
   check_timing(s, diag);
   check_inertia(s.chaser.inertia_kgm2, "chaser.inertia_kgm2", diag);
@@ -354,6 +365,7 @@ void validate_scenario(const model::Scenario& s, Diagnostics& diag) {
     check_sync_approach(s.guidance, diag);
   }
   check_hinf(s, diag);
+  check_mass_from_gauge(s, diag);
   validate_arm(s, diag);
   validate_capture(s, diag);
   validate_campaign(s, diag);

@@ -141,7 +141,8 @@ struct ControlParams {
   ControlLaw law = ControlLaw::kLqr;
   // The mass the position loop and the navigation's prediction divide by: false, the scenario's
   // chaser.mass_kg throughout; true, that less the tank gauge's propellant used, every period
-  // (flight/position_control.hpp, with_mass; docs/gnc.md, "The mass on board").
+  // (flight/position_control.hpp, with_mass; docs/gnc.md, "The mass on board"); the gauge's noise
+  // then at most 1e-3 of the mass (io/scenario_validation.cpp).
   bool mass_from_gauge = false;
   // The H-infinity design (`chaser control design`); absent: the scenario has none.
   std::optional<HinfDesignParams> hinf;

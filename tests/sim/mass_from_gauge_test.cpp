@@ -72,10 +72,16 @@ TEST(MassFromGauge, FaultFreeTheHoldIsAlmostUnchanged) {
   EXPECT_NEAR(gauged.mean_error_m, designed.mean_error_m, 0.5 * designed.mean_error_m);
 }
 
-// The key is a boolean, refused by name otherwise.
-TEST(MassFromGauge, ANonBooleanIsRefusedByName) {
+// The key is a boolean, refused by name otherwise; with it, a gauge noisy enough to matter beside
+// the mass (1e-3 of it: 1.6 kg here) is refused too.
+TEST(MassFromGauge, ANonBooleanAndANoisyGaugeAreRefusedByName) {
   testing::expect_refused("scenarios/comrade_sync.yaml", {"control.mass_from_gauge=1.5"}, "control.mass_from_gauge",
                           "");
+  testing::expect_refused("scenarios/comrade_sync.yaml",
+                          {"control.mass_from_gauge=true", "sensors.propellant.noise_sigma_kg=2.0"},
+                          "sensors.propellant.noise_sigma_kg", "<= 1e-3 chaser.mass_kg = 1.6 kg (got 2)");
+  EXPECT_EQ(testing::load_with("scenarios/comrade_sync.yaml", {"sensors.propellant.noise_sigma_kg=2.0"}).control.mass_from_gauge,
+            false);  // without the key, the gauge's noise is the gauge's business
 }
 
 }  // namespace
