@@ -2,27 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numeric>
 
 #include <fmt/format.h>
 
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
+#include "campaign/run_row.hpp"
+#include "campaign/table5.hpp"
 
 namespace chaser::campaign {
 
 namespace {
 
-double mean_of(const std::vector<double>& v) {
-  return v.empty() ? std::numeric_limits<double>::quiet_NaN()
-                   : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-
+// The index of a fault case in kFaultKinds, -1 for none.
 int kind_index(const std::string& name) {
-  for (std::size_t k = 0; k < kFaultKinds.size(); ++k)
-    if (name == kFaultKinds[k]) return static_cast<int>(k);
-  return -1;
+  const std::optional<FaultCase> c = parse_case(name);
+  const auto at = c ? std::find(kFaultKinds.begin(), kFaultKinds.end(), *c) : kFaultKinds.end();
+  return at == kFaultKinds.end() ? -1 : static_cast<int>(at - kFaultKinds.begin());
 }
 
 // Every column's cells of one kind added together (the "all" column).
@@ -47,7 +43,8 @@ FaultsCell pooled(const std::vector<FaultsColumn>& columns, std::size_t kind) {
 
 std::string seconds_pair(const std::vector<double>& v) {
   if (v.empty()) return "-";
-  return fmt::format("{:.1f} / {:.1f} s", mean_of(v), percentile_95(v));
+  const FigureStats s = figure_stats(v);
+  return fmt::format("{:.1f} / {:.1f} s", s.mean, s.p95);
 }
 
 std::string verdict(bool met) { return met ? "met" : "**not met**"; }
@@ -58,13 +55,6 @@ FaultsColumn pooled_column(const std::string& name, const std::vector<FaultsColu
   FaultsColumn out{.name = name, .kinds = {}};
   for (std::size_t k = 0; k < kFaultKinds.size(); ++k) out.kinds[k] = pooled(columns, k);
   return out;
-}
-
-double percentile_95(std::vector<double> values) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(values.size())));
-  return values[std::max<std::size_t>(rank, 1) - 1];
 }
 
 bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool diagnosed, std::string& error) {
@@ -131,11 +121,12 @@ std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vecto
   out += " all |\n|---|---|";
   for (std::size_t i = 0; i <= columns.size(); ++i) out += "---|";
   out += '\n';
+  const FaultsColumn all_kinds = pooled_column("all", columns);
   for (std::size_t k = 0; k < kFaultKinds.size(); ++k) {
     std::vector<FaultsCell> cells;
     for (const FaultsColumn& c : columns) cells.push_back(c.kinds[k]);
-    cells.push_back(pooled(columns, k));
-    std::string kind = kFaultKinds[k];
+    cells.push_back(all_kinds.kinds[k]);
+    std::string kind(to_string(kFaultKinds[k]));
     std::replace(kind.begin(), kind.end(), '_', ' ');
     const auto row = [&](const char* what, auto cell) {
       out += fmt::format("| {} | {} |", kind, what);
@@ -150,12 +141,10 @@ std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vecto
       return fmt::format("{} of {}; {} of {}", c.table1_met, c.flown, c.diagnosed_table1_met, c.diagnosed_flown);
     });
   }
-  // The targets, over every faulty run.
+  // The targets, over every faulty run (kFaultKinds[0]: stuck open).
   FaultsCell all;
-  int stuck_open_missed = 0;
-  for (std::size_t k = 0; k < kFaultKinds.size(); ++k) {
-    const FaultsCell kind = pooled(columns, k);
-    if (std::string(kFaultKinds[k]) == "stuck_open") stuck_open_missed = kind.missed;
+  const int stuck_open_missed = all_kinds.kinds[0].missed;
+  for (const FaultsCell& kind : all_kinds.kinds) {
     all.flown += kind.flown;
     all.right += kind.right;
     all.table1_met += kind.table1_met;
@@ -174,7 +163,7 @@ std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vecto
   out += fmt::format("\nFaulty runs alarmed before their onset: {} of {}.\n", all.false_alarms, all.flown);
   if (each.empty()) return out;
   out += "\nOne by one: missed, wrong, right of the flown runs per kind.\n\n| thruster |";
-  for (const char* kind : kFaultKinds) out += fmt::format(" {} |", kind);
+  for (const FaultCase kind : kFaultKinds) out += fmt::format(" {} |", to_string(kind));
   out += "\n|---|---|---|---|---|\n";
   for (const FaultsColumn& c : each) {
     out += fmt::format("| {} |", c.name);
@@ -192,15 +181,19 @@ std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<Fau
   out += fmt::format("none,none,{},{},{},0,0,0,nan,nan,nan,nan,{},0,0\n", fault_free.runs, fault_free.flown,
                      fault_free.false_alarms, fault_free.table1_met);
   const auto line = [&](const std::string& group, std::size_t k, const FaultsCell& c) {
-    const auto number = [](double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v) : std::string("nan"); };
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", group, kFaultKinds[k], c.runs, c.flown,
-                       c.false_alarms, c.missed, c.wrong, c.right, number(mean_of(c.detection_s)),
-                       number(percentile_95(c.detection_s)), number(mean_of(c.isolation_s)),
-                       number(percentile_95(c.isolation_s)), c.table1_met, c.diagnosed_flown, c.diagnosed_table1_met);
+    const FigureStats detection = figure_stats(c.detection_s), isolation = figure_stats(c.isolation_s);
+    out += fmt::format("{},{},{},{},{},{},{},{}", group, to_string(kFaultKinds[k]), c.runs, c.flown, c.false_alarms,
+                       c.missed, c.wrong, c.right);
+    for (const double v : {detection.mean, detection.p95, isolation.mean, isolation.p95}) {
+      out += ',';
+      append_number(out, v);
+    }
+    out += fmt::format(",{},{},{}\n", c.table1_met, c.diagnosed_flown, c.diagnosed_table1_met);
   };
   for (const FaultsColumn& c : columns)
     for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(c.name, k, c.kinds[k]);
-  for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line("all", k, pooled(columns, k));
+  const FaultsColumn all_kinds = pooled_column("all", columns);
+  for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(all_kinds.name, k, all_kinds.kinds[k]);
   for (const FaultsColumn& c : each)
     for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(c.name, k, c.kinds[k]);
   return out;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "campaign/cases.hpp"
+
 namespace chaser::campaign {
 
 // One group's runs of one fault kind.
@@ -26,8 +28,9 @@ struct FaultsCell {
   int diagnosed_flown = 0, diagnosed_table1_met = 0;
 };
 
-// The four fault kinds in the campaign's order: stuck_open, stuck_closed, leak, loss.
-inline constexpr std::array<const char*, 4> kFaultKinds = {"stuck_open", "stuck_closed", "leak", "loss"};
+// The four fault kinds in the campaign's order (campaign/cases.hpp).
+inline constexpr std::array<FaultCase, 4> kFaultKinds = {FaultCase::kStuckOpen, FaultCase::kStuckClosed,
+                                                         FaultCase::kLeak, FaultCase::kLoss};
 
 struct FaultsColumn {
   std::string name;  // "T1" or "other 20"
@@ -47,10 +50,6 @@ std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std
 
 // The columns' runs together, named `name` (the others' column from each of theirs).
 FaultsColumn pooled_column(const std::string& name, const std::vector<FaultsColumn>& columns);
-
-// The 95th percentile by nearest rank (the smallest value with at least 95 % of them at or under
-// it); NaN for none.
-double percentile_95(std::vector<double> values);
 
 // faults.md: the fault-free figures, a table of the groups (columns, then all pooled) by kind, the
 // targets (0 false alarms, no stuck-open fault missed, the right thruster named in >= 99 % of the

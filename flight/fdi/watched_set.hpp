@@ -36,14 +36,11 @@ struct WatchedSet {
   int count = 0;                                  // lanes in use
   std::array<int, kMaxWatchedThrusters> index{};  // lane -> thruster index
   // thruster index -> lane, -1 for a thruster outside the set
-  std::array<int, model::kMaxThrusters> lane = filled_lanes();
-
- private:
-  static constexpr std::array<int, model::kMaxThrusters> filled_lanes() {
+  std::array<int, model::kMaxThrusters> lane = [] {
     std::array<int, model::kMaxThrusters> none{};
-    for (int& l : none) l = -1;
+    none.fill(-1);
     return none;
-  }
+  }();
 };
 
 // The lanes of `mask` (1..kMaxThrusters thrusters).

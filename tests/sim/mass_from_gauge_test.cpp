@@ -55,7 +55,12 @@ Hold fly(bool gauge, bool stuck_t1) {
   return h;
 }
 
-// Measured: fault-free 12 mm; stuck T1 at the design mass 42 mm, with the gauge's 8 mm.
+// Measured: fault-free 12 mm; stuck T1 at the design mass 42 mm, with the gauge's 8 mm. The bounds
+// say the physics, not the figures: the mass error alone must make the hold several times worse than
+// fault-free (2.5x; a regression that lost the stuck thruster's cancellation would make it far
+// worse, one that lost the 90 kg burn would not make it worse at all), and the gauge's mass must
+// undo it: no worse than fault-free, with 20 % for the fault's other traces (its transient, the
+// cancelling thrusters' dispersions).
 TEST(MassFromGauge, TheHoldAfterAStuckOpenThrusterIsTheFaultFreeOnes) {
   const Hold free = fly(false, false), designed = fly(false, true), gauged = fly(true, true);
   ASSERT_EQ(designed.isolated, 0);
@@ -65,7 +70,8 @@ TEST(MassFromGauge, TheHoldAfterAStuckOpenThrusterIsTheFaultFreeOnes) {
   EXPECT_LT(gauged.mean_error_m, 1.2 * free.mean_error_m);
 }
 
-// Fault-free the chaser burns 9 kg (0.6 % of its mass): the gauge's mass changes the hold by little.
+// Fault-free the chaser burns 9 kg (0.6 % of its mass), a tenth of the stuck case's mass error: the
+// gauge's mass moves the hold's error by a fraction of it (within half: 12 mm either way).
 TEST(MassFromGauge, FaultFreeTheHoldIsAlmostUnchanged) {
   const Hold designed = fly(false, false), gauged = fly(true, false);
   EXPECT_LT(designed.propellant_kg, 12.0);
