@@ -20,6 +20,9 @@ std::vector<DiagnosisScheme>& table() {
       // residual_bank_1: the nominal observer's mean residual, _2: the smallest observer's [rad/s]
       {.name = "bank", .residual_channels = 2, .enabled = [](const FdirParams& p) { return p.bank_enabled; },
        .step = step_bank_scheme, .deficit = [](const FdirState& f) { return &f.bank_deficit.decision; }},
+      // residual_rate_check_1: the latest check's reading, the missing share of its pulse [-]
+      {.name = "rate_check", .residual_channels = 1, .enabled = [](const FdirParams& p) { return p.rate_check_enabled; },
+       .step = step_rate_check_scheme, .deficit = [](const FdirState& f) { return &f.rate_check_decision; }},
   };
   return schemes;
 }

@@ -10,7 +10,8 @@
 // detector; step_fdir runs them itself, since their isolation, the event resolution and the
 // deficit bank are coupled (flight/fdir.hpp). A scheme with a `step` is run by step_fdir after
 // them, each period, on the period's measurements and the FDI's inputs; its first alarm and first
-// confirmation are latched for it. The fourth row, the observer bank, is such a scheme.
+// confirmation are latched for it. The fourth row, the observer bank, and the fifth, the active
+// checks read from the rates, are such schemes.
 #include <string>
 #include <vector>
 
@@ -26,11 +27,12 @@ struct FdirParams;
 struct FdirState;
 struct FdirInput;
 
-inline constexpr int kMaxDiagnosisSchemes = 5;  // the four built in and one more
+inline constexpr int kMaxDiagnosisSchemes = 6;  // the five built in and one more
 inline constexpr int kPositionScheme = 0;
 inline constexpr int kAttitudeScheme = 1;
 inline constexpr int kDeficitScheme = 2;
 inline constexpr int kBankScheme = 3;  // the observer bank (flight/fdi/observer_bank.hpp), a registered row
+inline constexpr int kRateCheckScheme = 4;  // the active checks read from the rates (flight/fdi/rate_check.hpp), the same
 
 struct DiagnosisScheme {
   std::string name;           // a plain name: it names channels, columns and keys

@@ -201,6 +201,8 @@ void start_watch(FdirState& state, std::int64_t period, double t_s) {
   state.latches = {};
   fdi::restart_observer_bank(state.bank);
   state.bank_deficit = {};
+  state.rate_check = {};
+  state.rate_check_decision = {};
   state.confirmed_thruster = model::kNoThruster;
   state.confirmed_s = -1;
   fdi::FdiSchemeOutput ignored;
@@ -287,7 +289,12 @@ FdirParams make_fdir_params(const model::Scenario& s) {
                                       .com_uncertainty_m = s.fdi.deficit.com_uncertainty_m,
                                       .inertia_uncertainty = s.fdi.deficit.inertia_uncertainty});
   }
-  if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection && !p.bank_enabled) return p;
+  p.rate_check_enabled = s.fdi.rate_check.enabled;
+  if (p.rate_check_enabled)
+    p.rate_check = fdi::make_rate_check_params(s.fdi.rate_check, s.thrusters, s.chaser.com_body_m, s.chaser.inertia_kgm2,
+                                               s.control_period_s);
+  if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection && !p.bank_enabled && !p.rate_check_enabled)
+    return p;
   // Designed once, for the starting set. The two designs are independent pure functions of the
   // scenario: the attitude one runs on a second thread while this one designs the position scheme
   // (the same results; the run waits for max(position, attitude) instead of their sum).
@@ -340,6 +347,10 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
 }
 
 bool fdi_listening(const FdirState& state) { return state.armed && state.confirmed_thruster == model::kNoThruster; }
+
+int rate_check_recheck(const FdirParams& params, const FdirState& state) {
+  return params.rate_check_enabled && state.armed ? state.rate_check.recheck : model::kNoThruster;
+}
 
 int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain) {
   // min_gain > 0 (validated), so a material fit leads and `suspect` is its lane. Strictly above, as
@@ -467,6 +478,33 @@ void step_bank_scheme(const FdirParams& p, FdirState& state, const model::Sensor
         (b.hypotheses & (model::ThrusterMask{1} << w.set.index[static_cast<std::size_t>(d.thruster)])))
       out.confirmed = d.thruster;
   }
+}
+
+void step_rate_check_scheme(const FdirParams& p, FdirState& state, const model::SensorMeasurements& meas,
+                            const FdirInput& in, fdi::FdiSchemeOutput& out) {
+  const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
+  fdi::RateCheckState& r = state.rate_check;
+  fdi::step_rate_check(p.rate_check, r,
+                       {.t_s = in.t_s,
+                        .omega_body_radps = meas.omega_body_radps,
+                        .torque_cmd_body_Nm = in.commanded_wrench.tail<3>(),
+                        .checked = in.checked_thruster,
+                        .checked_on_fraction = in.checked_on_fraction});
+  const auto lane_of = [&](int thruster) {
+    return thruster == model::kNoThruster ? -1 : w.set.lane[static_cast<std::size_t>(thruster)];
+  };
+  out.residual = Vec3(std::isnan(r.last_reading) ? 0.0 : r.last_reading, 0.0, 0.0);  // [-]
+  out.glr = fdi::GlrStatistic::of_value(r.in_a_row > 0 ? r.sum / r.in_a_row : 0.0);   // the suspect's mean reading
+  out.alarm = r.confirmed != model::kNoThruster;  // one reading is never an alarm
+  out.alarm_time_s = r.confirmed_s;
+  out.candidate = lane_of(r.suspect);
+  out.confirmed = lane_of(r.confirmed);
+  // The confirmation is a reading of the fault: stuck closed or a loss of its size (what the
+  // recovery and the episode are told; neither keeps firing, so nothing to cancel).
+  if (out.confirmed >= 0 && !state.rate_check_decision.decided)
+    state.rate_check_decision = {.decided = true, .thruster = out.confirmed, .kind = r.kind, .size = r.size,
+                                 .a = 0.0, .b = -r.size,
+                                 .onset_sample = std::llround(r.suspect_pulse_s / p.period_s) - state.bank_first_period};
 }
 
 FdirEpisode current_episode(const FdirParams& p, const FdirState& f) {

@@ -25,6 +25,7 @@
 #include "flight/fdi/fdi_scheme.hpp"
 #include "flight/fdi/impulse_detector.hpp"
 #include "flight/fdi/observer_bank.hpp"
+#include "flight/fdi/rate_check.hpp"
 #include "model/messages.hpp"
 #include "model/scenario.hpp"
 
@@ -59,6 +60,9 @@ struct FdirParams {
   // The observer bank on the body-rate model (fdi.observer_bank.enabled): the `bank` scheme.
   bool bank_enabled = false;
   fdi::ObserverBankFlightParams bank;
+  // The active checks read from the rates (fdi.rate_check.enabled): the `rate_check` scheme.
+  bool rate_check_enabled = false;
+  fdi::RateCheckParams rate_check;
   // [0]: the starting active set; then every set a recovery can switch to (with the FDI's size).
   std::vector<FdiWatchedParams> watched;
   double period_s = 0.1;                 // [s] T
@@ -127,6 +131,8 @@ struct FdirState {
   double detector_isolated_s = -1;
   fdi::ObserverBankState bank;                  // the observer bank, with bank_enabled (sized in its first period)
   fdi::DeficitDecisionState bank_deficit;       // the deficit bank's name after the observer bank's alarm
+  fdi::RateCheckState rate_check;               // the checks' readings, with rate_check_enabled
+  fdi::DeficitDecision rate_check_decision;     // its confirmation as a reading of the fault (kind, size)
   double position_isolated_s = -1;  // [s] time a thruster was confirmed by each scheme, -1: not
   double attitude_isolated_s = -1;
   std::array<SchemeLatch, kMaxDiagnosisSchemes> latches{};  // registered schemes' slots
@@ -158,6 +164,8 @@ struct FdirInput {
   Quat q_inertial_from_lvlh;               // LVLH orientation now
   fdi::WatchedTon ton = fdi::WatchedTon::Zero();  // commanded on-times of the watched lanes
   Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
+  int checked_thruster = model::kNoThruster;  // index: the thruster an active check pulses this period
+  double checked_on_fraction = 0;             // [-] its whole commanded on-time
 };
 
 // Writes the period's output into `out`, value-initialised by the caller (FlightOutput's): its
@@ -170,6 +178,15 @@ void step_fdir(const FdirParams& params, FdirState& state, const model::SensorMe
 // (isolation_method deficit), the deficit bank's name if it is one of them.
 void step_bank_scheme(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
                       const FdirInput& in, fdi::FdiSchemeOutput& out);
+
+// The rate check's period (the `rate_check` row): reads the active checks' pulses from the gyro,
+// confirms a thruster that does not deliver them (flight/fdi/rate_check.hpp).
+void step_rate_check_scheme(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
+                            const FdirInput& in, fdi::FdiSchemeOutput& out);
+
+// The thruster (index) the rate check wants checked again at once, kNoThruster without one (off,
+// disarmed, or nothing suspect). The active checks take it as their suspect.
+int rate_check_recheck(const FdirParams& params, const FdirState& state);
 
 // The figures of the current watch (not yet ended by a recovery).
 FdirEpisode current_episode(const FdirParams& params, const FdirState& state);

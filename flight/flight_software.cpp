@@ -60,6 +60,19 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
   };
 }
 
+namespace {
+
+// The thruster the active checks check again at once: the rate check's (a reading that wants a
+// second look), else the deficit detector's suspect.
+int active_check_suspect(const FlightParams& params, const FlightState& state) {
+  if (!params.active_check.enabled) return model::kNoThruster;
+  const int recheck = rate_check_recheck(params.fdir, state.fdir);
+  return recheck != model::kNoThruster ? recheck
+                                       : deficit_suspect(params.fdir, state.fdir, params.active_check.recheck_gain);
+}
+
+}  // namespace
+
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas) {
   FlightOutput out;
   if (!state.initialised) {
@@ -167,7 +180,11 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_ref_inertial_from_body = out.reference.q_inertial_from_body,
                           .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
                           .ton = watched_ton,
-                          .commanded_wrench = managed.commanded_wrench};
+                          .commanded_wrench = managed.commanded_wrench,
+                          .checked_thruster = managed.pulsed,
+                          .checked_on_fraction = managed.pulsed != model::kNoThruster
+                                                     ? out.command.ton[static_cast<std::size_t>(managed.pulsed)]
+                                                     : 0.0};
   step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
     const model::ThrusterMask watched_before = state.thrusters.active;
@@ -194,9 +211,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                     {.t_s = t_s,
                      .range_m = out.estimate.r_lvlh_m.norm(),
                      .active = state.thrusters.active,
-                     .suspect = params.active_check.enabled
-                                    ? deficit_suspect(params.fdir, state.fdir, params.active_check.recheck_gain)
-                                    : model::kNoThruster,
+                     .suspect = active_check_suspect(params, state),
                      .fdi_listening = fdi_listening(state.fdir)},
                     out.command.ton);
 

@@ -108,6 +108,14 @@ void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
   if (r.has("recheck_fraction")) r.number("recheck_fraction", Range::left_open(0.0, 1.0), out.recheck_fraction);
 }
 
+void read_rate_check(MapReader& r, model::RateCheckParams& out) {
+  if (r.has("enabled")) r.boolean("enabled", out.enabled);
+  if (r.has("neighbours")) read_count_in(r, "neighbours", 2, model::kMaxRateCheckNeighbours, out.neighbours);
+  if (r.has("threshold")) r.number("threshold", Range::open(0.0, 1.0), out.threshold);
+  if (r.has("confirmations")) read_count_in(r, "confirmations", 1, 20, out.confirmations);
+  if (r.has("stuck_closed_from")) r.number("stuck_closed_from", Range::open(0.0, 1.0), out.stuck_closed_from);
+}
+
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {
   r.boolean("enabled", out.enabled);
   read_count_in(r, "residual_dimension", 1, 3, out.residual_dimension);
@@ -135,6 +143,8 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   read_recovery(r, out.recovery);
   r.number("rearm_after_recovery_s", Range::non_negative(), out.rearm_after_recovery_s);
   read_section(r, "active_check", [&](MapReader& m) { read_active_check(m, out.active_check); });
+  if (r.has("rate_check"))  // optional: model/fdi.hpp's defaults, off
+    read_section(r, "rate_check", [&](MapReader& m) { read_rate_check(m, out.rate_check); });
   read_section(r, "position", [&](MapReader& m) { read_scheme(m, out.position); });
   read_section(r, "attitude", [&](MapReader& m) { read_scheme(m, out.attitude); });
 }

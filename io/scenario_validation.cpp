@@ -108,6 +108,12 @@ void check_observer_bank(Diagnostics& d, const model::Scenario& s, double period
   check_block_windows(d, "fdi.observer_bank.", b.window_s, b.baseline_s, period);
 }
 
+// The rate check reads the active checks' pulses: nothing to read without them.
+void check_rate_check(Diagnostics& d, const model::Scenario& s) {
+  if (s.fdi.rate_check.enabled && !s.fdi.active_check.enabled)
+    d.add("fdi.rate_check.enabled", "needs fdi.active_check.enabled: it reads the active checks' pulses");
+}
+
 // An active check's on-times open the valve (a shorter command is dropped) and fit in one period,
 // and a check's pulse is informative (else the thruster would be checked every period); its bound
 // is at least one period, the cadence at which the flight software can check.
@@ -176,6 +182,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
   check_deficit_windows(d, s.fdi.deficit, period);
   check_active_check(d, s, period);
   check_observer_bank(d, s, period);
+  check_rate_check(d, s);
   if (s.sensors.target_pose)
     check_sample_timing(d, "sensors.target_pose", s.sensors.target_pose->period_s, s.sensors.target_pose->latency_s, period);
   if (s.sensors.arm_camera) {  // the same timing rules; on the gripper, so with an arm

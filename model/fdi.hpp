@@ -108,6 +108,19 @@ struct ActiveCheckParams {
   double recheck_fraction = 0.5;
 };
 
+// Active checks read from the body rates (flight/fdi/rate_check.hpp): each check pulse's missing
+// share, from the gyro over its period against the periods either side; with `enabled`, the
+// `rate_check` diagnosis scheme. Needs active_check.enabled (it reads nothing else).
+inline constexpr int kMaxRateCheckNeighbours = 10;  // the readings' ring holds 2 x this + 2 periods
+
+struct RateCheckParams {
+  bool enabled = false;
+  int neighbours = 5;               // [periods] either side of a pulse whose median reading is its baseline
+  double threshold = 0.25;          // [-] a reading (the pulse's missing share) from which the thruster is suspect
+  int confirmations = 3;            // readings in a row at least the threshold that confirm the fault
+  double stuck_closed_from = 0.8;   // [-] mean reading from which the fault reads stuck closed (below: a loss)
+};
+
 enum class RecoveryPolicy {
   kNone,         // diagnose only
   kSwitchGroup,  // close the faulty thruster's group latch, fly on with the next standby group
@@ -141,6 +154,7 @@ struct FdiParams {
   RecoveryPolicy recovery = RecoveryPolicy::kSwitchGroup;
   double rearm_after_recovery_s = 10.0;  // [s]
   ActiveCheckParams active_check;
+  RateCheckParams rate_check;  // optional section: off
   FdiSchemeParams position;
   FdiSchemeParams attitude;
 };

@@ -39,15 +39,15 @@ model::Scenario msr(double duration_s) {
 }
 
 TEST(AddedScheme, TakesTheNextSlotAndRefusesATakenOrUnplainName) {
-  EXPECT_EQ(kRampSlot, 4);  // after the four built in
-  ASSERT_EQ(flight::diagnosis_schemes().size(), 5u);
+  EXPECT_EQ(kRampSlot, 5);  // after the five built in
+  ASSERT_EQ(flight::diagnosis_schemes().size(), 6u);
   EXPECT_EQ(flight::register_diagnosis_scheme({.name = "ramp", .residual_channels = 0,
                                                .enabled = [](const flight::FdirParams&) { return true; }, .step = ramp_step}),
             -1);
   EXPECT_EQ(flight::register_diagnosis_scheme({.name = "../x", .residual_channels = 0,
                                                .enabled = [](const flight::FdirParams&) { return true; }, .step = ramp_step}),
             -1);
-  EXPECT_EQ(flight::diagnosis_schemes().size(), 5u);
+  EXPECT_EQ(flight::diagnosis_schemes().size(), 6u);
 }
 
 TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
@@ -61,7 +61,7 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
   const std::size_t glr = column("glr_ramp"), alarm = column("alarm_ramp"), confirmed = column("confirmed_ramp");
   ASSERT_LT(confirmed, rows.channels.size());
   EXPECT_EQ(column("residual_ramp_1") + 1, glr);
-  EXPECT_EQ(column("confirmed_bank") + 2, glr);  // after the four built in
+  EXPECT_EQ(column("confirmed_rate_check") + 2, glr);  // after the five built in
   const std::size_t width = rows.channels.size();
   for (std::size_t k = 0; k < 200; ++k) {
     const double t = 0.1 * static_cast<double>(k);

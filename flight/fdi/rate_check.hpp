@@ -1,0 +1,104 @@
+#pragma once
+// The active checks read from the body rates: the `rate_check` diagnosis scheme (docs/fdi.md,
+// "Checks read from the rates").
+//
+// An active check (flight/active_check.hpp) fires one thruster j for a short pulse that the others
+// cancel: the commanded wrench is unchanged, so a dead or weakened j shows only in the period of
+// its pulse, too small for a statistic over many seconds (22 N x 1.3 m x 7.5 ms = 0.2 N m s against
+// a turning hold's slosh and gyroscopic errors). Over one period k the gyro's rate change is Euler's
+// equation with the commanded torque tau_k (M ton) held through the period:
+//
+//   e_k = omega_{k+1} - omega_k - T I^-1 (tau_k - omega_k x I omega_k).
+//
+// A thruster that gives 1 - m of its commanded on-time f_j leaves e_k = -m u_j plus what the model
+// leaves out, u_j = T I^-1 tau_j f_j its pulse's rate change (tau_j its torque at full thrust). The
+// reading is m's least-squares value on that direction,
+//
+//   m_k = -(u_j . e_k) / (u_j . u_j),
+//
+// less the median of the same projection over the n periods either side: what the model leaves out
+// (the slosh's torque, the gyroscopic term's inertia error, the gravity gradient) changes slowly
+// against one period, and the median ignores another thruster's pulse among the neighbours. 0 reads
+// a healthy thruster, 1 one that gave nothing.
+//
+// Decision: a reading of at least `threshold` makes j the suspect and asks for its check again at
+// once (`recheck`, the active check's suspect); `confirmations` readings of j in a row at least the
+// threshold confirm the fault, stuck closed where their mean is at least stuck_closed_from, else a
+// loss of that size; a reading below the threshold lets the suspicion go. The alarm is the
+// confirmation: one reading is never an alarm.
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include <Eigen/Core>
+
+#include "core/types.hpp"
+#include "model/faults.hpp"
+#include "model/fdi.hpp"
+#include "model/thrusters.hpp"
+
+namespace chaser::flight::fdi {
+
+struct RateCheckParams {
+  double period_s = 0.1;                                     // [s] T
+  Eigen::Matrix3d inertia_kgm2 = Eigen::Matrix3d::Identity();   // [kg m^2] nominal, body axes
+  Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Identity();  // [1/(kg m^2)]
+  std::array<Vec3, model::kMaxThrusters> torque_Nm{};       // [N m] each thruster's at full thrust, about the CoM
+  int neighbours = 5;            // n: periods either side
+  double threshold = 0.25;       // [-]
+  int confirmations = 3;
+  double stuck_closed_from = 0.8;  // [-]
+};
+
+// The parameters for a thruster set (nominal geometry about com_body_m) and the scenario's keys.
+RateCheckParams make_rate_check_params(const model::RateCheckParams& keys, const model::ThrusterSetParams& thrusters,
+                                       const Vec3& com_body_m, const Eigen::Matrix3d& inertia_kgm2, double period_s);
+
+inline constexpr int kRateCheckRing = 2 * model::kMaxRateCheckNeighbours + 2;
+
+struct RateCheckPeriod {
+  Vec3 omega_radps = Vec3::Zero();     // measured at the period's start
+  Vec3 torque_Nm = Vec3::Zero();       // commanded through it
+  Vec3 residual_radps = Vec3::Zero();  // e_k, once the next period's rate is in
+  int checked = model::kNoThruster;    // the thruster a check pulsed in it
+  double on_fraction = 0;              // its whole commanded on-time [-]
+};
+
+struct RateCheckState {
+  std::array<RateCheckPeriod, kRateCheckRing> ring{};
+  std::int64_t periods = 0;             // periods pushed
+  double last_reading = std::numeric_limits<double>::quiet_NaN();  // [-] the latest reading, of any thruster
+  int suspect = model::kNoThruster;
+  int in_a_row = 0;                     // the suspect's readings in a row at least the threshold
+  double sum = 0;                       // [-] and their sum
+  double suspect_pulse_s = -1;          // [s] the first of them's pulse: the latest the fault can have begun
+  int recheck = model::kNoThruster;     // the thruster to check again, until its pulse is fired
+  int confirmed = model::kNoThruster;   // latched
+  double confirmed_s = -1;              // [s] when, -1: not
+  model::FaultKind kind = model::FaultKind::kStuckClosed;  // with confirmed: stuck closed or loss
+  double size = 0;                      // [-] the mean reading of the confirming run
+};
+
+struct RateCheckInput {
+  double t_s = 0;                        // [s] this period (its start)
+  Vec3 omega_body_radps = Vec3::Zero();  // the gyro at the period's start
+  Vec3 torque_cmd_body_Nm = Vec3::Zero();  // the period's commanded torque (M ton)
+  int checked = model::kNoThruster;      // the thruster whose check this period's command carries
+  double checked_on_fraction = 0;        // its commanded on-time [-]
+};
+
+// What a period read: the thruster whose check was read (kNoThruster: none) and its reading.
+struct RateCheckReading {
+  int thruster = model::kNoThruster;
+  double missing = 0;  // [-] m_k less the neighbours' median
+};
+
+// One period: records it, completes the residual of the one before, reads the check n + 1 periods
+// back when there was one, and decides.
+RateCheckReading step_rate_check(const RateCheckParams& params, RateCheckState& state, const RateCheckInput& in);
+
+// The reading of the check in period k (of the state's count), once the residuals of its n
+// neighbours either side are in (k + n + 2 <= state.periods, k >= n); NaN without a check in k.
+double read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k);
+
+}  // namespace chaser::flight::fdi

@@ -1,0 +1,173 @@
+// The active checks read from the body rates (flight/fdi/rate_check.hpp) on rates made here by the
+// step the reading assumes: a body of COMRADE's inertia whose rate changes each period by
+// T I^-1 (tau - omega x I omega). A check whose thruster gives 1 - m of its pulse then reads m to
+// rounding whatever the commanded torques around it; a slowly
+// varying torque the model leaves out (the slosh's, as a 60 s sine of 1 N m, five times the pulse's
+// 0.2 N m s per period) moves a reading by at most its curvature over the 2n + 1 periods, 1e-3 of
+// the pulse; another thruster's pulse among the neighbours does not move the median. The decision:
+// a dead thruster is confirmed stuck closed after three readings in a row, each asking for a recheck;
+// a 50 % loss as a loss of 0.5; a healthy reading lets the suspicion go; a healthy flight with the
+// gyro's noise never alarms.
+#include "flight/fdi/rate_check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "tests/support/two_tank_chaser.hpp"
+
+namespace chaser::flight::fdi {
+namespace {
+
+constexpr double kT = 0.1;  // [s]
+
+RateCheckParams params() {
+  const model::Scenario s = chaser::testing::two_tank_chaser();
+  return make_rate_check_params(model::RateCheckParams{}, s.thrusters, Vec3::Zero(), s.chaser.inertia_kgm2, kT);
+}
+
+// A body at rest flown period by period: each period's commanded torque, the check it carries and
+// the share of that check's pulse that does not come, and a torque the model does not know.
+struct Body {
+  explicit Body(const RateCheckParams& params) : p(params) {}
+  const RateCheckParams& p;
+  RateCheckState state;
+  Vec3 omega = Vec3::Zero();
+  double t = 0;
+  std::mt19937_64 rng{7};
+  double gyro_sigma = 0;  // [rad/s]
+  std::function<Vec3(double)> unknown_Nm = [](double) { return Vec3::Zero(); };
+
+  RateCheckReading period(const Vec3& torque_cmd_Nm, int checked = model::kNoThruster, double on_fraction = 0.0,
+                          double missing = 0.0) {
+    std::normal_distribution<double> noise(0.0, gyro_sigma);
+    const Vec3 measured = omega + Vec3(noise(rng), noise(rng), noise(rng));
+    const RateCheckReading r = step_rate_check(
+        p, state, {.t_s = t, .omega_body_radps = measured, .torque_cmd_body_Nm = torque_cmd_Nm, .checked = checked,
+                   .checked_on_fraction = on_fraction});
+    Vec3 delivered = torque_cmd_Nm + unknown_Nm(t);
+    if (checked != model::kNoThruster)
+      delivered -= missing * on_fraction * p.torque_Nm[static_cast<std::size_t>(checked)];
+    omega += kT * (p.inverse_inertia * (delivered - omega.cross(p.inertia_kgm2 * omega)));
+    t += kT;
+    return r;
+  }
+};
+
+// A commanded torque that changes every period, as a controller's does.
+Vec3 busy_torque(int k) { return Vec3(std::sin(0.7 * k), std::cos(1.3 * k), 0.5 * std::sin(2.1 * k)); }
+
+constexpr int kT1 = 0, kT2 = 1, kT5 = 4;
+constexpr double kPulse = 0.075;  // 7.5 ms of a 0.1 s period
+
+TEST(RateCheck, ReadsTheMissingShareOfThePulseThroughBusyTorques) {
+  const RateCheckParams p = params();
+  for (const double missing : {0.0, 0.5, 1.0}) {
+    Body body(p);
+    RateCheckReading read;
+    for (int k = 0; k < 40; ++k) {
+      const RateCheckReading r = body.period(busy_torque(k), k == 20 ? kT5 : model::kNoThruster, kPulse, missing);
+      if (r.thruster != model::kNoThruster) read = r;
+    }
+    EXPECT_EQ(read.thruster, kT5);
+    EXPECT_NEAR(read.missing, missing, 1e-9) << missing;  // rounding: no modelled term is left out
+  }
+}
+
+TEST(RateCheck, ASlowUnknownTorqueAndAnotherPulseAmongTheNeighboursDoNotMoveTheReading) {
+  const RateCheckParams p = params();
+  Body body(p);
+  body.unknown_Nm = [](double t) -> Vec3 {
+    return Vec3(1.0, -0.5, 0.8) * std::sin(2 * M_PI * t / 60.0) + Vec3(0.3, 0.2, -0.1);
+  };
+  RateCheckReading read;
+  for (int k = 0; k < 400; ++k) {
+    int checked = model::kNoThruster;
+    double missing = 0;
+    if (k == 300) checked = kT1, missing = 0.5;
+    if (k == 302) checked = kT2, missing = 1.0;  // a dead neighbour, two periods later
+    const RateCheckReading r = body.period(busy_torque(k), checked, kPulse, missing);
+    if (r.thruster == kT1) read = r;
+  }
+  ASSERT_EQ(read.thruster, kT1);
+  // The unknown torque, up to 1.3 N m, reads as 0.5 of a pulse (T1's 35 N m x 0.075): the median
+  // removes it but for the dead neighbour, which moves the median by up to two periods' change of
+  // it, 0.01 N m each at the sine's steepest (t = 30 s), 0.004 of the pulse each.
+  EXPECT_NEAR(read.missing, 0.5, 0.01);
+}
+
+TEST(RateCheck, ConfirmsADeadThrusterAfterThreeReadingsInARowEachAskingForARecheck) {
+  const RateCheckParams p = params();
+  Body body(p);
+  int pulses = 0, k = 0;
+  bool asked_again = false;
+  int pending = model::kNoThruster;
+  const int first = p.neighbours;  // the first check, its neighbours before it in
+  while (body.state.confirmed == model::kNoThruster && k < 200) {
+    const int checked = k == first ? kT5 : pending;
+    pending = model::kNoThruster;
+    if (checked != model::kNoThruster) ++pulses;
+    body.period(busy_torque(k++), checked, kPulse, 1.0);
+    if (body.state.recheck != model::kNoThruster) {
+      asked_again = true;
+      pending = body.state.recheck;  // the active check fires it in the next period
+    }
+    EXPECT_EQ(body.state.confirmed == model::kNoThruster, body.state.confirmed_s < 0);
+  }
+  EXPECT_TRUE(asked_again);
+  EXPECT_EQ(pulses, 3);
+  EXPECT_EQ(body.state.confirmed, kT5);
+  EXPECT_EQ(body.state.kind, model::FaultKind::kStuckClosed);
+  EXPECT_DOUBLE_EQ(body.state.size, 1.0);
+  EXPECT_EQ(body.state.recheck, model::kNoThruster);
+  EXPECT_NEAR(body.state.suspect_pulse_s, first * kT, 1e-9);  // the first pulse that read it
+  // Each reading comes n + 1 periods after its pulse, its recheck one period later.
+  EXPECT_EQ(k, first + 3 * (p.neighbours + 2));
+}
+
+TEST(RateCheck, AHalfLossIsALossAndAHealthyReadingLetsTheSuspicionGo) {
+  const RateCheckParams p = params();
+  const auto fly = [&](const std::vector<double>& missing_each_check) {
+    Body body(p);
+    int k = 0;
+    while (k < p.neighbours) body.period(busy_torque(k++));
+    for (const double missing : missing_each_check) {
+      body.period(busy_torque(k++), kT5, kPulse, missing);
+      for (int i = 0; i < p.neighbours + 1; ++i) body.period(busy_torque(k++));
+    }
+    return body.state;
+  };
+  const RateCheckState loss = fly({0.5, 0.5, 0.5});
+  EXPECT_EQ(loss.confirmed, kT5);
+  EXPECT_EQ(loss.kind, model::FaultKind::kLoss);
+  EXPECT_NEAR(loss.size, 0.5, 1e-9);
+  const RateCheckState cleared = fly({0.5, 0.5, 0.0});
+  EXPECT_EQ(cleared.confirmed, model::kNoThruster);
+  EXPECT_EQ(cleared.suspect, model::kNoThruster);
+  EXPECT_EQ(cleared.recheck, model::kNoThruster);
+  EXPECT_EQ(fly({0.5, 0.5, 0.0, 0.5, 0.5}).confirmed, model::kNoThruster);  // in a row, not in all
+}
+
+// The gyro's noise (1e-6 rad/s, comrade_sync's) over 2,000 checks of healthy thrusters, each one
+// every seventh period: the readings' spread is that noise over a pulse's 1.4e-4 rad/s, and not
+// one confirmation.
+TEST(RateCheck, AHealthyFlightWithTheGyrosNoiseNeverConfirms) {
+  const RateCheckParams p = params();
+  Body body(p);
+  body.gyro_sigma = 1e-6;
+  double largest = 0;
+  for (int k = 0; k < 14000; ++k) {
+    const int checked = k % 7 == 0 ? (k / 7) % 24 : model::kNoThruster;
+    const RateCheckReading r = body.period(busy_torque(k), checked, kPulse, 0.0);
+    if (r.thruster != model::kNoThruster) largest = std::max(largest, std::abs(r.missing));
+  }
+  EXPECT_EQ(body.state.confirmed, model::kNoThruster);
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(largest, p.threshold / 2);
+}
+
+}  // namespace
+}  // namespace chaser::flight::fdi
