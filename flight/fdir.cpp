@@ -292,7 +292,7 @@ FdirParams make_fdir_params(const model::Scenario& s) {
   p.rate_check_enabled = s.fdi.rate_check.enabled;
   if (p.rate_check_enabled)
     p.rate_check = fdi::make_rate_check_params(s.fdi.rate_check, s.thrusters, s.chaser.com_body_m, s.chaser.inertia_kgm2,
-                                               s.control_period_s);
+                                               s.control_period_s, s.fdi.deficit.inertia_uncertainty);
   if (!p.position_enabled && !p.attitude_enabled && !p.deficit_detection && !p.bank_enabled && !p.rate_check_enabled)
     return p;
   // Designed once, for the starting set. The two designs are independent pure functions of the
@@ -489,7 +489,8 @@ void step_rate_check_scheme(const FdirParams& p, FdirState& state, const model::
                         .omega_body_radps = meas.omega_body_radps,
                         .torque_cmd_body_Nm = in.commanded_wrench.tail<3>(),
                         .checked = in.checked_thruster,
-                        .checked_on_fraction = in.checked_on_fraction});
+                        .checked_on_fraction = in.checked_on_fraction,
+                        .spill_Nms = fdi::spill_bound_Nms(p.rate_check, w.set, in.ton)});
   const auto lane_of = [&](int thruster) {
     return thruster == model::kNoThruster ? -1 : w.set.lane[static_cast<std::size_t>(thruster)];
   };

@@ -114,6 +114,7 @@ void read_rate_check(MapReader& r, model::RateCheckParams& out) {
   if (r.has("threshold")) r.number("threshold", Range::open(0.0, 1.0), out.threshold);
   if (r.has("confirmations")) read_count_in(r, "confirmations", 1, 20, out.confirmations);
   if (r.has("stuck_closed_from")) r.number("stuck_closed_from", Range::open(0.0, 1.0), out.stuck_closed_from);
+  if (r.has("max_uncertainty")) r.number("max_uncertainty", Range::positive(), out.max_uncertainty);
 }
 
 void read_scheme(MapReader& r, model::FdiSchemeParams& out) {

@@ -21,8 +21,21 @@
 // against one period, and the median ignores another thruster's pulse among the neighbours. 0 reads
 // a healthy thruster, 1 one that gave nothing.
 //
-// Decision: a reading of at least `threshold` makes j the suspect and asks for its check again at
-// once (`recheck`, the active check's suspect); `confirmations` readings of j in a row at least the
+// What the median cannot remove is what changes from one period to the next: the commanded torque's
+// change against its neighbours times the inertia's error (delta_I, fdi.deficit.inertia_uncertainty),
+// and the impulse a long on-time spills into the next period when the valves open late (at most
+// delay_max + rise / 2 after the period's start: a thruster on for f T spills up to
+// f T + shift_max - T of its torque, out of period k and into k + 1). Their bound, on the pulse's
+// direction,
+//
+//   B_k = ( delta_I |T I^-1 (tau_k - mean tau_neighbours)| + |I^-1| (S_{k-1} + S_k) ) / |u_j|,
+//
+// S the spilled torque impulses' bound, says how far the reading can be off on a healthy thruster. A
+// reading with B_k above max_uncertainty is inconclusive: it changes no suspicion, and the thruster
+// is checked again at once (in a turning flight's busiest periods a check may take a few tries).
+//
+// Decision: a conclusive reading of at least `threshold` makes j the suspect and asks for its check
+// again at once (`recheck`, the active check's suspect); `confirmations` readings of j in a row at least the
 // threshold confirm the fault, stuck closed where their mean is at least stuck_closed_from, else a
 // loss of that size; a reading below the threshold lets the suspicion go. The alarm is the
 // confirmation: one reading is never an alarm.
@@ -36,6 +49,7 @@
 #include "model/faults.hpp"
 #include "model/fdi.hpp"
 #include "model/thrusters.hpp"
+#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
@@ -43,16 +57,24 @@ struct RateCheckParams {
   double period_s = 0.1;                                     // [s] T
   Eigen::Matrix3d inertia_kgm2 = Eigen::Matrix3d::Identity();   // [kg m^2] nominal, body axes
   Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Identity();  // [1/(kg m^2)]
+  double inverse_inertia_norm = 1;  // [1/(kg m^2)] its largest singular value
   std::array<Vec3, model::kMaxThrusters> torque_Nm{};       // [N m] each thruster's at full thrust, about the CoM
   int neighbours = 5;            // n: periods either side
   double threshold = 0.25;       // [-]
   int confirmations = 3;
   double stuck_closed_from = 0.8;  // [-]
+  double max_uncertainty = 0.1;    // [-] B_k above which a reading is inconclusive
+  double inertia_uncertainty = 0;  // [-] delta_I
+  double shift_max_s = 0;          // [s] latest valve opening after the period's start: delay_max + rise / 2
 };
 
 // The parameters for a thruster set (nominal geometry about com_body_m) and the scenario's keys.
 RateCheckParams make_rate_check_params(const model::RateCheckParams& keys, const model::ThrusterSetParams& thrusters,
-                                       const Vec3& com_body_m, const Eigen::Matrix3d& inertia_kgm2, double period_s);
+                                       const Vec3& com_body_m, const Eigen::Matrix3d& inertia_kgm2, double period_s,
+                                       double inertia_uncertainty);
+
+// S_k: the torque impulse [N m s] the period's on-times can spill into the next, at most.
+double spill_bound_Nms(const RateCheckParams& params, const WatchedSet& set, const WatchedTon& ton);
 
 inline constexpr int kRateCheckRing = 2 * model::kMaxRateCheckNeighbours + 2;
 
@@ -62,6 +84,7 @@ struct RateCheckPeriod {
   Vec3 residual_radps = Vec3::Zero();  // e_k, once the next period's rate is in
   int checked = model::kNoThruster;    // the thruster a check pulsed in it
   double on_fraction = 0;              // its whole commanded on-time [-]
+  double spill_Nms = 0;                // S_k [N m s]
 };
 
 struct RateCheckState {
@@ -85,12 +108,15 @@ struct RateCheckInput {
   Vec3 torque_cmd_body_Nm = Vec3::Zero();  // the period's commanded torque (M ton)
   int checked = model::kNoThruster;      // the thruster whose check this period's command carries
   double checked_on_fraction = 0;        // its commanded on-time [-]
+  double spill_Nms = 0;                  // S_k (spill_bound_Nms) [N m s]
 };
 
-// What a period read: the thruster whose check was read (kNoThruster: none) and its reading.
+// What a period read: the thruster whose check was read (kNoThruster: none), its reading and the
+// reading's bound on a healthy thruster.
 struct RateCheckReading {
   int thruster = model::kNoThruster;
-  double missing = 0;  // [-] m_k less the neighbours' median
+  double missing = 0;      // [-] m_k less the neighbours' median
+  double uncertainty = 0;  // [-] B_k
 };
 
 // One period: records it, completes the residual of the one before, reads the check n + 1 periods
@@ -98,7 +124,7 @@ struct RateCheckReading {
 RateCheckReading step_rate_check(const RateCheckParams& params, RateCheckState& state, const RateCheckInput& in);
 
 // The reading of the check in period k (of the state's count), once the residuals of its n
-// neighbours either side are in (k + n + 2 <= state.periods, k >= n); NaN without a check in k.
-double read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k);
+// neighbours either side are in (k + n + 2 <= state.periods, k >= n); missing NaN without a check in k.
+RateCheckReading read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k);
 
 }  // namespace chaser::flight::fdi

@@ -1,7 +1,7 @@
 // The active checks read from the rates (fdi.rate_check; flight/fdi/rate_check.hpp; docs/fdi.md,
 // "Checks read from the rates") in COMRADE's synchronised flight, where the impulse statistic
 // cannot see a thruster the flight does not fire: a fault-free run checks every thruster all along
-// for a fifth of a kilogram and never alarms; T1, which the hold never fires, stuck closed in the
+// for half a kilogram and never alarms; T1, which the hold never fires, stuck closed in the
 // fly-around, and T4 weakened by 40 % in the hold, are each named, with their fault, by their checks;
 // a rate check without the active checks is refused by name.
 #include <gtest/gtest.h>
@@ -22,9 +22,9 @@ model::Scenario sync_checked(bool checks) {
                              std::string("fdi.rate_check={enabled: ") + (checks ? "true" : "false") + "}"});
 }
 
-// Seed 1, fault-free: ~1,300 checks (each of the 24 every 25 s that the flight leaves it idle), the
-// largest reading 0.35 of a pulse (a lone one in the hold, cleared by its recheck) against the
-// threshold 0.25 three times in a row; 0.17 kg more propellant than without checks (8.96 kg).
+// Seed 1, fault-free: ~4,300 checks (each of the 24 every 25 s that the flight leaves it idle, and
+// again at once where a busy period leaves a reading inconclusive), never three readings in a row at
+// the threshold; 0.56 kg more propellant than without checks (8.96 kg), 6 %.
 TEST(SyncRateCheck, AFaultFreeSynchronisationChecksAllAlongAndNeverAlarms) {
   const RunResult checked = run_scenario(sync_checked(true));
   const RunResult unchecked = run_scenario(sync_checked(false));
@@ -36,7 +36,7 @@ TEST(SyncRateCheck, AFaultFreeSynchronisationChecksAllAlongAndNeverAlarms) {
   EXPECT_EQ(unchecked.active_checks, 0);
   const double extra_kg = checked.propellant_used_kg - unchecked.propellant_used_kg;
   EXPECT_GT(extra_kg, 0.05);
-  EXPECT_LT(extra_kg, 0.5);
+  EXPECT_LT(extra_kg, 1.0);
   EXPECT_TRUE(checked.figures.capture_achieved);
 }
 

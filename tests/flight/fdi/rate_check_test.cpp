@@ -26,7 +26,7 @@ constexpr double kT = 0.1;  // [s]
 
 RateCheckParams params() {
   const model::Scenario s = chaser::testing::two_tank_chaser();
-  return make_rate_check_params(model::RateCheckParams{}, s.thrusters, Vec3::Zero(), s.chaser.inertia_kgm2, kT);
+  return make_rate_check_params(model::RateCheckParams{}, s.thrusters, Vec3::Zero(), s.chaser.inertia_kgm2, kT, 0.0);
 }
 
 // A body at rest flown period by period: each period's commanded torque, the check it carries and
@@ -149,6 +149,39 @@ TEST(RateCheck, AHalfLossIsALossAndAHealthyReadingLetsTheSuspicionGo) {
   EXPECT_EQ(cleared.suspect, model::kNoThruster);
   EXPECT_EQ(cleared.recheck, model::kNoThruster);
   EXPECT_EQ(fly({0.5, 0.5, 0.0, 0.5, 0.5}).confirmed, model::kNoThruster);  // in a row, not in all
+}
+
+// A reading's bound on a healthy thruster: with a 20 % inertia error, a period whose commanded torque
+// steps 10 N m off its neighbours' could read 0.2 x 10 N m / (T1's 35 N m x 0.075) ~ 0.8 off: the
+// reading changes no suspicion and the check is asked for again. The spill: a thruster on for 95 ms
+// of a 100 ms period whose valve opens up to 22.5 ms late spills up to 17.5 ms of its torque.
+TEST(RateCheck, AReadingInABusyPeriodIsInconclusiveAndCheckedAgain) {
+  RateCheckParams p = params();
+  p.inertia_uncertainty = 0.2;
+  p.shift_max_s = 0.0225;
+  Body body(p);
+  int k = 0;
+  while (k < 20) body.period(Vec3(1.0, 0.0, 0.0), k++ == 10 ? kT1 : model::kNoThruster, kPulse, 1.0);
+  body.period(Vec3(1.0, 10.0, 0.0), kT1, kPulse, 1.0);  // a dead T1 in a busy period
+  RateCheckReading read;
+  for (int i = 0; i < p.neighbours + 1; ++i) {
+    const RateCheckReading r = body.period(Vec3(1.0, 0.0, 0.0));
+    if (r.thruster != model::kNoThruster) read = r;
+  }
+  EXPECT_EQ(read.thruster, kT1);
+  EXPECT_NEAR(read.missing, 1.0, 1e-9);
+  EXPECT_GT(read.uncertainty, 0.5);
+  EXPECT_EQ(body.state.suspect, kT1);  // the quiet check's reading before it still stands
+  EXPECT_EQ(body.state.in_a_row, 1);
+  EXPECT_EQ(body.state.recheck, kT1);
+
+  WatchedSet set;
+  set.count = 2;
+  set.index = {0, 4};
+  WatchedTon ton = WatchedTon::Zero();
+  ton[0] = 0.95;  // T1: spills
+  ton[1] = 0.7;   // T5: ends by 92.5 ms
+  EXPECT_NEAR(spill_bound_Nms(p, set, ton), p.torque_Nm[0].norm() * 0.0175, 1e-12);
 }
 
 // The gyro's noise (1e-6 rad/s, comrade_sync's) over 2,000 checks of healthy thrusters, each one
