@@ -36,6 +36,8 @@ RUNS_HEADER = (
     "deficit_wrong_isolation,deficit_glr_max_before_onset,"
     "bank_detection_s,bank_isolation_s,bank_isolated,bank_false_alarm,bank_missed,"
     "bank_wrong_isolation,bank_glr_max_before_onset,"
+    "rate_check_detection_s,rate_check_isolation_s,rate_check_isolated,rate_check_false_alarm,"
+    "rate_check_missed,rate_check_wrong_isolation,rate_check_glr_max_before_onset,"
     "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
     "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s,"
     "final_position_error_m,final_speed_mps,final_attitude_error_deg,final_rate_error_deg_s,"
@@ -43,10 +45,10 @@ RUNS_HEADER = (
 ).split(",")
 TEXT_COLUMNS = ("seed", "case", "status")  # kept as text: a 64-bit seed does not fit a double
 CASES = ("none", "stuck_open", "stuck_closed", "leak", "loss")
-SCHEMES = ("position", "attitude", "deficit", "bank", "fdir")
+SCHEMES = ("position", "attitude", "deficit", "bank", "rate_check", "fdir")
 GLR_SCHEMES = ("position", "attitude")  # the two with a GLR statistic S (eq. 41)
 COLORS = {"position": "tab:blue", "attitude": "tab:orange", "deficit": "tab:purple", "bank": "tab:brown",
-          "fdir": "tab:green"}
+          "rate_check": "tab:olive", "fdir": "tab:green"}
 RATES = ("P_nd", "P_f", "P_i", "capture_rate", "corridor_rate")
 BOUNDS = tuple(f"{r}_{side}95" for r in RATES for side in ("lo", "hi"))  # summary.csv's last columns
 CONFIDENCE = 0.95  # of every interval Chaser writes (campaign/confidence.hpp)

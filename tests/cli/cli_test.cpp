@@ -110,7 +110,7 @@ TEST(Cli, RunWritesTheChosenChannelsAndRefusesUnknownOnes) {
   std::ifstream telemetry(dir / "telemetry.csv");
   std::string header;
   std::getline(telemetry, header);
-  EXPECT_EQ(header, "t_s,r_lvlh_x_m,r_lvlh_y_m,r_lvlh_z_m,glr_position,glr_attitude,glr_deficit,glr_bank");
+  EXPECT_EQ(header, "t_s,r_lvlh_x_m,r_lvlh_y_m,r_lvlh_z_m,glr_position,glr_attitude,glr_deficit,glr_bank,glr_rate_check");
   const CommandResult bad = run_chaser("run scenarios/msr_terminal.yaml --channels r_lvhl_x_m --out " + dir.string());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("--channels: r_lvhl_x_m match no telemetry channel"), std::string::npos) << bad.output;

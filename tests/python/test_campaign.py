@@ -79,7 +79,7 @@ def test_the_directory_holds_the_command_lines_bytes(cli_campaign, py_campaign):
 
 def test_the_summary_is_summary_csv_and_campaign_json(cli_campaign, py_campaign):
     rows = csv_rows(cli_campaign / "summary.csv")
-    assert sum(len(cases) for cases in py_campaign.summary.values()) == len(rows) == 25  # 5 schemes x 5 cases
+    assert sum(len(cases) for cases in py_campaign.summary.values()) == len(rows) == 30  # 6 schemes x 5 cases
     for row in rows:
         got = py_campaign.summary[row["scheme"]][row["case"]]
         assert list(got) == [k for k in row if k not in ("scheme", "case")]

@@ -87,12 +87,12 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
 
 TEST(AddedScheme, AppearsInRunsCsvAndTheCampaignsTable) {
   const std::string header = campaign::runs_header(campaign::RunColumnSet::kStandard);
-  EXPECT_NE(header.find("bank_glr_max_before_onset,ramp_detection_s,ramp_isolation_s,ramp_isolated,ramp_false_alarm,"
+  EXPECT_NE(header.find("rate_check_glr_max_before_onset,ramp_detection_s,ramp_isolation_s,ramp_isolated,ramp_false_alarm,"
                         "ramp_missed,ramp_wrong_isolation,ramp_glr_max_before_onset,fdir_detection_s"),
             std::string::npos)
       << header;
   EXPECT_EQ(campaign::statistics_schemes(),
-            (std::vector<std::string>{"position", "attitude", "deficit", "bank", "ramp", "fdir"}));
+            (std::vector<std::string>{"position", "attitude", "deficit", "bank", "rate_check", "ramp", "fdir"}));
   // Two fault-free runs of 30 s: the ramp alarms in each (a false alarm, P_f = 1), the others do not.
   const campaign::CampaignPlan plan = campaign::testing::short_plan({{campaign::FaultCase::kNone, 2}}, {"fdi.recovery=none"});
   const auto dir = campaign::testing::fresh_dir("added_scheme");
