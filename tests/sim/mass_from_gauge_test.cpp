@@ -86,8 +86,10 @@ TEST(MassFromGauge, ANonBooleanAndANoisyGaugeAreRefusedByName) {
   testing::expect_refused("scenarios/comrade_sync.yaml",
                           {"control.mass_from_gauge=true", "sensors.propellant.noise_sigma_kg=2.0"},
                           "sensors.propellant.noise_sigma_kg", "<= 1e-3 chaser.mass_kg = 1.6 kg (got 2)");
-  EXPECT_EQ(testing::load_with("scenarios/comrade_sync.yaml", {"sensors.propellant.noise_sigma_kg=2.0"}).control.mass_from_gauge,
-            false);  // without the key, the gauge's noise is the gauge's business
+  EXPECT_EQ(testing::load_with("scenarios/comrade_sync.yaml",
+                               {"control.mass_from_gauge=false", "sensors.propellant.noise_sigma_kg=2.0"})
+                .control.mass_from_gauge,
+            false);  // with the key off, the gauge's noise is the gauge's business
 }
 
 }  // namespace
