@@ -34,7 +34,8 @@ double spill_bound_Nms(const RateCheckParams& p, const WatchedSet& set, const Wa
   double spill = 0;
   for (int lane = 0; lane < set.count; ++lane) {
     const double late_s = ton[lane] * p.period_s + p.shift_max_s - p.period_s;
-    if (late_s > 0) spill += p.torque_Nm[static_cast<std::size_t>(set.index[static_cast<std::size_t>(lane)])].norm() * late_s;
+    const int thruster = set.index[static_cast<std::size_t>(lane)];
+    if (late_s > 0) spill += p.torque_Nm[static_cast<std::size_t>(thruster)].norm() * late_s;
   }
   return spill;
 }
@@ -50,7 +51,8 @@ RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& stat
   const RateCheckPeriod& pulse = state.ring[slot(k)];
   if (pulse.checked == model::kNoThruster || !(pulse.on_fraction > 0)) return r;
   // u_j: the rate change of the whole commanded pulse.
-  const Vec3 u = p.period_s * pulse.on_fraction * (p.inverse_inertia * p.torque_Nm[static_cast<std::size_t>(pulse.checked)]);
+  const Vec3& torque_Nm = p.torque_Nm[static_cast<std::size_t>(pulse.checked)];
+  const Vec3 u = p.period_s * pulse.on_fraction * (p.inverse_inertia * torque_Nm);
   const double uu = u.squaredNorm();
   if (!(uu > 0)) return r;
   const auto missing = [&](std::int64_t i) { return -u.dot(state.ring[slot(i)].residual_radps) / uu; };
@@ -73,8 +75,8 @@ RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& stat
   // B_k: the inertia's error on the torque's change, the spills in and out (header).
   const Vec3 change_Nm = pulse.torque_Nm - torque_sum_Nm / static_cast<double>(count);
   const double spill_Nms = state.ring[slot(k - 1)].spill_Nms + pulse.spill_Nms;
-  r.uncertainty = (p.inertia_uncertainty * p.period_s * (p.inverse_inertia * change_Nm).norm() + p.inverse_inertia_norm * spill_Nms) /
-                  std::sqrt(uu);
+  const double inertia_radps = p.inertia_uncertainty * p.period_s * (p.inverse_inertia * change_Nm).norm();
+  r.uncertainty = (inertia_radps + p.inverse_inertia_norm * spill_Nms) / std::sqrt(uu);
   return r;
 }
 
@@ -90,7 +92,7 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
   state.ring[slot(now)] = RateCheckPeriod{.omega_radps = in.omega_body_radps,
                                           .torque_Nm = in.torque_cmd_body_Nm,
                                           .checked = in.checked,
-                                          .on_fraction = in.checked != model::kNoThruster ? in.checked_on_fraction : 0.0,
+                                          .on_fraction = in.checked == model::kNoThruster ? 0.0 : in.checked_on_fraction,
                                           .spill_Nms = in.spill_Nms};
   state.periods = now + 1;
   if (in.checked != model::kNoThruster && in.checked == state.recheck) state.recheck = model::kNoThruster;

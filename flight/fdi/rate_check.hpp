@@ -46,10 +46,10 @@
 #include <Eigen/Core>
 
 #include "core/types.hpp"
+#include "flight/fdi/watched_set.hpp"
 #include "model/faults.hpp"
 #include "model/fdi.hpp"
 #include "model/thrusters.hpp"
-#include "flight/fdi/watched_set.hpp"
 
 namespace chaser::flight::fdi {
 
