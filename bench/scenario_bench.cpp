@@ -72,15 +72,19 @@ void BM_EndToEndComrade(benchmark::State& state, const char* file) { fly_whole_r
 BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// COMRADE's whole synchronisation (3,000 s), as shipped and with the observer bank on beside the
-// deficit detector: what the bank costs a run, its design at the start included.
-void BM_EndToEndSync(benchmark::State& state, bool bank) {
+// COMRADE's whole synchronisation (3,000 s), as shipped, with the observer bank on beside the
+// deficit detector (what the bank costs a run, its design at the start included), and with the
+// active checks read from the rates (the checks' pulses and the rate check's readings).
+enum class SyncFdi { kShipped, kObserverBank, kRateCheck };
+void BM_EndToEndSync(benchmark::State& state, SyncFdi fdi) {
   model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
-  scenario.fdi.observer_bank.enabled = bank;
+  scenario.fdi.observer_bank.enabled = fdi == SyncFdi::kObserverBank;
+  scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = fdi == SyncFdi::kRateCheck;
   fly_whole_runs(state, scenario);
 }
-BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, SyncFdi::kShipped)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, SyncFdi::kObserverBank)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, rate_check, SyncFdi::kRateCheck)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The observer bank's period alone (flight/fdi/observer_bank.hpp): comrade_sync's 25 observers of
 // order 9 on 24 thrusters, fed 1,000 recorded-like periods in turn (rates near the hold's, random
@@ -114,6 +118,40 @@ void BM_ObserverBankPeriod(benchmark::State& state) {
   benchmark::DoNotOptimize(bank.statistic_Nm);
 }
 BENCHMARK(BM_ObserverBankPeriod);
+
+// The rate check's period alone (flight/fdi/rate_check.hpp) on comrade_sync's 24 thrusters: a check
+// every seventh period (the sync's busiest rate of checks) with eight thrusters commanded beside
+// its pulse, each check read against its 2 x 5 neighbours and every commanded thruster's hypothesis.
+void BM_RateCheckPeriod(benchmark::State& state) {
+  model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
+  scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = true;
+  const flight::FdirParams fdir = flight::make_flight_params(scenario).fdir;
+  flight::fdi::RateCheckState check;
+  constexpr std::size_t kInputs = 1001;  // a multiple of 7, so that the checks' pattern repeats
+  std::vector<flight::fdi::RateCheckInput> inputs(kInputs);
+  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
+  const auto uniform = [&x] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  };
+  for (std::size_t k = 0; k < kInputs; ++k) {
+    flight::fdi::RateCheckInput& in = inputs[k];
+    in.t_s = 0.1 * static_cast<double>(k);
+    in.omega_body_radps = Vec3(0.03, -0.02, 0.01) + 1e-4 * Vec3(uniform(), uniform(), uniform());
+    in.torque_cmd_body_Nm = Vec3(uniform(), uniform(), uniform());
+    for (int i = 0; i < 8; ++i) in.on_fraction[static_cast<std::size_t>(3 * i + (k % 3))] = 0.05 * uniform();
+    if (k % 7 == 0) {
+      in.checked = static_cast<int>((k / 7) % 24);
+      in.checked_on_fraction = 0.075;
+    }
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(flight::fdi::step_rate_check(fdir.rate_check, check, inputs[k]));
+    k = k + 1 == kInputs ? 0 : k + 1;
+  }
+}
+BENCHMARK(BM_RateCheckPeriod);
 
 // What `chaser run` waits for, less process start and scenario loading: the whole 1200 s run with
 // its telemetry file written (csv or npy, every channel, finished and renamed), against none. The

@@ -60,7 +60,7 @@ struct ActiveCheckInput {
   double t_s = 0;                  // [s] this period
   double range_m = 0;              // [m] estimated range to the target
   model::ThrusterMask active = 0;  // the active set after this period's recovery
-  int suspect = model::kNoThruster;  // the FDI's suspect above recheck_gain (flight/fdir.hpp deficit_suspect)
+  int suspect = model::kNoThruster;  // the FDI's suspect above recheck_gain (flight/fdir.hpp thruster_to_check_again)
   bool fdi_listening = true;          // false: the FDI has found its fault (or is disarmed); no check
 };
 

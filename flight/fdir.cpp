@@ -157,7 +157,7 @@ void step_detector(const FdirParams& p, const FdiWatchedParams& w, FdirState& st
                    FdirOutput& out) {
   if (p.impulse_detection) {
     // The impulse statistic's verdict, where the rest of the FDIR reads the detector's. Its
-    // material_statistic stays 0: the active checks' recheck of a suspect (deficit_suspect) reads
+    // material_statistic stays 0: the active checks' recheck of a suspect (thruster_to_check_again) reads
     // the gain statistic's material fits, which this statistic has not.
     fdi::step_impulse_detector(p.impulse, w.deficit, state.deficit_bank, state.impulse);
     state.detector.statistic = state.impulse.statistic;
@@ -348,16 +348,13 @@ const fdi::WatchedSet& watched_set(const FdirParams& params, const FdirState& st
 
 bool fdi_listening(const FdirState& state) { return state.armed && state.confirmed_thruster == model::kNoThruster; }
 
-int rate_check_recheck(const FdirParams& params, const FdirState& state) {
-  return params.rate_check_enabled && state.armed ? state.rate_check.recheck : model::kNoThruster;
-}
-
-int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain) {
-  // min_gain > 0 (validated), so a material fit leads and `suspect` is its lane. Strictly above, as
-  // the alarm is: with min_gain the threshold, the detector alarms first and nothing is suspected.
+int thruster_to_check_again(const FdirParams& params, const FdirState& state, double deficit_min_gain) {
+  if (!state.armed) return model::kNoThruster;
+  if (params.rate_check_enabled && state.rate_check.recheck != model::kNoThruster) return state.rate_check.recheck;
+  // deficit_min_gain > 0 (validated), so a material fit leads and `suspect` is its lane. Strictly
+  // above, as the alarm is: with it the threshold, the detector alarms first and nothing is suspected.
   const fdi::DeficitDetectorState& d = state.detector;
-  if (!params.deficit_detection || !state.armed || d.alarm || !(d.material_statistic > min_gain))
-    return model::kNoThruster;
+  if (!params.deficit_detection || d.alarm || !(d.material_statistic > deficit_min_gain)) return model::kNoThruster;
   return watched_set(params, state).index[static_cast<std::size_t>(d.suspect)];
 }
 
@@ -484,13 +481,15 @@ void step_rate_check_scheme(const FdirParams& p, FdirState& state, const model::
                             const FdirInput& in, fdi::FdiSchemeOutput& out) {
   const FdiWatchedParams& w = p.watched[static_cast<std::size_t>(state.watched)];
   fdi::RateCheckState& r = state.rate_check;
-  fdi::step_rate_check(p.rate_check, r,
-                       {.t_s = in.t_s,
-                        .omega_body_radps = meas.omega_body_radps,
-                        .torque_cmd_body_Nm = in.commanded_wrench.tail<3>(),
-                        .checked = in.checked_thruster,
-                        .checked_on_fraction = in.checked_on_fraction,
-                        .spill_Nms = fdi::spill_bound_Nms(p.rate_check, w.set, in.ton)});
+  fdi::RateCheckInput check{.t_s = in.t_s,
+                            .omega_body_radps = meas.omega_body_radps,
+                            .torque_cmd_body_Nm = in.commanded_wrench.tail<3>(),
+                            .checked = in.checked_thruster,
+                            .checked_on_fraction = in.checked_on_fraction,
+                            .spill_Nms = fdi::spill_bound_Nms(p.rate_check, w.set, in.ton)};
+  for (int lane = 0; lane < w.set.count; ++lane)
+    check.on_fraction[static_cast<std::size_t>(w.set.index[static_cast<std::size_t>(lane)])] = in.ton[lane];
+  fdi::step_rate_check(p.rate_check, r, check);
   const auto lane_of = [&](int thruster) {
     return thruster == model::kNoThruster ? -1 : w.set.lane[static_cast<std::size_t>(thruster)];
   };

@@ -184,10 +184,6 @@ void step_bank_scheme(const FdirParams& params, FdirState& state, const model::S
 void step_rate_check_scheme(const FdirParams& params, FdirState& state, const model::SensorMeasurements& meas,
                             const FdirInput& in, fdi::FdiSchemeOutput& out);
 
-// The thruster (index) the rate check wants checked again at once, kNoThruster without one (off,
-// disarmed, or nothing suspect). The active checks take it as their suspect.
-int rate_check_recheck(const FdirParams& params, const FdirState& state);
-
 // The figures of the current watch (not yet ended by a recovery).
 FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
 
@@ -197,10 +193,11 @@ FdirEpisode current_episode(const FdirParams& params, const FdirState& state);
 void rearm_fdir(const FdirParams& params, FdirState& state, model::ThrusterMask active, double t_s,
                 int recovered_thruster);
 
-// The thruster (index) the deficit detector holds a material deficit on, with a gain above
-// `min_gain`, before any alarm; kNoThruster without one (detector off, disarmed, or alarmed). The
-// active checks recheck it (flight/active_check.hpp).
-int deficit_suspect(const FdirParams& params, const FdirState& state, double min_gain);
+// The thruster (index) the active checks check again at once (flight/active_check.hpp), kNoThruster
+// without one (disarmed, or nothing suspect): the rate check's, a reading that wants another look
+// (fdi.rate_check), else the deficit detector's suspect, a material deficit with a gain above
+// `deficit_min_gain` before any alarm.
+int thruster_to_check_again(const FdirParams& params, const FdirState& state, double deficit_min_gain);
 
 // Whether a check can still show the FDI something: it watches (armed) and has not yet confirmed a
 // fault in this watch. After a confirmation the schemes have latched until a recovery rearms them

@@ -60,19 +60,6 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
   };
 }
 
-namespace {
-
-// The thruster the active checks check again at once: the rate check's (a reading that wants a
-// second look), else the deficit detector's suspect.
-int active_check_suspect(const FlightParams& params, const FlightState& state) {
-  if (!params.active_check.enabled) return model::kNoThruster;
-  const int recheck = rate_check_recheck(params.fdir, state.fdir);
-  return recheck != model::kNoThruster ? recheck
-                                       : deficit_suspect(params.fdir, state.fdir, params.active_check.recheck_gain);
-}
-
-}  // namespace
-
 FlightOutput step_flight(const FlightParams& params, FlightState& state, const model::SensorMeasurements& meas) {
   FlightOutput out;
   if (!state.initialised) {
@@ -211,7 +198,9 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                     {.t_s = t_s,
                      .range_m = out.estimate.r_lvlh_m.norm(),
                      .active = state.thrusters.active,
-                     .suspect = active_check_suspect(params, state),
+                     .suspect = params.active_check.enabled
+                                    ? thruster_to_check_again(params.fdir, state.fdir, params.active_check.recheck_gain)
+                                    : model::kNoThruster,
                      .fdi_listening = fdi_listening(state.fdir)},
                     out.command.ton);
 

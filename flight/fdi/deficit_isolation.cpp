@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flight/fdi/euler_torque.hpp"
+
 namespace chaser::flight::fdi {
 
 namespace {
@@ -145,10 +147,7 @@ double torque_chi2_per_row(const DeficitIsolationParams& p, const Window& w, int
 
 Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& now, const DeficitSample& next) {
   // Euler's equation over one period, less the commanded torque: what the thrusters did not do.
-  const Mat3& I = p.inertia_kgm2;
-  const Vec3& w = now.omega_body_radps;
-  const Vec3 d_omega_dt = (next.omega_body_radps - w) * (1.0 / p.period_s);  // one division, not three
-  Vec3 row = I * d_omega_dt + w.cross(I * w);
+  Vec3 row = euler_torque_Nm(p.inertia_kgm2, now.omega_body_radps, next.omega_body_radps, p.period_s);
   with_lanes(p.lanes, [&](auto lanes) {
     for (int i = 0; i < lanes; ++i)  // M_C T_on over the commanded thrusters: most periods none
       if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);

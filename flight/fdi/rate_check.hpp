@@ -11,15 +11,15 @@
 //   e_k = omega_{k+1} - omega_k - T I^-1 (tau_k - omega_k x I omega_k).
 //
 // A thruster that gives 1 - m of its commanded on-time f_j leaves e_k = -m u_j plus what the model
-// leaves out, u_j = T I^-1 tau_j f_j its pulse's rate change (tau_j its torque at full thrust). The
-// reading is m's least-squares value on that direction,
+// leaves out, u_j = T I^-1 tau_j f_j its pulse's rate change (tau_j its torque at full thrust). What
+// the model leaves out (the slosh's torque, the gyroscopic term's inertia error, the gravity
+// gradient) changes slowly against one period: the residual's baseline is its median, axis by axis,
+// over the n periods either side (a median ignores another thruster's pulse among the neighbours).
+// The reading is m's least-squares value on the pulse's direction,
 //
-//   m_k = -(u_j . e_k) / (u_j . u_j),
+//   m_k = -(u_j . (e_k - median e_neighbours)) / (u_j . u_j).
 //
-// less the median of the same projection over the n periods either side: what the model leaves out
-// (the slosh's torque, the gyroscopic term's inertia error, the gravity gradient) changes slowly
-// against one period, and the median ignores another thruster's pulse among the neighbours. 0 reads
-// a healthy thruster, 1 one that gave nothing.
+// 0 reads a healthy thruster, 1 one that gave nothing.
 //
 // What the median cannot remove is what changes from one period to the next: the commanded torque's
 // change against its neighbours times the inertia's error (delta_I, fdi.deficit.inertia_uncertainty),
@@ -34,11 +34,28 @@
 // reading with B_k above max_uncertainty is inconclusive: it changes no suspicion, and the thruster
 // is checked again at once (in a turning flight's busiest periods a check may take a few tries).
 //
+// Whose deficit: the check's period holds more than its pulse. The allocation cancels the pulse with
+// other thrusters, and the controller fires its own; a dead or weakened one among them leaves its
+// deficit in this period only (it is not in the neighbours' median when it fired only here), on a
+// direction that may lean on the pulse's. Every other thruster i commanded in the period is a
+// hypothesis too: its fit m_i = -(u_i . e_k) / (u_i . u_i), u_i its on-time's rate change, kept when
+// threshold <= m_i <= 1.5 (a deficit, up to a stuck-closed reading's spread) and when it explains at
+// least the threshold's share of the pulse, |m_i u_i| >= threshold |u_j|. Each leaves the residual
+// |e_k + m u| of its fit; a margin of half the threshold's share of the pulse, threshold |u_j| / 2,
+// separates two fits:
+//   - another thruster that leaves less than the checked one by more than the margin takes the
+//     reading: it is checked next (its own check decides; another's reading never confirms);
+//   - one within the margin of a suspicious reading is its rival (rates see torques only: two
+//     thrusters with the same torque read alike): the rival is checked first, and the reading counts
+//     towards the checked thruster's confirmation only once no rival is left unchecked.
+// The thrusters whose own check has been read since the suspicion began are no hypothesis for
+// another's reading, rivals included: the chain of rechecks ends.
+//
 // Decision: a conclusive reading of at least `threshold` makes j the suspect and asks for its check
-// again at once (`recheck`, the active check's suspect); `confirmations` readings of j in a row at least the
-// threshold confirm the fault, stuck closed where their mean is at least stuck_closed_from, else a
-// loss of that size; a reading below the threshold lets the suspicion go. The alarm is the
-// confirmation: one reading is never an alarm.
+// again at once (`recheck`, the active check's suspect); `confirmations` unrivalled readings of j in
+// a row at least the threshold confirm the fault, stuck closed where their mean is at least
+// stuck_closed_from, else a loss of that size; a reading of the suspect below the threshold lets the
+// suspicion go. The alarm is the confirmation: one reading is never an alarm.
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -59,6 +76,7 @@ struct RateCheckParams {
   Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Identity();  // [1/(kg m^2)]
   double inverse_inertia_norm = 1;  // [1/(kg m^2)] its largest singular value
   std::array<Vec3, model::kMaxThrusters> torque_Nm{};       // [N m] each thruster's at full thrust, about the CoM
+  std::array<double, model::kMaxThrusters> torque_norm_Nm{};  // [N m] their norms
   int neighbours = 5;            // n: periods either side
   double threshold = 0.25;       // [-]
   int confirmations = 3;
@@ -85,6 +103,7 @@ struct RateCheckPeriod {
   int checked = model::kNoThruster;    // the thruster a check pulsed in it
   double on_fraction = 0;              // its whole commanded on-time [-]
   double spill_Nms = 0;                // S_k [N m s]
+  std::array<double, model::kMaxThrusters> on_fraction_all{};  // [-] every thruster's commanded on-time
 };
 
 struct RateCheckState {
@@ -95,6 +114,7 @@ struct RateCheckState {
   int in_a_row = 0;                     // the suspect's readings in a row at least the threshold
   double sum = 0;                       // [-] and their sum
   double suspect_pulse_s = -1;          // [s] the first of them's pulse: the latest the fault can have begun
+  model::ThrusterMask read_since = 0;   // thrusters whose own check was read since the suspicion began
   int recheck = model::kNoThruster;     // the thruster to check again, until its pulse is fired
   int confirmed = model::kNoThruster;   // latched
   double confirmed_s = -1;              // [s] when, -1: not
@@ -109,14 +129,19 @@ struct RateCheckInput {
   int checked = model::kNoThruster;      // the thruster whose check this period's command carries
   double checked_on_fraction = 0;        // its commanded on-time [-]
   double spill_Nms = 0;                  // S_k (spill_bound_Nms) [N m s]
+  std::array<double, model::kMaxThrusters> on_fraction{};  // [-] every thruster's commanded on-time, the check's included
 };
 
 // What a period read: the thruster whose check was read (kNoThruster: none), its reading and the
-// reading's bound on a healthy thruster.
+// reading's bound on a healthy thruster; another thruster commanded in the period that explains the
+// residual better (`culprit`, with its fit) or as well (`rival`).
 struct RateCheckReading {
   int thruster = model::kNoThruster;
   double missing = 0;      // [-] m_k less the neighbours' median
   double uncertainty = 0;  // [-] B_k
+  int culprit = model::kNoThruster;
+  double culprit_missing = 0;  // [-] its m_i
+  int rival = model::kNoThruster;
 };
 
 // One period: records it, completes the residual of the one before, reads the check n + 1 periods
@@ -125,6 +150,8 @@ RateCheckReading step_rate_check(const RateCheckParams& params, RateCheckState& 
 
 // The reading of the check in period k (of the state's count), once the residuals of its n
 // neighbours either side are in (k + n + 2 <= state.periods, k >= n); missing NaN without a check in k.
-RateCheckReading read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k);
+// Thrusters in `excluded` are no hypothesis for the residual besides the checked one.
+RateCheckReading read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k,
+                            model::ThrusterMask excluded = 0);
 
 }  // namespace chaser::flight::fdi

@@ -6,15 +6,18 @@
 // 0.2 N m s per period) moves a reading by at most its curvature over the 2n + 1 periods, 1e-3 of
 // the pulse; another thruster's pulse among the neighbours does not move the median. The decision:
 // a dead thruster is confirmed stuck closed after three readings in a row, each asking for a recheck;
-// a 50 % loss as a loss of 0.5; a healthy reading lets the suspicion go; a healthy flight with the
-// gyro's noise never alarms.
+// a 50 % loss as a loss of 0.5; a healthy reading lets the suspicion go; a dead thruster fired in
+// another thruster's check is checked itself and confirmed, never the checked one; a thruster of the
+// same torque is a rival checked first; a healthy flight with the gyro's noise never alarms.
 #include "flight/fdi/rate_check.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "tests/support/two_tank_chaser.hpp"
@@ -41,14 +44,26 @@ struct Body {
   double gyro_sigma = 0;  // [rad/s]
   std::function<Vec3(double)> unknown_Nm = [](double) { return Vec3::Zero(); };
 
+  // Another thruster commanded in the period (a canceller of the check, or the controller's) and
+  // the share of its on-time that does not come.
+  struct Fired {
+    int thruster = model::kNoThruster;
+    double on_fraction = 0;
+    double missing = 0;
+  };
+
   RateCheckReading period(const Vec3& torque_cmd_Nm, int checked = model::kNoThruster, double on_fraction = 0.0,
-                          double missing = 0.0) {
+                          double missing = 0.0, const std::vector<Fired>& others = {}) {
     std::normal_distribution<double> noise(0.0, gyro_sigma);
     const Vec3 measured = omega + Vec3(noise(rng), noise(rng), noise(rng));
-    const RateCheckReading r = step_rate_check(
-        p, state, {.t_s = t, .omega_body_radps = measured, .torque_cmd_body_Nm = torque_cmd_Nm, .checked = checked,
-                   .checked_on_fraction = on_fraction});
+    RateCheckInput in{.t_s = t, .omega_body_radps = measured, .torque_cmd_body_Nm = torque_cmd_Nm, .checked = checked,
+                      .checked_on_fraction = on_fraction};
     Vec3 delivered = torque_cmd_Nm + unknown_Nm(t);
+    for (const Fired& f : others) {
+      in.on_fraction[static_cast<std::size_t>(f.thruster)] = f.on_fraction;
+      delivered -= f.missing * f.on_fraction * p.torque_Nm[static_cast<std::size_t>(f.thruster)];
+    }
+    const RateCheckReading r = step_rate_check(p, state, in);
     if (checked != model::kNoThruster)
       delivered -= missing * on_fraction * p.torque_Nm[static_cast<std::size_t>(checked)];
     omega += kT * (p.inverse_inertia * (delivered - omega.cross(p.inertia_kgm2 * omega)));
@@ -182,6 +197,109 @@ TEST(RateCheck, AReadingInABusyPeriodIsInconclusiveAndCheckedAgain) {
   ton[0] = 0.95;  // T1: spills
   ton[1] = 0.7;   // T5: ends by 92.5 ms
   EXPECT_NEAR(spill_bound_Nms(p, set, ton), p.torque_Nm[0].norm() * 0.0175, 1e-12);
+}
+
+// Two thrusters of the box layout whose torques lean on each other by `cos_from`..`cos_to` (the
+// cosine of their angle), the first one found.
+std::pair<int, int> torque_pair(const RateCheckParams& p, double cos_from, double cos_to) {
+  for (int j = 0; j < 24; ++j)
+    for (int i = 0; i < 24; ++i) {
+      const Vec3& a = p.torque_Nm[static_cast<std::size_t>(j)];
+      const Vec3& b = p.torque_Nm[static_cast<std::size_t>(i)];
+      const double c = a.dot(b) / (a.norm() * b.norm());
+      if (i != j && c >= cos_from && c <= cos_to) return {j, i};
+    }
+  return {model::kNoThruster, model::kNoThruster};
+}
+
+// A flight of busy periods with a check every seventh period of `routine` (the first once its n
+// neighbours before it are in), or at once of the thruster the rate check asks for; each check of
+// `routine` has `also` fired beside its pulse. Each thruster gives 1 - dead[i] of what it is
+// commanded. Returns the thrusters checked, in order.
+std::vector<int> fly_checks(Body& body, int routine, int also, const std::array<double, 24>& dead, int periods) {
+  std::vector<int> checked_order;
+  int pending = model::kNoThruster;
+  for (int k = 0; k < periods && body.state.confirmed == model::kNoThruster; ++k) {
+    int checked = pending;
+    if (checked == model::kNoThruster && k % 7 == 6) checked = routine;
+    pending = model::kNoThruster;
+    std::vector<Body::Fired> others;
+    if (checked == routine) others.push_back({also, kPulse, dead[static_cast<std::size_t>(also)]});
+    const double missing = checked == model::kNoThruster ? 0.0 : dead[static_cast<std::size_t>(checked)];
+    body.period(busy_torque(k), checked, kPulse, missing, others);
+    if (checked != model::kNoThruster) checked_order.push_back(checked);
+    pending = body.state.recheck;
+  }
+  return checked_order;
+}
+
+// A dead thruster the allocation fires in another thruster's check (to cancel its pulse, or for the
+// controller) leaves its deficit in that check's period, on a direction that leans on the pulse's
+// (cos 0.3-0.8 here): the checked thruster would read it as its own, 0.3-0.8 of its pulse. The dead
+// one explains the residual to rounding; it is checked next, and its own checks confirm it.
+TEST(RateCheck, ADeadThrusterFiredInAnotherChecksPeriodIsCheckedItselfNotTheCheckedOne) {
+  const RateCheckParams p = params();
+  const auto [checked, dead_one] = torque_pair(p, 0.3, 0.8);
+  ASSERT_NE(checked, model::kNoThruster);
+  Body body(p);
+  std::array<double, 24> dead{};
+  dead[static_cast<std::size_t>(dead_one)] = 1.0;
+  RateCheckReading first;
+  for (int k = 0; k < 20 && first.thruster == model::kNoThruster; ++k)
+    first = body.period(busy_torque(k), k == 5 ? checked : model::kNoThruster, kPulse, 0.0,
+                        {{.thruster = dead_one, .on_fraction = kPulse, .missing = k == 5 ? 1.0 : 0.0}});
+  ASSERT_EQ(first.thruster, checked);
+  EXPECT_GT(first.missing, p.threshold);  // what the checked thruster alone would have read
+  EXPECT_EQ(first.culprit, dead_one);
+  EXPECT_NEAR(first.culprit_missing, 1.0, 1e-9);
+  EXPECT_EQ(body.state.recheck, dead_one);
+  EXPECT_EQ(body.state.suspect, model::kNoThruster);
+
+  Body flight(p);
+  const std::vector<int> order = fly_checks(flight, checked, dead_one, dead, 400);
+  EXPECT_EQ(flight.state.confirmed, dead_one);
+  EXPECT_EQ(flight.state.kind, model::FaultKind::kStuckClosed);
+  EXPECT_EQ(std::count(order.begin(), order.end(), dead_one), 3);
+}
+
+// Rates see torques only: two thrusters with the same torque read alike (COMRADE's layout has such
+// pairs, T1 and T22; the box layout none: T11 is given T5's torque). A dead one fired in the other's
+// check makes that check read 1 with the dead one as its rival, checked first: its own checks
+// confirm it. The other way round, a dead checked thruster with a healthy rival: the rival's check
+// reads it healthy, and the checked one is confirmed by three checks more.
+TEST(RateCheck, AThrusterOfTheSameTorqueIsARivalCheckedFirst) {
+  RateCheckParams p = params();
+  const int checked = kT5, twin = 10;
+  p.torque_Nm[static_cast<std::size_t>(twin)] = p.torque_Nm[static_cast<std::size_t>(checked)];
+  const double twin_on = kPulse;
+  {
+    Body body(p);
+    std::array<double, 24> dead{};
+    dead[static_cast<std::size_t>(twin)] = 1.0;
+    int pending = model::kNoThruster;
+    std::vector<int> order;
+    for (int k = 0; k < 400 && body.state.confirmed == model::kNoThruster; ++k) {
+      int c = pending != model::kNoThruster ? pending : (k % 7 == 6 ? checked : model::kNoThruster);
+      std::vector<Body::Fired> others;
+      if (c == checked) others.push_back({twin, twin_on, 1.0});
+      body.period(busy_torque(k), c, kPulse, c == model::kNoThruster ? 0.0 : dead[static_cast<std::size_t>(c)],
+                  others);
+      if (c != model::kNoThruster) order.push_back(c);
+      pending = body.state.recheck;
+    }
+    EXPECT_EQ(body.state.confirmed, twin);
+    ASSERT_GE(order.size(), 2u);
+    EXPECT_EQ(order[0], checked);
+    EXPECT_EQ(order[1], twin);  // the rival, at once
+  }
+  {
+    Body body(p);
+    std::array<double, 24> dead{};
+    dead[static_cast<std::size_t>(checked)] = 1.0;
+    const std::vector<int> order = fly_checks(body, checked, twin, dead, 400);
+    EXPECT_EQ(body.state.confirmed, checked);
+    EXPECT_EQ(order, (std::vector<int>{checked, twin, checked, checked, checked}));
+  }
 }
 
 // The gyro's noise (1e-6 rad/s, comrade_sync's) over 2,000 checks of healthy thrusters, each one
