@@ -350,7 +350,8 @@ bool fdi_listening(const FdirState& state) { return state.armed && state.confirm
 
 int thruster_to_check_again(const FdirParams& params, const FdirState& state, double deficit_min_gain) {
   if (!state.armed) return model::kNoThruster;
-  if (params.rate_check_enabled && state.rate_check.recheck != model::kNoThruster) return state.rate_check.recheck;
+  if (params.rate_check_enabled && state.rate_check.recheck != model::kNoThruster)
+    return fdi::next_recheck(state.rate_check);  // none while the checks keep their spacing
   // deficit_min_gain > 0 (validated), so a material fit leads and `suspect` is its lane. Strictly
   // above, as the alarm is: with it the threshold, the detector alarms first and nothing is suspected.
   const fdi::DeficitDetectorState& d = state.detector;

@@ -119,7 +119,7 @@ struct RateCheckParams {
   double threshold = 0.25;          // [-] a reading (the pulse's missing share) from which the thruster is suspect
   int confirmations = 3;            // readings in a row at least the threshold that confirm the fault
   double stuck_closed_from = 0.8;   // [-] mean reading from which the fault reads stuck closed (below: a loss)
-  double max_uncertainty = 0.1;     // [-] a reading's bound on a healthy thruster above which it is inconclusive
+  double max_uncertainty = 0.5;     // [-] a reading's bound on a healthy thruster above which it is inconclusive
 };
 
 enum class RecoveryPolicy {

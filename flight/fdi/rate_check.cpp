@@ -46,11 +46,15 @@ namespace {
 
 std::size_t slot(std::int64_t k) { return static_cast<std::size_t>(k % kRateCheckRing); }
 
-// The median of an even count of values: the mean of the two middle ones.
+// [-] how far past [0, 1] a reading (or another thruster's fit) may lie and still be a deficit of
+// its pulse: a stuck-closed reading's spread in a busy period, within max_uncertainty's default.
+constexpr double kPlausibleExcess = 0.5;
+
+// The median of count > 0 values (of an even count, the mean of the two middle ones).
 double median(std::array<double, 2 * model::kMaxRateCheckNeighbours>& values, std::size_t count) {
   const auto mid = values.begin() + static_cast<std::ptrdiff_t>(count / 2);
   std::nth_element(values.begin(), mid, values.begin() + static_cast<std::ptrdiff_t>(count));
-  return 0.5 * (*mid + *std::max_element(values.begin(), mid));
+  return count % 2 == 1 ? *mid : 0.5 * (*mid + *std::max_element(values.begin(), mid));
 }
 
 }  // namespace
@@ -60,50 +64,78 @@ RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& stat
   RateCheckReading r{.thruster = model::kNoThruster, .missing = std::numeric_limits<double>::quiet_NaN()};
   const RateCheckPeriod& pulse = state.ring[slot(k)];
   if (pulse.checked == model::kNoThruster || !(pulse.on_fraction > 0)) return r;
-  // The rate change a thruster's commanded on-time gives.
+  // The baseline: the residuals' median, axis by axis, over the neighbours without a check of their
+  // own (another check's pulse carries that thruster's deficit, and a dead thruster checked again
+  // and again would fill the window with it); at least n of the 2n.
+  const int n = p.neighbours;
+  std::array<std::int64_t, 2 * model::kMaxRateCheckNeighbours> quiet{};
+  std::size_t count = 0;
+  for (std::int64_t i = k - n; i <= k + n; ++i)
+    if (i != k && state.ring[slot(i)].checked == model::kNoThruster) quiet[count++] = i;
+  r.thruster = pulse.checked;
+  r.uncertainty = std::numeric_limits<double>::infinity();  // inconclusive until read
+  if (count < static_cast<std::size_t>(n)) return r;
+  std::array<double, 2 * model::kMaxRateCheckNeighbours> around{};
+  // A thruster's on-time in the period beyond its median over the quiet neighbours: the baseline
+  // holds the deficit of what it fires there too (a dead thruster the controller fires every period
+  // is in every residual), so a reading sees only the excess.
+  const auto excess_on_fraction = [&](int thruster) {
+    const auto t = static_cast<std::size_t>(thruster);
+    for (std::size_t c = 0; c < count; ++c) around[c] = state.ring[slot(quiet[c])].on_fraction_all[t];
+    return pulse.on_fraction_all[t] - median(around, count);
+  };
+  // The rate change a thruster's on-time gives.
   const auto rate_change = [&](int thruster, double on_fraction) -> Vec3 {
     return p.period_s * on_fraction * (p.inverse_inertia * p.torque_Nm[static_cast<std::size_t>(thruster)]);
   };
-  const Vec3 u = rate_change(pulse.checked, pulse.on_fraction);
+  const Vec3 u = rate_change(pulse.checked, excess_on_fraction(pulse.checked));
   const double uu = u.squaredNorm();
-  if (!(uu > 0)) return r;
-  // The baseline: the neighbours' residuals' median, axis by axis.
-  const int n = p.neighbours;
+  if (!(uu > 0)) return r;  // the check fired no more than the controller does around it
   Vec3 baseline_radps;
-  std::array<double, 2 * model::kMaxRateCheckNeighbours> around{};
-  std::size_t count = 0;
   for (int axis = 0; axis < 3; ++axis) {
-    count = 0;
-    for (std::int64_t i = k - n; i <= k + n; ++i)
-      if (i != k) around[count++] = state.ring[slot(i)].residual_radps[axis];
+    for (std::size_t c = 0; c < count; ++c) around[c] = state.ring[slot(quiet[c])].residual_radps[axis];
     baseline_radps[axis] = median(around, count);
   }
   Vec3 torque_sum_Nm = Vec3::Zero();
-  for (std::int64_t i = k - n; i <= k + n; ++i)
-    if (i != k) torque_sum_Nm += state.ring[slot(i)].torque_Nm;
+  for (std::size_t c = 0; c < count; ++c) torque_sum_Nm += state.ring[slot(quiet[c])].torque_Nm;
   const Vec3 e = pulse.residual_radps - baseline_radps;
-  r.thruster = pulse.checked;
   r.missing = -u.dot(e) / uu;
   // B_k: the inertia's error on the torque's change, the spills in and out (header).
   const Vec3 change_Nm = pulse.torque_Nm - torque_sum_Nm / static_cast<double>(count);
   const double spill_Nms = state.ring[slot(k - 1)].spill_Nms + pulse.spill_Nms;
   const double inertia_radps = p.inertia_uncertainty * p.period_s * (p.inverse_inertia * change_Nm).norm();
   r.uncertainty = (inertia_radps + p.inverse_inertia_norm * spill_Nms) / std::sqrt(uu);
+  // A step in what the model leaves out inside the window (a leak's onset, a slosh strike): the
+  // baseline takes one side's level and the pulse's period may sit on the other. The quiet
+  // neighbours' readings before and after the pulse, each side's median, differ by the step.
+  const auto side_median = [&](bool after) {
+    std::size_t m = 0;
+    for (std::size_t c = 0; c < count; ++c)
+      if ((quiet[c] > k) == after) around[m++] = -u.dot(state.ring[slot(quiet[c])].residual_radps) / uu;
+    return m == 0 ? std::numeric_limits<double>::quiet_NaN() : median(around, m);
+  };
+  const double step = std::abs(side_median(false) - side_median(true));
+  r.uncertainty += std::isnan(step) ? 0.0 : step;
 
-  // The other hypotheses: every other thruster commanded in the period (header, "Whose deficit").
+  // The other hypotheses: every other thruster whose on-time the check's period changes (header,
+  // "Whose deficit").
   const double pulse_radps = std::sqrt(uu);
   const double margin_radps = 0.5 * p.threshold * pulse_radps;
   const double left_checked = (e + r.missing * u).norm();
   double best_left = left_checked;
   double rival_left = std::numeric_limits<double>::infinity();
   for (int i = 0; i < model::kMaxThrusters; ++i) {
-    const double on_fraction = pulse.on_fraction_all[static_cast<std::size_t>(i)];
-    if (i == pulse.checked || !(on_fraction > 0) || (excluded & (model::ThrusterMask{1} << i))) continue;
+    if (i == pulse.checked || (excluded & (model::ThrusterMask{1} << i))) continue;
+    // Fired more than around the check (a canceller) or less (the allocation cancels the pulse by
+    // cutting what the controller fires against it): either change carries a deficit's share.
+    const double on_fraction = excess_on_fraction(i);
+    if (on_fraction == 0.0) continue;
     const Vec3 u_i = rate_change(i, on_fraction);
     const double uu_i = u_i.squaredNorm();
     if (!(uu_i > 0)) continue;
     const double m_i = -u_i.dot(e) / uu_i;
-    if (m_i < p.threshold || m_i > 1.5 || m_i * std::sqrt(uu_i) < p.threshold * pulse_radps) continue;
+    if (m_i < p.threshold || m_i > 1.0 + kPlausibleExcess || m_i * std::sqrt(uu_i) < p.threshold * pulse_radps)
+      continue;
     const double left = (e + m_i * u_i).norm();
     if (left + margin_radps < best_left) {  // explains the residual better than the checked thruster
       best_left = left + margin_radps;
@@ -120,6 +152,13 @@ RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& stat
 
 namespace {
 
+// Asks for `thruster`'s check again after the reading of period k, unless a later check of it is
+// in flight: its reading will decide (checks of one thruster stay n + 2 periods apart, outside
+// each other's neighbours).
+void ask_recheck(RateCheckState& state, int thruster, std::int64_t k) {
+  if (state.last_pulse[static_cast<std::size_t>(thruster)] <= k) state.recheck = thruster;
+}
+
 void let_suspicion_go(RateCheckState& state) {
   state.suspect = state.recheck = model::kNoThruster;
   state.in_a_row = 0;
@@ -128,6 +167,10 @@ void let_suspicion_go(RateCheckState& state) {
 }
 
 }  // namespace
+
+int next_recheck(const RateCheckState& state) {
+  return state.periods - state.last_any_pulse >= kRecheckSpacing ? state.recheck : model::kNoThruster;
+}
 
 RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state, const RateCheckInput& in) {
   const std::int64_t now = state.periods;
@@ -148,26 +191,40 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
   if (in.checked != model::kNoThruster)  // the check's own on-time, whatever the caller's list says
     period.on_fraction_all[static_cast<std::size_t>(in.checked)] = period.on_fraction;
   state.periods = now + 1;
-  if (in.checked != model::kNoThruster && in.checked == state.recheck) state.recheck = model::kNoThruster;
+  if (in.checked != model::kNoThruster) {
+    state.last_any_pulse = now;
+    state.last_pulse[static_cast<std::size_t>(in.checked)] = now;
+    if (in.checked == state.recheck) state.recheck = model::kNoThruster;
+  }
 
   // Residuals are in up to period now - 1: the check n + 1 periods back has its neighbours.
   const int n = p.neighbours;
   const std::int64_t k = now - 1 - n;
   RateCheckReading reading;
   if (k < n) return reading;
-  reading = read_check(p, state, k, state.read_since);
+  // The suspect stays a hypothesis for every reading: the likeliest culprit of another's residual.
+  const model::ThrusterMask suspect_bit =
+      state.suspect == model::kNoThruster ? 0 : model::ThrusterMask{1} << state.suspect;
+  reading = read_check(p, state, k, state.read_since & ~suspect_bit);
   if (reading.thruster == model::kNoThruster) return reading;
   const int checked = reading.thruster;
   const double missing = reading.missing;
   state.last_reading = missing;
   if (state.confirmed != model::kNoThruster) return reading;  // latched: read on, decide no more
-  if (reading.uncertainty > p.max_uncertainty) {  // inconclusive: the same check again
-    state.recheck = checked;
+  const double bound = reading.uncertainty;
+  // Inconclusive, the same check again: a loose bound, or a reading no deficit of this pulse can
+  // give (the residual holds more than the pulse: a fault elsewhere the controller keeps firing).
+  if (bound > p.max_uncertainty || missing < -kPlausibleExcess || missing > 1.0 + kPlausibleExcess) {
+    ask_recheck(state, checked, k);
     return reading;
   }
   const model::ThrusterMask checked_bit = model::ThrusterMask{1} << checked;
   if (reading.culprit != model::kNoThruster) {  // another's deficit: its own check decides
-    state.recheck = reading.culprit;
+    ask_recheck(state, reading.culprit, k);
+    return reading;
+  }
+  if (missing - bound < p.threshold && missing + bound >= p.threshold) {  // the bound straddles it
+    ask_recheck(state, checked, k);
     return reading;
   }
   if (missing < p.threshold) {
@@ -175,7 +232,7 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
       let_suspicion_go(state);
     } else if (state.suspect != model::kNoThruster) {  // a rival read healthy: back to the suspect
       state.read_since |= checked_bit;
-      state.recheck = state.suspect;
+      ask_recheck(state, state.suspect, k);
     }
     return reading;
   }
@@ -187,7 +244,7 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
   }
   state.read_since |= checked_bit;
   if (reading.rival != model::kNoThruster) {  // the rival's own check first; this reading waits
-    state.recheck = reading.rival;
+    ask_recheck(state, reading.rival, k);
     return reading;
   }
   ++state.in_a_row;
@@ -200,7 +257,7 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
     if (state.kind == model::FaultKind::kStuckClosed) state.size = 1.0;
     state.recheck = model::kNoThruster;
   } else {
-    state.recheck = state.suspect;
+    ask_recheck(state, state.suspect, k);
   }
   return reading;
 }

@@ -14,8 +14,12 @@
 // leaves out, u_j = T I^-1 tau_j f_j its pulse's rate change (tau_j its torque at full thrust). What
 // the model leaves out (the slosh's torque, the gyroscopic term's inertia error, the gravity
 // gradient) changes slowly against one period: the residual's baseline is its median, axis by axis,
-// over the n periods either side (a median ignores another thruster's pulse among the neighbours).
-// The reading is m's least-squares value on the pulse's direction,
+// over the n periods either side that carry no check of their own (another check's pulse carries
+// its thruster's deficit; a dead thruster checked again and again would fill the window with its
+// own). Fewer than n such periods leave the reading inconclusive. The baseline also holds the
+// deficit of what j fires in those periods (a dead thruster the controller fires every period is in
+// every residual), so f_j is the check period's on-time beyond j's median over them. The reading is
+// m's least-squares value on the pulse's direction,
 //
 //   m_k = -(u_j . (e_k - median e_neighbours)) / (u_j . u_j).
 //
@@ -30,17 +34,26 @@
 //
 //   B_k = ( delta_I |T I^-1 (tau_k - mean tau_neighbours)| + |I^-1| (S_{k-1} + S_k) ) / |u_j|,
 //
-// S the spilled torque impulses' bound, says how far the reading can be off on a healthy thruster. A
-// reading with B_k above max_uncertainty is inconclusive: it changes no suspicion, and the thruster
-// is checked again at once (in a turning flight's busiest periods a check may take a few tries).
+// S the spilled torque impulses' bound, plus a step in what the model leaves out inside the window
+// (a leak's onset, a slosh strike: the baseline takes one side's level, the pulse may sit on the
+// other), the difference between the medians of the quiet neighbours' readings before and after the
+// pulse, says how far the reading can be off on a healthy thruster.
+// A reading decides only where it is clear of the threshold by its bound: m_k - B_k >= threshold
+// reads a deficit, m_k + B_k < threshold a healthy thruster. One that straddles the threshold, whose
+// B_k exceeds max_uncertainty (the reading is then no measure of a loss's size), or that lies
+// outside [-0.5, 1.5], which no deficit of the pulse gives (the residual then holds more: a fault of
+// a thruster the controller keeps firing), is inconclusive: it changes no suspicion, and the
+// thruster is checked again at once (in a turning flight's busiest periods a check may take a few
+// tries).
 //
 // Whose deficit: the check's period holds more than its pulse. The allocation cancels the pulse with
-// other thrusters, and the controller fires its own; a dead or weakened one among them leaves its
-// deficit in this period only (it is not in the neighbours' median when it fired only here), on a
-// direction that may lean on the pulse's. Every other thruster i commanded in the period is a
-// hypothesis too: its fit m_i = -(u_i . e_k) / (u_i . u_i), u_i its on-time's rate change, kept when
-// threshold <= m_i <= 1.5 (a deficit, up to a stuck-closed reading's spread) and when it explains at
-// least the threshold's share of the pulse, |m_i u_i| >= threshold |u_j|. Each leaves the residual
+// other thrusters, firing some more and cutting what the controller fires against the pulse; a dead
+// or weakened one among them leaves its deficit's share of that change in this period only, on a
+// direction that may lean on the pulse's. Every other thruster i whose on-time the period changes
+// against its neighbours' median is a hypothesis too: its fit m_i = -(u_i . e_k) / (u_i . u_i), u_i
+// the change's rate change (negative for a cut), kept when threshold <= m_i <= 1.5 (a deficit, up
+// to a stuck-closed reading's spread) and when it explains at least the threshold's share of the
+// pulse, |m_i u_i| >= threshold |u_j|. Each leaves the residual
 // |e_k + m u| of its fit; a margin of half the threshold's share of the pulse, threshold |u_j| / 2,
 // separates two fits:
 //   - another thruster that leaves less than the checked one by more than the margin takes the
@@ -49,13 +62,14 @@
 //     thrusters with the same torque read alike): the rival is checked first, and the reading counts
 //     towards the checked thruster's confirmation only once no rival is left unchecked.
 // The thrusters whose own check has been read since the suspicion began are no hypothesis for
-// another's reading, rivals included: the chain of rechecks ends.
+// another's reading, rivals included, but for the suspect itself: the chain of rechecks ends.
 //
 // Decision: a conclusive reading of at least `threshold` makes j the suspect and asks for its check
-// again at once (`recheck`, the active check's suspect); `confirmations` unrivalled readings of j in
-// a row at least the threshold confirm the fault, stuck closed where their mean is at least
-// stuck_closed_from, else a loss of that size; a reading of the suspect below the threshold lets the
-// suspicion go. The alarm is the confirmation: one reading is never an alarm.
+// again at once (`recheck`, the active check's suspect; never while a later check of it is still to
+// be read, so that one thruster's checks stay n + 2 periods apart); `confirmations` unrivalled
+// readings of j in a row at least the threshold confirm the fault, stuck closed where their mean is
+// at least stuck_closed_from, else a loss of that size; a reading of the suspect below the threshold
+// lets the suspicion go. The alarm is the confirmation: one reading is never an alarm.
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -96,6 +110,12 @@ double spill_bound_Nms(const RateCheckParams& params, const WatchedSet& set, con
 
 inline constexpr int kRateCheckRing = 2 * model::kMaxRateCheckNeighbours + 2;
 
+// Rechecks come at most one in this many periods: readings left inconclusive in a busy stretch ask
+// for more checks, and checks in every period would leave no quiet neighbour for any reading's
+// baseline. One in three leaves two thirds of a window quiet, above the n of 2n a reading needs
+// (routine checks, one per thruster per active_check.max_unverified_s, are far fewer).
+inline constexpr std::int64_t kRecheckSpacing = 3;
+
 struct RateCheckPeriod {
   Vec3 omega_radps = Vec3::Zero();     // measured at the period's start
   Vec3 torque_Nm = Vec3::Zero();       // commanded through it
@@ -116,6 +136,13 @@ struct RateCheckState {
   double suspect_pulse_s = -1;          // [s] the first of them's pulse: the latest the fault can have begun
   model::ThrusterMask read_since = 0;   // thrusters whose own check was read since the suspicion began
   int recheck = model::kNoThruster;     // the thruster to check again, until its pulse is fired
+  std::int64_t last_any_pulse = -kRecheckSpacing;  // the latest check of any thruster (period)
+  // each thruster's latest check (period, -1: none): one check of a thruster in flight at a time
+  std::array<std::int64_t, model::kMaxThrusters> last_pulse = [] {
+    std::array<std::int64_t, model::kMaxThrusters> none{};
+    none.fill(-1);
+    return none;
+  }();
   int confirmed = model::kNoThruster;   // latched
   double confirmed_s = -1;              // [s] when, -1: not
   model::FaultKind kind = model::FaultKind::kStuckClosed;  // with confirmed: stuck closed or loss
@@ -143,6 +170,10 @@ struct RateCheckReading {
   double culprit_missing = 0;  // [-] its m_i
   int rival = model::kNoThruster;
 };
+
+// The thruster to check in the next period (kNoThruster: none now): `recheck`, once the latest check
+// of any thruster is kRecheckSpacing periods back.
+int next_recheck(const RateCheckState& state);
 
 // One period: records it, completes the residual of the one before, reads the check n + 1 periods
 // back when there was one, and decides.

@@ -24,12 +24,12 @@ model::Scenario sync_checked(bool checks) {
                              std::string("fdi.rate_check={enabled: ") + (checks ? "true" : "false") + "}"});
 }
 
-// Seed 1, fault-free: ~4,200 checks (each of the 24 every 25 s that the flight leaves it idle, and
+// Seed 1, fault-free: ~1,500 checks (each of the 24 every 25 s that the flight leaves it idle, and
 // again at once where a busy period leaves a reading inconclusive), never three readings in a row at
 // the threshold. Their propellant: a check burns its pulse, p = F t_pulse / (Isp g0), and its
 // cancellers about as much again (their forces sum to the pulse's opposite), less what the two save
 // the controller: between one and three p per check (the upper end: cancellers at twice the pulse,
-// each cancelling force and torque in part). Seed 1 spends 0.56 kg more than without checks
+// each cancelling force and torque in part). Seed 1 spends 0.19 kg more than without checks
 // (8.96 kg), 1.7 p per check.
 TEST(SyncRateCheck, AFaultFreeSynchronisationChecksAllAlongAndNeverAlarms) {
   const RunResult checked = run_scenario(sync_checked(true));
@@ -61,8 +61,8 @@ struct Case {
 };
 
 // T1 stuck closed at 1,500 s: checked within 25 s of the onset, read 1.0 three times in a row
-// (seed 1: 6.9 s). T4 losing 40 % at 2,750 s, in the hold that never fires it: each check reads
-// ~0.4 against the threshold 0.25 (seed 1: 24.4 s, read as a loss of 0.43).
+// (seed 1: 7.8 s). T4 losing 40 % at 2,750 s, in the hold that never fires it: each check reads
+// ~0.4 against the threshold 0.25 (seed 1: 10.9 s, read as a loss of 0.45).
 TEST(SyncRateCheck, AThrusterTheFlightDoesNotFireIsNamedByItsChecks) {
   const std::vector<Case> cases = {
       {{.kind = model::FaultKind::kStuckClosed, .thruster = 0, .onset_s = 1500.0}, 30.0, model::FaultKind::kStuckClosed},

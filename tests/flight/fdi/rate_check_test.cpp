@@ -199,6 +199,71 @@ TEST(RateCheck, AReadingInABusyPeriodIsInconclusiveAndCheckedAgain) {
   EXPECT_NEAR(spill_bound_Nms(p, set, ton), p.torque_Nm[0].norm() * 0.0175, 1e-12);
 }
 
+// A dead thruster checked again and again: T1 dead every fourth period, a healthy T5 between, so
+// that half of each window's neighbours carry a check. The baseline leaves those out: each check
+// reads its own pulse to rounding (in all of the neighbours' median, T1's deficit would take half a
+// pulse off its own readings and add its lean on T5's to T5's). Every third period leaves fewer than
+// n quiet neighbours: inconclusive.
+TEST(RateCheck, ChecksAmongTheNeighboursAreLeftOutOfTheBaseline) {
+  const RateCheckParams p = params();
+  const auto fly = [&](int every) {
+    Body body(p);
+    std::vector<RateCheckReading> readings;
+    for (int k = 0; k < 80; ++k) {
+      int checked = model::kNoThruster;
+      if (k >= 20 && k < 60 && k % every == 0) checked = kT1;
+      if (k >= 20 && k < 60 && k % every == every / 2) checked = kT5;
+      const RateCheckReading r =
+          body.period(busy_torque(k), checked, kPulse, checked == kT1 ? 1.0 : 0.0);
+      if (r.thruster != model::kNoThruster) readings.push_back(r);
+    }
+    return readings;
+  };
+  const std::vector<RateCheckReading> fourth = fly(4);
+  ASSERT_EQ(fourth.size(), 20u);
+  for (const RateCheckReading& r : fourth) {
+    EXPECT_NEAR(r.missing, r.thruster == kT1 ? 1.0 : 0.0, 1e-9) << r.thruster;
+    EXPECT_LT(r.uncertainty, p.max_uncertainty);
+  }
+  int inconclusive = 0;
+  for (const RateCheckReading& r : fly(3)) inconclusive += std::isinf(r.uncertainty) ? 1 : 0;
+  EXPECT_GT(inconclusive, 0);
+}
+
+// A dead thruster the controller fires in every period (on 20 % of each) is in every neighbour's
+// residual: the baseline takes it away, and the check's reading is that of its on-time beyond the
+// neighbours', 1 to rounding (on its whole on-time it would read 0.075 / 0.275).
+TEST(RateCheck, AThrusterTheControllerFiresThroughoutIsReadOnTheChecksExcess) {
+  const RateCheckParams p = params();
+  Body body(p);
+  RateCheckReading read;
+  for (int k = 0; k < 30; ++k) {
+    const bool check = k == 15;
+    const double on = 0.2 + (check ? kPulse : 0.0);
+    const RateCheckReading r = body.period(busy_torque(k), check ? kT1 : model::kNoThruster, on, 1.0,
+                                           {{.thruster = kT1, .on_fraction = on, .missing = check ? 0.0 : 1.0}});
+    if (r.thruster != model::kNoThruster) read = r;
+  }
+  ASSERT_EQ(read.thruster, kT1);
+  EXPECT_NEAR(read.missing, 1.0, 1e-9);
+}
+
+// A recheck waits until the latest check of any thruster is three periods back: checks in every
+// period would leave no quiet neighbours for any reading.
+TEST(RateCheck, ARecheckKeepsItsSpacingFromTheLatestCheck) {
+  const RateCheckParams p = params();
+  Body body(p);
+  for (int k = 0; k < 10; ++k) body.period(busy_torque(k));
+  body.state.recheck = kT5;
+  EXPECT_EQ(next_recheck(body.state), kT5);
+  body.period(busy_torque(10), kT1, kPulse);  // a routine check of another thruster
+  EXPECT_EQ(next_recheck(body.state), model::kNoThruster);
+  body.period(busy_torque(11));
+  EXPECT_EQ(next_recheck(body.state), model::kNoThruster);
+  body.period(busy_torque(12));
+  EXPECT_EQ(next_recheck(body.state), kT5);  // the check would fly in period 13, 3 after T1's
+}
+
 // Two thrusters of the box layout whose torques lean on each other by `cos_from`..`cos_to` (the
 // cosine of their angle), the first one found.
 std::pair<int, int> torque_pair(const RateCheckParams& p, double cos_from, double cos_to) {
@@ -245,9 +310,11 @@ TEST(RateCheck, ADeadThrusterFiredInAnotherChecksPeriodIsCheckedItselfNotTheChec
   std::array<double, 24> dead{};
   dead[static_cast<std::size_t>(dead_one)] = 1.0;
   RateCheckReading first;
-  for (int k = 0; k < 20 && first.thruster == model::kNoThruster; ++k)
-    first = body.period(busy_torque(k), k == 5 ? checked : model::kNoThruster, kPulse, 0.0,
-                        {{.thruster = dead_one, .on_fraction = kPulse, .missing = k == 5 ? 1.0 : 0.0}});
+  for (int k = 0; k < 20 && first.thruster == model::kNoThruster; ++k) {
+    std::vector<Body::Fired> canceller;  // fired in the check's period only
+    if (k == 5) canceller.push_back({.thruster = dead_one, .on_fraction = kPulse, .missing = 1.0});
+    first = body.period(busy_torque(k), k == 5 ? checked : model::kNoThruster, kPulse, 0.0, canceller);
+  }
   ASSERT_EQ(first.thruster, checked);
   EXPECT_GT(first.missing, p.threshold);  // what the checked thruster alone would have read
   EXPECT_EQ(first.culprit, dead_one);
