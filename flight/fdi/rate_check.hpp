@@ -180,7 +180,9 @@ int next_recheck(const RateCheckState& state);
 RateCheckReading step_rate_check(const RateCheckParams& params, RateCheckState& state, const RateCheckInput& in);
 
 // The reading of the check in period k (of the state's count), once the residuals of its n
-// neighbours either side are in (k + n + 2 <= state.periods, k >= n); missing NaN without a check in k.
+// neighbours either side are in (k + n + 2 <= state.periods, k >= n); thruster kNoThruster without a
+// check in k; missing NaN and uncertainty infinite where the check cannot be read (fewer than n quiet
+// neighbours, or a check that fired its thruster no more than the neighbours did).
 // Thrusters in `excluded` are no hypothesis for the residual besides the checked one.
 RateCheckReading read_check(const RateCheckParams& params, const RateCheckState& state, std::int64_t k,
                             model::ThrusterMask excluded = 0);
