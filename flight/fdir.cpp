@@ -500,11 +500,13 @@ void step_rate_check_scheme(const FdirParams& p, FdirState& state, const model::
   out.alarm_time_s = r.confirmed_s;
   out.candidate = lane_of(r.suspect);
   out.confirmed = lane_of(r.confirmed);
-  // The confirmation is a reading of the fault: stuck closed or a loss of its size (what the
-  // recovery and the episode are told; neither keeps firing, so nothing to cancel).
+  // The confirmation is a reading of the fault (what the recovery and the episode are told): stuck
+  // closed or a loss of its size, nothing to cancel; or, where the valve is open already, a leak of
+  // its size or stuck open, whose thrust the recovery cancels.
+  const bool open_kind = r.kind == model::FaultKind::kLeak || r.kind == model::FaultKind::kStuckOpen;
   if (out.confirmed >= 0 && !state.rate_check_decision.decided)
     state.rate_check_decision = {.decided = true, .thruster = out.confirmed, .kind = r.kind, .size = r.size,
-                                 .a = 0.0, .b = -r.size,
+                                 .a = open_kind ? r.size : 0.0, .b = open_kind ? 0.0 : -r.size,
                                  .onset_sample = std::llround(r.suspect_pulse_s / p.period_s) - state.bank_first_period};
 }
 

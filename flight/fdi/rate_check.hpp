@@ -70,6 +70,13 @@
 // readings of j in a row at least the threshold confirm the fault, stuck closed where their mean is
 // at least stuck_closed_from, else a loss of that size; a reading of the suspect below the threshold
 // lets the suspicion go. The alarm is the confirmation: one reading is never an alarm.
+//
+// A pulse also goes missing when the valve is open already: a leak of size L (or a stuck-open
+// valve) gives j's torque L tau_j uncommanded in every period, which the baseline holds. Its share
+// on j's full thrust, open = (T I^-1 tau_j) . median / |T I^-1 tau_j|^2, reads L; where the
+// confirming readings' mean open share is at least 0.08 (twice the largest a fault-free
+// comrade_sync flight gives, 0.038 over 1,526 checks; below the campaigns' smallest leak, 0.1), the
+// fault is a leak of that size (stuck open from stuck_closed_from), whose thrust the recovery cancels.
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -133,6 +140,7 @@ struct RateCheckState {
   int suspect = model::kNoThruster;
   int in_a_row = 0;                     // the suspect's readings in a row at least the threshold
   double sum = 0;                       // [-] and their sum
+  double open_sum = 0;                  // [-] and the sum of their open shares
   double suspect_pulse_s = -1;          // [s] the first of them's pulse: the latest the fault can have begun
   model::ThrusterMask read_since = 0;   // thrusters whose own check was read since the suspicion began
   int recheck = model::kNoThruster;     // the thruster to check again, until its pulse is fired
@@ -145,8 +153,9 @@ struct RateCheckState {
   }();
   int confirmed = model::kNoThruster;   // latched
   double confirmed_s = -1;              // [s] when, -1: not
-  model::FaultKind kind = model::FaultKind::kStuckClosed;  // with confirmed: stuck closed or loss
-  double size = 0;                      // [-] the mean reading of the confirming run
+  // with confirmed: stuck closed or a loss, or where the valve is open already a leak or stuck open
+  model::FaultKind kind = model::FaultKind::kStuckClosed;
+  double size = 0;  // [-] the confirming readings' mean (a loss), or their open shares' (a leak)
 };
 
 struct RateCheckInput {
@@ -168,6 +177,9 @@ struct RateCheckReading {
   double uncertainty = 0;  // [-] B_k
   int culprit = model::kNoThruster;
   double culprit_missing = 0;  // [-] its m_i
+  // [-] the checked thruster's on-time the baseline holds uncommanded, on its full thrust's rate
+  // change: a leak of size L reads L (the pulse then adds nothing and reads as missing)
+  double open_share = 0;
   int rival = model::kNoThruster;
 };
 

@@ -248,6 +248,24 @@ TEST(RateCheck, AThrusterTheControllerFiresThroughoutIsReadOnTheChecksExcess) {
   EXPECT_NEAR(read.missing, 1.0, 1e-9);
 }
 
+// A leaking valve is open already: its pulse adds nothing and reads 1, but the baseline holds the
+// leak's torque, 0.2 of T5's full thrust in every period: the open share reads it, and the fault is
+// confirmed a leak of 0.2 (not stuck closed), whose thrust the recovery then cancels.
+TEST(RateCheck, AMissingPulseOfAValveOpenAlreadyIsALeak) {
+  const RateCheckParams p = params();
+  Body body(p);
+  body.unknown_Nm = [&p](double) -> Vec3 { return 0.2 * p.torque_Nm[static_cast<std::size_t>(kT5)]; };
+  int pending = model::kNoThruster;
+  for (int k = 0; k < 200 && body.state.confirmed == model::kNoThruster; ++k) {
+    const int checked = pending != model::kNoThruster ? pending : (k == 10 ? kT5 : model::kNoThruster);
+    body.period(busy_torque(k), checked, kPulse, 1.0);
+    pending = body.state.recheck;
+  }
+  EXPECT_EQ(body.state.confirmed, kT5);
+  EXPECT_EQ(body.state.kind, model::FaultKind::kLeak);
+  EXPECT_NEAR(body.state.size, 0.2, 1e-9);
+}
+
 // A recheck waits until the latest check of any thruster is three periods back: checks in every
 // period would leave no quiet neighbours for any reading.
 TEST(RateCheck, ARecheckKeepsItsSpacingFromTheLatestCheck) {
