@@ -142,7 +142,7 @@ void BM_RateCheckPeriod(benchmark::State& state) {
     for (int i = 0; i < 8; ++i) in.on_fraction[static_cast<std::size_t>(3 * i + (k % 3))] = 0.05 * uniform();
     if (k % 7 == 0) {
       in.checked = static_cast<int>((k / 7) % 24);
-      in.checked_on_fraction = 0.075;
+      in.on_fraction[static_cast<std::size_t>(in.checked)] = 0.075;
     }
   }
   std::size_t k = 0;

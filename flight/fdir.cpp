@@ -486,7 +486,6 @@ void step_rate_check_scheme(const FdirParams& p, FdirState& state, const model::
                             .omega_body_radps = meas.omega_body_radps,
                             .torque_cmd_body_Nm = in.commanded_wrench.tail<3>(),
                             .checked = in.checked_thruster,
-                            .checked_on_fraction = in.checked_on_fraction,
                             .spill_Nms = fdi::spill_bound_Nms(p.rate_check, w.set, in.ton)};
   for (int lane = 0; lane < w.set.count; ++lane)
     check.on_fraction[static_cast<std::size_t>(w.set.index[static_cast<std::size_t>(lane)])] = in.ton[lane];

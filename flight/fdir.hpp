@@ -165,7 +165,6 @@ struct FdirInput {
   fdi::WatchedTon ton = fdi::WatchedTon::Zero();  // commanded on-times of the watched lanes
   Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
   int checked_thruster = model::kNoThruster;  // index: the thruster an active check pulses this period
-  double checked_on_fraction = 0;             // [-] its whole commanded on-time
 };
 
 // Writes the period's output into `out`, value-initialised by the caller (FlightOutput's): its

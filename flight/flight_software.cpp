@@ -168,10 +168,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
                           .ton = watched_ton,
                           .commanded_wrench = managed.commanded_wrench,
-                          .checked_thruster = managed.pulsed,
-                          .checked_on_fraction = managed.pulsed != model::kNoThruster
-                                                     ? out.command.ton[static_cast<std::size_t>(managed.pulsed)]
-                                                     : 0.0};
+                          .checked_thruster = managed.pulsed};
   step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
     const model::ThrusterMask watched_before = state.thrusters.active;

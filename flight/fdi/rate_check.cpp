@@ -62,82 +62,64 @@ double median(std::array<double, 2 * model::kMaxRateCheckNeighbours>& values, st
   return count % 2 == 1 ? *mid : 0.5 * (*mid + *std::max_element(values.begin(), mid));
 }
 
-}  // namespace
-
-RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& state, std::int64_t k,
-                            model::ThrusterMask excluded) {
-  RateCheckReading r{.thruster = model::kNoThruster, .missing = std::numeric_limits<double>::quiet_NaN()};
-  const RateCheckPeriod& pulse = state.ring[slot(k)];
-  if (pulse.checked == model::kNoThruster || !(pulse.on_fraction > 0)) return r;
-  // The baseline: the residuals' median, axis by axis, over the neighbours without a check of their
-  // own (another check's pulse carries that thruster's deficit, and a dead thruster checked again
-  // and again would fill the window with it); at least n of the 2n.
-  const int n = p.neighbours;
+// The check's period k and its neighbours without a check of their own (another check's pulse
+// carries that thruster's deficit, and a dead thruster checked again and again would fill the window
+// with it), with scratch room for their medians.
+struct Window {
+  const RateCheckParams& p;
+  const RateCheckState& state;
+  std::int64_t k;
+  const RateCheckPeriod& pulse;
   std::array<std::int64_t, 2 * model::kMaxRateCheckNeighbours> quiet{};
   std::size_t count = 0;
-  for (std::int64_t i = k - n; i <= k + n; ++i)
-    if (i != k && state.ring[slot(i)].checked == model::kNoThruster) quiet[count++] = i;
-  r.thruster = pulse.checked;
-  r.uncertainty = std::numeric_limits<double>::infinity();  // inconclusive until read
-  if (count < static_cast<std::size_t>(n)) return r;
-  std::array<double, 2 * model::kMaxRateCheckNeighbours> around{};
+  mutable std::array<double, 2 * model::kMaxRateCheckNeighbours> around{};
+
+  Window(const RateCheckParams& params, const RateCheckState& s, std::int64_t period)
+      : p(params), state(s), k(period), pulse(s.ring[slot(period)]) {
+    for (std::int64_t i = k - p.neighbours; i <= k + p.neighbours; ++i)
+      if (i != k && state.ring[slot(i)].checked == model::kNoThruster) quiet[count++] = i;
+  }
+
+  const RateCheckPeriod& neighbour(std::size_t c) const { return state.ring[slot(quiet[c])]; }
+
   // A thruster's on-time in the period beyond its median over the quiet neighbours: the baseline
   // holds the deficit of what it fires there too (a dead thruster the controller fires every period
-  // is in every residual), so a reading sees only the excess.
-  const auto excess_on_fraction = [&](int thruster) {
+  // is in every residual), so a reading sees only the excess. One off in the period and around it
+  // has none, and no median to take.
+  double excess_on_fraction(int thruster) const {
     const auto t = static_cast<std::size_t>(thruster);
-    for (std::size_t c = 0; c < count; ++c) around[c] = state.ring[slot(quiet[c])].on_fraction_all[t];
-    return pulse.on_fraction_all[t] - median(around, count);
-  };
-  // The rate change a thruster's on-time gives.
-  const auto rate_change = [&](int thruster, double on_fraction) -> Vec3 {
-    return p.period_s * on_fraction * (p.inverse_inertia * p.torque_Nm[static_cast<std::size_t>(thruster)]);
-  };
-  const Vec3 u = rate_change(pulse.checked, excess_on_fraction(pulse.checked));
-  const double uu = u.squaredNorm();
-  if (!(uu > 0)) return r;  // the check fired no more than the controller does around it
-  Vec3 baseline_radps;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (std::size_t c = 0; c < count; ++c) around[c] = state.ring[slot(quiet[c])].residual_radps[axis];
-    baseline_radps[axis] = median(around, count);
+    bool fired = pulse.on_fraction_all[t] != 0.0;
+    for (std::size_t c = 0; c < count; ++c) {
+      around[c] = neighbour(c).on_fraction_all[t];
+      fired = fired || around[c] != 0.0;
+    }
+    return fired ? pulse.on_fraction_all[t] - median(around, count) : 0.0;
   }
-  Vec3 torque_sum_Nm = Vec3::Zero();
-  for (std::size_t c = 0; c < count; ++c) torque_sum_Nm += state.ring[slot(quiet[c])].torque_Nm;
-  const Vec3 e = pulse.residual_radps - baseline_radps;
-  const Vec3 full = rate_change(pulse.checked, 1.0);
-  r.open_share = full.dot(baseline_radps) / full.squaredNorm();
-  r.missing = -u.dot(e) / uu;
-  // B_k: the inertia's error on the torque's change, the spills in and out (header).
-  const Vec3 change_Nm = pulse.torque_Nm - torque_sum_Nm / static_cast<double>(count);
-  const double spill_Nms = state.ring[slot(k - 1)].spill_Nms + pulse.spill_Nms;
-  const double inertia_radps = p.inertia_uncertainty * p.period_s * (p.inverse_inertia * change_Nm).norm();
-  r.uncertainty = (inertia_radps + p.inverse_inertia_norm * spill_Nms) / std::sqrt(uu);
-  // A step in what the model leaves out inside the window (a leak's onset, a slosh strike): the
-  // baseline takes one side's level and the pulse's period may sit on the other. The quiet
-  // neighbours' readings before and after the pulse, each side's median, differ by the step.
-  const auto side_median = [&](bool after) {
-    std::size_t m = 0;
-    for (std::size_t c = 0; c < count; ++c)
-      if ((quiet[c] > k) == after) around[m++] = -u.dot(state.ring[slot(quiet[c])].residual_radps) / uu;
-    return m == 0 ? std::numeric_limits<double>::quiet_NaN() : median(around, m);
-  };
-  const double step = std::abs(side_median(false) - side_median(true));
-  r.uncertainty += std::isnan(step) ? 0.0 : step;
 
-  // The other hypotheses: every other thruster whose on-time the check's period changes (header,
-  // "Whose deficit").
-  const double pulse_radps = std::sqrt(uu);
+  // The rate change a thruster's on-time gives.
+  Vec3 rate_change(int thruster, double on_fraction) const {
+    return p.period_s * on_fraction * (p.inverse_inertia * p.torque_Nm[static_cast<std::size_t>(thruster)]);
+  }
+};
+
+// The other hypotheses for the residual e left by the check's pulse u (header, "Whose deficit"):
+// every other thruster whose on-time the check's period changes, not in `excluded`. Sets the
+// reading's culprit (a fit better than the checked thruster's by the margin) or rival (one as good).
+void weigh_other_hypotheses(const Window& w, const Vec3& e, const Vec3& u, model::ThrusterMask excluded,
+                            RateCheckReading& r) {
+  const RateCheckParams& p = w.p;
+  const double pulse_radps = std::sqrt(u.squaredNorm());
   const double margin_radps = 0.5 * p.threshold * pulse_radps;
   const double left_checked = (e + r.missing * u).norm();
   double best_left = left_checked;
   double rival_left = std::numeric_limits<double>::infinity();
   for (int i = 0; i < model::kMaxThrusters; ++i) {
-    if (i == pulse.checked || (excluded & (model::ThrusterMask{1} << i))) continue;
+    if (i == w.pulse.checked || (excluded & (model::ThrusterMask{1} << i))) continue;
     // Fired more than around the check (a canceller) or less (the allocation cancels the pulse by
     // cutting what the controller fires against it): either change carries a deficit's share.
-    const double on_fraction = excess_on_fraction(i);
+    const double on_fraction = w.excess_on_fraction(i);
     if (on_fraction == 0.0) continue;
-    const Vec3 u_i = rate_change(i, on_fraction);
+    const Vec3 u_i = w.rate_change(i, on_fraction);
     const double uu_i = u_i.squaredNorm();
     if (!(uu_i > 0)) continue;
     const double m_i = -u_i.dot(e) / uu_i;
@@ -154,6 +136,52 @@ RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& stat
     }
   }
   if (r.culprit != model::kNoThruster) r.rival = model::kNoThruster;
+}
+
+}  // namespace
+
+RateCheckReading read_check(const RateCheckParams& p, const RateCheckState& state, std::int64_t k,
+                            model::ThrusterMask excluded) {
+  RateCheckReading r{.thruster = model::kNoThruster, .missing = std::numeric_limits<double>::quiet_NaN()};
+  const RateCheckPeriod& pulse = state.ring[slot(k)];
+  if (pulse.checked == model::kNoThruster || !(pulse.on_fraction_all[static_cast<std::size_t>(pulse.checked)] > 0))
+    return r;
+  // The baseline: the residuals' median, axis by axis, over the quiet neighbours; at least n of the 2n.
+  const Window w(p, state, k);
+  r.thruster = pulse.checked;
+  r.uncertainty = std::numeric_limits<double>::infinity();  // inconclusive until read
+  if (w.count < static_cast<std::size_t>(p.neighbours)) return r;
+  const Vec3 u = w.rate_change(pulse.checked, w.excess_on_fraction(pulse.checked));
+  const double uu = u.squaredNorm();
+  if (!(uu > 0)) return r;  // the check fired no more than the controller does around it
+  Vec3 baseline_radps;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t c = 0; c < w.count; ++c) w.around[c] = w.neighbour(c).residual_radps[axis];
+    baseline_radps[axis] = median(w.around, w.count);
+  }
+  Vec3 torque_sum_Nm = Vec3::Zero();
+  for (std::size_t c = 0; c < w.count; ++c) torque_sum_Nm += w.neighbour(c).torque_Nm;
+  const Vec3 e = pulse.residual_radps - baseline_radps;
+  const Vec3 full = w.rate_change(pulse.checked, 1.0);
+  r.open_share = full.dot(baseline_radps) / full.squaredNorm();
+  r.missing = -u.dot(e) / uu;
+  // B_k: the inertia's error on the torque's change, the spills in and out (header).
+  const Vec3 change_Nm = pulse.torque_Nm - torque_sum_Nm / static_cast<double>(w.count);
+  const double spill_Nms = state.ring[slot(k - 1)].spill_Nms + pulse.spill_Nms;
+  const double inertia_radps = p.inertia_uncertainty * p.period_s * (p.inverse_inertia * change_Nm).norm();
+  r.uncertainty = (inertia_radps + p.inverse_inertia_norm * spill_Nms) / std::sqrt(uu);
+  // A step in what the model leaves out inside the window (a leak's onset, a slosh strike): the
+  // baseline takes one side's level and the pulse's period may sit on the other. The quiet
+  // neighbours' readings before and after the pulse, each side's median, differ by the step.
+  const auto side_median = [&](bool after) {
+    std::size_t m = 0;
+    for (std::size_t c = 0; c < w.count; ++c)
+      if ((w.quiet[c] > k) == after) w.around[m++] = -u.dot(w.neighbour(c).residual_radps) / uu;
+    return m == 0 ? std::numeric_limits<double>::quiet_NaN() : median(w.around, m);
+  };
+  const double step = std::abs(side_median(false) - side_median(true));
+  r.uncertainty += std::isnan(step) ? 0.0 : step;
+  weigh_other_hypotheses(w, e, u, excluded, r);
   return r;
 }
 
@@ -192,11 +220,8 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
   period = RateCheckPeriod{.omega_radps = in.omega_body_radps,
                            .torque_Nm = in.torque_cmd_body_Nm,
                            .checked = in.checked,
-                           .on_fraction = in.checked == model::kNoThruster ? 0.0 : in.checked_on_fraction,
                            .spill_Nms = in.spill_Nms,
                            .on_fraction_all = in.on_fraction};
-  if (in.checked != model::kNoThruster)  // the check's own on-time, whatever the caller's list says
-    period.on_fraction_all[static_cast<std::size_t>(in.checked)] = period.on_fraction;
   state.periods = now + 1;
   if (in.checked != model::kNoThruster) {
     state.last_any_pulse = now;

@@ -128,7 +128,6 @@ struct RateCheckPeriod {
   Vec3 torque_Nm = Vec3::Zero();       // commanded through it
   Vec3 residual_radps = Vec3::Zero();  // e_k, once the next period's rate is in
   int checked = model::kNoThruster;    // the thruster a check pulsed in it
-  double on_fraction = 0;              // its whole commanded on-time [-]
   double spill_Nms = 0;                // S_k [N m s]
   std::array<double, model::kMaxThrusters> on_fraction_all{};  // [-] every thruster's commanded on-time
 };
@@ -163,7 +162,6 @@ struct RateCheckInput {
   Vec3 omega_body_radps = Vec3::Zero();  // the gyro at the period's start
   Vec3 torque_cmd_body_Nm = Vec3::Zero();  // the period's commanded torque (M ton)
   int checked = model::kNoThruster;      // the thruster whose check this period's command carries
-  double checked_on_fraction = 0;        // its commanded on-time [-]
   double spill_Nms = 0;                  // S_k (spill_bound_Nms) [N m s]
   std::array<double, model::kMaxThrusters> on_fraction{};  // [-] every thruster's commanded on-time, the check's included
 };

@@ -56,13 +56,13 @@ struct Body {
                           double missing = 0.0, const std::vector<Fired>& others = {}) {
     std::normal_distribution<double> noise(0.0, gyro_sigma);
     const Vec3 measured = omega + Vec3(noise(rng), noise(rng), noise(rng));
-    RateCheckInput in{.t_s = t, .omega_body_radps = measured, .torque_cmd_body_Nm = torque_cmd_Nm, .checked = checked,
-                      .checked_on_fraction = on_fraction};
+    RateCheckInput in{.t_s = t, .omega_body_radps = measured, .torque_cmd_body_Nm = torque_cmd_Nm, .checked = checked};
     Vec3 delivered = torque_cmd_Nm + unknown_Nm(t);
     for (const Fired& f : others) {
       in.on_fraction[static_cast<std::size_t>(f.thruster)] = f.on_fraction;
       delivered -= f.missing * f.on_fraction * p.torque_Nm[static_cast<std::size_t>(f.thruster)];
     }
+    if (checked != model::kNoThruster) in.on_fraction[static_cast<std::size_t>(checked)] = on_fraction;
     const RateCheckReading r = step_rate_check(p, state, in);
     if (checked != model::kNoThruster)
       delivered -= missing * on_fraction * p.torque_Nm[static_cast<std::size_t>(checked)];
@@ -356,22 +356,11 @@ TEST(RateCheck, AThrusterOfTheSameTorqueIsARivalCheckedFirst) {
   RateCheckParams p = params();
   const int checked = kT5, twin = 10;
   p.torque_Nm[static_cast<std::size_t>(twin)] = p.torque_Nm[static_cast<std::size_t>(checked)];
-  const double twin_on = kPulse;
   {
     Body body(p);
     std::array<double, 24> dead{};
     dead[static_cast<std::size_t>(twin)] = 1.0;
-    int pending = model::kNoThruster;
-    std::vector<int> order;
-    for (int k = 0; k < 400 && body.state.confirmed == model::kNoThruster; ++k) {
-      int c = pending != model::kNoThruster ? pending : (k % 7 == 6 ? checked : model::kNoThruster);
-      std::vector<Body::Fired> others;
-      if (c == checked) others.push_back({twin, twin_on, 1.0});
-      body.period(busy_torque(k), c, kPulse, c == model::kNoThruster ? 0.0 : dead[static_cast<std::size_t>(c)],
-                  others);
-      if (c != model::kNoThruster) order.push_back(c);
-      pending = body.state.recheck;
-    }
+    const std::vector<int> order = fly_checks(body, checked, twin, dead, 400);
     EXPECT_EQ(body.state.confirmed, twin);
     ASSERT_GE(order.size(), 2u);
     EXPECT_EQ(order[0], checked);
