@@ -72,19 +72,20 @@ void BM_EndToEndComrade(benchmark::State& state, const char* file) { fly_whole_r
 BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// COMRADE's whole synchronisation (3,000 s), as shipped, with the observer bank on beside the
-// deficit detector (what the bank costs a run, its design at the start included), and with the
-// active checks read from the rates (the checks' pulses and the rate check's readings).
-enum class SyncFdi { kShipped, kObserverBank, kRateCheck };
+// COMRADE's whole synchronisation (3,000 s): as shipped (the deficit detector, and the active
+// checks read from the rates); without the checks (what their pulses and readings cost a run); and
+// without them, with the observer bank on beside the deficit detector (what the bank costs a run,
+// its design at the start included).
+enum class SyncFdi { kShipped, kNoChecks, kObserverBank };
 void BM_EndToEndSync(benchmark::State& state, SyncFdi fdi) {
   model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
   scenario.fdi.observer_bank.enabled = fdi == SyncFdi::kObserverBank;
-  scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = fdi == SyncFdi::kRateCheck;
+  if (fdi != SyncFdi::kShipped) scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = false;
   fly_whole_runs(state, scenario);
 }
 BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, SyncFdi::kShipped)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, no_checks, SyncFdi::kNoChecks)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, SyncFdi::kObserverBank)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_EndToEndSync, rate_check, SyncFdi::kRateCheck)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The observer bank's period alone (flight/fdi/observer_bank.hpp): comrade_sync's 25 observers of
 // order 9 on 24 thrusters, fed 1,000 recorded-like periods in turn (rates near the hold's, random

@@ -61,7 +61,7 @@ std::string span_problem(const model::Scenario& s, model::ThrusterMask mask) {
 
 bool fdi_watches(const model::FdiParams& f) {
   return f.position.enabled || f.attitude.enabled ||
-         (f.isolation_method == model::IsolationMethod::kDeficit && f.deficit.detection);
+         (f.isolation_method == model::IsolationMethod::kDeficit && f.deficit.detection) || f.rate_check.enabled;
 }
 
 // Every set the vehicle may fly (model::reachable_configurations: the start, then each set the
@@ -87,7 +87,7 @@ void check_configurations(const model::Scenario& s, Diagnostics& d) {
   // A check only costs propellant unless a scheme watches the pulse it fires.
   if (s.fdi.active_check.enabled && !fdi)
     d.add("fdi.active_check.enabled", "is true, but no FDI scheme watches the checks: enable fdi.position, "
-                                      "fdi.attitude or fdi.deficit.detection, or set it false");
+                                      "fdi.attitude, fdi.deficit.detection or fdi.rate_check, or set it false");
   if (s.fdi.recovery == model::RecoveryPolicy::kSwitchGroup &&
       std::none_of(s.thrusters.groups.begin(), s.thrusters.groups.end(), [](const auto& g) { return g.standby; }))
     d.add("fdi.recovery", "switch_group needs a standby group to switch to (thrusters.standby_groups), "

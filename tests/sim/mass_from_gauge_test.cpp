@@ -1,6 +1,6 @@
 // control.mass_from_gauge in COMRADE's synchronised flight (flight/position_control.hpp, with_mass;
-// docs/gnc.md, "The mass on board"). A stuck-open T1 excluded early in the flight burns ~90 kg while
-// the others cancel its thrust: the chaser ends the flight 5-6 % lighter than the loop's design mass,
+// docs/gnc.md, "The mass on board"). A stuck-open T1 excluded early in the flight burns 75-90 kg while
+// the others cancel its thrust: the chaser ends the flight ~5 % lighter than the loop's design mass,
 // and in the hold the feed-forward's centripetal force, ~20 N turning with the target, is that much
 // too large: a ~1 N force the feedback holds off at the hold's own turning rate, close to its
 // bandwidth. With the gauge's mass the hold's tracking error is the fault-free run's again.
@@ -55,18 +55,20 @@ Hold fly(bool gauge, bool stuck_t1) {
   return h;
 }
 
-// Measured: fault-free 12 mm; stuck T1 at the design mass 42 mm, with the gauge's 8 mm. The bounds
+// Measured: fault-free 13 mm; stuck T1 at the design mass 34 mm, with the gauge's 8 mm. The bounds
 // say the physics, not the figures: the mass error alone must make the hold several times worse than
-// fault-free (2.5x; a regression that lost the stuck thruster's cancellation would make it far
-// worse, one that lost the 90 kg burn would not make it worse at all), and the gauge's mass must
+// fault-free (2x; a regression that lost the stuck thruster's cancellation would make it far
+// worse, one that lost the 77 kg burn would not make it worse at all), and the gauge's mass must
 // undo it: no worse than fault-free, with 20 % for the fault's other traces (its transient, the
 // cancelling thrusters' dispersions).
 TEST(MassFromGauge, TheHoldAfterAStuckOpenThrusterIsTheFaultFreeOnes) {
   const Hold free = fly(false, false), designed = fly(false, true), gauged = fly(true, true);
   ASSERT_EQ(designed.isolated, 0);
   ASSERT_EQ(gauged.isolated, 0);
-  EXPECT_GT(designed.propellant_kg, 80.0);  // the mass the design is off by
-  EXPECT_GT(designed.mean_error_m, 2.5 * free.mean_error_m);
+  // The mass the design is off by: several times the fault-free flight's 9 kg (measured 77 kg; 89
+  // without the active checks: with them the allocation cancels T1's thrust more with T13, its opposite).
+  EXPECT_GT(designed.propellant_kg, 5.0 * free.propellant_kg);
+  EXPECT_GT(designed.mean_error_m, 2.0 * free.mean_error_m);
   EXPECT_LT(gauged.mean_error_m, 1.2 * free.mean_error_m);
 }
 

@@ -20,7 +20,8 @@ namespace chaser::sim {
 namespace {
 
 model::Scenario sync_with_bank() {
-  return testing::load_with("scenarios/comrade_sync.yaml", {"fdi.observer_bank.enabled=true", "fdi.deficit.detection=false"});
+  return testing::load_with("scenarios/comrade_sync.yaml", {"fdi.observer_bank.enabled=true", "fdi.deficit.detection=false",
+                                                            "fdi.active_check.enabled=false", "fdi.rate_check.enabled=false"});
 }
 
 double largest_statistic(const RunResult& r) {

@@ -2,8 +2,9 @@
 // "Checks read from the rates") in COMRADE's synchronised flight, where the impulse statistic
 // cannot see a thruster the flight does not fire: a fault-free run checks every thruster all along
 // for half a kilogram and never alarms; T1, which the hold never fires, stuck closed in the
-// fly-around, and T4 weakened by 40 % in the hold, are each named, with their fault, by their checks;
-// a rate check without the active checks is refused by name.
+// fly-around, T4 weakened by 40 % in the hold, and T1 leaking in the fly-around, are each named, with
+// their fault, by their checks; the rate check alone watches the checks; a rate check without the
+// active checks is refused by name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,8 +30,8 @@ model::Scenario sync_checked(bool checks) {
 // the threshold. Their propellant: a check burns its pulse, p = F t_pulse / (Isp g0), and its
 // cancellers about as much again (their forces sum to the pulse's opposite), less what the two save
 // the controller: between one and three p per check (the upper end: cancellers at twice the pulse,
-// each cancelling force and torque in part). Seed 1 spends 0.19 kg more than without checks
-// (8.96 kg), 1.7 p per check.
+// each cancelling force and torque in part). Seed 1: 1,537 checks, 0.21 kg more than without
+// them (8.96 kg), 1.8 p per check.
 TEST(SyncRateCheck, AFaultFreeSynchronisationChecksAllAlongAndNeverAlarms) {
   const RunResult checked = run_scenario(sync_checked(true));
   const RunResult unchecked = run_scenario(sync_checked(false));
@@ -58,15 +59,22 @@ struct Case {
   model::FaultParams fault;
   double within_s;  // [s] after the onset
   model::FaultKind read_as;
+  double size;      // [-] the size read, within 0.05 (a loss's or a leak's; 1 for stuck closed)
 };
 
 // T1 stuck closed at 1,500 s: checked within 25 s of the onset, read 1.0 three times in a row
-// (seed 1: 7.8 s). T4 losing 40 % at 2,750 s, in the hold that never fires it: each check reads
-// ~0.4 against the threshold 0.25 (seed 1: 10.9 s, read as a loss of 0.45).
+// (seed 1: 3.0 s). T4 losing 40 % at 2,750 s, in the hold that never fires it: each check reads
+// ~0.4 against the threshold 0.25 (seed 1: 19.1 s, read as a loss of 0.43). T1 leaking 0.15 at
+// 1,500 s: its checks' pulses add nothing (the valve is open already) and read 1, their baselines
+// hold its torque uncommanded, 0.15 of its thrust: a leak of 0.15 (seed 1: 3.7 s, 0.151), whose
+// thrust the recovery cancels, not stuck closed.
 TEST(SyncRateCheck, AThrusterTheFlightDoesNotFireIsNamedByItsChecks) {
   const std::vector<Case> cases = {
-      {{.kind = model::FaultKind::kStuckClosed, .thruster = 0, .onset_s = 1500.0}, 30.0, model::FaultKind::kStuckClosed},
-      {{.kind = model::FaultKind::kLoss, .thruster = 3, .onset_s = 2750.0, .loss_size = 0.4}, 60.0, model::FaultKind::kLoss},
+      {{.kind = model::FaultKind::kStuckClosed, .thruster = 0, .onset_s = 1500.0}, 30.0, model::FaultKind::kStuckClosed, 1.0},
+      {{.kind = model::FaultKind::kLoss, .thruster = 3, .onset_s = 2750.0, .loss_size = 0.4}, 60.0, model::FaultKind::kLoss,
+       0.4},
+      {{.kind = model::FaultKind::kLeak, .thruster = 0, .onset_s = 1500.0, .leak_size = 0.15, .leak_slope_per_s = 0.1},
+       30.0, model::FaultKind::kLeak, 0.15},
   };
   for (const Case& c : cases) {
     model::Scenario s = sync_checked(true);
@@ -78,8 +86,20 @@ TEST(SyncRateCheck, AThrusterTheFlightDoesNotFireIsNamedByItsChecks) {
     EXPECT_GT(r.isolated_s, c.fault.onset_s) << c.fault.thruster;
     EXPECT_LT(r.isolated_s, c.fault.onset_s + c.within_s) << c.fault.thruster;
     EXPECT_EQ(r.diagnosed_kind, c.read_as) << c.fault.thruster;
+    EXPECT_NEAR(r.diagnosed_size, c.size, 0.05) << c.fault.thruster;
     EXPECT_EQ(run.fdir.isolated_thruster, c.fault.thruster);  // the FDIR's confirmation: the recovery acts on it
   }
+}
+
+// The rate check is a scheme that watches the checks: with every other scheme off the scenario
+// flies, and the checks are read.
+TEST(SyncRateCheck, AloneItWatchesTheChecks) {
+  model::Scenario s = testing::load_with("scenarios/comrade_sync.yaml", {"fdi.deficit.detection=false"});
+  s.faults = {model::FaultParams{.kind = model::FaultKind::kStuckClosed, .thruster = 0, .onset_s = 1500.0}};
+  s.duration_s = 1540.0;
+  const RunResult run = run_scenario(s);
+  EXPECT_FALSE(run.fdir.schemes[flight::kDeficitScheme].enabled);
+  EXPECT_EQ(run.fdir.schemes[flight::kRateCheckScheme].isolated_thruster, 0);
 }
 
 TEST(SyncRateCheck, WithoutTheActiveChecksItIsRefusedByName) {
