@@ -133,9 +133,10 @@ void weigh_other_hypotheses(const Window& w, const Vec3& e, const Vec3& u, model
     } else if (left < left_checked + margin_radps && left < rival_left) {
       rival_left = left;
       r.rival = i;
+      r.rival_cut = on_fraction < 0.0;
     }
   }
-  if (r.culprit != model::kNoThruster) r.rival = model::kNoThruster;
+  if (r.culprit != model::kNoThruster) r.rival = model::kNoThruster, r.rival_cut = false;
 }
 
 }  // namespace
@@ -266,6 +267,18 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
       state.read_since |= checked_bit;
       ask_recheck(state, state.suspect, k);
     }
+    return reading;
+  }
+  // A rival the period cut: a valve that did not close (a leak, stuck open) leaves what its cut
+  // should have taken away, and reads as this pulse missing; its own pulse cannot tell, as its
+  // valve opens. The reading decides nothing: this thruster's check again.
+  if (reading.rival != model::kNoThruster && reading.rival_cut) {
+    ask_recheck(state, checked, k);
+    return reading;
+  }
+  // The suspect as the rival of another's reading: it stays the suspect, checked again.
+  if (reading.rival != model::kNoThruster && reading.rival == state.suspect) {
+    ask_recheck(state, state.suspect, k);
     return reading;
   }
   if (checked != state.suspect) {

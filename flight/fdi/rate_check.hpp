@@ -60,7 +60,12 @@
 //     reading: it is checked next (its own check decides; another's reading never confirms);
 //   - one within the margin of a suspicious reading is its rival (rates see torques only: two
 //     thrusters with the same torque read alike): the rival is checked first, and the reading counts
-//     towards the checked thruster's confirmation only once no rival is left unchecked.
+//     towards the checked thruster's confirmation only once no rival is left unchecked. Two rivals
+//     are not checked first: the suspect (another's reading does not displace it: the suspect is
+//     checked again), and a rival the period cut, whose deficit is a valve that did not close (a
+//     leak, stuck open: it leaves what the cut should have taken away), which its own pulse cannot
+//     show as its valve opens: the reading decides nothing, and the checked thruster is checked
+//     again.
 // The thrusters whose own check has been read since the suspicion began are no hypothesis for
 // another's reading, rivals included, but for the suspect itself: the chain of rechecks ends.
 //
@@ -179,6 +184,7 @@ struct RateCheckReading {
   // change: a leak of size L reads L (the pulse then adds nothing and reads as missing)
   double open_share = 0;
   int rival = model::kNoThruster;
+  bool rival_cut = false;  // the rival's on-time was cut in the period (its deficit: a valve that did not close)
 };
 
 // The thruster to check in the next period (kNoThruster: none now): `recheck`, once the latest check

@@ -376,6 +376,77 @@ TEST(RateCheck, AThrusterOfTheSameTorqueIsARivalCheckedFirst) {
   }
 }
 
+// The suspect stays the suspect when another thruster's reading has it as its rival: T5 dead, read
+// once (in_a_row 1), then a check of its same-torque twin with T5 fired beside it: the twin's pulse
+// reads 1 with T5 its rival. The twin does not displace T5 (which would start the count again and
+// leave T5 out of the twin's next readings, as read since the suspicion began): T5 is checked
+// again, and its own checks confirm it.
+TEST(RateCheck, TheSuspectAsAnotherReadingsRivalStaysTheSuspect) {
+  RateCheckParams p = params();
+  const int twin = 10;
+  p.torque_Nm[static_cast<std::size_t>(twin)] = p.torque_Nm[static_cast<std::size_t>(kT5)];
+  Body body(p);
+  int k = 0;
+  while (k < p.neighbours) body.period(busy_torque(k++));
+  body.period(busy_torque(k++), kT5, kPulse, 1.0);
+  for (int i = 0; i < p.neighbours + 1; ++i) body.period(busy_torque(k++));
+  ASSERT_EQ(body.state.suspect, kT5);
+  ASSERT_EQ(body.state.in_a_row, 1);
+  body.period(busy_torque(k++), twin, kPulse, 0.0, {{.thruster = kT5, .on_fraction = kPulse, .missing = 1.0}});
+  RateCheckReading read;
+  for (int i = 0; i < p.neighbours + 1; ++i) {
+    const RateCheckReading r = body.period(busy_torque(k++));
+    if (r.thruster != model::kNoThruster) read = r;
+  }
+  ASSERT_EQ(read.thruster, twin);
+  EXPECT_NEAR(read.missing, 1.0, 1e-9);
+  EXPECT_EQ(read.rival, kT5);
+  EXPECT_EQ(body.state.suspect, kT5);
+  EXPECT_EQ(body.state.in_a_row, 1);
+  EXPECT_EQ(body.state.recheck, kT5);
+  int pending = body.state.recheck;
+  for (int i = 0; i < 200 && body.state.confirmed == model::kNoThruster; ++i) {
+    body.period(busy_torque(k++), pending, kPulse, pending == kT5 ? 1.0 : 0.0);
+    pending = body.state.recheck;
+  }
+  EXPECT_EQ(body.state.confirmed, kT5);
+}
+
+// A valve that does not close (a leak, stuck open) shows only where the allocation cuts it: T5's
+// opposite (a thruster given -T5's torque) is fired on 0.2 of every period but delivers its 0.2 in
+// T5's check period too, where the allocation cut it to 0.125 to cancel the pulse. The healthy T5's
+// pulse then reads 1, with the cut thruster as its rival, whose own pulse would read healthy (its
+// valve opens): the reading decides nothing, T5 is checked again, and over 400 periods T5 is
+// never confirmed.
+TEST(RateCheck, ARivalThePeriodCutDecidesNothing) {
+  RateCheckParams p = params();
+  const int opposite = 10;
+  p.torque_Nm[static_cast<std::size_t>(opposite)] = -p.torque_Nm[static_cast<std::size_t>(kT5)];
+  Body body(p);
+  RateCheckReading first;
+  int pending = model::kNoThruster, asked_after_first = model::kNoThruster;
+  for (int k = 0; k < 400; ++k) {
+    const int checked = pending != model::kNoThruster ? pending : (k % 7 == 6 ? kT5 : model::kNoThruster);
+    // commanded 0.125 in the check's period, delivered 0.2: missing -0.075 / 0.125
+    const Body::Fired held = checked == kT5 ? Body::Fired{.thruster = opposite, .on_fraction = 0.2 - kPulse,
+                                                          .missing = -kPulse / (0.2 - kPulse)}
+                                            : Body::Fired{.thruster = opposite, .on_fraction = 0.2, .missing = 0.0};
+    const RateCheckReading r = body.period(busy_torque(k), checked, kPulse, 0.0, {held});
+    if (r.thruster == kT5 && first.thruster == model::kNoThruster) {
+      first = r;
+      asked_after_first = body.state.recheck;
+    }
+    pending = body.state.recheck;
+  }
+  ASSERT_EQ(first.thruster, kT5);
+  EXPECT_NEAR(first.missing, 1.0, 1e-9);
+  EXPECT_EQ(first.rival, opposite);
+  EXPECT_TRUE(first.rival_cut);
+  EXPECT_EQ(body.state.confirmed, model::kNoThruster);
+  EXPECT_EQ(body.state.suspect, model::kNoThruster);
+  EXPECT_EQ(asked_after_first, kT5);  // the same check again, not the rival's
+}
+
 // The gyro's noise (1e-6 rad/s, comrade_sync's) over 2,000 checks of healthy thrusters, each one
 // every seventh period: the readings' spread is that noise over a pulse's 1.4e-4 rad/s, and not
 // one confirmation.
