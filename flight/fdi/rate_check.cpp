@@ -136,7 +136,10 @@ void weigh_other_hypotheses(const Window& w, const Vec3& e, const Vec3& u, model
       r.rival_cut = on_fraction < 0.0;
     }
   }
-  if (r.culprit != model::kNoThruster) r.rival = model::kNoThruster, r.rival_cut = false;
+  if (r.culprit != model::kNoThruster) {
+    r.rival = model::kNoThruster;
+    r.rival_cut = false;
+  }
 }
 
 }  // namespace
@@ -193,6 +196,22 @@ namespace {
 // each other's neighbours).
 void ask_recheck(RateCheckState& state, int thruster, std::int64_t k) {
   if (state.last_pulse[static_cast<std::size_t>(thruster)] <= k) state.recheck = thruster;
+}
+
+// The fault the confirming readings say (header, "Decision" and the open valve): their mean open
+// share from kOpenFrom, a valve open already: stuck open from stuck_closed_from, else a leak of that
+// share; else their mean reading: stuck closed from stuck_closed_from, else a loss of that mean.
+void classify_confirmation(const RateCheckParams& p, RateCheckState& state) {
+  const double n = state.in_a_row;
+  const double open = state.open_sum / n;
+  const bool valve_open = open >= kOpenFrom;
+  const double size = std::clamp(valve_open ? open : state.sum / n, 0.0, 1.0);
+  const bool whole = valve_open ? open >= p.stuck_closed_from : size >= p.stuck_closed_from;
+  if (valve_open)
+    state.kind = whole ? model::FaultKind::kStuckOpen : model::FaultKind::kLeak;
+  else
+    state.kind = whole ? model::FaultKind::kStuckClosed : model::FaultKind::kLoss;
+  state.size = whole ? 1.0 : size;
 }
 
 void let_suspicion_go(RateCheckState& state) {
@@ -298,14 +317,7 @@ RateCheckReading step_rate_check(const RateCheckParams& p, RateCheckState& state
   if (state.in_a_row >= p.confirmations) {
     state.confirmed = state.suspect;
     state.confirmed_s = in.t_s;
-    const double open = state.open_sum / state.in_a_row;
-    state.size = std::clamp(state.sum / state.in_a_row, 0.0, 1.0);
-    state.kind = state.size >= p.stuck_closed_from ? model::FaultKind::kStuckClosed : model::FaultKind::kLoss;
-    if (open >= kOpenFrom) {  // the valve is open already: a leak, or stuck open
-      state.kind = open >= p.stuck_closed_from ? model::FaultKind::kStuckOpen : model::FaultKind::kLeak;
-      state.size = std::clamp(open, 0.0, 1.0);
-    }
-    if (state.kind == model::FaultKind::kStuckClosed || state.kind == model::FaultKind::kStuckOpen) state.size = 1.0;
+    classify_confirmation(p, state);
     state.recheck = model::kNoThruster;
   } else {
     ask_recheck(state, state.suspect, k);

@@ -59,7 +59,9 @@ struct Case {
   model::FaultParams fault;
   double within_s;  // [s] after the onset
   model::FaultKind read_as;
-  double size;      // [-] the size read, within 0.05 (a loss's or a leak's; 1 for stuck closed)
+  // [-] the size read (a loss's or a leak's; 1 for stuck closed), within 0.05: past a healthy
+  // thruster's open share, -0.037..+0.038 over a fault-free flight (docs/fdi.md)
+  double size;
 };
 
 // T1 stuck closed at 1,500 s: checked within 25 s of the onset, read 1.0 three times in a row
