@@ -201,6 +201,7 @@ UioBank design_uio_bank(const RateModel& model, const UioBankParams& p) {
     nominal.Q = MatrixXd::Identity(3, 3);
     bank.nominal = design_observer(bank, nominal, p, -1);
   }
+  if (!p.decoupled) return bank;
   const double largest_rate = (C * bank.Bd).colwise().norm().maxCoeff();
   for (int i = 0; i < bank.Bd.cols(); ++i) {
     const Eigen::VectorXd F = bank.Bd.col(i);

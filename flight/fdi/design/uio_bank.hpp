@@ -52,6 +52,9 @@ struct UioBankParams {
   // The figures (gamma_sweep, residual_noise_rms, fault_gain, blind, closest, isolation_snr): the
   // sweep alone costs as much as the gains. The flight software designs without them.
   bool figures = true;
+  // The per-thruster observers; without them, the nominal alone (what the supervisor's estimators
+  // share, flight/fdi/mode_supervisor.hpp), and no figures.
+  bool decoupled = true;
 };
 
 struct UioObserver {
