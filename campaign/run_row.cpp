@@ -207,6 +207,10 @@ RunRecord make_record(const RunSetup& setup, const sim::RunResult& result, doubl
   r.final_rate_error_deg_s = f.final_rate_error_radps / kDegToRad;
   r.min_clearance_unsynchronised_m = std::isfinite(f.min_clearance_unsynchronised_m) ? f.min_clearance_unsynchronised_m : kNaN;
   r.min_clearance_synchronised_m = std::isfinite(f.min_clearance_synchronised_m) ? f.min_clearance_synchronised_m : kNaN;
+  r.supervisor_switches = result.supervisor.switches;
+  r.supervisor_thruster = result.supervisor.thruster;
+  r.supervisor_fault = result.supervisor.fault;
+  r.supervisor_first_switch_s = result.supervisor.log.empty() ? kNaN : result.supervisor.log.front().t_s;
   r.reach = reach_figures(result.reach);
   if (setup.truth.capture && setup.truth.guidance.synchronised) {
     const std::vector<sim::PhaseVerdict> verdicts = sim::phase_verdicts(setup.truth, sim::run_phases(setup.truth), result);
@@ -226,6 +230,7 @@ RunRecord error_record(const RunSetup& setup) {
   r.propellant_kg = kNaN;
   r.final_position_error_m = r.final_speed_mps = r.final_attitude_error_deg = r.final_rate_error_deg_s = kNaN;
   r.min_clearance_unsynchronised_m = r.min_clearance_synchronised_m = kNaN;
+  r.supervisor_first_switch_s = kNaN;
   r.reach = reach_figures(sim::ReachResult{});
   return r;
 }
@@ -265,6 +270,10 @@ std::vector<RunColumn> build_run_columns(const std::vector<flight::DiagnosisSche
       {"final_rate_error_deg_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.final_rate_error_deg_s); }},
       {"min_clearance_unsynchronised_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.min_clearance_unsynchronised_m); }},
       {"min_clearance_synchronised_m", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.min_clearance_synchronised_m); }},
+      {"supervisor_switches", ColumnKind::kInteger, [](const RunRecord& r, int, std::string& o) { integer(o, r.supervisor_switches); }},
+      {"supervisor_thruster", ColumnKind::kInteger, [](const RunRecord& r, int, std::string& o) { thruster_number(o, r.supervisor_thruster); }},
+      {"supervisor_fault", ColumnKind::kText, [](const RunRecord& r, int, std::string& o) { o += flight::fdi::to_string(r.supervisor_fault); }},
+      {"supervisor_first_switch_s", ColumnKind::kNumber, [](const RunRecord& r, int, std::string& o) { number(o, r.supervisor_first_switch_s); }},
   });
   return columns;
 }

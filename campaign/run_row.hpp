@@ -75,6 +75,12 @@ struct RunRecord {
   // keep-out volume or where the run has no such time).
   double final_position_error_m = 0, final_speed_mps = 0, final_attitude_error_deg = 0, final_rate_error_deg_s = 0;
   double min_clearance_unsynchronised_m = 0, min_clearance_synchronised_m = 0;
+  // fdi.supervisor: its mode switches, the last mode's thruster (index) and fault, the first switch's
+  // time (NaN: none, or no supervisor).
+  int supervisor_switches = 0;
+  int supervisor_thruster = model::kNoThruster;
+  flight::fdi::SupervisorFault supervisor_fault = flight::fdi::SupervisorFault::kNone;
+  double supervisor_first_switch_s = 0;
   ReachFigures reach{};
   // With a capture, the whole mission judged phase by phase (sim/phase_verdicts.hpp): every phase
   // met, and the phases not met as bits (sim::phases_not_met_bits: bit i sim::kMissionPhases[i]).

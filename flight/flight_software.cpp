@@ -56,6 +56,8 @@ FlightParams make_flight_params(const model::Scenario& scenario) {
       .fdir = make_fdir_params(scenario),
       .active_check = make_active_check_params(scenario),
       .recovery = scenario.fdi.recovery,
+      .supervisor = make_flight_supervisor(scenario),
+      .supervisor_accommodates = scenario.fdi.supervisor.enabled && scenario.fdi.supervisor.accommodate,
       .mass_from_gauge = scenario.control.mass_from_gauge,
   };
 }
@@ -189,6 +191,16 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
       managed = manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
       out.recovered_now = true;
     }
+  }
+  // The supervisor reads what was commanded this period; the mode it switches to flies from the next.
+  if (params.supervisor) {
+    if (!state.supervisor.started && state.supervisor.z.size() == 0)
+      state.supervisor = fdi::make_supervisor_state(*params.supervisor);
+    if (fdi::step_supervisor(*params.supervisor, state.supervisor, t_s, meas.omega_body_radps, out.command.ton) &&
+        params.supervisor_accommodates)
+      fly_supervisor_mode(*params.supervisor, state.supervisor.mode, params.management, state.management,
+                          state.thrusters);
+    out.supervisor_mode = state.supervisor.mode;
   }
   tmu_account(params.tmu, state.tmu, managed.commanded_wrench);
   step_active_check(params.active_check, state.active_check,

@@ -11,6 +11,7 @@
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
 #include "flight/hinf_control.hpp"
+#include "flight/supervision.hpp"
 #include "flight/sync_approach.hpp"
 #include "flight/sync_guidance.hpp"
 #include "flight/target_estimator.hpp"
@@ -48,6 +49,10 @@ struct FlightParams {
   FdirParams fdir;
   ActiveCheckParams active_check;
   model::RecoveryPolicy recovery = model::RecoveryPolicy::kNone;
+  // fdi.supervisor: the multi-estimator supervisor; with supervisor_accommodates its mode sets the
+  // allocation (flight/supervision.hpp).
+  std::optional<fdi::SupervisorParams> supervisor;
+  bool supervisor_accommodates = false;
   bool mass_from_gauge = false;  // control.mass_from_gauge: the loop's mass is position.mass_kg less the gauge's
 };
 
@@ -70,6 +75,7 @@ struct FlightState {
   ThrusterManagementState management;        // the active set's allocation problem
   ActiveCheckState active_check;              // when each active thruster last proved itself
   ReachState reach;                           // the reach's joint loop (with FlightParams::reach)
+  fdi::SupervisorState supervisor;            // with FlightParams::supervisor (sized in the first period)
   bool initialised = false;
   // Last: its sample and block rings (kMaxWatchedThrusters lanes, ~0.3 MB) would otherwise sit
   // between the small states every period reads, and spread them over more cache sets and pages.
@@ -89,6 +95,7 @@ struct FlightOutput {
   FdirOutput fdir;                           // both FDI schemes, event resolution
   bool recovered_now = false;                // a recovery changed the active set this period
   int checked_thruster = model::kNoThruster; // index of the thruster whose test pulse the command carries
+  int supervisor_mode = 0;                   // the supervisor's sigma after this period (0: nominal, or none)
   std::optional<TargetEstimate> target;      // the target's estimated attitude and rate at this period
                                              // (once the first pose has arrived)
 };

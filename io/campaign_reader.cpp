@@ -18,29 +18,6 @@ void check_ordered(MapReader& r, std::string_view min_key, double min, std::stri
   d.add(max_path, fmt::format("must be >= {} = {} (got {})", min_path, format_number(min), format_number(max)));
 }
 
-// fault_thrusters: names T1..TN; that they fly at the start is checked in validate_campaign.
-void read_fault_thrusters(MapReader& r, model::CampaignParams& out) {
-  if (!r.has("fault_thrusters")) return;
-  const auto node = r.child("fault_thrusters", "a list of thruster names");
-  const std::string path = r.path_of("fault_thrusters");
-  if (!node) return;
-  if (!node->IsSequence() || node->size() == 0 || node->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
-    r.diagnostics().add(path, fmt::format("must be a list of 1 to {} thruster names, e.g. [T1, T5] (got {})",
-                                          model::kMaxThrusters, describe_node(*node)));
-    return;
-  }
-  for (std::size_t i = 0; i < node->size(); ++i) {
-    const YAML::Node& item = (*node)[i];
-    const std::optional<int> index = item.IsScalar() ? model::thruster_index(item.Scalar()) : std::nullopt;
-    if (!index) {
-      r.diagnostics().add(join_path(path, std::to_string(i)),
-                          fmt::format("must be a thruster name T1..T{} (got {})", model::kMaxThrusters, describe_node(item)));
-      continue;
-    }
-    out.fault_thrusters |= model::ThrusterMask{1} << *index;
-  }
-}
-
 }  // namespace
 
 void read_campaign(MapReader& r, model::CampaignParams& out) {
@@ -50,7 +27,8 @@ void read_campaign(MapReader& r, model::CampaignParams& out) {
   double onset_max_s = 0.0;  // checked against onset_s and the run's end in validate_campaign
   if (r.has("onset_max_s") && r.number("onset_max_s", Range::right_open(0.0, kMaxCampaignRunS), onset_max_s))
     out.onset_max_s = onset_max_s;
-  read_fault_thrusters(r, out);
+  // That they fly at the start is checked in validate_campaign.
+  if (r.has("fault_thrusters")) read_thruster_names(r, "fault_thrusters", out.fault_thrusters);
   // Below 1 a truncated draw keeps mass and moments positive: (1 - 3 sigma) > 0.
   r.number("mass_3sigma_rel", Range::right_open(0.0, 1.0), out.mass_3sigma_rel);
   r.number("inertia_3sigma_rel", Range::right_open(0.0, 1.0), out.inertia_3sigma_rel);

@@ -96,6 +96,19 @@ void read_observer_bank(MapReader& r, model::ObserverBankParams& out) {
   if (r.has("isolation_ratio")) r.number("isolation_ratio", Range::open(0.0, 1.0), out.isolation_ratio);
 }
 
+// The thrusters against the active set, the slosh and the recovery policy are checked in validate_scenario.
+void read_supervisor(MapReader& r, model::SupervisorParams& out) {
+  if (r.has("enabled")) r.boolean("enabled", out.enabled);
+  if (r.has("accommodate")) r.boolean("accommodate", out.accommodate);
+  if (r.has("thrusters")) read_thruster_names(r, "thrusters", out.thrusters);
+  if (r.has("forgetting_s")) r.number("forgetting_s", Range::positive(), out.forgetting_s);
+  if (r.has("bias_s")) r.number("bias_s", Range::positive(), out.bias_s);
+  if (r.has("settle_s")) r.number("settle_s", Range::non_negative(), out.settle_s);
+  if (r.has("dwell_s")) r.number("dwell_s", Range::positive(), out.dwell_s);
+  if (r.has("hysteresis")) r.number("hysteresis", Range::non_negative(), out.hysteresis);
+  if (r.has("floor_radps")) r.number("floor_radps", Range::non_negative(), out.floor_radps);
+}
+
 // The on-times against the valve's minimum on-time, the control period and each other, and
 // max_unverified_s against the period, are checked in validate_scenario.
 void read_active_check(MapReader& r, model::ActiveCheckParams& out) {
@@ -140,6 +153,8 @@ void read_fdi(MapReader& r, model::FdiParams& out) {
   read_section(r, "deficit", [&](MapReader& m) { read_deficit(m, out.deficit); });
   if (r.has("observer_bank"))  // optional: model/fdi.hpp's defaults, the bank off
     read_section(r, "observer_bank", [&](MapReader& m) { read_observer_bank(m, out.observer_bank); });
+  if (r.has("supervisor"))  // optional: model/fdi.hpp's defaults, off
+    read_section(r, "supervisor", [&](MapReader& m) { read_supervisor(m, out.supervisor); });
   r.number("over_consumption_threshold_kg", Range::positive(), out.over_consumption_threshold_kg);
   read_recovery(r, out.recovery);
   r.number("rearm_after_recovery_s", Range::non_negative(), out.rearm_after_recovery_s);

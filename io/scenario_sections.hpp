@@ -5,6 +5,7 @@
 // the inertia matrix as a whole, the thruster set's controllability) are in validate_scenario.
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "io/yaml_reader.hpp"
 #include "model/scenario.hpp"
@@ -43,6 +44,8 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
 void read_environment(MapReader& r, model::EnvironmentParams& out);
 void read_sensors(MapReader& r, model::SensorParams& out);
 void read_thrusters(MapReader& r, model::ThrusterSetParams& out);
+// A list of thruster names T1..TN under `key` (campaign.fault_thrusters, fdi.supervisor.thrusters).
+void read_thruster_names(MapReader& r, std::string_view key, model::ThrusterMask& out);
 void read_faults(MapReader& root, std::vector<model::FaultParams>& out);
 void read_navigation(MapReader& r, model::NavigationParams& out);
 void read_guidance(MapReader& r, model::GuidanceParams& out);

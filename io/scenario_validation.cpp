@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "io/scenario_sections.hpp"
+#include "model/recovery.hpp"
 
 namespace chaser::io {
 namespace {
@@ -108,6 +109,33 @@ void check_observer_bank(Diagnostics& d, const model::Scenario& s, double period
   check_block_windows(d, "fdi.observer_bank.", b.window_s, b.baseline_s, period);
 }
 
+// The supervisor's estimators run on the bank's rate model and watch thrusters that fly from the
+// start; its accommodation is the allocation's only change (no recovery beside it).
+void check_supervisor(Diagnostics& d, const model::Scenario& s, double period) {
+  const model::SupervisorParams& v = s.fdi.supervisor;
+  if (!v.enabled) {
+    if (v.accommodate) d.add("fdi.supervisor.accommodate", "needs fdi.supervisor.enabled");
+    return;
+  }
+  if (!s.chaser.slosh)
+    d.add("fdi.supervisor.enabled", "needs chaser.slosh: the estimators' rate model is built from the tanks' slosh");
+  if (d.clean("fdi.supervisor.thrusters")) {
+    const model::ThrusterMask start = model::initial_configuration(s.thrusters).active;
+    if (v.thrusters == 0)
+      d.add("fdi.supervisor.thrusters", "must name the thrusters to monitor, e.g. [T1, T5, T13, T17]");
+    for (int t = 0; t < model::kMaxThrusters; ++t)
+      if ((v.thrusters >> t & 1U) && !(start >> t & 1U))
+        d.add("fdi.supervisor.thrusters", fmt::format("{} does not fly at the start (not in the set or on standby)",
+                                                      model::thruster_name(t)));
+  }
+  if (d.clean("fdi.supervisor.dwell_s") && v.dwell_s < period)
+    d.add("fdi.supervisor.dwell_s", fmt::format("must be >= control_period_s = {} (got {})", format_number(period),
+                                                format_number(v.dwell_s)));
+  if (v.accommodate && s.fdi.recovery != model::RecoveryPolicy::kNone)
+    d.add("fdi.supervisor.accommodate", "needs fdi.recovery: none (the supervisor's mode is then the only change "
+                                        "to the allocation)");
+}
+
 // The rate check reads the active checks' pulses: nothing to read without them.
 void check_rate_check(Diagnostics& d, const model::Scenario& s) {
   if (s.fdi.rate_check.enabled && !s.fdi.active_check.enabled)
@@ -183,6 +211,7 @@ void check_timing(const model::Scenario& s, Diagnostics& d) {
   check_active_check(d, s, period);
   check_observer_bank(d, s, period);
   check_rate_check(d, s);
+  check_supervisor(d, s, period);
   if (s.sensors.target_pose)
     check_sample_timing(d, "sensors.target_pose", s.sensors.target_pose->period_s, s.sensors.target_pose->latency_s, period);
   if (s.sensors.arm_camera) {  // the same timing rules; on the gripper, so with an arm

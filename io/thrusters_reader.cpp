@@ -99,4 +99,27 @@ void read_thrusters(MapReader& r, model::ThrusterSetParams& out) {
   read_standby_groups(r, out);
 }
 
+// A list of thruster names T1..TN under `key`, as a mask.
+void read_thruster_names(MapReader& r, std::string_view key, model::ThrusterMask& out) {
+  const auto node = r.child(key, "a list of thruster names");
+  const std::string path = r.path_of(key);
+  if (!node) return;
+  if (!node->IsSequence() || node->size() == 0 || node->size() > static_cast<std::size_t>(model::kMaxThrusters)) {
+    r.diagnostics().add(path, fmt::format("must be a list of 1 to {} thruster names, e.g. [T1, T5] (got {})",
+                                          model::kMaxThrusters, describe_node(*node)));
+    return;
+  }
+  out = 0;
+  for (std::size_t i = 0; i < node->size(); ++i) {
+    const YAML::Node& item = (*node)[i];
+    const std::optional<int> index = item.IsScalar() ? model::thruster_index(item.Scalar()) : std::nullopt;
+    if (!index) {
+      r.diagnostics().add(join_path(path, std::to_string(i)),
+                          fmt::format("must be a thruster name T1..T{} (got {})", model::kMaxThrusters, describe_node(item)));
+      continue;
+    }
+    out |= model::ThrusterMask{1} << *index;
+  }
+}
+
 }  // namespace chaser::io

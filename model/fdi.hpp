@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "model/thrusters.hpp"
+
 namespace chaser::model {
 
 // One residual-generator scheme: built on the position model (eq. 12) or the attitude model (15).
@@ -54,6 +56,23 @@ struct ObserverBankParams {
   double baseline_s = 100.0;           // [s] L: ... against their mean over the L seconds before
   double threshold_Nm = 1.0;           // [N m] the nominal observer's change, as torque, over the model-error bound, that alarms
   double isolation_ratio = 0.2;        // [-] an observer whose change is below this x the nominal's is blind to the fault
+};
+
+// The multi-estimator supervisor (COMRADE 2018, sec. 6.3; flight/fdi/mode_supervisor.hpp): 2N + 1
+// modes for the N monitored thrusters (nominal, each one stuck open, each one stuck closed), one
+// estimator each on the observer bank's rate model, a switching signal with a dwell time and a
+// hysteresis. With `accommodate`, the allocation flies the mode it names (the virtual actuator).
+// Needs chaser.slosh.
+struct SupervisorParams {
+  bool enabled = false;          // run it (its mode and switches go to telemetry and results)
+  bool accommodate = false;      // the allocation follows its mode; needs fdi.recovery: none
+  ThrusterMask thrusters = 0;    // monitored, by index
+  double forgetting_s = 2.0;     // [s] the monitoring signals' memory
+  double bias_s = 100.0;         // [s] the residual every estimator shares, low-passed over this
+  double settle_s = 100.0;       // [s] no switch before this time into the run
+  double dwell_s = 5.0;          // [s] least time between two switches
+  double hysteresis = 1.0;       // [-] relative: (1 + h) mu_k + floor^2 < mu_sigma to switch
+  double floor_radps = 1e-4;     // [rad/s] absolute
 };
 
 // The impulse-deficit isolation (flight/fdi/deficit_isolation.hpp): its window about the alarm and
@@ -147,6 +166,7 @@ struct FdiParams {
   bool glr_increase_only = false;   // [-] only a residual increase counts (eq. 41 as printed: false)
   DeficitParams deficit;            // used when isolation_method is kDeficit
   ObserverBankParams observer_bank;
+  SupervisorParams supervisor;  // optional section: off
   // Event resolution (Remark 2): over-consumption separating cases 1/3 from 2/4.
   double over_consumption_threshold_kg = 0.005;  // [kg] measured minus expected since the alarm
   // Recovery (flight/recovery.hpp): what a confirmed fault changes in the active set, and how long

@@ -41,9 +41,10 @@ RUNS_HEADER = (
     "fdir_detection_s,fdir_isolation_s,fdir_isolated,fdir_false_alarm,fdir_missed,"
     "fdir_wrong_isolation,recovery_s,capture,corridor_kept,target_in_view,propellant_kg,simulated_s,"
     "final_position_error_m,final_speed_mps,final_attitude_error_deg,final_rate_error_deg_s,"
-    "min_clearance_unsynchronised_m,min_clearance_synchronised_m"
+    "min_clearance_unsynchronised_m,min_clearance_synchronised_m,"
+    "supervisor_switches,supervisor_thruster,supervisor_fault,supervisor_first_switch_s"
 ).split(",")
-TEXT_COLUMNS = ("seed", "case", "status")  # kept as text: a 64-bit seed does not fit a double
+TEXT_COLUMNS = ("seed", "case", "status", "supervisor_fault")  # words; a 64-bit seed does not fit a double
 CASES = ("none", "stuck_open", "stuck_closed", "leak", "loss")
 SCHEMES = ("position", "attitude", "deficit", "bank", "rate_check", "fdir")
 GLR_SCHEMES = ("position", "attitude")  # the two with a GLR statistic S (eq. 41)

@@ -53,6 +53,15 @@ struct FdirResult {
   std::vector<FdirResult> episodes;
 };
 
+// The multi-estimator supervisor's switching over the run (fdi.supervisor; flight/fdi/mode_supervisor.hpp).
+struct SupervisorResult {
+  bool enabled = false;
+  int switches = 0;                        // mode switches in the run
+  int thruster = model::kNoThruster;       // the last mode's thruster (index), kNoThruster: nominal
+  flight::fdi::SupervisorFault fault = flight::fdi::SupervisorFault::kNone;  // and its fault
+  std::vector<flight::fdi::SupervisorSwitch> log;  // the first kMaxSupervisorSwitches switches
+};
+
 struct RunResult {
   MissionFigures figures;
   double propellant_used_kg = 0;  // [kg]
@@ -72,6 +81,7 @@ struct RunResult {
   std::int64_t saturated_periods = 0;
   bool telemetry_ok = true;
   FdirResult fdir;
+  SupervisorResult supervisor;
   // With RunOptions::record_glr_per_second: the largest GLR statistic S of each scheme in each whole
   // second of the run, by scheme slot per second (index floor(t)); 0 for a disabled scheme.
   std::vector<std::array<float, flight::kMaxDiagnosisSchemes>> glr_max_per_s;

@@ -427,6 +427,12 @@ RunResult Simulation::finish() {
   if (result_.escape.flown) result_.figures.capture_achieved = false;  // the final errors are the escape's
   RunResult result = std::move(result_);
   result.fdir = fdir_result(flight_params_, flight_state_);
+  if (const auto& supervisor = flight_params_.supervisor) {
+    const flight::fdi::SupervisorState& st = flight_state_.supervisor;
+    const flight::fdi::SupervisorMode& last = supervisor->modes[static_cast<std::size_t>(st.mode)];
+    result.supervisor = {.enabled = true, .switches = st.switches, .thruster = last.thruster, .fault = last.fault};
+    result.supervisor.log.assign(st.log.begin(), st.log.begin() + std::min(st.switches, flight::fdi::kMaxSupervisorSwitches));
+  }
   finish_phases(phase_params_, phase_state_, k_ * period_ns_);
   result.phases = flown_phases(phase_params_, phase_state_);
   result.propellant_used_kg = plant_.state.propellant_used_kg;

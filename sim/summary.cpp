@@ -135,6 +135,17 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
   return out;
 }
 
+// The supervisor's switches (null without it): how many, the last mode, and the first ones in order.
+nlohmann::json supervisor_json(const SupervisorResult& s) {
+  if (!s.enabled) return nullptr;
+  nlohmann::json log = nlohmann::json::array();
+  for (const flight::fdi::SupervisorSwitch& w : s.log) log.push_back({{"t_s", w.t_s}, {"mode", w.mode}});
+  return {{"mode_switches", s.switches},
+          {"thruster", thruster_json(s.thruster)},
+          {"fault", flight::fdi::to_string(s.fault)},
+          {"switches", std::move(log)}};
+}
+
 // faulty_thruster: the truth's index, model::kNoThruster when the run has no fault.
 std::string scheme_text(const std::string& name, const SchemeResult& r, double onset_s, int faulty_thruster) {
   const bool has_fault = faulty_thruster != model::kNoThruster;
@@ -489,6 +500,7 @@ nlohmann::json run_summary(const model::Scenario& scenario, const std::string& s
       {"phases", phases_json(scenario)},
       {"phases_flown", phases_flown_json(r)},
       {"fdir", fdir_json(scenario, r.fdir)},
+      {"supervisor", supervisor_json(r.supervisor)},
       {"reach", reach_json(scenario, r)},
   };
   if (scenario.guidance.synchronised) {  // COMRADE's mission, phase by phase

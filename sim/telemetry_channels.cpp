@@ -105,7 +105,8 @@ TelemetryShape telemetry_shape(const model::Scenario& scenario) {
           .slosh_tanks = slosh ? static_cast<int>(slosh->tanks.size()) : 0,
           .target_estimator = scenario.sensors.target_pose.has_value() && scenario.target.body.has_value(),
           .phases = static_cast<int>(planned_phases(scenario).size()),
-          .arm = scenario.capture.has_value() && scenario.chaser.arm.has_value()};
+          .arm = scenario.capture.has_value() && scenario.chaser.arm.has_value(),
+          .supervisor = scenario.fdi.supervisor.enabled};
 }
 
 namespace {
@@ -200,6 +201,8 @@ std::vector<TelemetryChannel> telemetry_channels(const TelemetryShape& shape) {
     for (int i = 0; i < 3; ++i) figure(fmt::format("tool_target_{}_m", "xyz"[i]), "m", kFigureValues - 3 + i);
   }
   if (shape.phases > 1) t.push_back({"phase", "", [](const PeriodRecord& r, int) { return static_cast<double>(r.phase); }, 0});
+  if (shape.supervisor)
+    t.push_back({"supervisor_mode", "", [](const PeriodRecord& r, int) { return static_cast<double>(r.flight->supervisor_mode); }, 0});
   return t;
 }
 
@@ -316,6 +319,7 @@ void record_every_channel(const PeriodRecord& r, const TelemetryShape& shape, do
     for (int k = 0; k < kFigureValues; ++k) *row++ = figure_value(r, k);
   }
   if (shape.phases > 1) *row++ = static_cast<double>(r.phase);
+  if (shape.supervisor) *row++ = static_cast<double>(r.flight->supervisor_mode);
 }
 
 }  // namespace chaser::sim

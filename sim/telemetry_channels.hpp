@@ -45,6 +45,7 @@ struct TelemetryShape {
   bool target_estimator = false;  // target_est_att_err_rad, target_est_rate_err_radps, target_est_att_sigma_rad
   int phases = 1;       // the run's phases (sim/run_phases.hpp); with more than one, the phase channel
   bool arm = false;     // a capture: the joints (q_arm_1..7_rad, tau_arm_1..7_Nm) and the gripper's errors
+  bool supervisor = false;  // fdi.supervisor: its mode (supervisor_mode: 0 nominal, 2i+1 / 2i+2 the i-th thruster stuck open / closed)
 };
 TelemetryShape telemetry_shape(const model::Scenario& scenario);
 

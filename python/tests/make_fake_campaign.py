@@ -94,6 +94,8 @@ def make_run(rng, run, case):
     row["final_rate_error_deg_s"] = rng.uniform(0.0, 0.1)
     row["min_clearance_unsynchronised_m"] = float("nan")  # MSR's target has no keep-out volume
     row["min_clearance_synchronised_m"] = float("nan")
+    row["supervisor_switches"], row["supervisor_thruster"] = 0, 0  # no supervisor
+    row["supervisor_fault"], row["supervisor_first_switch_s"] = "none", float("nan")
     return row
 
 
