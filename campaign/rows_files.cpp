@@ -31,8 +31,14 @@ bool row_is_valid(const std::string& line, std::int64_t run, const RunLayout& la
       f[2] != to_string(layout.case_of(run)))
     return false;
   if (f[3] != "ok" && f[3] != "diverged" && f[3] != "error") return false;
-  for (std::size_t i = 4; i < f.size(); ++i)
-    if (!parse_number(f[i])) return false;
+  const std::vector<RunColumn>& kinds = run_columns(columns);
+  for (std::size_t i = 4; i < f.size(); ++i) {
+    // A word (supervisor_fault's none, stuck_open, stuck_closed), else a number.
+    const bool ok = kinds[i].kind == ColumnKind::kText
+                        ? !f[i].empty() && f[i].find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string_view::npos
+                        : parse_number(f[i]).has_value();
+    if (!ok) return false;
+  }
   return true;
 }
 
