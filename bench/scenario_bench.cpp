@@ -73,19 +73,54 @@ BENCHMARK_CAPTURE(BM_EndToEndComrade, envisat, "comrade_envisat.yaml")->Unit(ben
 BENCHMARK_CAPTURE(BM_EndToEndComrade, assist, "comrade_assist.yaml")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // COMRADE's whole synchronisation (3,000 s): as shipped (the deficit detector, and the active
-// checks read from the rates); without the checks (what their pulses and readings cost a run); and
+// checks read from the rates); without the checks (what their pulses and readings cost a run);
 // without them, with the observer bank on beside the deficit detector (what the bank costs a run,
-// its design at the start included).
-enum class SyncFdi { kShipped, kNoChecks, kObserverBank };
+// its design at the start included); and as shipped with the supervisor running beside (its
+// nine estimators on T1, T5, T13, T17, diagnosing only: what it costs a run, its design included).
+enum class SyncFdi { kShipped, kNoChecks, kObserverBank, kSupervisor };
 void BM_EndToEndSync(benchmark::State& state, SyncFdi fdi) {
   model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
   scenario.fdi.observer_bank.enabled = fdi == SyncFdi::kObserverBank;
-  if (fdi != SyncFdi::kShipped) scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = false;
+  scenario.fdi.supervisor.enabled = fdi == SyncFdi::kSupervisor;
+  if (fdi == SyncFdi::kNoChecks || fdi == SyncFdi::kObserverBank)
+    scenario.fdi.active_check.enabled = scenario.fdi.rate_check.enabled = false;
   fly_whole_runs(state, scenario);
 }
 BENCHMARK_CAPTURE(BM_EndToEndSync, shipped, SyncFdi::kShipped)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndSync, no_checks, SyncFdi::kNoChecks)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_EndToEndSync, observer_bank, SyncFdi::kObserverBank)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EndToEndSync, supervisor, SyncFdi::kSupervisor)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The supervisor's period alone (flight/fdi/mode_supervisor.hpp): comrade_sync's nominal observer
+// of order 9 and the eight corrections of T1, T5, T13 and T17 stuck open and stuck closed, settled.
+void BM_SupervisorPeriod(benchmark::State& state) {
+  model::Scenario scenario = shipped_scenario("comrade_sync.yaml");
+  scenario.fdi.supervisor.enabled = true;
+  const flight::fdi::SupervisorParams params = *flight::make_flight_params(scenario).supervisor;
+  flight::fdi::SupervisorState supervisor = flight::fdi::make_supervisor_state(params);
+  constexpr std::size_t kInputs = 1000;
+  std::vector<Vec3> rates(kInputs);
+  std::vector<model::ThrusterOnTimes> on_times(kInputs, model::ThrusterOnTimes{});
+  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
+  const auto uniform = [&x] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  };
+  for (std::size_t k = 0; k < kInputs; ++k) {
+    rates[k] = Vec3(0.03, -0.02, 0.01) + 1e-4 * Vec3(uniform(), uniform(), uniform());
+    for (int t = 0; t < scenario.thrusters.count; ++t) on_times[k][static_cast<std::size_t>(t)] = 0.05 * uniform();
+  }
+  double t_s = 0.0;
+  for (std::size_t k = 0; k < 1100; ++k, t_s += 0.1)  // past settle_s
+    flight::fdi::step_supervisor(params, supervisor, t_s, rates[k % kInputs], on_times[k % kInputs]);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    flight::fdi::step_supervisor(params, supervisor, t_s, rates[k], on_times[k]);
+    k = k + 1 == kInputs ? 0 : k + 1;
+  }
+  benchmark::DoNotOptimize(supervisor.mu);
+}
+BENCHMARK(BM_SupervisorPeriod);
 
 // The observer bank's period alone (flight/fdi/observer_bank.hpp): comrade_sync's 25 observers of
 // order 9 on 24 thrusters, fed 1,000 recorded-like periods in turn (rates near the hold's, random
