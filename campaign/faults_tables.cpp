@@ -37,8 +37,21 @@ FaultsCell pooled(const std::vector<FaultsColumn>& columns, std::size_t kind) {
     all.table1_met += x.table1_met;
     all.diagnosed_flown += x.diagnosed_flown;
     all.diagnosed_table1_met += x.diagnosed_table1_met;
+    all.switches += x.switches;
+    all.max_switches = std::max(all.max_switches, x.max_switches);
   }
   return all;
+}
+
+// A run's mode switches: its recovery (one at most) and its supervisor's switches.
+int mode_switches(const std::string& recovery_s, const std::string& supervisor_switches) {
+  const std::optional<double> recovery = parse_number(recovery_s), supervisor = parse_number(supervisor_switches);
+  return (recovery && std::isfinite(*recovery) ? 1 : 0) + (supervisor ? static_cast<int>(*supervisor) : 0);
+}
+
+std::string switches_pair(int switches, int max_switches, int flown) {
+  if (flown == 0) return "-";
+  return fmt::format("{:.2f} / {}", static_cast<double>(switches) / flown, max_switches);
 }
 
 std::string seconds_pair(const std::vector<double>& v) {
@@ -61,7 +74,8 @@ bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool dia
   const std::optional<CsvTable> table = read_csv_table(runs_csv, error);
   if (!table) return false;
   const auto col = table->columns({"case", "status", "fault_thruster", "fdir_detection_s", "fdir_isolation_s",
-                                   "fdir_isolated", "fdir_false_alarm", "fdir_missed", "fdir_wrong_isolation", "capture"},
+                                   "fdir_isolated", "fdir_false_alarm", "fdir_missed", "fdir_wrong_isolation", "capture",
+                                   "recovery_s", "supervisor_switches"},
                                   runs_csv, "(not a campaign's runs.csv?)", error);
   if (!col) return false;
   for (const std::vector<std::string>& f : table->rows) {
@@ -87,6 +101,9 @@ bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool dia
     if (td && std::isfinite(*td)) c.detection_s.push_back(*td);
     if (right && ti && std::isfinite(*ti)) c.isolation_s.push_back(*ti);
     c.table1_met += field(9) == "1";
+    const int switches = mode_switches(field(10), field(11));
+    c.switches += switches;
+    c.max_switches = std::max(c.max_switches, switches);
   }
   return true;
 }
@@ -94,7 +111,7 @@ bool add_faults_runs(FaultsColumn& column, const std::string& runs_csv, bool dia
 std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std::string& error) {
   const std::optional<CsvTable> table = read_csv_table(runs_csv, error);
   if (!table) return std::nullopt;
-  const auto col = table->columns({"case", "status", "fdir_false_alarm", "capture"}, runs_csv,
+  const auto col = table->columns({"case", "status", "fdir_false_alarm", "capture", "recovery_s", "supervisor_switches"}, runs_csv,
                                   "(not a campaign's runs.csv?)", error);
   if (!col) return std::nullopt;
   FaultFreeFigures out;
@@ -106,6 +123,9 @@ std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std
     ++out.flown;
     out.false_alarms += field(2) == "1";
     out.table1_met += field(3) == "1";
+    const int switches = mode_switches(field(4), field(5));
+    out.switches += switches;
+    out.max_switches = std::max(out.max_switches, switches);
   }
   return out;
 }
@@ -113,9 +133,10 @@ std::optional<FaultFreeFigures> read_fault_free(const std::string& runs_csv, std
 std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vector<FaultsColumn>& columns,
                             const std::vector<FaultsColumn>& each) {
   std::string out = fmt::format(
-      "Fault-free: {} runs ({} flown to the end); false alarms {}; COMRADE Table 1 met at the end in {} of {}.\n\n",
+      "Fault-free: {} runs ({} flown to the end); false alarms {}; COMRADE Table 1 met at the end in {} of {}; "
+      "mode switches per run, mean / max, {}.\n\n",
       fault_free.runs, fault_free.flown, proportion_cell({fault_free.false_alarms, fault_free.flown}),
-      fault_free.table1_met, fault_free.flown);
+      fault_free.table1_met, fault_free.flown, switches_pair(fault_free.switches, fault_free.max_switches, fault_free.flown));
   out += "| fault | |";
   for (const FaultsColumn& c : columns) out += fmt::format(" {} |", c.name);
   out += " all |\n|---|---|";
@@ -140,6 +161,7 @@ std::string faults_markdown(const FaultFreeFigures& fault_free, const std::vecto
     row("Table 1 met: accommodated; diagnosis only", [](const FaultsCell& c) {
       return fmt::format("{} of {}; {} of {}", c.table1_met, c.flown, c.diagnosed_table1_met, c.diagnosed_flown);
     });
+    row("mode switches per run, mean / max", [](const FaultsCell& c) { return switches_pair(c.switches, c.max_switches, c.flown); });
   }
   // The targets, over every faulty run (kFaultKinds[0]: stuck open).
   FaultsCell all;
@@ -177,9 +199,9 @@ std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<Fau
                        const std::vector<FaultsColumn>& each) {
   std::string out =
       "group,case,runs,flown,false_alarms,missed,wrong,right,detection_mean_s,detection_p95_s,isolation_mean_s,"
-      "isolation_p95_s,table1_met,diagnosed_flown,diagnosed_table1_met\n";
-  out += fmt::format("none,none,{},{},{},0,0,0,nan,nan,nan,nan,{},0,0\n", fault_free.runs, fault_free.flown,
-                     fault_free.false_alarms, fault_free.table1_met);
+      "isolation_p95_s,table1_met,diagnosed_flown,diagnosed_table1_met,switches,max_switches\n";
+  out += fmt::format("none,none,{},{},{},0,0,0,nan,nan,nan,nan,{},0,0,{},{}\n", fault_free.runs, fault_free.flown,
+                     fault_free.false_alarms, fault_free.table1_met, fault_free.switches, fault_free.max_switches);
   const auto line = [&](const std::string& group, std::size_t k, const FaultsCell& c) {
     const FigureStats detection = figure_stats(c.detection_s), isolation = figure_stats(c.isolation_s);
     out += fmt::format("{},{},{},{},{},{},{},{}", group, to_string(kFaultKinds[k]), c.runs, c.flown, c.false_alarms,
@@ -188,7 +210,8 @@ std::string faults_csv(const FaultFreeFigures& fault_free, const std::vector<Fau
       out += ',';
       append_number(out, v);
     }
-    out += fmt::format(",{},{},{}\n", c.table1_met, c.diagnosed_flown, c.diagnosed_table1_met);
+    out += fmt::format(",{},{},{},{},{}\n", c.table1_met, c.diagnosed_flown, c.diagnosed_table1_met, c.switches,
+                       c.max_switches);
   };
   for (const FaultsColumn& c : columns)
     for (std::size_t k = 0; k < kFaultKinds.size(); ++k) line(c.name, k, c.kinds[k]);

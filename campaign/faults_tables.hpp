@@ -26,6 +26,9 @@ struct FaultsCell {
   int table1_met = 0;               // COMRADE Table 1 met at the end (runs.csv's capture)
   // The same runs flown with diagnosis only (fdi.recovery: none): Table 1 at the end.
   int diagnosed_flown = 0, diagnosed_table1_met = 0;
+  // Mode switches of the accommodated runs: each changes how the allocation flies (a recovery,
+  // fdi.recovery; a supervisor's switch, fdi.supervisor.accommodate).
+  int switches = 0, max_switches = 0;
 };
 
 // The four fault kinds in the campaign's order (campaign/cases.hpp).
@@ -39,6 +42,7 @@ struct FaultsColumn {
 
 struct FaultFreeFigures {
   int runs = 0, flown = 0, false_alarms = 0, table1_met = 0;
+  int switches = 0, max_switches = 0;  // mode switches, as FaultsCell's
 };
 
 // Adds the rows of a faulty campaign's runs.csv (the FDIR's columns, case, status, capture) to the

@@ -194,7 +194,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   }
   // The supervisor reads what was commanded this period; the mode it switches to flies from the next.
   if (params.supervisor) {
-    if (!state.supervisor.started && state.supervisor.z.size() == 0)
+    if (state.supervisor.z.size() == 0)  // the first period
       state.supervisor = fdi::make_supervisor_state(*params.supervisor);
     if (fdi::step_supervisor(*params.supervisor, state.supervisor, t_s, meas.omega_body_radps, out.command.ton) &&
         params.supervisor_accommodates)

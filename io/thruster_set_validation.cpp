@@ -108,6 +108,20 @@ void check_single_losses(const model::Scenario& s, Diagnostics& d) {
   }
 }
 
+// fdi.supervisor.accommodate: each monitored thruster's modes fly the starting set without it.
+void check_supervised_sets(const model::Scenario& s, Diagnostics& d) {
+  const model::SupervisorParams& v = s.fdi.supervisor;
+  if (!v.enabled || !v.accommodate || !d.clean("fdi.supervisor.thrusters")) return;
+  const model::ThrusterMask start = model::initial_active_set(s.thrusters);
+  for (int t = 0; t < model::kMaxThrusters; ++t) {
+    if (!(v.thrusters >> t & 1U) || !(start >> t & 1U)) continue;
+    if (const std::string problem = span_problem(s, start & ~model::thruster_bit(t)); !problem.empty())
+      d.add("fdi.supervisor.thrusters",
+            fmt::format("{}'s modes fly the set that flies at the start without it, which {}", model::thruster_name(t),
+                        problem));
+  }
+}
+
 void check_fault_thrusters(const model::Scenario& s, Diagnostics& d) {
   for (std::size_t i = 0; i < s.faults.size(); ++i) {
     const std::string path = fmt::format("faults.{}.thruster", i);
@@ -126,6 +140,7 @@ void validate_thruster_set(const model::Scenario& s, Diagnostics& d) {
   if (!d.clean("chaser.com_body_m") || !d.clean("thrusters.standby_groups")) return;
   check_configurations(s, d);
   check_single_losses(s, d);
+  check_supervised_sets(s, d);
 }
 
 }  // namespace chaser::io

@@ -683,11 +683,13 @@ def comrade_mission_rows(out):
 # Every thruster's faults over the synchronisation (the comrade-faults preset's faults.csv): per
 # kind the FDIR's names, delays and Table 1, by group of fault thrusters; the fault-free runs first.
 FAULTS_GROUPS = ("T1", "T5", "T13", "T17", "other 20", "all")
-FAULTS_LABELS = (("fault-free: false alarms", "fault-free: Table 1 met at the end")
+FAULTS_LABELS = (("fault-free: false alarms", "fault-free: Table 1 met at the end",
+                  "fault-free: mode switches per run, mean / max")
                  + sum(((f"{case.replace('_', ' ')}: missed, wrong, right",
                          f"{case.replace('_', ' ')}: t_d mean / 95th pct.",
                          f"{case.replace('_', ' ')}: t_i mean / 95th pct.",
-                         f"{case.replace('_', ' ')}: Table 1 met, accommodated; diagnosis only")
+                         f"{case.replace('_', ' ')}: Table 1 met, accommodated; diagnosis only",
+                         f"{case.replace('_', ' ')}: mode switches per run, mean / max")
                         for case in FAULT_CASES), ())
                  + ("stuck closed and loss: missed of flown; the others missing half or more",
                     "every faulty run: named right (target >= 99 %)",
@@ -709,8 +711,13 @@ def comrade_faults_rows(out):
         rows = {(r["group"], r["case"]): r for r in csv.DictReader(f)}
     free = rows["none", "none"]
     blank = ["-"] * (len(FAULTS_GROUPS) - 1)
+    def switches(c):  # a recovery's and the supervisor's, per accommodated run
+        flown = int(c["flown"])
+        return "-" if flown == 0 else f"{fixed(int(c['switches']) / flown, 2)} / {c['max_switches']}"
+
     table = [blank + [f"{free['false_alarms']} of {free['flown']}"],
-             blank + [f"{free['table1_met']} of {free['flown']}"]]
+             blank + [f"{free['table1_met']} of {free['flown']}"],
+             blank + [switches(free)]]
 
     def seconds(mean, p95):
         return "-" if missing(number(mean)) else f"{fixed(number(mean), 1)} / {fixed(number(p95), 1)} s"
@@ -721,6 +728,7 @@ def comrade_faults_rows(out):
         table.append([seconds(c["detection_mean_s"], c["detection_p95_s"]) for c in cells])
         table.append([seconds(c["isolation_mean_s"], c["isolation_p95_s"]) for c in cells])
         table.append([f"{c['table1_met']}; {c['diagnosed_table1_met']} of {c['flown']}" for c in cells])
+        table.append([switches(c) for c in cells])
     # The thrusters that miss half or more of their proportional faults: counts for the four, names
     # for the others, how many in all.
     missed, flown_pf = proportional_misses(rows)

@@ -430,8 +430,8 @@ RunResult Simulation::finish() {
   if (const auto& supervisor = flight_params_.supervisor) {
     const flight::fdi::SupervisorState& st = flight_state_.supervisor;
     const flight::fdi::SupervisorMode& last = supervisor->modes[static_cast<std::size_t>(st.mode)];
-    result.supervisor = {.enabled = true, .switches = st.switches, .thruster = last.thruster, .fault = last.fault};
-    result.supervisor.log.assign(st.log.begin(), st.log.begin() + std::min(st.switches, flight::fdi::kMaxSupervisorSwitches));
+    result.supervisor = {.enabled = true, .switches = st.switches, .thruster = last.thruster, .fault = last.fault,
+                         .log = {st.log.begin(), st.log.begin() + std::min(st.switches, flight::fdi::kMaxSupervisorSwitches)}};
   }
   finish_phases(phase_params_, phase_state_, k_ * period_ns_);
   result.phases = flown_phases(phase_params_, phase_state_);

@@ -72,6 +72,7 @@ SupervisorState make_supervisor_state(const SupervisorParams& p) {
   s.u = Eigen::VectorXd::Zero(p.Bd.cols());
   s.known = Eigen::VectorXd::Zero(p.n);
   s.v = Eigen::VectorXd::Zero(p.n + 3);
+  s.next = Eigen::VectorXd::Zero(p.n);
   return s;
 }
 
@@ -107,8 +108,8 @@ bool step_supervisor(const SupervisorParams& p, SupervisorState& s, double t_s, 
     s.mu(static_cast<Eigen::Index>(m)) = p.forget * s.mu(static_cast<Eigen::Index>(m)) + gain * (r - s.bias).squaredNorm();
     // The mode's input differs from the command in its thruster's on-time alone.
     const double du = mode.on_fraction - s.u(mode.column);
-    s.known.noalias() = p.N * delta;  // scratch: known is rebuilt next period
-    delta = s.known + p.Bd.col(mode.column) * du;
+    s.next.noalias() = p.N * delta;
+    delta = s.next + p.Bd.col(mode.column) * du;
   }
   ++s.period;
   if (!settled || s.period - s.last_switch_period < p.dwell_periods) return false;

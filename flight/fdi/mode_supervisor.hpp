@@ -96,7 +96,7 @@ struct SupervisorState {
   Eigen::VectorXd z;                    // the nominal estimator
   Eigen::MatrixXd delta;                // n x modes: each mode's correction (column 0 unused)
   Eigen::VectorXd mu;                   // [(rad/s)^2] per mode
-  Eigen::VectorXd u, known, v;          // scratch: on-times by column, Bd u + Ed tau, [z; y]
+  Eigen::VectorXd u, known, v, next;    // scratch: on-times by column, Bd u + Ed tau, [z; y], N delta
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();  // [rad/s] b
   std::int64_t period = 0;
   std::int64_t last_switch_period = 0;
