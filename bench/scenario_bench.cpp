@@ -19,6 +19,15 @@
 
 namespace {
 
+// The period benchmarks' inputs: xorshift64, a fixed, cheap sequence of numbers in [0, 1).
+struct Uniform {
+  std::uint64_t x = 88172645463325252ULL;
+  double operator()() {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  }
+};
+
 using namespace chaser;
 
 model::Scenario shipped_scenario(const std::string& file) {
@@ -101,11 +110,7 @@ void BM_SupervisorPeriod(benchmark::State& state) {
   constexpr std::size_t kInputs = 1000;
   std::vector<Vec3> rates(kInputs);
   std::vector<model::ThrusterOnTimes> on_times(kInputs, model::ThrusterOnTimes{});
-  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
-  const auto uniform = [&x] {
-    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
-    return static_cast<double>(x >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform;
   for (std::size_t k = 0; k < kInputs; ++k) {
     rates[k] = Vec3(0.03, -0.02, 0.01) + 1e-4 * Vec3(uniform(), uniform(), uniform());
     for (int t = 0; t < scenario.thrusters.count; ++t) on_times[k][static_cast<std::size_t>(t)] = 0.05 * uniform();
@@ -135,11 +140,7 @@ void BM_ObserverBankPeriod(benchmark::State& state) {
   std::vector<Vec3> rates(kInputs);
   std::vector<flight::fdi::WatchedTon> on_times(kInputs, flight::fdi::WatchedTon::Zero());
   std::vector<Vec6> wrenches(kInputs, Vec6::Zero());
-  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
-  const auto uniform = [&x] {
-    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
-    return static_cast<double>(x >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform;
   for (std::size_t k = 0; k < kInputs; ++k) {
     rates[k] = Vec3(0.03, -0.02, 0.01) + 1e-4 * Vec3(uniform(), uniform(), uniform());
     for (int lane = 0; lane < set.count; ++lane) on_times[k][lane] = 0.05 * uniform();
@@ -165,11 +166,7 @@ void BM_RateCheckPeriod(benchmark::State& state) {
   flight::fdi::RateCheckState check;
   constexpr std::size_t kInputs = 1001;  // a multiple of 7, so that the checks' pattern repeats
   std::vector<flight::fdi::RateCheckInput> inputs(kInputs);
-  std::uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed, cheap sequence
-  const auto uniform = [&x] {
-    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
-    return static_cast<double>(x >> 11) * 0x1.0p-53;
-  };
+  Uniform uniform;
   for (std::size_t k = 0; k < kInputs; ++k) {
     flight::fdi::RateCheckInput& in = inputs[k];
     in.t_s = 0.1 * static_cast<double>(k);
