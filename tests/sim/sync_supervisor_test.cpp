@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "io/scenario_loader.hpp"
+#include "io/scenario_sections.hpp"
+#include "model/positive_span.hpp"
+#include "model/thruster_geometry.hpp"
 #include "sim/run.hpp"
 #include "tests/support/scenario_refusal.hpp"
 
@@ -59,6 +63,35 @@ TEST(SyncSupervisor, BadKeysAreRefusedByName) {
   testing::expect_refused("scenarios/comrade_sync.yaml", {"fdi.supervisor.dwell_s=0"}, "fdi.supervisor.dwell_s", "");
   testing::expect_refused("scenarios/comrade_sync.yaml", {"fdi.supervisor.enabled=true", "fdi.supervisor.dwell_s=0.01"},
                           "fdi.supervisor.dwell_s", "must be >= control_period_s");
+}
+
+// Accommodating, a monitored thruster's modes fly the starting set without it: on a set that needs
+// every one of its thrusters to push and turn everywhere (COMRADE's 24 cut down, one thruster at a
+// time, while they still span), the supervisor is refused by name.
+TEST(SyncSupervisor, AThrusterTheSetCannotFlyWithoutIsRefused) {
+  model::Scenario s = supervised();
+  model::ThrusterMask kept = model::initial_active_set(s.thrusters);
+  for (int t = 0; t < s.thrusters.count; ++t) {
+    const model::ThrusterMask without = kept & ~model::thruster_bit(t);
+    if (model::positive_span(model::configuration_columns(s.thrusters, without, s.chaser.com_body_m)).spans) kept = without;
+  }
+  model::ThrusterSetParams minimal = s.thrusters;
+  minimal.count = 0;
+  for (int t = 0; t < s.thrusters.count; ++t)
+    if (kept >> t & 1U) minimal.thrusters[static_cast<std::size_t>(minimal.count++)] = s.thrusters.thrusters[static_cast<std::size_t>(t)];
+  ASSERT_GE(minimal.count, 7);  // six directions need seven thrusters at least
+  s.thrusters = minimal;
+  s.fdi.supervisor.thrusters = model::thruster_bit(0);
+  io::Diagnostics d;
+  io::validate_scenario(s, d);
+  const std::string errors = io::format_errors(d.errors());
+  EXPECT_NE(errors.find("fdi.supervisor.thrusters: T1's modes fly the set that flies at the start without it"),
+            std::string::npos)
+      << errors;
+  s.fdi.supervisor.accommodate = false;  // diagnosing only, it flies nothing without T1
+  io::Diagnostics quiet;
+  io::validate_scenario(s, quiet);
+  EXPECT_EQ(io::format_errors(quiet.errors()).find("fdi.supervisor"), std::string::npos) << io::format_errors(quiet.errors());
 }
 
 }  // namespace
