@@ -1,5 +1,6 @@
 #include "flight/fdi/mode_supervisor.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>

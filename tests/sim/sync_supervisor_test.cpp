@@ -34,7 +34,7 @@ TEST(SyncSupervisor, AFaultFreeSynchronisationStaysNominal) {
 
 // T5 stuck open at 1,500 s: mode 3 ("T5 stuck open": T1's two modes come first) within 3 s (the
 // monitoring signal's 2 s memory; seed 1: 2.3 s), one switch; 200 s on, the chaser holds within
-// COMRADE Table 1's 0.2 m of its reference, its thrust cancelled. The mode's allocation meets every
+// COMRADE Table 1's 0.1 m of the capture point (seed 1: 0.043 m), its thrust cancelled. The mode's allocation meets every
 // demand exactly, unsaturated (the virtual actuator's state stays zero: the loop the controller
 // sees is the nominal's).
 TEST(SyncSupervisor, AStuckOpenThrusterIsFlownAround) {
@@ -48,7 +48,7 @@ TEST(SyncSupervisor, AStuckOpenThrusterIsFlownAround) {
   EXPECT_EQ(run.supervisor.fault, flight::fdi::SupervisorFault::kStuckOpen);
   EXPECT_GT(run.supervisor.log[0].t_s, 1500.0);
   EXPECT_LT(run.supervisor.log[0].t_s, 1503.0);
-  EXPECT_LT(run.figures.final_position_error_m, 0.2);
+  EXPECT_LT(run.figures.final_position_error_m, 0.1);
   EXPECT_EQ(run.infeasible_allocations, 0);
   EXPECT_EQ(run.saturated_periods, 0);
 }
