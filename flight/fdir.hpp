@@ -118,6 +118,7 @@ struct FdirState {
   bool lidar_gap = false;           // the LIDAR has lost the target in this watch: the deficit bank has stopped
   double armed_s = 0;               // [s] when the current watch started
   double rearm_s = -1;              // [s]
+  double stood_down_s = -1;         // [s] when the diagnosis stood down for good (the capture), -1: not
   std::int64_t bank_first_period = 0;  // control period of the deficit bank's sample 0
   fdi::FdiSchemeState position;
   fdi::FdiSchemeState attitude;

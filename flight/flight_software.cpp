@@ -159,6 +159,14 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   ThrusterManagementOutput managed =
       manage_thrusters(params.management, state.management, out.released_wrench, out.command.ton, pulse);
 
+  // Captured, the chaser no longer flies free: the arm holds it to the target (the rigidisation),
+  // then the thrusters turn chaser and target as one body (the stabilisation). Every diagnosis
+  // model here is the free chaser's (its inertia, its thrusters' torques about its own CoM), so the
+  // diagnosis stands down at the capture: FDIR, supervisor and active checks stop, keeping what they
+  // concluded before, and a recovery already made stays in force.
+  const bool diagnosing = !(reaching && state.reach.rigidise.started());
+  if (!diagnosing && state.fdir.stood_down_s < 0) state.fdir.stood_down_s = t_s;
+
   // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
   fdi::WatchedTon watched_ton = watched_on_times(params.fdir, state.fdir, out.command.ton);
   add_uncommanded_on_time(params.fdir, state.fdir, state.management.uncommanded_thruster,
@@ -171,7 +179,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .ton = watched_ton,
                           .commanded_wrench = managed.commanded_wrench,
                           .checked_thruster = managed.pulsed};
-  step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
+  if (diagnosing) step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
     const model::ThrusterMask watched_before = state.thrusters.active;
     if (const auto next = model::recover(params.management.thrusters, params.recovery, state.thrusters,
@@ -192,11 +200,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
       out.recovered_now = true;
     }
   }
-  // The supervisor reads what was commanded this period; the mode it switches to flies from the next.
+  // The supervisor reads what was commanded this period; the mode it switches to flies from the next
+  // (and, stood down, stays flown).
   if (params.supervisor) {
     if (state.supervisor.z.size() == 0)  // the first period
       state.supervisor = fdi::make_supervisor_state(*params.supervisor);
-    if (fdi::step_supervisor(*params.supervisor, state.supervisor, t_s, meas.omega_body_radps, out.command.ton) &&
+    if (diagnosing &&
+        fdi::step_supervisor(*params.supervisor, state.supervisor, t_s, meas.omega_body_radps, out.command.ton) &&
         params.supervisor_accommodates)
       fly_supervisor_mode(*params.supervisor, state.supervisor.mode, params.management, state.management,
                           state.thrusters);
@@ -207,10 +217,12 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                     {.t_s = t_s,
                      .range_m = out.estimate.r_lvlh_m.norm(),
                      .active = state.thrusters.active,
-                     .suspect = params.active_check.enabled
+                     .suspect = params.active_check.enabled && !reaching
                                     ? thruster_to_check_again(params.fdir, state.fdir, params.active_check.recheck_gain)
                                     : model::kNoThruster,
-                     .fdi_listening = fdi_listening(state.fdir)},
+                     // No check once the arm wakes: its reaction on the hub is in the rates a check's
+                     // pulse is read from, and the pulse would shake the gripper.
+                     .fdi_listening = !reaching && fdi_listening(state.fdir)},
                     out.command.ton);
 
   out.command.latch_closed_groups = state.thrusters.closed_groups;

@@ -51,6 +51,7 @@ struct FdirResult {
   // Every diagnosis in order (the FDI watches again after a recovery): the fields above are the
   // first's; empty entries' `episodes` are empty.
   std::vector<FdirResult> episodes;
+  double stood_down_s = -1;      // [s] the diagnosis stood down at the capture (flight/flight_software.cpp); -1: not
 };
 
 // The multi-estimator supervisor's switching over the run (fdi.supervisor; flight/fdi/mode_supervisor.hpp).

@@ -74,6 +74,7 @@ FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState&
   if (f.armed) episodes.push_back(episode_result(p, flight::current_episode(p.fdir, f)));
   FdirResult r = episodes.empty() ? episode_result(p, flight::current_episode(p.fdir, f)) : episodes.front();
   r.episodes = std::move(episodes);
+  r.stood_down_s = f.stood_down_s;
   return r;
 }
 

@@ -129,6 +129,7 @@ nlohmann::json fdir_json(const model::Scenario& scenario, const FdirResult& f) {
       {"recovered_thruster",
        thruster_json(f.recovered_thruster)},
       {"diagnoses", diagnoses_json(f)},
+      {"stood_down_s", f.stood_down_s < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.stood_down_s)},
   };
   const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();
   for (std::size_t i = 0; i < schemes.size(); ++i) out[schemes[i].name + "_scheme"] = scheme_json(f.schemes[i], onset);
@@ -560,6 +561,11 @@ std::string summary_text(const model::Scenario& scenario, const RunResult& r) {
                  : fmt::format("  recovery: {}'s group latch closed at {:.1f} s, flying on the standby group\n",
                                model::thruster_name(e.recovered_thruster), e.recovery_s);
   }
+  const bool diagnosis_on = std::any_of(r.fdir.schemes.begin(), r.fdir.schemes.end(),
+                                        [](const SchemeResult& s) { return s.enabled; }) || r.supervisor.enabled;
+  if (diagnosis_on && r.fdir.stood_down_s >= 0)
+    out += fmt::format("  diagnosis: stood down at {:.1f} s, at the capture (its models are the free chaser's)\n",
+                       r.fdir.stood_down_s);
   out += reach_text(scenario, r);
   if (scenario.guidance.synchronised) out += verdicts_text(phase_verdicts(scenario, run_phases(scenario), r));
   out += fmt::format("  propellant used: {:.3f} kg\n", r.propellant_used_kg);
