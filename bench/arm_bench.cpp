@@ -13,6 +13,7 @@
 #include "flight/arm/coriolis_force.hpp"
 #include "flight/arm/floating_base_mass_matrix.hpp"
 #include "flight/arm/servicer_arm.hpp"
+#include "flight/arm/servicer_momentum.hpp"
 #include "model/arm.hpp"
 #include "plant/multibody/mjcf.hpp"
 #include "plant/multibody/mujoco_model.hpp"
@@ -59,6 +60,21 @@ void BM_ServicerModel(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ServicerModel);
+
+// The servicer's momentum about its CoM (kinematics, H(q), one product): what the diagnosis adds to
+// a control period of the reach for the arm's reaction in its torque rows (flight/arm_reaction.hpp),
+// once per 0.1 s period against the joint loop's 100 evaluations of the law.
+void BM_ServicerMomentum(benchmark::State& state) {
+  const flight::arm::ServicerArmParams params = flight::arm::servicer_arm_of(bench_scene());
+  flight::arm::JointVector q, q_dot;
+  for (int j = 0; j < model::kArmJoints; ++j) {
+    q[j] = 0.3 * std::sin(j + 1.0);
+    q_dot[j] = 0.01 * std::cos(j + 1.0);
+  }
+  const Vec3 omega(0.001, -0.002, 0.003);
+  for (auto _ : state) benchmark::DoNotOptimize(flight::arm::servicer_momentum(params, q, q_dot, omega));
+}
+BENCHMARK(BM_ServicerMomentum);
 
 // One evaluation of the combined compliance law (the flight software's model, the extended task,
 // two LU solves of 13 x 13): what the joint loop adds to each 1 ms step.

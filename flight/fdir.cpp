@@ -150,6 +150,8 @@ void step_deficit_bank(const FdiWatchedParams& w, FdirState& state, const model:
   else
     sample.ton.head(w.set.count) = in.ton.head(w.set.count);
   sample.mass_kg = w.deficit.mass_kg - meas.propellant_used_kg;
+  sample.arm_momentum_Nms = in.arm_momentum_Nms;
+  sample.com_shift_m = in.com_shift_m;
   fdi::push_deficit_sample(w.deficit, state.deficit_bank);
 }
 

@@ -166,6 +166,9 @@ struct FdirInput {
   fdi::WatchedTon ton = fdi::WatchedTon::Zero();  // commanded on-times of the watched lanes
   Vec6 commanded_wrench = Vec6::Zero();    // [N; N m] body axes: M ton, as the TMF computed it
   int checked_thruster = model::kNoThruster;  // index: the thruster an active check pulses this period
+  // The awake arm's share of the torque rows (flight/arm_reaction.hpp), body axes; zero without it.
+  Vec3 arm_momentum_Nms = Vec3::Zero();  // [N m s]
+  Vec3 com_shift_m = Vec3::Zero();       // [m]
 };
 
 // Writes the period's output into `out`, value-initialised by the caller (FlightOutput's): its

@@ -167,6 +167,11 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   const bool diagnosing = !(reaching && state.reach.rigidise.started());
   if (!diagnosing && state.fdir.stood_down_s < 0) state.fdir.stood_down_s = t_s;
 
+  // The awake arm's momentum and moving mass, in the deficit bank's torque rows (flight/arm_reaction.hpp).
+  const ArmReaction arm = reaching && meas.arm && diagnosing && params.fdir.deficit_isolation
+                              ? arm_reaction(params.reach->servicer, state.arm_reaction, *meas.arm, meas.omega_body_radps)
+                              : ArmReaction{};
+
   // FDIR watches the active set's command; a confirmed fault may change the set from this period on.
   fdi::WatchedTon watched_ton = watched_on_times(params.fdir, state.fdir, out.command.ton);
   add_uncommanded_on_time(params.fdir, state.fdir, state.management.uncommanded_thruster,
@@ -178,7 +183,9 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
                           .q_inertial_from_lvlh = lvlh.q_inertial_from_lvlh,
                           .ton = watched_ton,
                           .commanded_wrench = managed.commanded_wrench,
-                          .checked_thruster = managed.pulsed};
+                          .checked_thruster = managed.pulsed,
+                          .arm_momentum_Nms = arm.momentum_Nms,
+                          .com_shift_m = arm.com_shift_m};
   if (diagnosing) step_fdir(params.fdir, state.fdir, meas, fdir_in, out.fdir);
   if (out.fdir.confirmed_now != model::kNoThruster) {
     const model::ThrusterMask watched_before = state.thrusters.active;

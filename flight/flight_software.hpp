@@ -7,6 +7,7 @@
 
 #include "core/time.hpp"
 #include "flight/active_check.hpp"
+#include "flight/arm_reaction.hpp"
 #include "flight/attitude_control.hpp"
 #include "flight/fdir.hpp"
 #include "flight/guidance.hpp"
@@ -75,6 +76,7 @@ struct FlightState {
   ThrusterManagementState management;        // the active set's allocation problem
   ActiveCheckState active_check;              // when each active thruster last proved itself
   ReachState reach;                           // the reach's joint loop (with FlightParams::reach)
+  ArmReactionState arm_reaction;              // the awake arm's share of the diagnosis's torque rows
   fdi::SupervisorState supervisor;            // with FlightParams::supervisor (sized in the first period)
   bool initialised = false;
   // Last: its sample and block rings (kMaxWatchedThrusters lanes, ~0.3 MB) would otherwise sit

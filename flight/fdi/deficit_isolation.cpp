@@ -152,6 +152,17 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
     for (int i = 0; i < lanes; ++i)  // M_C T_on over the commanded thrusters: most periods none
       if (now.ton(i) > 0.0) row -= now.ton(i) * p.torque_body_Nm.col(i);
   });
+  // The awake arm (flight/arm_reaction.hpp): dh/dt + w x h + d x F. Zero before the wake, and
+  // skipped then, so that the rows stay bit for bit what they were.
+  if (!now.arm_momentum_Nms.isZero() || !next.arm_momentum_Nms.isZero() || !now.com_shift_m.isZero()) {
+    Vec3 force_N = Vec3::Zero();
+    with_lanes(p.lanes, [&](auto lanes) {
+      for (int i = 0; i < lanes; ++i)
+        if (now.ton(i) > 0.0) force_N += now.ton(i) * p.force_body_N.col(i);
+    });
+    row += (next.arm_momentum_Nms - now.arm_momentum_Nms) * (1.0 / p.period_s) +
+           now.omega_body_radps.cross(now.arm_momentum_Nms) + now.com_shift_m.cross(force_N);
+  }
   return row;
 }
 

@@ -112,6 +112,10 @@ struct DeficitSample {
   Vec3 r_lvlh_m = Vec3::Zero();          // LIDAR
   Quat q_lvlh_from_body = Quat::Identity();  // estimated attitude
   double mass_kg = 1.0;                  // [kg] nominal mass less the measured propellant used
+  // What the awake arm adds to the torque rows (flight/arm_reaction.hpp), zero without one: the
+  // momentum it exchanged with the hub and its centre of mass's shift, body axes.
+  Vec3 arm_momentum_Nms = Vec3::Zero();  // [N m s]
+  Vec3 com_shift_m = Vec3::Zero();       // [m]
   // Last, so that a small set's lanes share cache lines with the fields above (MSR: a sample
   // written each period touches three lines, as when the ring held eight lanes).
   WatchedTon ton = WatchedTon::Zero(); // commanded on-times of the watched lanes, applied over this period

@@ -797,5 +797,37 @@ TEST(DeficitIsolation, ValidateNamesEachField) {
   EXPECT_TRUE(validate(edge).empty());
 }
 
+// The awake arm's terms (flight/arm_reaction.hpp) in the torque row, against Euler's equation of
+// the whole servicer written out by hand. The hub (inertia I, turning at w) and the arm exchange
+// momentum h; a thruster fires with force F and torque tau about the nominal centre of mass, which
+// the moving arm has shifted by d. Over one period the servicer's momentum about its shifted centre,
+// I w + h, changes by the thruster's torque about it, tau - d x F, less the gyroscopic w x (I w + h):
+//   I (w' - w) / T + (h' - h) / T = tau - d x F - w x (I w + h),
+// so the hub's rate w' follows, and the row of a healthy thruster is zero (round-off: the rates
+// are ~1e-2 rad/s, the torques ~1e2 N m). Without the arm's terms the same samples leave the
+// arm's reaction in the row.
+TEST(DeficitIsolation, TheArmsMomentumAndShiftedCentreLeaveAHealthyThrustersRowAtZero) {
+  const DeficitIsolationParams p = msr_params();
+  const double T = p.period_s;
+  DeficitSample now, next;
+  now.omega_body_radps = Vec3(0.01, -0.02, 0.015);
+  now.ton(0) = 0.7;
+  now.arm_momentum_Nms = Vec3(3.0, 5.0, 1.5);
+  now.com_shift_m = Vec3(0.025, -0.036, 0.029);
+  next.arm_momentum_Nms = Vec3(2.9, 5.6, 2.0);
+  next.com_shift_m = now.com_shift_m;
+  const Vec3 force_N = now.ton(0) * p.force_body_N.col(0);
+  const Vec3 torque_Nm = now.ton(0) * p.torque_body_Nm.col(0);
+  const Mat3& I = p.inertia_kgm2;
+  const Vec3 w = now.omega_body_radps;
+  const Vec3 external_Nm = torque_Nm - now.com_shift_m.cross(force_N) - w.cross(I * w + now.arm_momentum_Nms);
+  next.omega_body_radps = w + I.inverse() * (T * external_Nm - (next.arm_momentum_Nms - now.arm_momentum_Nms));
+  EXPECT_LT(deficit_torque_row(p, now, next).norm(), 1e-9);
+
+  DeficitSample now_blind = now, next_blind = next;
+  now_blind.arm_momentum_Nms = next_blind.arm_momentum_Nms = now_blind.com_shift_m = Vec3::Zero();
+  EXPECT_GT(deficit_torque_row(p, now_blind, next_blind).norm(), 1.0);  // the arm's ~6 N m reaction
+}
+
 }  // namespace
 }  // namespace chaser::flight::fdi
