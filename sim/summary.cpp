@@ -154,10 +154,13 @@ std::string scheme_text(const std::string& name, const SchemeResult& r, double o
   if (r.alarm_s < 0) return fmt::format("  {} scheme: no alarm\n", name);
   std::string out = has_fault ? fmt::format("  {} scheme: alarm {:.1f} s after onset", name, r.alarm_s - onset_s)
                               : fmt::format("  {} scheme: FALSE ALARM at {:.1f} s", name, r.alarm_s);
-  if (r.isolated_thruster != model::kNoThruster)
+  // Without a fault there is no onset: the isolation's own time, as the false alarm's.
+  if (r.isolated_thruster != model::kNoThruster && !has_fault)
+    out += fmt::format(", {} isolated at {:.1f} s", model::thruster_name(r.isolated_thruster), r.isolated_s);
+  else if (r.isolated_thruster != model::kNoThruster)
     out += fmt::format(", {} isolated {:.1f} s after onset{}", model::thruster_name(r.isolated_thruster),
                        r.isolated_s - onset_s,
-                       has_fault && r.isolated_thruster != faulty_thruster
+                       r.isolated_thruster != faulty_thruster
                            ? fmt::format(" (WRONG: the fault is on {})", model::thruster_name(faulty_thruster))
                            : "");
   if (r.diagnosed_kind)

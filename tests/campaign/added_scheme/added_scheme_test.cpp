@@ -81,7 +81,7 @@ TEST(AddedScheme, AppearsInTelemetryTheResultAndSummaryJson) {
   EXPECT_EQ(j["fdir"]["ramp_scheme"]["isolated_thruster"], "T1");
   EXPECT_NEAR(j["fdir"]["ramp_scheme"]["alarm_s"].get<double>(), 5.0, 1e-9);
   EXPECT_TRUE(j["fdir"]["diagnoses"][0].contains("ramp_scheme"));
-  EXPECT_NE(sim::summary_text(s, r).find("ramp scheme: FALSE ALARM at 5.0 s, T1 isolated"), std::string::npos)
+  EXPECT_NE(sim::summary_text(s, r).find("ramp scheme: FALSE ALARM at 5.0 s, T1 isolated at 7.0 s"), std::string::npos)
       << sim::summary_text(s, r);
 }
 
