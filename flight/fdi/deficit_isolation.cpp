@@ -143,6 +143,16 @@ double torque_chi2_per_row(const DeficitIsolationParams& p, const Window& w, int
   return std::max(rss, 0.0) / (3.0 * (w.n - 1));
 }
 
+// The commanded force over the period, body axes: F = sum of ton_i F_i over the commanded lanes.
+Vec3 commanded_force_body_N(const DeficitIsolationParams& p, const DeficitSample& now) {
+  Vec3 force_N = Vec3::Zero();
+  with_lanes(p.lanes, [&](auto lanes) {
+    for (int i = 0; i < lanes; ++i)
+      if (now.ton(i) > 0.0) force_N += now.ton(i) * p.force_body_N.col(i);
+  });
+  return force_N;
+}
+
 }  // namespace
 
 Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& now, const DeficitSample& next) {
@@ -154,15 +164,9 @@ Vec3 deficit_torque_row(const DeficitIsolationParams& p, const DeficitSample& no
   });
   // The awake arm (flight/arm_reaction.hpp): dh/dt + w x h + d x F. Zero before the wake, and
   // skipped then, so that the rows stay bit for bit what they were.
-  if (!now.arm_momentum_Nms.isZero() || !next.arm_momentum_Nms.isZero() || !now.com_shift_m.isZero()) {
-    Vec3 force_N = Vec3::Zero();
-    with_lanes(p.lanes, [&](auto lanes) {
-      for (int i = 0; i < lanes; ++i)
-        if (now.ton(i) > 0.0) force_N += now.ton(i) * p.force_body_N.col(i);
-    });
+  if (!now.arm_momentum_Nms.isZero() || !next.arm_momentum_Nms.isZero() || !now.com_shift_m.isZero())
     row += (next.arm_momentum_Nms - now.arm_momentum_Nms) * (1.0 / p.period_s) +
-           now.omega_body_radps.cross(now.arm_momentum_Nms) + now.com_shift_m.cross(force_N);
-  }
+           now.omega_body_radps.cross(now.arm_momentum_Nms) + now.com_shift_m.cross(commanded_force_body_N(p, now));
   return row;
 }
 
@@ -215,14 +219,8 @@ Vec3 deficit_model_sigma(const DeficitIsolationParams& p, const DeficitSample& n
     const Vec3 w = now.omega_body_radps.cwiseAbs();
     variance += (p.inertia_uncertainty * abs_cross(w, p.inertia_kgm2.cwiseAbs() * w)).cwiseAbs2();
   }
-  if (p.com_uncertainty_m > 0.0) {
-    Vec3 force_body_N = Vec3::Zero();
-    with_lanes(p.lanes, [&](auto lanes) {
-      for (int i = 0; i < lanes; ++i)
-        if (now.ton(i) > 0.0) force_body_N += now.ton(i) * p.force_body_N.col(i);
-    });
-    variance += (p.com_uncertainty_m * abs_cross(Vec3::Ones(), force_body_N.cwiseAbs())).cwiseAbs2();
-  }
+  if (p.com_uncertainty_m > 0.0)
+    variance += (p.com_uncertainty_m * abs_cross(Vec3::Ones(), commanded_force_body_N(p, now).cwiseAbs())).cwiseAbs2();
   return variance.cwiseSqrt();
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "flight/arm/servicer_momentum.hpp"
+#include "flight/stabilise.hpp"
 #include "plant/multibody/mjcf.hpp"
 #include "plant/multibody/mujoco_model.hpp"
 #include "tests/flight/arm/arm_test_support.hpp"
@@ -58,6 +59,23 @@ TEST(ServicerMomentum, WithTheJointsStillTheMomentumIsTheLockedInertiaTimesTheRa
     EXPECT_LT((m.angular_momentum_Nms - m.locked_inertia_kgm2 * omega).norm(), 1e-12 * m.angular_momentum_Nms.norm());
     EXPECT_EQ((m.locked_inertia_kgm2 - m.locked_inertia_kgm2.transpose()).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Mat3>(m.locked_inertia_kgm2).eigenvalues().minCoeff(), 0.0);
+  }
+}
+
+// The locked inertia and the CoM by a second method: the stabilisation's composite inertia
+// (flight/stabilise.hpp), which sums hub and links by the parallel-axis theorem, with a massless
+// target. Ours moves the mass matrix's hub block from the hub's origin instead. Tolerance: round-off
+// on inertias of ~2e3 kg m^2.
+TEST(ServicerMomentum, LockedInertiaAndCentreAreTheParallelAxisSumsOfHubAndLinks) {
+  const model::MultibodySceneParams scene = testing::default_scene();
+  const ServicerArmParams params = servicer_arm_of(scene);
+  RandomStream random(20181202, "flight/arm/servicer_momentum/parallel_axis");
+  for (int n = 0; n < 10; ++n) {
+    const testing::Configuration c = testing::random_configuration(random, scene.arm);
+    const ServicerMomentum m = servicer_momentum(params, c.joint_angles_rad, JointVector::Zero(), Vec3::Zero());
+    const CompositeInertia summed = composite_inertia(params, c.joint_angles_rad, GraspedTarget{});
+    EXPECT_LT((m.locked_inertia_kgm2 - summed.inertia_kgm2).norm(), 1e-12 * summed.inertia_kgm2.norm()) << n;
+    EXPECT_LT((m.com_hub_m - summed.com_hub_m).norm(), 1e-12) << n;
   }
 }
 
