@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace campaign_mpi_test {
 
 namespace fs = std::filesystem;
 
@@ -157,4 +157,4 @@ TEST_F(CampaignMpi, BadInputEndsEveryRankWithExit2) {
   EXPECT_NE(again.output.find("already holds a campaign"), std::string::npos) << again.output;
 }
 
-}  // namespace
+}  // namespace campaign_mpi_test

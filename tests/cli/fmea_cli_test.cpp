@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace fmea_cli_test {
 
 namespace fs = std::filesystem;
 
@@ -263,4 +263,4 @@ TEST(FmeaCli, PaperReadingPrintsThePaperBesideUsAndItsCalibrationIsRepeatable) {
   EXPECT_NE(bad.output.find("pulses.reading: must be smooth or paper (got 'chatter')"), std::string::npos) << bad.output;
 }
 
-}  // namespace
+}  // namespace fmea_cli_test

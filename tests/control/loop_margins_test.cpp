@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 namespace chaser::control {
-namespace {
+namespace loop_margins_test {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = 180.0 / kPi;
@@ -134,5 +134,5 @@ TEST(LoopMargins, RefusesBadInput) {
   EXPECT_THROW(loop_margins({integrator(), one, 0.0}, 0.0, 1e3), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace loop_margins_test
 }  // namespace chaser::control

@@ -5,7 +5,7 @@
 #include "core/constants.hpp"
 
 namespace chaser {
-namespace {
+namespace linear_models_test {
 
 constexpr double kN = 8.53e-4;  // [rad/s]
 
@@ -48,5 +48,5 @@ TEST(LinearModels, AttitudeIsDoubleIntegratorThroughInertia) {
   EXPECT_LT((d.Bd - bd).norm(), 1e-18);
 }
 
-}  // namespace
+}  // namespace linear_models_test
 }  // namespace chaser

@@ -8,7 +8,7 @@
 #include "core/rotation.hpp"
 
 namespace chaser::flight {
-namespace {
+namespace attitude_filter_test {
 
 constexpr double kT = 0.1;  // [s]
 
@@ -110,5 +110,5 @@ TEST(AttitudeFilter, NoisySensorsStayAtFilteredNoiseLevel) {
   EXPECT_LT((est.gyro_bias_radps - bias).norm(), 3e-7);
 }
 
-}  // namespace
+}  // namespace attitude_filter_test
 }  // namespace chaser::flight

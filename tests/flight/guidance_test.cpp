@@ -8,7 +8,7 @@
 #include "core/rotation.hpp"
 
 namespace chaser::flight {
-namespace {
+namespace guidance_test {
 
 const model::TargetOrbit kOrbit{model::OrbitParams{}};  // the MSR scenario's: Mars, 500 km
 const double kN = kOrbit.mean_motion_radps();           // [rad/s]
@@ -117,5 +117,5 @@ TEST(Guidance, AttitudeTurnsWithLvlhAtOrbitRate) {
   }
 }
 
-}  // namespace
+}  // namespace guidance_test
 }  // namespace chaser::flight

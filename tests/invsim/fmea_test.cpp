@@ -12,7 +12,7 @@
 #include "model/invsim_study.hpp"
 
 namespace chaser::invsim {
-namespace {
+namespace fmea_test {
 
 model::InvSimParams scenario() {
   const io::InvSimLoadResult loaded = io::load_invsim_file("scenarios/manual_rvd.yaml");
@@ -233,5 +233,5 @@ TEST(Fmea, PaperFindingsHoldOnTheShippedScenario) {
   EXPECT_LT(propellant[2], propellant[1]);
 }
 
-}  // namespace
+}  // namespace fmea_test
 }  // namespace chaser::invsim

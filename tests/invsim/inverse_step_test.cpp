@@ -6,7 +6,7 @@
 #include "invsim/cw_transition.hpp"
 
 namespace chaser::invsim {
-namespace {
+namespace inverse_step_test {
 
 constexpr double kN = 1.1313e-3;  // [rad/s]
 
@@ -56,5 +56,5 @@ TEST(InverseStep, RecoversTheInputOfAReachableState) {
   EXPECT_LT((inverse_step(m, x, xc) - u_true).norm(), 1e-12);
 }
 
-}  // namespace
+}  // namespace inverse_step_test
 }  // namespace chaser::invsim

@@ -8,7 +8,7 @@
 #include "io/scenario_loader.hpp"
 
 namespace chaser::io {
-namespace {
+namespace capture_section_test {
 
 constexpr const char* kCapture = "scenarios/comrade_capture.yaml";
 
@@ -207,5 +207,5 @@ TEST(CaptureSection, TheArmCameraNeedsAnArm) {
   EXPECT_TRUE(has_error(r, "sensors.arm_camera", "needs chaser.arm")) << format_errors(r.errors);
 }
 
-}  // namespace
+}  // namespace capture_section_test
 }  // namespace chaser::io

@@ -9,7 +9,7 @@
 #include "scenario_test_util.hpp"
 
 namespace chaser::io {
-namespace {
+namespace comrade_scenario_test {
 
 using testing::has_error;
 constexpr const char* kEnvisat = "scenarios/comrade_envisat.yaml";
@@ -188,5 +188,5 @@ TEST(ComradeScenario, EnvisatHasAnHinfDesign) {
   EXPECT_FALSE(testing::load_msr().scenario->control.hinf.has_value());
 }
 
-}  // namespace
+}  // namespace comrade_scenario_test
 }  // namespace chaser::io

@@ -16,7 +16,7 @@
 #include "scenario_test_util.hpp"
 
 namespace chaser::io {
-namespace {
+namespace document_limits_test {
 
 using testing::has_error;
 using testing::load_msr;
@@ -205,5 +205,5 @@ TEST(DocumentLimits, ShippedScenariosAreFarInside) {
   EXPECT_TRUE(d.errors().empty());
 }
 
-}  // namespace
+}  // namespace document_limits_test
 }  // namespace chaser::io

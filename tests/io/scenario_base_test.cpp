@@ -10,7 +10,7 @@
 #include "scenario_test_util.hpp"
 
 namespace chaser::io {
-namespace {
+namespace scenario_base_test {
 
 using testing::has_error;
 
@@ -100,5 +100,5 @@ TEST(ScenarioBase, EveryProblemNamesTheKeyBase) {
   EXPECT_TRUE(has_error(bad_key, "duration_s", "must be"));
 }
 
-}  // namespace
+}  // namespace scenario_base_test
 }  // namespace chaser::io

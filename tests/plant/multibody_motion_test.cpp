@@ -13,7 +13,7 @@
 #include "tests/plant/earth_orbit_scenario.hpp"
 
 namespace chaser::plant {
-namespace {
+namespace multibody_motion_test {
 
 // The hand-over tests' tumbling target (testing::tumbling_target_scenario) with the arm stowed; the
 // chaser's mass properties are then the hub's and the stowed arm's composite.
@@ -194,5 +194,5 @@ TEST(MultibodyMotion, WithoutEnvironmentAndThrustTheSceneKeepsItsMomentum) {
   EXPECT_LT((p1.angular_kgm2ps - p0.angular_kgm2ps).norm(), 1e-9 * (1.0 + p0.angular_kgm2ps.norm()));
 }
 
-}  // namespace
+}  // namespace multibody_motion_test
 }  // namespace chaser::plant

@@ -11,7 +11,7 @@
 #include "plant/orbit_plant.hpp"
 
 namespace chaser::plant {
-namespace {
+namespace orbit_propagator_test {
 
 constexpr double kMu = 3.986004418e14;  // [m^3/s^2]
 
@@ -515,5 +515,5 @@ TEST(OrbitPropagator, ThirdOrderShortPiecesAgreeWithRk4) {
   EXPECT_LT(target_m, 1e-8);
 }
 
-}  // namespace
+}  // namespace orbit_propagator_test
 }  // namespace chaser::plant

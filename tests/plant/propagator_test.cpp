@@ -8,7 +8,7 @@
 #include "core/rotation.hpp"
 
 namespace chaser::plant {
-namespace {
+namespace propagator_test {
 
 const Mat3 kInertia = Vec3(2000.0, 2500.0, 3000.0).asDiagonal();  // [kg m^2]
 
@@ -181,5 +181,5 @@ TEST(Propagator, FourthOrderAndDefaultSubstepAccuracy) {
   EXPECT_LT((coarse.r_lvlh_m - ref.r_lvlh_m).norm(), 2e-8);
 }
 
-}  // namespace
+}  // namespace propagator_test
 }  // namespace chaser::plant

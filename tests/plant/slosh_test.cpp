@@ -15,7 +15,7 @@
 #include "tests/plant/slosh_system.hpp"
 
 namespace chaser::model {
-namespace {
+namespace slosh_test {
 
 using slosh_harness::FullState;
 using slosh_harness::System;
@@ -344,5 +344,5 @@ TEST(Slosh, AxialForceSolutionMatchesTheSixBySixForm) {
   }
 }
 
-}  // namespace
+}  // namespace slosh_test
 }  // namespace chaser::model

@@ -9,7 +9,7 @@
 #include "plant/thruster_hardware.hpp"
 
 namespace chaser::plant {
-namespace {
+namespace thruster_faults_test {
 
 constexpr TimeNs kPeriodNs = 100'000'000;  // 0.1 s
 constexpr double kT = 0.1;                 // [s]
@@ -179,5 +179,5 @@ TEST(ThrusterFaults, StuckOpenContinuousAndBlockedCutsOpenPulse) {
   EXPECT_EQ(p.pieces[0].force_body_N, Vec3::Zero());
 }
 
-}  // namespace
+}  // namespace thruster_faults_test
 }  // namespace chaser::plant

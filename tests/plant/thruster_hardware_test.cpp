@@ -9,7 +9,7 @@
 #include "model/thruster_geometry.hpp"
 
 namespace chaser::plant {
-namespace {
+namespace thruster_hardware_test {
 
 constexpr TimeNs kPeriodNs = 100'000'000;  // 0.1 s, the MSR control period
 constexpr TimeNs kMs = 1'000'000;
@@ -292,5 +292,5 @@ TEST(ThrusterDispersion, SampleStatisticsMatchSigmaAndTruncation) {
   EXPECT_LE(max_angle, 3 * std::sqrt(2.0) * set.misalignment_sigma_rad * (1 + 1e-6));
 }
 
-}  // namespace
+}  // namespace thruster_hardware_test
 }  // namespace chaser::plant

@@ -17,7 +17,7 @@
 #include "tests/support/scenario_refusal.hpp"
 
 namespace chaser::sim {
-namespace {
+namespace sync_observer_bank_test {
 
 model::Scenario sync_with_bank() {
   return testing::load_with("scenarios/comrade_sync.yaml", {"fdi.observer_bank.enabled=true", "fdi.deficit.detection=false",
@@ -93,5 +93,5 @@ TEST(SyncObserverBank, BadKeysAreRefusedByName) {
       << io::format_errors(d.errors());
 }
 
-}  // namespace
+}  // namespace sync_observer_bank_test
 }  // namespace chaser::sim

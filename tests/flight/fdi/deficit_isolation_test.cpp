@@ -25,7 +25,7 @@
 // against a dense weighted least-squares solve, exact recovery on noise-free data, partners, the
 // false-alarm level and the decision schedule.
 namespace chaser::flight::fdi {
-namespace {
+namespace deficit_isolation_test {
 
 using model::FaultKind;
 constexpr int kN = 8;  // lanes: MSR branch A
@@ -830,5 +830,5 @@ TEST(DeficitIsolation, TheArmsMomentumAndShiftedCentreLeaveAHealthyThrustersRowA
   EXPECT_GT(deficit_torque_row(p, now_blind, next_blind).norm(), 0.5 * (next.arm_momentum_Nms - now.arm_momentum_Nms).norm() / T);
 }
 
-}  // namespace
+}  // namespace deficit_isolation_test
 }  // namespace chaser::flight::fdi

@@ -17,7 +17,7 @@
 // still detects a blocked thruster. The inertia and centre-of-mass terms are checked as the bounds
 // the header states; their effect was measured in comrade_sync's campaigns (docs/fdi.md).
 namespace chaser::flight::fdi {
-namespace {
+namespace deficit_model_error_test {
 
 constexpr double kDelayMaxS = 0.02;  // [s] COMRADE's and MSR's drive delay, drawn in [0, max) each period
 
@@ -160,5 +160,5 @@ TEST(DeficitModelError, ModelSigmaTermsAreTheStatedBounds) {
   EXPECT_GT(expected.minCoeff(), 0.0);  // every axis of the check is exercised
 }
 
-}  // namespace
+}  // namespace deficit_model_error_test
 }  // namespace chaser::flight::fdi

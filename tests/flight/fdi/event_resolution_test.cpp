@@ -8,7 +8,7 @@
 #include "core/random.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace event_resolution_test {
 
 constexpr double kT = 0.1;        // [s]
 constexpr int kFaulty = 3;
@@ -132,5 +132,5 @@ TEST(EventResolution, ValidateNamesTheProblems) {
   EXPECT_EQ(validate(p).size(), 2u);
 }
 
-}  // namespace
+}  // namespace event_resolution_test
 }  // namespace chaser::flight::fdi

@@ -15,7 +15,7 @@
 #include "tests/support/deficit_24.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace impulse_detector_test {
 
 constexpr double kT = 0.1;  // [s]
 
@@ -163,5 +163,5 @@ TEST(ImpulseDetector, ValidateNamesTheField) {
   EXPECT_NE(validate(p)[0].find("threshold_Nms"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace impulse_detector_test
 }  // namespace chaser::flight::fdi

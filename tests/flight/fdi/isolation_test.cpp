@@ -11,7 +11,7 @@
 #include "msr_test_setup.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace isolation_test {
 
 constexpr int kN = kSchemeThrusters;
 
@@ -268,5 +268,5 @@ TEST(Isolation, ValidateNamesTheProblems) {
   EXPECT_EQ(validate(p).size(), 3u);
 }
 
-}  // namespace
+}  // namespace isolation_test
 }  // namespace chaser::flight::fdi

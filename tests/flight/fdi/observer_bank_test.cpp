@@ -16,7 +16,7 @@
 #include "tests/support/two_tank_chaser.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace observer_bank_test {
 
 using chaser::testing::two_tank_chaser;
 
@@ -184,5 +184,5 @@ TEST(ObserverBank, FaultFreeStaysQuiet) {
   EXPECT_LT(s.statistic_Nm, 0.1);
 }
 
-}  // namespace
+}  // namespace observer_bank_test
 }  // namespace chaser::flight::fdi

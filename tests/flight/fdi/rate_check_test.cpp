@@ -23,7 +23,7 @@
 #include "tests/support/two_tank_chaser.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace rate_check_test {
 
 constexpr double kT = 0.1;  // [s]
 
@@ -465,5 +465,5 @@ TEST(RateCheck, AHealthyFlightWithTheGyrosNoiseNeverConfirms) {
   EXPECT_LT(largest, p.threshold / 2);
 }
 
-}  // namespace
+}  // namespace rate_check_test
 }  // namespace chaser::flight::fdi

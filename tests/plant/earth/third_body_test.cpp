@@ -15,7 +15,7 @@
 #include "plant/earth/sun.hpp"
 
 namespace chaser::plant::earth {
-namespace {
+namespace third_body_test {
 
 // The plain formula, mu3 [(s - r) / |s - r|^3 - s / |s|^3], in __float128 (113-bit significand): even
 // the Sun's 1e4 cancellation, and the 1e14 of a 1 mm difference of two accelerations, leave it at
@@ -141,5 +141,5 @@ TEST(ThirdBody, TidalStretchAlongTheEarthMoonLineAndSqueezeAcrossIt) {
   EXPECT_NEAR(sun_stretch / moon_stretch, 0.46, 0.01);
 }
 
-}  // namespace
+}  // namespace third_body_test
 }  // namespace chaser::plant::earth

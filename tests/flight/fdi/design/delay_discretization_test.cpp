@@ -8,7 +8,7 @@
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace delay_discretization_test {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -94,5 +94,5 @@ TEST(DelayDiscretization, DoubleIntegratorIsPolynomial) {
   EXPECT_LT(relative_error(gamma1(m.A, m.B, kT, delta), expected), 1e-14);
 }
 
-}  // namespace
+}  // namespace delay_discretization_test
 }  // namespace chaser::flight::fdi

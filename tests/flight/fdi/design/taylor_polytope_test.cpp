@@ -10,7 +10,7 @@
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace taylor_polytope_test {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -91,5 +91,5 @@ TEST(TaylorPolytope, ExactForTheDoubleIntegratorAtOrderTwo) {
   EXPECT_EQ(taylor_remainder_bound(MatrixXd::Zero(6, 6), m.B, kT, 0.1, 2), 0.0);
 }
 
-}  // namespace
+}  // namespace taylor_polytope_test
 }  // namespace chaser::flight::fdi

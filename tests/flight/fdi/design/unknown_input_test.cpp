@@ -12,7 +12,7 @@
 #include "test_matrices.hpp"
 
 namespace chaser::flight::fdi {
-namespace {
+namespace unknown_input_test {
 
 using Eigen::Index;
 using Eigen::MatrixXd;
@@ -126,5 +126,5 @@ TEST(UnknownInput, FullColumnRankFactors) {
   EXPECT_LT((f.E1 * f.E2 - E).norm(), 1e-13 * E.norm());
 }
 
-}  // namespace
+}  // namespace unknown_input_test
 }  // namespace chaser::flight::fdi
