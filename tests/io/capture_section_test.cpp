@@ -6,17 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "io/scenario_loader.hpp"
+#include "scenario_test_util.hpp"
 
 namespace chaser::io {
 namespace capture_section_test {
 
 constexpr const char* kCapture = "scenarios/comrade_capture.yaml";
 
-bool has_error(const LoadResult& r, const std::string& path, const std::string& fragment) {
-  for (const ScenarioError& e : r.errors)
-    if (e.key_path == path && e.message.find(fragment) != std::string::npos) return true;
-  return false;
-}
+using testing::has_error;
 
 TEST(CaptureSection, TheShippedScenarioReadsBack) {
   const LoadResult r = load_scenario_file(kCapture);
