@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/rotation.hpp"
 #include "flight/carried_target.hpp"
@@ -166,6 +167,20 @@ bool escape_trigger(const EscapeLawParams& params, EscapeState& state, GraspStep
   state.tool_start_target_m = start.tool_target_m;
   state.q_target_from_tool_start = start.q_target_from_tool;
   state.joint3_start_rad = start.joint3_rad;
+  return true;
+}
+
+bool escape_brakes(const EscapeLawParams& params, EscapeState& state, const model::ArmMeasurements& joints,
+                   double t_s) {
+  if (state.braked()) return true;
+  constexpr double kTimeTolS = 1e-9;  // the joint steps' times are sums of the period
+  if (!state.started() || !params.escape.brake_when_stowed ||
+      t_s + kTimeTolS < state.start_s + params.escape.retract_duration_s)
+    return false;
+  const double threshold_radps = params.escape.brake_rate_degps * std::numbers::pi / 180.0;
+  for (int j = 0; j < joints.joints; ++j)
+    if (std::abs(joints.q_dot_radps[static_cast<std::size_t>(j)]) >= threshold_radps) return false;
+  state.brakes_s = t_s;
   return true;
 }
 

@@ -24,6 +24,12 @@
 //   desynchronise  on the axis point (it does not move with the spin, a tumble's included), the roll
 //                  brought to rest: q = exp(h w_roll u) q_d, u = int (1 - s) dt;
 //   retreat        along the axis out to safe_distance_m, the attitude fixed, then a hold there.
+// With brake_when_stowed (the default) the arm's brakes engage once the retraction has ended (the
+// arm as good as stowed) at the first joint step at which every joint turns slower than
+// brake_rate_degps (the brakes stop the joints within a few steps: their catch loads them by the
+// joints' inertia times that rate over ~2 ms), and the joint loop stops driving it: the chaser and its braked arm are
+// then one rigid body, the free chaser the platform's own loops were designed on, and they fly the
+// rest of the plan (escape_guidance's reference) at the control period, the combined law idle.
 // The stowed arm and the fixed relation of tool and hub from the retraction on keep the arm clear
 // of the hub (the stowed pose is the launch one) and the camera looking where the boresight looks.
 //
@@ -64,6 +70,7 @@ struct EscapeState {
   EscapeTrigger trigger = EscapeTrigger::kNone;
   double start_s = -1.0;    // [s] triggered (-1: not yet)
   double refused_s = -1.0;  // [s] commanded with the jaws closed: not flown (-1: never)
+  double brakes_s = -1.0;   // [s] the brakes engaged at the retraction's end (-1: not)
   // Fixed each period by the flight software until the trigger: the transfer's start point as the
   // synchronised approach fixed it (flight/sync_approach.hpp's latch), if it did.
   std::optional<Vec3> withdraw_point_target_m;
@@ -79,6 +86,7 @@ struct EscapeState {
   Quat q_world_from_body_desync = Quat::Identity();
   double roll_rate_desync_radps = 0.0;
   bool started() const { return start_s >= 0.0; }
+  bool braked() const { return brakes_s >= 0.0; }
 };
 
 // The step at t_s (kNone before the trigger).
@@ -102,6 +110,12 @@ struct EscapeStart {
 // plan's axis and distance, the tool's pose and the redundancy joint's angle are fixed.
 bool escape_trigger(const EscapeLawParams& params, EscapeState& state, GraspStep grasp, double t_s,
                     const EscapeStart& start);
+
+// At a joint step at t_s once triggered, the joints' rates in hand: whether the arm is braked from
+// now on (brake_when_stowed, the retraction ended, every joint slower than brake_rate_degps;
+// recorded in state.brakes_s the first time).
+bool escape_brakes(const EscapeLawParams& params, EscapeState& state, const model::ArmMeasurements& joints,
+                   double t_s);
 
 // The combined law's references at t_s once triggered: hub, tool and redundancy joint, in the law's
 // world, from the target's estimate as the joint loop carries it (offset and rotation: the camera's

@@ -121,6 +121,13 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
   // The rigidisation inhibits the thrusters (flight/reach.hpp): no demand, nothing released (the
   // TMU's owed impulse included), no test pulse, so the allocation commands nothing.
   const bool inhibited = reaching && thrusters_inhibited(*params.reach, state.reach);
+  // The escape's arm braked (flight/escape.hpp): the platform's own loops fly the plan's reference,
+  // from rest (their states were last stepped before the reach).
+  const bool escape_braked = reaching && state.reach.escape.braked();
+  if (escape_braked && !state.escape_loops_engaged) {
+    state.hinf = HinfControlState{};
+    state.escape_loops_engaged = true;
+  }
   Vec3 reach_force_inertial_N, reach_torque_body_Nm;
   if (inhibited) {
     out.force_demand_lvlh_N.setZero();
@@ -133,7 +140,7 @@ FlightOutput step_flight(const FlightParams& params, FlightState& state, const m
     out.torque_demand_body_Nm =
         stabilise_couple(*params.reach->stabilise, params.reach->servicer, state.reach.stabilise, q,
                          out.estimate.q_inertial_from_body, out.estimate.omega_body_radps, t_s);
-  } else if (reaching && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
+  } else if (reaching && !escape_braked && platform_command(*params.reach, state.reach, t_s, reach_force_inertial_N, reach_torque_body_Nm)) {
     // The combined controller's platform share, from the joint loop's last step (flight/reach.hpp).
     out.force_demand_lvlh_N = lvlh.q_inertial_from_lvlh.conjugate() * reach_force_inertial_N;
     out.torque_demand_body_Nm = reach_torque_body_Nm;

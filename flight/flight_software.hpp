@@ -79,6 +79,7 @@ struct FlightState {
   ArmReactionState arm_reaction;              // the awake arm's share of the diagnosis's torque rows
   fdi::SupervisorState supervisor;            // with FlightParams::supervisor (sized in the first period)
   bool initialised = false;
+  bool escape_loops_engaged = false;          // the escape's arm braked: the platform's loops reset once
   // Last: its sample and block rings (kMaxWatchedThrusters lanes, ~0.3 MB) would otherwise sit
   // between the small states every period reads, and spread them over more cache sets and pages.
   FdirState fdir;

@@ -275,6 +275,14 @@ model::ArmCommand step_reach(const ReachParams& params, ReachState& state, const
                     .q_target_from_tool = (q_target_from_world * arm::tool_attitude(kinematics)).normalized(),
                     .joint3_rad = q(arm::kRedundancyJoint)});
   }
+  // The escape's arm stowed and braked: the drives off, the combined law idle (the platform's own
+  // loops fly the plan: flight/flight_software.cpp). The tool's pose is still recorded above, for
+  // the camera's samples.
+  if (state.escape.started() && escape_brakes(*params.escape, state.escape, joints, t_s)) {
+    command.engage_brakes = true;
+    state.joint_torque_Nm.setZero();
+    return command;
+  }
   arm::TaskReference reference;
   if (state.escape.started()) {
     reference = escape_reference(*params.escape, state.escape, *state.target, state.frame_offset_m,

@@ -80,6 +80,8 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
           g.number("desynchronise_duration_s", Range::closed(1.0, 1e4), e.desynchronise_duration_s);
         if (g.has("retreat_duration_s")) g.number("retreat_duration_s", Range::closed(1.0, 1e4), e.retreat_duration_s);
         if (g.has("safe_distance_m")) g.number("safe_distance_m", Range::closed(1.0, 1e3), e.safe_distance_m);
+        if (g.has("brake_when_stowed")) g.boolean("brake_when_stowed", e.brake_when_stowed);
+        if (g.has("brake_rate_degps")) g.number("brake_rate_degps", Range::left_open(0.0, 10.0), e.brake_rate_degps);
       });
     }
     if (m.has("berthing")) {

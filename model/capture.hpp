@@ -97,6 +97,12 @@ struct EscapeParams {
   double desynchronise_duration_s = 200.0;  // [s] the rotation's synchronisation's length, flown back
   double retreat_duration_s = 400.0;   // [s]
   double safe_distance_m = 30.0;       // [m] from the target's centre: the fly-around's radius
+  // The arm braked once the retraction has ended and every joint turns slower than brake_rate_degps
+  // (the brakes' catch of the joints' last motion is a load on them), the platform's own loops
+  // flying the rest of the plan (flight/escape.hpp); false: the combined law holds the stowed tool
+  // to the end.
+  bool brake_when_stowed = true;
+  double brake_rate_degps = 0.02;  // [deg/s]
   double total_s() const {
     return retract_duration_s + withdraw_duration_s + desynchronise_duration_s + retreat_duration_s;
   }

@@ -42,6 +42,7 @@ void add_escape_period(EscapeResult& r, const flight::EscapeLawParams& params, c
     keep_least(s.tool_clearance_m, s.t_s, r.min_tool_clearance_m, r.min_tool_clearance_at_s);
   keep_most(s.camera_angle_rad, s.t_s, r.max_camera_angle_rad, r.max_camera_angle_at_s);
   r.final_distance_m = s.distance_m;
+  if (state.braked()) r.brakes_s = state.brakes_s;
   r.final_t_s = s.t_s;
 }
 
@@ -51,10 +52,12 @@ double camera_angle_rad(const Vec3& tool_target_m, const Quat& q_target_from_too
   return std::atan2(axis.cross(-eye_m).norm(), axis.dot(-eye_m));
 }
 
-bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, double camera_fov_rad) {
+bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, double camera_fov_rad,
+                               double load_limit_Nm) {
   constexpr double kTimeTolS = 1e-9;
   const bool camera_met = std::isnan(camera_fov_rad) || r.max_camera_angle_rad <= camera_fov_rad;
-  return r.flown && r.final_t_s + kTimeTolS >= r.hold_s &&
+  const bool loads_met = std::isnan(r.brakes_s) || r.peak_brake_load_Nm <= load_limit_Nm;
+  return r.flown && loads_met && r.final_t_s + kTimeTolS >= r.hold_s &&
          r.min_clearance_synchronised_m >= model::kEscapeSynchronisedClearanceM &&
          r.min_clearance_unsynchronised_m >= model::kEscapeUnsynchronisedClearanceM && r.min_tool_clearance_m > 0.0 &&
          camera_met && std::abs(r.final_distance_m - safe_distance_m) <= model::kEscapeDistanceTolM;
@@ -66,7 +69,8 @@ double arm_camera_fov_rad(const model::Scenario& scenario) {
 }
 
 bool escape_meets_requirements(const EscapeResult& r, const model::Scenario& scenario) {
-  return escape_meets_requirements(r, scenario.capture->escape->safe_distance_m, arm_camera_fov_rad(scenario));
+  return escape_meets_requirements(r, scenario.capture->escape->safe_distance_m, arm_camera_fov_rad(scenario),
+                                   scenario.chaser.arm->torque_repeated_peak_Nm);
 }
 
 }  // namespace chaser::sim

@@ -26,6 +26,8 @@ struct EscapeResult {
   double min_tool_clearance_m = kNaN, min_tool_clearance_at_s = kNaN;  // [m], [s] from the retraction's end
   double max_camera_angle_rad = kNaN, max_camera_angle_at_s = kNaN;                        // [rad], [s]
   double final_distance_m = kNaN;   // [m] the chaser's CoM from the target's at the last period
+  double brakes_s = kNaN;           // [s] the arm braked at the retraction's end (brake_when_stowed)
+  double peak_brake_load_Nm = kNaN; // [N m] the largest braked joint's load from then on (every joint step)
   double final_t_s = kNaN;          // [s] that period
 };
 
@@ -47,12 +49,15 @@ void add_escape_period(EscapeResult& r, const flight::EscapeLawParams& params, c
 double camera_angle_rad(const Vec3& tool_target_m, const Quat& q_target_from_tool, double setback_m);
 
 // The requirements (model/capture.hpp), each NaN figure counting as unmet except the camera's
-// where the scenario has no arm camera (camera_fov_rad NaN): flown to the hold, the clearances, the
-// camera and the distance.
-bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, double camera_fov_rad);
+// where the scenario has no arm camera (camera_fov_rad NaN) and the brakes' load where the arm was
+// not braked: flown to the hold, the clearances, the camera, the distance, and the braked joints'
+// loads within load_limit_Nm (the drives' repeated peak, as the stabilisation's).
+bool escape_meets_requirements(const EscapeResult& r, double safe_distance_m, double camera_fov_rad,
+                               double load_limit_Nm);
 
 // The scenario's arm camera's field of view [rad] (NaN without one), and the requirements with the
-// scenario's safe distance and field of view (a scenario with capture.escape).
+// scenario's safe distance, field of view and the arm's repeated peak torque (a scenario with
+// capture.escape).
 double arm_camera_fov_rad(const model::Scenario& scenario);
 bool escape_meets_requirements(const EscapeResult& r, const model::Scenario& scenario);
 

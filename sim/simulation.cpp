@@ -347,6 +347,10 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
       const auto load = plant::brake_loads_Nm(plant_);
       auto& peak = result_.reach.rigidise.peak_brake_load_Nm;
       for (std::size_t j = 0; j < peak.size(); ++j) peak[j] = std::max(peak[j], std::abs(load[j]));
+    } else if (flight_state_.reach.escape.braked()) {  // the escape's stowed arm braked: its peak
+      double& peak = result_.escape.peak_brake_load_Nm;
+      if (std::isnan(peak)) peak = 0.0;
+      for (const double load : plant::brake_loads_Nm(plant_)) peak = std::max(peak, std::abs(load));
     }
   }
 }

@@ -275,6 +275,8 @@ nlohmann::json escape_json(const model::Scenario& scenario, const EscapeResult& 
       {"camera_fov_half_angle_deg", finite_or_null(true, kRadToDeg * arm_camera_fov_rad(scenario))},
       {"final_distance_m", finite_or_null(true, e.final_distance_m)},
       {"safe_distance_m", params.safe_distance_m},
+      {"brakes_s", finite_or_null(true, e.brakes_s)},
+      {"peak_brake_load_Nm", finite_or_null(true, e.peak_brake_load_Nm)},
       {"requirements_met", escape_meets_requirements(e, scenario)},
   };
 }
@@ -285,15 +287,19 @@ std::string escape_text(const model::Scenario& scenario, const EscapeResult& e) 
   const std::string refused =
       std::isnan(e.refused_s) ? std::string() : fmt::format(" (commanded at {:.1f} s with the jaws closed: refused)", e.refused_s);
   if (!e.flown) return fmt::format("  escape: not triggered{}\n", refused);
+  const std::string braked =
+      std::isnan(e.brakes_s) ? std::string()
+                             : fmt::format("; arm braked from {:.1f} s, peak joint load {:.2f} N m (limit {:.0f})",
+                                           e.brakes_s, e.peak_brake_load_Nm, scenario.chaser.arm->torque_repeated_peak_Nm);
   return fmt::format(
       "  escape ({}): from {:.1f} s{}, desynchronised at {:.1f} s, holding from {:.1f} s; least clearance {:.3f} m "
       "synchronised (>= {:g}), {:.3f} m after (>= {:g}); tool point {:.3f} m from the keep-out (> 0); camera axis "
       "within {:.1f} deg of the target's centre (field of view {:.0f}); {:.2f} m from the target at {:.1f} s (safe "
-      "distance {:g} +- {:g}): requirements {}\n",
+      "distance {:g} +- {:g}){}: requirements {}\n",
       e.trigger, e.start_s, refused, e.desynchronise_s, e.hold_s, e.min_clearance_synchronised_m,
       model::kEscapeSynchronisedClearanceM, e.min_clearance_unsynchronised_m, model::kEscapeUnsynchronisedClearanceM,
       e.min_tool_clearance_m, kRadToDeg * e.max_camera_angle_rad, kRadToDeg * arm_camera_fov_rad(scenario),
-      e.final_distance_m, e.final_t_s, params.safe_distance_m, model::kEscapeDistanceTolM,
+      e.final_distance_m, e.final_t_s, params.safe_distance_m, model::kEscapeDistanceTolM, braked,
       escape_meets_requirements(e, scenario) ? "met" : "NOT met");
 }
 

@@ -101,6 +101,35 @@ TEST(Escape, ACommandStartsItWhileTheJawsAreOpenAndIsRefusedOnceTheyClose) {
   EXPECT_FALSE(escape_trigger(failed, kept, GraspStep::kAbandoned, 500.0, start));
 }
 
+// The brakes engage once the retraction has ended (triggered at 100 s, 30 s long) at the first step
+// with every joint slower than brake_rate_degps, and stay engaged; not before the trigger, and never
+// with brake_when_stowed off.
+TEST(Escape, TheBrakesEngageOnceRetractedAndQuietOnlyWhenAsked) {
+  const EscapeLawParams p = plan();
+  model::ArmMeasurements quiet;
+  quiet.joints = model::kArmJoints;
+  model::ArmMeasurements moving = quiet;
+  moving.q_dot_radps[4] = -0.021 * std::numbers::pi / 180.0;  // one joint over the 0.02 deg/s
+  quiet.q_dot_radps[4] = -0.019 * std::numbers::pi / 180.0;
+  EscapeState idle;
+  EXPECT_FALSE(escape_brakes(p, idle, quiet, 500.0));  // not triggered
+  EXPECT_FALSE(idle.braked());
+  EscapeState s = triggered(p, spinning_target());
+  EXPECT_FALSE(escape_brakes(p, s, quiet, 129.999));  // retracting
+  EXPECT_FALSE(escape_brakes(p, s, moving, 130.0));
+  EXPECT_FALSE(s.braked());
+  EXPECT_TRUE(escape_brakes(p, s, quiet, 130.001));
+  EXPECT_DOUBLE_EQ(s.brakes_s, 130.001);
+  EXPECT_TRUE(escape_brakes(p, s, moving, 700.0));  // engaged for good
+  EXPECT_DOUBLE_EQ(s.brakes_s, 130.001);            // the first time kept
+  EscapeLawParams driven = p;
+  driven.escape.brake_when_stowed = false;
+  EscapeState d = triggered(driven, spinning_target());
+  EXPECT_FALSE(escape_brakes(driven, d, quiet, 130.0));
+  EXPECT_FALSE(escape_brakes(driven, d, quiet, 1e4));
+  EXPECT_FALSE(d.braked());
+}
+
 // The axis: the target's angular momentum I w, on the transfer start's side, at its distance.
 TEST(Escape, TheAxisPointIsTheAngularMomentumsAtTheTransferStartsDistance) {
   const EscapeLawParams p = plan();

@@ -41,7 +41,14 @@ TEST(CaptureSection, TheShippedScenarioReadsBack) {
   EXPECT_EQ(e.safe_distance_m, 40.0);
   EXPECT_TRUE(e.on_failed_grasp);  // the defaults
   EXPECT_EQ(e.withdraw_backoff_m, 4.0);
+  EXPECT_TRUE(e.brake_when_stowed);
+  EXPECT_EQ(e.brake_rate_degps, 0.02);
   EXPECT_EQ(e.total_s(), 930.0);
+  const LoadResult driven =
+      load_scenario_file(kCapture, {"capture.escape={brake_when_stowed: false, brake_rate_degps: 0.1}"});
+  ASSERT_TRUE(driven.scenario) << format_errors(driven.errors);
+  EXPECT_FALSE(driven.scenario->capture->escape->brake_when_stowed);
+  EXPECT_EQ(driven.scenario->capture->escape->brake_rate_degps, 0.1);
 }
 
 struct BadCapture {
@@ -106,6 +113,9 @@ std::vector<BadCapture> bad_captures() {
        "must be in [1, 10000]"},
       {"escape_trigger", {"capture.escape={on_failed_grasp: maybe}"}, "capture.escape.on_failed_grasp", "must be"},
       {"escape_unknown_key", {"capture.escape={safe_distance: 30}"}, "capture.escape.safe_distance", ""},
+      {"escape_brake_rate", {"capture.escape={brake_rate_degps: 0}"}, "capture.escape.brake_rate_degps",
+       "must be in (0, 10]"},
+      {"escape_brakes", {"capture.escape={brake_when_stowed: 1.5}"}, "capture.escape.brake_when_stowed", "must be"},
       {"brake_holding_torque", {"chaser.arm.brake_holding_torque_Nm=0"}, "chaser.arm.brake_holding_torque_Nm",
        "must be in (0, 100000]"},
   };

@@ -18,6 +18,8 @@ TEST(EscapeResult, TheCameraAngleIsBetweenItsAxisAndTheLineFromItsEyeToTheCentre
   EXPECT_NEAR(camera_angle_rad(Vec3(-4.0, 0.0, 0.0), facing_minus_x, 0.2), std::numbers::pi, 1e-15);  // behind it
 }
 
+constexpr double kLoadLimitNm = 176.0;  // [N m] the braked joints' load limit
+
 // A plan triggered at 100 s: its steps 30, 300, 200 and 400 s.
 flight::EscapeLawParams plan() {
   flight::EscapeLawParams p;
@@ -55,22 +57,43 @@ TEST(EscapeResult, ThePeriodsFiguresSplitAtTheDesynchronisationAndTheToolsAtTheR
   EXPECT_EQ(r.max_camera_angle_rad, 0.2);
   EXPECT_EQ(r.max_camera_angle_at_s, 200.0);
   EXPECT_EQ(r.final_distance_m, 30.1);
-  EXPECT_TRUE(escape_meets_requirements(r, 30.0, 0.7));
-  EXPECT_TRUE(escape_meets_requirements(r, 30.0, std::nan("")));  // no camera: not judged
-  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.15));        // the camera's angle
-  EXPECT_FALSE(escape_meets_requirements(r, 29.5, 0.7));         // the distance
+  EXPECT_TRUE(escape_meets_requirements(r, 30.0, 0.7, kLoadLimitNm));
+  EXPECT_TRUE(escape_meets_requirements(r, 30.0, std::nan(""), kLoadLimitNm));  // no camera: not judged
+  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.15, kLoadLimitNm));        // the camera's angle
+  EXPECT_FALSE(escape_meets_requirements(r, 29.5, 0.7, kLoadLimitNm));         // the distance
   EscapeResult close = r;
   close.min_clearance_synchronised_m = 0.4;
-  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7));
+  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7, kLoadLimitNm));
   close = r;
   close.min_clearance_unsynchronised_m = 2.9;
-  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7));
+  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7, kLoadLimitNm));
   close = r;
   close.min_tool_clearance_m = -0.01;
-  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7));
+  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7, kLoadLimitNm));
   close = r;
   close.final_t_s = 1000.0;  // the run ended before the hold
-  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7));
+  EXPECT_FALSE(escape_meets_requirements(close, 30.0, 0.7, kLoadLimitNm));
+}
+
+TEST(EscapeResult, TheBrakesTimeIsRecordedAndTheirLoadJudgedOnlyWhenBraked) {
+  const flight::EscapeLawParams p = plan();
+  flight::EscapeState state;
+  state.trigger = flight::EscapeTrigger::kCommand;
+  state.start_s = 100.0;
+  EscapeResult r;
+  add_escape_period(r, p, state, {.t_s = 100.0, .chaser_clearance_m = 2.5, .camera_angle_rad = 0.1, .distance_m = 7.4});
+  EXPECT_TRUE(std::isnan(r.brakes_s));
+  state.brakes_s = 130.0;
+  add_escape_period(r, p, state, {.t_s = 1100.0, .chaser_clearance_m = 25.0, .tool_clearance_m = 23.0,
+                                  .camera_angle_rad = 0.1, .distance_m = 30.1});
+  EXPECT_EQ(r.brakes_s, 130.0);
+  r.peak_brake_load_Nm = 12.0;
+  EXPECT_TRUE(escape_meets_requirements(r, 30.0, 0.7, kLoadLimitNm));
+  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.7, 11.9));  // the loads over the limit
+  r.peak_brake_load_Nm = std::nan("");                           // braked, no load recorded: unmet
+  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.7, kLoadLimitNm));
+  r.brakes_s = std::nan("");                                     // never braked: the loads not judged
+  EXPECT_TRUE(escape_meets_requirements(r, 30.0, 0.7, kLoadLimitNm));
 }
 
 TEST(EscapeResult, ARefusedCommandIsRecordedAndNothingIsFlown) {
@@ -80,7 +103,7 @@ TEST(EscapeResult, ARefusedCommandIsRecordedAndNothingIsFlown) {
   add_escape_period(r, plan(), state, {.t_s = 2900.0});
   EXPECT_FALSE(r.flown);
   EXPECT_EQ(r.refused_s, 2890.0);
-  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.7));
+  EXPECT_FALSE(escape_meets_requirements(r, 30.0, 0.7, kLoadLimitNm));
 }
 
 }  // namespace
