@@ -1,5 +1,7 @@
 #include "campaign/confidence.hpp"
 
+#include "campaign/table_cells.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -8,8 +10,6 @@
 namespace chaser::campaign {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool valid(std::int64_t events, std::int64_t trials, double confidence) {
   return trials >= 1 && events >= 0 && events <= trials && confidence > 0.0 && confidence < 1.0;

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "core/wall_clock.hpp"
+
 namespace chaser::campaign {
 
 namespace {
@@ -33,9 +35,7 @@ Progress::Progress(std::int64_t total, bool enabled, ProgressCallback show)
     : total_(total), enabled_(enabled), show_(std::move(show)), start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
-double Progress::elapsed_s() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
+double Progress::elapsed_s() const { return seconds_since(start_); }
 
 void Progress::draw(std::int64_t done, std::int64_t diverged, bool final) {
   const ProgressCounts counts{done, total_, diverged, elapsed_s(), final};

@@ -9,14 +9,13 @@
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
 #include "campaign/run_row.hpp"
+#include "campaign/table_cells.hpp"
 #include "model/arm.hpp"
 #include "sim/reach_result.hpp"
 
 namespace chaser::campaign {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A paper's mean +- 1 sigma; sd NaN where the paper prints "< 0.001".
 struct PaperValue {
@@ -55,9 +54,6 @@ const std::array<PaperAxes, kGripperFigures> kGripperCompliance = {{
     {{{0.520, 0.335}, {0.286, 0.217}, {0.434, 0.314}}},
 }};
 
-// [N m] the joints' repeated peak torque: COMRADE 2018's, the default arm's.
-const double kRepeatedPeakTorqueNm = model::ArmParams{}.torque_repeated_peak_Nm;
-
 // How each gripper figure is shown: position and velocity in mm and mm/s.
 struct GripperFigure {
   const char* name;
@@ -71,17 +67,15 @@ bool is_hinf(const ReachColumn& c) { return c.law == "hinf"; }
 const char* law_label(const ReachColumn& c) { return is_hinf(c) ? "H-infinity" : "compliance"; }
 const char* paper_label(const ReachColumn& c) { return is_hinf(c) ? "COMRADE H-inf" : "COMRADE compliant"; }
 
-std::string number(double v, const char* format) { return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : "-"; }
-
 std::string mean_sd(double mean, double sd, double scale, const char* format) {
   if (!std::isfinite(mean)) return "-";
-  const std::string sd_text = std::isfinite(sd) ? number(sd * scale, format) : fmt::format("< {:g}", 0.001 * scale);
-  return fmt::format("{} +- {}", number(mean * scale, format), sd_text);
+  const std::string sd_text = std::isfinite(sd) ? cell_number(sd * scale, format) : fmt::format("< {:g}", 0.001 * scale);
+  return fmt::format("{} +- {}", cell_number(mean * scale, format), sd_text);
 }
 
 std::string p95_verdict(double p95, double limit, double scale, const char* format) {
   if (!std::isfinite(p95)) return "-";
-  return number(p95 * scale, format) + (p95 < limit ? " (met)" : " (**not met**)");
+  return cell_number(p95 * scale, format) + (p95 < limit ? " (met)" : " (**not met**)");
 }
 
 }  // namespace
@@ -195,9 +189,9 @@ std::string reach_markdown(const std::vector<ReachColumn>& columns) {
   out += "\n| gripper inside every figure of Table 2 over the hold | |";
   for (const ReachColumn& c : columns) out += fmt::format(" {} |", proportion_cell(c.table2_met));
   out += fmt::format("\n| peak joint torque, largest of the runs [N m] | {:g} (repeated peak) |", kRepeatedPeakTorqueNm);
-  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.peak_joint_torque_Nm.max, "{:.1f}"));
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", cell_number(c.peak_joint_torque_Nm.max, "{:.1f}"));
   out += "\n| the tool point's least clearance from the keep-out volume, least of the runs [m] | > 0 |";
-  for (const ReachColumn& c : columns) out += fmt::format(" {} |", number(c.tool_clearance_m.min, "{:.3f}"));
+  for (const ReachColumn& c : columns) out += fmt::format(" {} |", cell_number(c.tool_clearance_m.min, "{:.3f}"));
   out += "\n| runs flown of runs | |";
   for (const ReachColumn& c : columns) out += fmt::format(" {} of {} |", c.flown, c.runs);
   out += "\n\nEach law's runs are in its folder (runs.csv, summary.md).\n";

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "campaign/table_cells.hpp"
 #include "core/constants.hpp"
 #include "sim/phase_verdicts.hpp"
 #include "sim/run_phases.hpp"
@@ -14,8 +15,6 @@
 namespace chaser::campaign {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Largest per-second GLR maximum over the whole seconds that end at or before the onset.
 double glr_before(const sim::RunResult& result, int scheme, double onset_s) {

@@ -7,6 +7,7 @@
 
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
+#include "campaign/table_cells.hpp"
 #include "model/arm.hpp"
 #include "model/capture.hpp"
 
@@ -14,22 +15,16 @@ namespace chaser::campaign {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // COMRADE 2018 Table 8: its H-infinity stabilisation's angular rate [deg/s] per axis (one value each).
 constexpr std::array<double, 3> kPaperRateDegps = {-0.023, 0.006, 0.013};
-// [N m] the joints' repeated peak torque: COMRADE 2018's, the default arm's.
-const double kRepeatedPeakTorqueNm = model::ArmParams{}.torque_repeated_peak_Nm;
-
-std::string number(double v, const char* format) { return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : "-"; }
-
 std::string mean_sd(const FigureStats& s, const char* format) {
   if (s.n == 0) return "-";
-  return fmt::format("{} +- {}", number(s.mean, format), number(s.sd, format));
+  return fmt::format("{} +- {}", cell_number(s.mean, format), cell_number(s.sd, format));
 }
 
 std::string p95_verdict(const FigureStats& s, double limit, const char* format) {
   if (s.n == 0) return "-";
-  return number(s.p95, format) + (s.p95 < limit ? " (met)" : " (**not met**)");
+  return cell_number(s.p95, format) + (s.p95 < limit ? " (met)" : " (**not met**)");
 }
 
 }  // namespace
@@ -102,11 +97,11 @@ std::string stabilise_markdown(const std::vector<StabiliseColumn>& columns) {
                      model::kStabilisedRateDegps);
   for (const StabiliseColumn& c : columns)
     out += c.below_goal_s.n == 0 ? std::string(" - |")
-                                 : fmt::format(" {} ({}) |", number(c.below_goal_s.mean, "{:.1f}"), number(c.below_goal_s.p95, "{:.1f}"));
+                                 : fmt::format(" {} ({}) |", cell_number(c.below_goal_s.mean, "{:.1f}"), cell_number(c.below_goal_s.p95, "{:.1f}"));
   out += fmt::format("\n| braked joints' peak load [N m], mean; 95th percentile | < {:g} | |", kRepeatedPeakTorqueNm);
   for (const StabiliseColumn& c : columns)
     out += c.peak_load_Nm.n == 0 ? std::string(" - |")
-                                 : fmt::format(" {}; {} |", number(c.peak_load_Nm.mean, "{:.1f}"),
+                                 : fmt::format(" {}; {} |", cell_number(c.peak_load_Nm.mean, "{:.1f}"),
                                                p95_verdict(c.peak_load_Nm, kRepeatedPeakTorqueNm, "{:.1f}"));
   out += "\n| propellant [kg], mean +- 1 sigma | | |";
   for (const StabiliseColumn& c : columns) out += fmt::format(" {} |", mean_sd(c.propellant_kg, "{:.2f}"));

@@ -12,13 +12,12 @@
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
 #include "campaign/run_row.hpp"
+#include "campaign/table_cells.hpp"
 #include "campaign/target_report.hpp"
 
 namespace chaser::campaign {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Column indices of what the summary reads, found by name in the header.
 struct FactColumns {

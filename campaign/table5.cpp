@@ -11,12 +11,11 @@
 
 #include "campaign/csv.hpp"
 #include "campaign/proportion_text.hpp"
+#include "campaign/table_cells.hpp"
 
 namespace chaser::campaign {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // COMRADE 2018 Table 1 (synchronisation requirements at the capture point) and Table 5's
 // "Synchronisation H-infinity" column (mean and 1 sigma of 100 runs; its velocity row says [m]: m/s).
@@ -39,8 +38,6 @@ const FigureStats& figure(const Table5Column& c, std::size_t k) {
   const std::array<const FigureStats*, 4> all = {&c.position_m, &c.speed_mps, &c.attitude_deg, &c.rate_deg_s};
   return *all[k];
 }
-
-std::string number(double v, const char* format) { return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : "-"; }
 
 }  // namespace
 
@@ -118,11 +115,11 @@ std::string table5_markdown(const std::vector<Table5Column>& columns) {
     out += fmt::format("| {} [{}], mean +- 1 sigma | < {:g} | {:g} +- {:g} |", p.figure, p.unit, p.limit, p.paper_mean,
                        p.paper_sd);
     for (const Table5Column& c : columns)
-      out += fmt::format(" {} +- {} |", number(figure(c, k).mean, "{:.3g}"), number(figure(c, k).sd, "{:.2g}"));
+      out += fmt::format(" {} +- {} |", cell_number(figure(c, k).mean, "{:.3g}"), cell_number(figure(c, k).sd, "{:.2g}"));
     out += fmt::format("\n| {} [{}], 95th percentile | < {:g} | |", p.figure, p.unit, p.limit);
     for (const Table5Column& c : columns) {
       const double v = figure(c, k).p95;
-      out += fmt::format(" {}{} |", number(v, "{:.3g}"), std::isfinite(v) ? (v < p.limit ? " (met)" : " (**not met**)") : "");
+      out += fmt::format(" {}{} |", cell_number(v, "{:.3g}"), std::isfinite(v) ? (v < p.limit ? " (met)" : " (**not met**)") : "");
     }
     out += '\n';
   }
@@ -130,11 +127,11 @@ std::string table5_markdown(const std::vector<Table5Column>& columns) {
   for (const Table5Column& c : columns) out += fmt::format(" {} |", proportion_cell(c.captured));
   out += fmt::format("\n| least clearance before the rotation's synchronisation [m] | >= {:g} (Table 4) | |",
                      kUnsynchronisedClearance_m);
-  for (const Table5Column& c : columns) out += fmt::format(" {} |", number(c.least_clearance_unsynchronised_m, "{:.3f}"));
+  for (const Table5Column& c : columns) out += fmt::format(" {} |", cell_number(c.least_clearance_unsynchronised_m, "{:.3f}"));
   out += fmt::format("\n| least clearance after [m] | >= {:g} (Table 4) | |", kSynchronisedClearance_m);
-  for (const Table5Column& c : columns) out += fmt::format(" {} |", number(c.least_clearance_synchronised_m, "{:.3f}"));
+  for (const Table5Column& c : columns) out += fmt::format(" {} |", cell_number(c.least_clearance_synchronised_m, "{:.3f}"));
   out += "\n| propellant, mean [kg] | | |";
-  for (const Table5Column& c : columns) out += fmt::format(" {} |", number(c.propellant_mean_kg, "{:.3f}"));
+  for (const Table5Column& c : columns) out += fmt::format(" {} |", cell_number(c.propellant_mean_kg, "{:.3f}"));
   out += "\n| runs flown of runs | | 100 |";
   for (const Table5Column& c : columns) out += fmt::format(" {} of {} |", c.flown, c.runs);
   out += "\n\nEach case's runs are in its folder (runs.csv, summary.md).\n";

@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/fmea_report.hpp"
+#include "core/wall_clock.hpp"
 #include "core/worker_threads.hpp"
 #include "invsim/fmea.hpp"
 #include "invsim/layout_study.hpp"
@@ -87,7 +88,7 @@ int fmea_command(const FmeaArgs& args) {
   }
   const auto start = std::chrono::steady_clock::now();
   const FmeaStudy study = run_fmea_study(loaded, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
 
   const std::filesystem::path out(args.out_dir);
   for (const auto& [name, text] : fmea_files(study, loaded.study.optimize_keep)) {

@@ -10,6 +10,9 @@ function(chaser_module name)
     # inlinable as under the compiler's default -fPIE (a library's symbols are never interposed).
     set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
     target_compile_options(${name} PRIVATE -fno-semantic-interposition)
+    # Compiled in unity batches of eight, as the tests (below); -ffp-contract=off (CMakeLists.txt)
+    # keeps every result bit-identical to the file-by-file build, whatever the batches inline.
+    set_target_properties(${name} PROPERTIES UNITY_BUILD ${CHASER_UNITY_LIBS} UNITY_BUILD_BATCH_SIZE 8)
   else()  # a header-only folder
     add_library(${name} INTERFACE)
     target_link_libraries(${name} INTERFACE chaser_options ${ARGN})

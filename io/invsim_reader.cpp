@@ -22,7 +22,7 @@ using model::InvSimParams;
 using model::InvSimThruster;
 using model::InvSimThrusterRole;
 
-constexpr double kMaxDurationS = 1e6;  // [s] an approach, not a mission
+constexpr double kMaxApproachDurationS = 1e6;  // [s] an approach, not a mission
 
 bool read_axis(MapReader& m, std::string_view key, int& out) {
   std::string text;
@@ -142,7 +142,7 @@ void read_paper_reading(MapReader& m, InvSimParams& p) {
     read_measurement_noise(s, p.pulses.paper.measurement_noise);
     model::InvSimPaperReadingParams& paper = p.pulses.paper;
     if (s.has("lateral_time_constant_s"))
-      s.number("lateral_time_constant_s", Range::closed(0.0, kMaxDurationS), paper.lateral_time_constant_s);
+      s.number("lateral_time_constant_s", Range::closed(0.0, kMaxApproachDurationS), paper.lateral_time_constant_s);
     if (s.has("lateral_brake_mps2") &&
         s.number("lateral_brake_mps2", Range::closed(0.0, kMaxLateralBrakeMps2), paper.lateral_brake_mps2) &&
         paper.lateral_brake_mps2 > 0.0 && !(paper.lateral_time_constant_s > 0.0))
@@ -172,7 +172,7 @@ void read_sections(MapReader& r, InvSimParams& p) {
   });
   read_section(r, "run", [&](MapReader& m) {
     m.number("step_s", Range::left_open(0.0, 60.0), p.step_s);
-    m.number("duration_s", Range::left_open(0.0, kMaxDurationS), p.duration_s);
+    m.number("duration_s", Range::left_open(0.0, kMaxApproachDurationS), p.duration_s);
     m.vec3("envelope_m", p.envelope_m);
   });
   read_section(r, "trajectory", [&](MapReader& m) {
@@ -277,7 +277,7 @@ void check_invsim_layout(const InvSimParams& p, const std::string& key_path, Dia
 
 namespace {
 
-std::optional<YAML::Node> parse_document(const std::string& text, const std::string& source,
+std::optional<YAML::Node> parse_invsim_document(const std::string& text, const std::string& source,
                                          Diagnostics& diag) {
   std::vector<YAML::Node> documents;
   try {
@@ -317,7 +317,7 @@ InvSimLoadResult load_document(const std::string& text, const std::string& sourc
   InvSimLoadResult result;
   Diagnostics diag;
   std::optional<YAML::Node> root;
-  if (check_yaml_text(text, source, "", diag)) root = parse_document(text, source, diag);
+  if (check_yaml_text(text, source, "", diag)) root = parse_invsim_document(text, source, diag);
   if (root) {
     for (const std::string& o : overrides) apply_override(*root, o, diag);
   }

@@ -4,15 +4,9 @@
 
 #include <Eigen/LU>
 
+#include "core/point_inertia.hpp"
+
 namespace chaser::model {
-
-namespace {
-
-Mat3 point_inertia(double mass_kg, const Vec3& d_m) {  // about a point d_m away
-  return mass_kg * (d_m.squaredNorm() * Mat3::Identity() - d_m * d_m.transpose());
-}
-
-}  // namespace
 
 ChaserSloshParams chaser_slosh(const SpacecraftParams& chaser) {
   const SloshParams& slosh = *chaser.slosh;

@@ -3,14 +3,11 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
+#include "core/point_inertia.hpp"
+
 namespace chaser::model {
 
 namespace {
-
-// m (|d|^2 1 - d d^T): a mass m's inertia about a point d from it (parallel axes).
-Mat3 point_inertia(double mass_kg, const Vec3& d_m) {
-  return mass_kg * (d_m.squaredNorm() * Mat3::Identity() - d_m * d_m.transpose());
-}
 
 BodyMassProperties in_body_axes(double mass_kg, const Vec3& com_link_m, const Vec3& principal_kgm2,
                                 const Vec3& frame_body_m, const Mat3& body_from_link) {

@@ -28,21 +28,21 @@ namespace {
 
 // The integrated state packed in one fixed-size vector so the RK4 combinations are plain vector
 // arithmetic: r (0..2), v (3..5), q coeffs x, y, z, w (6..9), omega (10..12), m (13).
-using StateVec = Eigen::Matrix<double, 14, 1>;
-constexpr int kR = 0, kV = 3, kQ = 6, kW = 10, kM = 13;
+using RigidStateVec = Eigen::Matrix<double, 14, 1>;
+constexpr int kR = 0, kV = 3, kQ = 6, kW = 10, kMass = 13;
 
-StateVec pack(const RigidState& x) {
-  StateVec y;
+RigidStateVec pack(const RigidState& x) {
+  RigidStateVec y;
   y << x.r_lvlh_m, x.v_lvlh_mps, x.q_inertial_from_body.coeffs(), x.omega_body_radps, x.mass_kg;
   return y;
 }
 
-void unpack(const StateVec& y, RigidState& x) {
+void unpack(const RigidStateVec& y, RigidState& x) {
   x.r_lvlh_m = y.segment<3>(kR);
   x.v_lvlh_mps = y.segment<3>(kV);
   x.q_inertial_from_body = Quat(Eigen::Vector4d(y.segment<4>(kQ))).normalized();
   x.omega_body_radps = y.segment<3>(kW);
-  x.mass_kg = y[kM];
+  x.mass_kg = y[kMass];
 }
 
 // Orientation of LVLH in inertial at a stage time: a turn about z by the argument of latitude u
@@ -72,12 +72,12 @@ Vec3 inertial_from_lvlh(const LvlhAngle& a, const Vec3& v) {
 // Right-hand side of the coupled equations of propagator.hpp at one RK stage. q may be slightly
 // off the unit sphere inside a step; the rotations below are then smooth extensions, which keeps
 // RK4 fourth order (the exact flow preserves |q|).
-StateVec derivative(const DynamicsParams& p, const PieceInput& u, const StateVec& y, const LvlhAngle& lvlh) {
+RigidStateVec derivative(const DynamicsParams& p, const PieceInput& u, const RigidStateVec& y, const LvlhAngle& lvlh) {
   const Vec3 r = y.segment<3>(kR);
   const Vec3 v = y.segment<3>(kV);
   const Quat q(Eigen::Vector4d(y.segment<4>(kQ)));
   const Vec3 omega = y.segment<3>(kW);
-  const double m = y[kM];
+  const double m = y[kMass];
 
   const Vec3 thrust_lvlh_N = lvlh_from_inertial(lvlh, q * u.force_body_N);
   const Vec3 accel = relative_orbit_acceleration_lvlh(p.orbit.radius_m(), p.orbit.mean_motion_radps(), r, v) +
@@ -91,12 +91,12 @@ StateVec derivative(const DynamicsParams& p, const PieceInput& u, const StateVec
     torque += gravity_gradient_torque_body(gain, r_planet_body_m, p.inertia_kgm2);
   }
 
-  StateVec dy;
+  RigidStateVec dy;
   dy.segment<3>(kR) = v;
   dy.segment<3>(kV) = accel;
   dy.segment<4>(kQ) = quat_derivative(q, omega);
   dy.segment<3>(kW) = euler_angular_acceleration_body(p.inertia_kgm2, p.inertia_inv, omega, torque);
-  dy[kM] = -u.mass_flow_kgps;
+  dy[kMass] = -u.mass_flow_kgps;
   return dy;
 }
 
@@ -112,14 +112,14 @@ void propagate_piece(const DynamicsParams& p, RigidState& x, double t0_s, double
   LvlhAngle start{std::cos(u0), std::sin(u0)};
   const LvlhAngle half_turn = small_turn(0.5 * p.orbit.mean_motion_radps() * h);
 
-  StateVec y = pack(x);
+  RigidStateVec y = pack(x);
   for (int i = 0; i < steps; ++i) {  // classical RK4
     const LvlhAngle mid = start.turned(half_turn);
     const LvlhAngle end = mid.turned(half_turn);
-    const StateVec k1 = derivative(p, u, y, start);
-    const StateVec k2 = derivative(p, u, y + (0.5 * h) * k1, mid);
-    const StateVec k3 = derivative(p, u, y + (0.5 * h) * k2, mid);
-    const StateVec k4 = derivative(p, u, y + h * k3, end);
+    const RigidStateVec k1 = derivative(p, u, y, start);
+    const RigidStateVec k2 = derivative(p, u, y + (0.5 * h) * k1, mid);
+    const RigidStateVec k3 = derivative(p, u, y + (0.5 * h) * k2, mid);
+    const RigidStateVec k4 = derivative(p, u, y + h * k3, end);
     y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     start = end;
   }

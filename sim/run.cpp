@@ -2,18 +2,11 @@
 
 #include <chrono>
 
+#include "core/wall_clock.hpp"
 #include "flight/flight_software.hpp"
 #include "sim/simulation.hpp"
 
 namespace chaser::sim {
-
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 const SchemeResult& scheme_result(const FdirResult& fdir, std::string_view name) {
   const std::vector<flight::DiagnosisScheme>& schemes = flight::diagnosis_schemes();

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/rotation.hpp"
+#include "core/wall_clock.hpp"
 #include "plant/arm_joints.hpp"
 #include "plant/target.hpp"
 #include "model/keep_out.hpp"
@@ -76,10 +77,6 @@ FdirResult fdir_result(const flight::FlightParams& p, const flight::FlightState&
   r.episodes = std::move(episodes);
   r.stood_down_s = f.stood_down_s;
   return r;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
