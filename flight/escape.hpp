@@ -27,8 +27,8 @@
 // With brake_when_stowed (the default) the arm's brakes engage once the retraction has ended (the
 // arm as good as stowed) at the first joint step at which every joint turns slower than
 // brake_rate_degps (the brakes stop the joints within a few steps: their catch loads them by the
-// joints' inertia times that rate over ~2 ms), and the joint loop stops driving it: the chaser and its braked arm are
-// then one rigid body, the free chaser the platform's own loops were designed on, and they fly the
+// joints' inertia times that rate over ~2 ms), and the joint loop stops driving it: the chaser
+// and its braked arm are then one rigid body, the free chaser the platform's own loops were designed on, and they fly the
 // rest of the plan (escape_guidance's reference) at the control period, the combined law idle.
 // The stowed arm and the fixed relation of tool and hub from the retraction on keep the arm clear
 // of the hub (the stowed pose is the launch one) and the camera looking where the boresight looks.
@@ -70,7 +70,7 @@ struct EscapeState {
   EscapeTrigger trigger = EscapeTrigger::kNone;
   double start_s = -1.0;    // [s] triggered (-1: not yet)
   double refused_s = -1.0;  // [s] commanded with the jaws closed: not flown (-1: never)
-  double brakes_s = -1.0;   // [s] the brakes engaged at the retraction's end (-1: not)
+  double brakes_s = -1.0;   // [s] the brakes engaged, retracted and quiet (-1: not)
   // Fixed each period by the flight software until the trigger: the transfer's start point as the
   // synchronised approach fixed it (flight/sync_approach.hpp's latch), if it did.
   std::optional<Vec3> withdraw_point_target_m;
