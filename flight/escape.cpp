@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "core/rotation.hpp"
 #include "flight/carried_target.hpp"
+#include "flight/joints_quiet.hpp"
 #include "flight/pose_path.hpp"
 #include "flight/sync_approach.hpp"
 
@@ -177,9 +177,7 @@ bool escape_brakes(const EscapeLawParams& params, EscapeState& state, const mode
   if (!state.started() || !params.escape.brake_when_stowed ||
       t_s + kTimeTolS < state.start_s + params.escape.retract_duration_s)
     return false;
-  const double threshold_radps = params.escape.brake_rate_degps * std::numbers::pi / 180.0;
-  for (int j = 0; j < joints.joints; ++j)
-    if (std::abs(joints.q_dot_radps[static_cast<std::size_t>(j)]) >= threshold_radps) return false;
+  if (!joints_slower_than(joints, params.escape.brake_rate_degps)) return false;
   state.brakes_s = t_s;
   return true;
 }

@@ -92,6 +92,7 @@ std::optional<ReachParams> make_reach(const model::Scenario& s) {
   p.law = c.law;
   p.path_duration_s = c.path_duration_s;
   p.joint_period_ns = static_cast<TimeNs>(std::llround(1e9 / c.joint_rate_hz));
+  if (c.escape) p.braked_step_s = c.escape->braked_step_s;
   p.platform_period_s = 1.0 / c.platform_rate_hz;
   p.servicer = arm::servicer_arm_of(scene);
   p.hub_from_chaser_com_body_m = scene.hub_com_body_m - s.chaser.com_body_m;
@@ -209,12 +210,15 @@ bool platform_command(const ReachParams& params, ReachState& state, double t_s, 
 
 void update_from_camera(const ReachParams& params, ReachState& state, const model::RelativePoseMeasurement& sample) {
   if (!sample.valid || !state.target) return;
-  // The tool's pose nearest the sample's time (within two joint steps).
+  // The tool's pose nearest the sample's time (within two joint steps; the escape's braked arm is
+  // stepped at its braked step).
   const ToolPoseSample* nearest = nullptr;
   for (const ToolPoseSample& p : state.tool_history)
     if (p.t_s >= 0.0 && (nearest == nullptr || std::abs(p.t_s - sample.taken_s) < std::abs(nearest->t_s - sample.taken_s)))
       nearest = &p;
-  if (nearest == nullptr || std::abs(nearest->t_s - sample.taken_s) > 2.0 * to_seconds(params.joint_period_ns)) return;
+  double step_s = to_seconds(params.joint_period_ns);
+  if (state.escape.braked()) step_s = std::max(step_s, params.braked_step_s);
+  if (nearest == nullptr || std::abs(nearest->t_s - sample.taken_s) > 2.0 * step_s) return;
   // The fixture in the law's world, and the target frame that puts it there.
   const Quat q_world_from_fixture = (nearest->q * sample.q_camera_from_fixture).normalized();
   const Vec3 r_fixture_m = nearest->r_m + nearest->q * sample.r_camera_m;

@@ -39,6 +39,7 @@ struct ReachParams {
   model::CaptureLaw law = model::CaptureLaw::kCompliance;
   double path_duration_s = 60.0;             // [s]
   TimeNs joint_period_ns = 1'000'000;        // [ns]
+  double braked_step_s = 0.01;               // [s] the escape's arm braked, the joint loop's step
   double platform_period_s = 0.1;            // [s] the platform command's (capture.platform_rate_hz)
   arm::ServicerArmParams servicer;           // the flight software's model of hub and arm
   Vec3 hub_from_chaser_com_body_m = Vec3::Zero();  // [m] the hub's CoM from the chaser's (arm stowed) CoM

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <limits>
 #include <stdexcept>
 
@@ -11,6 +10,7 @@
 #include "control/joint_design.hpp"
 #include "flight/arm/arm_kinematics.hpp"
 #include "flight/arm/floating_base_mass_matrix.hpp"
+#include "flight/joints_quiet.hpp"
 
 namespace chaser::flight {
 
@@ -62,10 +62,7 @@ model::ArmCommand step_rigidise(const RigidiseLawParams& params, RigidiseState& 
     }
   }
   if (state.brakes_s < 0.0) {
-    const double threshold_radps = r.brake_rate_degps * std::numbers::pi / 180.0;
-    bool quiet = true;
-    for (int j = 0; j < model::kArmJoints; ++j)
-      quiet = quiet && std::abs(joints.q_dot_radps[static_cast<std::size_t>(j)]) < threshold_radps;
+    const bool quiet = joints_slower_than(joints, r.brake_rate_degps);
     if (!quiet || !may_brake)
       state.quiet_since_s = -1.0;
     else if (state.quiet_since_s < 0.0)

@@ -82,6 +82,7 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
         if (g.has("safe_distance_m")) g.number("safe_distance_m", Range::closed(1.0, 1e3), e.safe_distance_m);
         if (g.has("brake_when_stowed")) g.boolean("brake_when_stowed", e.brake_when_stowed);
         if (g.has("brake_rate_degps")) g.number("brake_rate_degps", Range::left_open(0.0, 10.0), e.brake_rate_degps);
+        if (g.has("braked_step_s")) g.number("braked_step_s", Range::left_open(0.0, 1.0), e.braked_step_s);
       });
     }
     if (m.has("berthing")) {
@@ -119,6 +120,17 @@ void validate_escape(const model::Scenario& s, Diagnostics& d) {
   if (e.command_s && d.clean("capture.start_s") && !(*e.command_s >= c.start_s))
     d.add("capture.escape.command_s", fmt::format("must be at or after capture.start_s {} (the arm awake; got {})",
                                                   format_number(c.start_s), format_number(*e.command_s)));
+  // The braked step a whole number of joint periods, and the control period a whole number of it.
+  if (d.clean("capture.escape.braked_step_s") && d.clean("capture.joint_rate_hz") && d.clean("control_period_s")) {
+    const double joints = e.braked_step_s * c.joint_rate_hz, per_period = s.control_period_s / e.braked_step_s;
+    const auto whole = [](double x) { return std::round(x) >= 1.0 && std::abs(x - std::round(x)) <= 1e-9 * x; };
+    if (!whole(joints) || !whole(per_period))
+      d.add("capture.escape.braked_step_s",
+            fmt::format("must be a whole number of joint periods (1 / capture.joint_rate_hz = {} s) and divide "
+                        "control_period_s {} s into whole steps (got {})",
+                        format_number(1.0 / c.joint_rate_hz), format_number(s.control_period_s),
+                        format_number(e.braked_step_s)));
+  }
   const auto& sync = s.guidance.synchronised;
   if (!sync || !d.clean("guidance.synchronised")) return;
   const double withdraw_m = sync->approach ? sync->approach->axis_distance_m : sync->start_target_m.norm();

@@ -103,6 +103,13 @@ struct EscapeParams {
   // to the end.
   bool brake_when_stowed = true;
   double brake_rate_degps = 0.02;  // [deg/s]
+  // [s] Braked for a control period, the chaser and its stowed arm move as one body, the target
+  // free, and no joint law runs: the joint loop and MuJoCo step at this (a whole number of joint
+  // periods, and a whole number of it per control period) instead of the scene's 1 ms, 6.5 x the
+  // wall time of the braked flight (docs/performance.md). Not the stabilisation's composite: its
+  // brakes' loads under the thrusters grow with the step (93, 139, 283 N m at 1, 2, 5 ms in
+  // comrade_capture; at 10 ms they slip), as the brakes' and the grasp's constraints soften with it.
+  double braked_step_s = 0.01;
   double total_s() const {
     return retract_duration_s + withdraw_duration_s + desynchronise_duration_s + retreat_duration_s;
   }

@@ -72,6 +72,12 @@ void set_closed_chain_joint_rates(Plant& plant, const std::array<double, model::
   set_closed_chain_joint_rates(*p, std::get<MultibodyMotionState>(plant.state.motion), rates_radps);
 }
 
+void set_braked_step(Plant& plant, double step_s) {
+  const MultibodyMotionParams* p = multibody_params(plant);
+  if (p == nullptr) throw std::logic_error("set_braked_step: the arm is not awake");
+  set_braked_step(*p, std::get<MultibodyMotionState>(plant.state.motion), step_s);
+}
+
 void command_arm(Plant& plant, const model::ArmCommand& command) {
   const MultibodyMotionParams* p = multibody_params(plant);
   if (p == nullptr) return;

@@ -40,6 +40,10 @@ const BerthState* berth_truth(const Plant& plant);
 // set_closed_chain_joint_rates). Throws std::logic_error otherwise.
 void set_closed_chain_joint_rates(Plant& plant, const std::array<double, model::kArmJoints>& rates_radps);
 
+// Braked, MuJoCo's step from the next advance on (plant/multibody_motion.hpp's set_braked_step).
+// Throws std::logic_error without the arm awake and braked.
+void set_braked_step(Plant& plant, double step_s);
+
 // The joint torques held from now to the next command, each clamped at the drive's hard limit
 // (chaser.arm.torque_momentary_Nm): the inner torque loop cannot give more.
 void command_arm(Plant& plant, const model::ArmCommand& command);

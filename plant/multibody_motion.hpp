@@ -101,6 +101,8 @@ struct MultibodyMotionState {
   // [N m] the joint torques held over the next advance (the arm's inner loop sets them).
   std::array<double, model::kArmJoints> joint_torque_Nm{};
   bool brakes_engaged = false;  // the joints' brakes hold (engage_brakes)
+  // [s] Braked, MuJoCo's step from now on in place of the scene's (set_braked_step; 0: the scene's).
+  double braked_step_s = 0.0;
   // [N m] braked, each joint's load (the torque its brake carries) at the last MuJoCo step's start.
   std::array<double, model::kArmJoints> brake_load_Nm{};
   // The gripper locked on the fixture (engage_grasp): the fingers held at these slides [m], the
@@ -171,6 +173,11 @@ JawReading read_jaws(const MultibodyMotionParams& params, const MultibodyMotionS
 // (chaser.arm.brake_holding_torque_Nm, MuJoCo's frictionloss: the joint sticks while the torque it
 // must carry stays below, and slips at that torque beyond). Engaged for good.
 void engage_brakes(const MultibodyMotionParams& params, MultibodyMotionState& state);
+// Braked, MuJoCo steps at step_s (> 0) instead of the scene's timestep from the next advance on:
+// the chaser and its braked arm are one body but for the brakes' and the welds' stiff rows, whose
+// time constants MuJoCo's refsafe keeps at least two steps (the brakes' 2 ms becomes 2 step_s).
+// The drives, off, stop applying torque. Throws std::logic_error unless braked.
+void set_braked_step(const MultibodyMotionParams& params, MultibodyMotionState& state, double step_s);
 // Braked, the torque each brake carries [N m] (the joint's load: its friction constraint's force)
 // at the start of the last MuJoCo step; zero before the brakes engage.
 std::array<double, model::kArmJoints> brake_loads_Nm(const MultibodyMotionParams& params,

@@ -109,6 +109,8 @@ Simulation::Simulation(const model::Scenario& truth, const flight::FlightParams&
   keep_out_ = checks_keep_out(scenario_);
   if (scenario_.capture) {
     joint_period_ns_ = static_cast<TimeNs>(std::llround(1e9 / scenario_.capture->joint_rate_hz));
+    if (scenario_.capture->escape)
+      braked_step_ns_ = static_cast<TimeNs>(std::llround(scenario_.capture->escape->braked_step_s * 1e9));
     if (flight_params_.reach) {  // the truth judges the gripper against the pose the reach aims at
       reach_goal_target_m_ = flight_params_.reach->pre_grasp_target_m;
       q_target_from_reach_goal_ = flight_params_.reach->q_target_from_tool;
@@ -158,6 +160,7 @@ Simulation::Simulation(const Simulation& from, std::int64_t periods)
       reach_goal_target_m_(from.reach_goal_target_m_),
       q_target_from_reach_goal_(from.q_target_from_reach_goal_),
       joint_period_ns_(from.joint_period_ns_),
+      braked_step_ns_(from.braked_step_ns_),
       arm_awake_(from.arm_awake_),
       phase_requirements_(from.phase_requirements_),
       phase_configuration_(from.phase_configuration_),
@@ -326,11 +329,24 @@ void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
 
 // The reach's joint loop inside the period: at each joint step the arm's sensors are read, the
 // flight software's combined law commands the joints (flight::step_reach) and the plant is carried
-// to the next step. The blocks added by add_block do not run while the arm is awake.
+// to the next step. The blocks added by add_block do not run while the arm is awake. The escape's
+// stowed arm braked for a control period or more, no joint law runs and the chaser moves as one
+// body, the target free: the loop and MuJoCo step at capture.escape.braked_step_s. The brakes'
+// catch of the joints' last motion, their largest load, is over by then (their constraint's time
+// constant is 2 ms) and flown at the joint step. Not the stabilisation's braked composite: its
+// brakes' loads under the thrusters grow with the step (model/capture.hpp).
 void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeNs t_k) {
   plant::begin_plant_period(plant_.params, plant_.state, command, t_k);
   const TimeNs t_end = t_k + period_ns_;
-  for (TimeNs t = t_k; t < t_end; t += joint_period_ns_) {
+  const double braked_s = flight_state_.reach.escape.brakes_s;
+  constexpr double kTimeTolS = 1e-9;  // the joint steps' times are sums of the period
+  const bool braked = braked_s >= 0.0 && to_seconds(t_k) + kTimeTolS >= braked_s + to_seconds(period_ns_);
+  TimeNs step_ns = joint_period_ns_;
+  if (braked && braked_step_ns_ > joint_period_ns_) {
+    step_ns = braked_step_ns_;
+    plant::set_braked_step(plant_, to_seconds(step_ns));
+  }
+  for (TimeNs t = t_k; t < t_end; t += step_ns) {
     if (flight_params_.reach) {
       const model::ArmCommand command_now =
           flight::step_reach(*flight_params_.reach, flight_state_.reach, plant::sense_arm(plant_), to_seconds(t));
@@ -339,7 +355,7 @@ void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeN
       for (std::size_t j = 0; j < peak.size(); ++j) peak[j] = std::max(peak[j], std::abs(command_now.torque_Nm[j]));
       plant::command_arm(plant_, command_now);
     }
-    plant::advance_plant(plant_.params, plant_.state, t, std::min(t + joint_period_ns_, t_end));
+    plant::advance_plant(plant_.params, plant_.state, t, std::min(t + step_ns, t_end));
     if (flight_state_.reach.rigidise.brakes_s >= 0.0) {  // braked: the joints' loads, every joint step
       const auto load = plant::brake_loads_Nm(plant_);
       auto& peak = result_.reach.rigidise.peak_brake_load_Nm;

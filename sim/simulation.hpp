@@ -120,6 +120,7 @@ class Simulation {
   Vec3 reach_goal_target_m_ = Vec3::Zero();  // the pre-grasp pose on the target, as the truth judges the gripper
   Quat q_target_from_reach_goal_ = Quat::Identity();
   TimeNs joint_period_ns_ = 0;
+  TimeNs braked_step_ns_ = 0;  // capture.escape.braked_step_s (0: no escape)
   bool arm_awake_ = false;
   std::vector<PhaseRequirements> phase_requirements_;  // by phase index (sim/run_phases.hpp)
   std::vector<PhaseConfiguration> phase_configuration_;

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "io/scenario_loader.hpp"
@@ -43,12 +44,17 @@ TEST(CaptureSection, TheShippedScenarioReadsBack) {
   EXPECT_EQ(e.withdraw_backoff_m, 4.0);
   EXPECT_TRUE(e.brake_when_stowed);
   EXPECT_EQ(e.brake_rate_degps, 0.02);
+  EXPECT_EQ(e.braked_step_s, 0.01);
   EXPECT_EQ(e.total_s(), 930.0);
-  const LoadResult driven =
-      load_scenario_file(kCapture, {"capture.escape={brake_when_stowed: false, brake_rate_degps: 0.1}"});
+  const LoadResult driven = load_scenario_file(
+      kCapture, {"capture.escape={brake_when_stowed: false, brake_rate_degps: 0.1, braked_step_s: 0.05}"});
   ASSERT_TRUE(driven.scenario) << format_errors(driven.errors);
   EXPECT_FALSE(driven.scenario->capture->escape->brake_when_stowed);
   EXPECT_EQ(driven.scenario->capture->escape->brake_rate_degps, 0.1);
+  EXPECT_EQ(driven.scenario->capture->escape->braked_step_s, 0.05);
+  // The joint period itself (1 ms) and the whole control period are braked steps too.
+  for (const char* step : {"0.001", "0.1"})
+    EXPECT_TRUE(load_scenario_file(kCapture, {fmt::format("capture.escape={{braked_step_s: {}}}", step)}).scenario) << step;
 }
 
 struct BadCapture {
@@ -116,6 +122,15 @@ std::vector<BadCapture> bad_captures() {
       {"escape_brake_rate", {"capture.escape={brake_rate_degps: 0}"}, "capture.escape.brake_rate_degps",
        "must be in (0, 10]"},
       {"escape_brakes", {"capture.escape={brake_when_stowed: 1.5}"}, "capture.escape.brake_when_stowed", "must be"},
+      {"escape_braked_step_range", {"capture.escape={braked_step_s: 0}"}, "capture.escape.braked_step_s",
+       "must be in (0, 1]"},
+      {"escape_braked_step_between_joint_steps", {"capture.escape={braked_step_s: 0.0015}"}, "capture.escape.braked_step_s",
+       "must be a whole number of joint periods (1 / capture.joint_rate_hz = 0.001 s) and divide control_period_s "
+       "0.1 s into whole steps (got 0.0015)"},
+      {"escape_braked_step_across_periods", {"capture.escape={braked_step_s: 0.03}"}, "capture.escape.braked_step_s",
+       "must be a whole number of joint periods"},
+      {"escape_braked_step_past_the_period", {"capture.escape={braked_step_s: 0.2}"}, "capture.escape.braked_step_s",
+       "must be a whole number of joint periods"},
       {"brake_holding_torque", {"chaser.arm.brake_holding_torque_Nm=0"}, "chaser.arm.brake_holding_torque_Nm",
        "must be in (0, 100000]"},
   };
