@@ -332,9 +332,9 @@ void Simulation::propagate(const model::ThrusterCommand& command, TimeNs t_k) {
 // to the next step. The blocks added by add_block do not run while the arm is awake. The escape's
 // stowed arm braked for a control period or more, no joint law runs and the chaser moves as one
 // body, the target free: the loop and MuJoCo step at capture.escape.braked_step_s. The brakes'
-// catch of the joints' last motion, their largest load, is over by then (their constraint's time
-// constant is 2 ms) and flown at the joint step. Not the stabilisation's braked composite: its
-// brakes' loads under the thrusters grow with the step (model/capture.hpp).
+// catch of the joints' last motion is over by then (their constraint's time constant is 2 ms) and
+// was flown at the joint step. Not the stabilisation's braked composite: its brakes' loads under
+// the thrusters grow with the step (model/capture.hpp).
 void Simulation::propagate_with_arm(const model::ThrusterCommand& command, TimeNs t_k) {
   plant::begin_plant_period(plant_.params, plant_.state, command, t_k);
   const TimeNs t_end = t_k + period_ns_;
