@@ -112,6 +112,10 @@ void read_optional_capture(MapReader& r, std::optional<model::CaptureParams>& ou
 
 namespace {
 
+// A count of one or more that a ratio of periods must be, to 1e-9 of itself (the periods are decimals
+// written in seconds or hertz, their ratios not exact in binary).
+bool whole_count(double x) { return std::round(x) >= 1.0 && std::abs(x - std::round(x)) <= 1e-9 * x; }
+
 // The escape's command while the arm is awake; its retreat outwards, from the point the
 // synchronised transfer started from (on the momentum axis) to beyond it.
 void validate_escape(const model::Scenario& s, Diagnostics& d) {
@@ -123,8 +127,7 @@ void validate_escape(const model::Scenario& s, Diagnostics& d) {
   // The braked step a whole number of joint periods, and the control period a whole number of it.
   if (d.clean("capture.escape.braked_step_s") && d.clean("capture.joint_rate_hz") && d.clean("control_period_s")) {
     const double joints = e.braked_step_s * c.joint_rate_hz, per_period = s.control_period_s / e.braked_step_s;
-    const auto whole = [](double x) { return std::round(x) >= 1.0 && std::abs(x - std::round(x)) <= 1e-9 * x; };
-    if (!whole(joints) || !whole(per_period))
+    if (!whole_count(joints) || !whole_count(per_period))
       d.add("capture.escape.braked_step_s",
             fmt::format("must be a whole number of joint periods (1 / capture.joint_rate_hz = {} s) and divide "
                         "control_period_s {} s into whole steps (got {})",
@@ -189,7 +192,7 @@ void validate_capture(const model::Scenario& s, Diagnostics& d) {
                                                format_number(c.joint_rate_hz)));
   else if (d.clean("capture.joint_rate_hz") && d.clean("control_period_s")) {
     const double per_period = s.control_period_s * c.joint_rate_hz;
-    if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || std::round(per_period) < 1.0)
+    if (!whole_count(per_period))
       d.add("capture.joint_rate_hz", fmt::format("must run a whole number of times per control period {} s (got {} Hz)",
                                                  format_number(s.control_period_s), format_number(c.joint_rate_hz)));
   }
